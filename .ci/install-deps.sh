@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages ssaolab needs to build, test and run headless.
+# Idempotent: does nothing (and needs no network) when everything is already present.
+set -euo pipefail
+
+PKGS=(
+  build-essential cmake pkg-config
+  libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev libstb-dev
+  libegl-dev libgl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri
+  libembree-dev nlohmann-json3-dev libtinyexr-dev libcli11-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  xvfb xauth
+)
+
+missing=()
+for p in "${PKGS[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PKGS[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

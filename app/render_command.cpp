@@ -1,0 +1,122 @@
+#include "render_command.h"
+
+#include "gl/context.h"
+#include "output/report.h"
+#include "settings/params.h"
+#include "util/error.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+
+namespace ssao {
+
+void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
+    cmd.add_option("--scene", o.scene, "builtin:showcase|plane|corner, or a .gltf/.glb file")->capture_default_str();
+    cmd.add_option("--preset", o.preset, "preset JSON file, or a name in assets/presets (e.g. learnopengl)");
+    cmd.add_option("--set", o.sets, "override one parameter, key=value (repeatable; see `ssaolab params`)");
+    cmd.add_option("--size", o.size, "output size WIDTHxHEIGHT")->capture_default_str();
+    cmd.add_option("--camera", o.camera, "eye,target[,up[,fov_deg[,near,far]]] as comma-separated numbers");
+    cmd.add_option("--out", o.out, "output folder (EXR, PNG, metrics.json)")->capture_default_str();
+    cmd.add_option("--timing-frames", o.timingFrames, "extra frames, every pass forced, averaged into gpu_ms")
+        ->capture_default_str()->check(CLI::Range(1, 1000));
+    cmd.add_option("--shaders", o.shaderDir, "shader folder (default: the source tree's shaders/)");
+    cmd.add_flag("--verbose-gl", o.verboseGl, "log every KHR_debug message");
+    cmd.add_flag("--quiet", o.quiet, "print nothing on success");
+}
+
+std::string resolvePreset(const std::string& arg) {
+    if (std::filesystem::exists(arg)) return arg;
+    std::string named = std::string(SSAOLAB_ASSET_DIR) + "/presets/" + arg + ".json";
+    if (arg.find('/') == std::string::npos && std::filesystem::exists(named)) return named;
+    return arg; // loadPreset reports "not found" with the name the user gave
+}
+
+namespace {
+
+void parseSize(const std::string& s, int& w, int& h) {
+    int n = 0;
+    if (std::sscanf(s.c_str(), "%dx%d%n", &w, &h, &n) != 2 || n != int(s.size()))
+        throw Error("--size '" + s + "': expected WIDTHxHEIGHT, e.g. 1280x720");
+    if (w <= 0 || h <= 0) throw Error("--size '" + s + "': width and height must be positive");
+    if (w > 16384 || h > 16384) throw Error("--size '" + s + "': at most 16384x16384");
+}
+
+} // namespace
+
+int runRender(const RenderOptions& o) {
+    // Validate everything that needs no GL first, so bad input fails fast with one line.
+    int w = 0, h = 0;
+    parseSize(o.size, w, h);
+    Settings settings = o.preset.empty() ? defaultSettings() : loadPreset(resolvePreset(o.preset));
+    for (const auto& a : o.sets) applyAssignment(settings, a);
+    Scene scene = loadScene(o.scene);
+
+    RunInfo info;
+    info.sceneName = scene.name;
+    info.triangles = scene.triangleCount();
+    Camera cam;
+    if (!o.camera.empty()) {
+        cam = parseCamera(o.camera, scene.camera.value_or(frameBounds(scene.bounds)));
+        info.cameraSource = "--camera";
+    } else if (scene.camera) {
+        cam = *scene.camera;
+        info.cameraSource = o.scene.rfind("builtin:", 0) == 0 ? "builtin" : "file";
+        if (cam.farZ <= cam.nearZ) { // glTF infinite projection: far from the scene bounds
+            float d = glm::length(cam.eye - scene.bounds.center()) + scene.bounds.radius();
+            cam.farZ = std::max(d * 1.5f, cam.nearZ * 10.0f);
+        }
+    } else {
+        cam = frameBounds(scene.bounds);
+        info.cameraSource = "framed";
+    }
+    validateCamera(cam);
+
+    gl::HeadlessContext ctx;
+    gl::installDebugOutput(o.verboseGl);
+    info.glRenderer = ctx.renderer();
+    info.glPlatform = ctx.platform();
+    info.timingFrames = o.timingFrames;
+
+    Renderer r(o.shaderDir.empty() ? std::string(SSAOLAB_SHADER_DIR) : o.shaderDir);
+    r.setSize(w, h);
+    r.setScene(scene);
+    r.setCamera(cam);
+    r.setSettings(settings);
+    FrameReport first = r.render();
+
+    // Timing: force every pass for `timingFrames` frames and average (first frame includes JIT).
+    nlohmann::json timing = nlohmann::json::object();
+    std::vector<double> sums(first.passes.size(), 0.0);
+    for (int f = 0; f < o.timingFrames; ++f) {
+        r.invalidate();
+        FrameReport fr = r.render();
+        for (size_t i = 0; i < fr.passes.size(); ++i) sums[i] += fr.passes[i].gpuMs;
+    }
+    double total = 0;
+    for (size_t i = 0; i < first.passes.size(); ++i) {
+        double ms = o.timingFrames > 0 ? sums[i] / o.timingFrames : first.passes[i].gpuMs;
+        timing[first.passes[i].name] = ms;
+        total += ms;
+    }
+    timing["total"] = total;
+
+    nlohmann::json m = writeOutputs(r, o.out, info, first, timing);
+    std::string glErr = gl::pollGlErrors();
+    if (gl::glErrorCount() > 0)
+        throw Error("OpenGL reported " + std::to_string(gl::glErrorCount()) + " error(s) during the run" +
+                    (glErr.empty() ? "" : " (" + glErr + ")"));
+    if (!o.quiet) {
+        std::printf("%s: %dx%d on %s; AO mean %.4f (raw %.4f); gpu ms:", scene.name.c_str(), w, h,
+                    info.glRenderer.c_str(), m["ao"]["mean"].get<double>(), m["ao_raw"]["mean"].get<double>());
+        for (auto& [k, v] : timing.items()) std::printf(" %s %.3f", k.c_str(), v.get<double>());
+        std::printf("\nwrote %s/{position,normal,depth,ao_raw,ao}.exr, *.png, metrics.json\n", o.out.c_str());
+    }
+    long bad = 0;
+    for (auto& [k, v] : m["nonfinite"].items()) bad += v.get<long>();
+    if (bad > 0) throw Error(std::to_string(bad) + " non-finite values in the output buffers (see metrics.json)");
+    return 0;
+}
+
+} // namespace ssao

@@ -1,0 +1,83 @@
+// Small typed GL objects built on Handle: textures, framebuffers, buffers, timers.
+#pragma once
+#include "gl/handle.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ssao::gl {
+
+class Texture2D {
+  public:
+    Texture2D() = default;
+    Texture2D(int width, int height, GLenum internalFormat, const std::string& name);
+    int width() const { return w_; }
+    int height() const { return h_; }
+    GLenum format() const { return fmt_; }
+    GLuint id() const { return h_id_.id(); }
+    explicit operator bool() const { return bool(h_id_); }
+    void setFilter(GLenum minMag);
+    void setWrap(GLenum wrap);
+    void bind(GLuint unit) const { glBindTextureUnit(unit, id()); }
+    // Reads the texture back as `components` floats per texel, rows bottom-to-top (GL order).
+    std::vector<float> readFloats(int components) const;
+
+  private:
+    TextureHandle h_id_;
+    int w_ = 0, h_ = 0;
+    GLenum fmt_ = 0;
+};
+
+class Framebuffer {
+  public:
+    Framebuffer() = default;
+    // colour attachments in order (location 0..n-1); depth may be null.
+    Framebuffer(const std::vector<const Texture2D*>& colors, const Texture2D* depth, const std::string& name);
+    GLuint id() const { return h_.id(); }
+    void bind() const;
+
+  private:
+    FramebufferHandle h_;
+    int w_ = 0, h2_ = 0;
+};
+
+class UniformBuffer {
+  public:
+    UniformBuffer() = default;
+    UniformBuffer(std::size_t bytes, const std::string& name);
+    void upload(const void* data, std::size_t bytes);
+    void bind(GLuint binding) const { glBindBufferBase(GL_UNIFORM_BUFFER, binding, h_.id()); }
+    explicit operator bool() const { return bool(h_); }
+
+  private:
+    BufferHandle h_;
+    std::size_t size_ = 0;
+};
+
+// GL_TIME_ELAPSED query around one pass; result read when the frame is done.
+class GpuTimer {
+  public:
+    GpuTimer();
+    void begin();
+    void end();
+    // Blocks until available; milliseconds of the last begin/end pair, or -1 if never run.
+    double resultMs();
+
+  private:
+    QueryHandle q_;
+    bool pending_ = false;
+    double lastMs_ = -1.0;
+};
+
+// A VAO with no attributes: full-screen passes generate their triangle from gl_VertexID.
+class FullscreenTriangle {
+  public:
+    FullscreenTriangle();
+    void draw() const;
+
+  private:
+    VertexArrayHandle vao_;
+};
+
+} // namespace ssao::gl

@@ -1,0 +1,38 @@
+// Shader files loaded at run time from shaders/: `#include "file"` is inlined (once per file),
+// `#define`s are injected after #version, and `#line L F` keeps every line attributable, so a
+// compile error is reported as "shaders/passes/ssao.frag:42: ...". Programs are cached by
+// (stages, define set); a variant is compiled only the first time it is asked for.
+#pragma once
+#include "gl/handle.h"
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ssao::gl {
+
+using Defines = std::vector<std::pair<std::string, std::string>>;
+
+// Pure text processing, testable without GL. Returns GLSL text; `files` receives the file
+// table used by the #line directives (index = source-string number).
+std::string preprocessShader(const std::string& shaderDir, const std::string& file, const Defines& defines,
+                             std::vector<std::string>& files);
+
+// Rewrites driver log lines "0:12(3): error" (Mesa) and "0(12) : error" (NVIDIA) to "file:12: error".
+std::string mapLogToFiles(const std::string& log, const std::vector<std::string>& files);
+
+class ShaderLibrary {
+  public:
+    explicit ShaderLibrary(std::string shaderDir);
+    // Vertex + fragment program. Throws ssao::Error naming file and line on failure.
+    GLuint program(const std::string& vert, const std::string& frag, const Defines& defines = {});
+    const std::string& dir() const { return dir_; }
+    void clear() { cache_.clear(); }
+
+  private:
+    std::string dir_;
+    std::map<std::string, ProgramHandle> cache_;
+};
+
+} // namespace ssao::gl

@@ -1,0 +1,105 @@
+#include "output/image.h"
+
+#include "gl/resources.h"
+#include "util/error.h"
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+#include <tinyexr.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+namespace ssao {
+
+Image Image::channel(int c) const {
+    Image out{width, height, 1, std::vector<float>(size_t(width) * height)};
+    for (size_t i = 0; i < out.data.size(); ++i) out.data[i] = data[i * channels + c];
+    return out;
+}
+
+Image readBack(const gl::Texture2D& tex, int channels) {
+    Image img{tex.width(), tex.height(), channels, {}};
+    std::vector<float> raw = tex.readFloats(channels);
+    img.data.resize(raw.size());
+    const size_t row = size_t(img.width) * channels;
+    for (int y = 0; y < img.height; ++y)
+        std::copy_n(raw.begin() + ptrdiff_t(size_t(img.height - 1 - y) * row), row, img.data.begin() + ptrdiff_t(size_t(y) * row));
+    return img;
+}
+
+void writeExr(const Image& img, const std::string& path) {
+    const char* err = nullptr;
+    // tinyexr wants 1, 3 or 4 channels; fp32 keeps NaN/inf and full precision.
+    int rc = SaveEXR(img.data.data(), img.width, img.height, img.channels, 0, path.c_str(), &err);
+    if (rc != TINYEXR_SUCCESS) {
+        std::string msg = err ? err : "unknown error";
+        if (err) FreeEXRErrorMessage(err);
+        throw Error("cannot write " + path + ": " + msg);
+    }
+}
+
+Image readExr(const std::string& path) {
+    float* rgba = nullptr;
+    int w = 0, h = 0;
+    const char* err = nullptr;
+    if (LoadEXR(&rgba, &w, &h, path.c_str(), &err) != TINYEXR_SUCCESS) {
+        std::string msg = err ? err : "unknown error";
+        if (err) FreeEXRErrorMessage(err);
+        throw Error("cannot read " + path + ": " + msg);
+    }
+    Image img{w, h, 4, std::vector<float>(rgba, rgba + size_t(w) * h * 4)};
+    std::free(rgba);
+    return img;
+}
+
+void writePng(const Image& img, const std::string& path, float scale, float offset) {
+    const int outC = img.channels == 1 ? 1 : img.channels >= 3 ? 3 : img.channels;
+    std::vector<unsigned char> px(size_t(img.width) * img.height * outC);
+    for (size_t p = 0; p < size_t(img.width) * img.height; ++p) {
+        bool bad = false;
+        for (int c = 0; c < outC; ++c) bad |= !std::isfinite(img.data[p * img.channels + c]);
+        for (int c = 0; c < outC; ++c) {
+            float v = img.data[p * img.channels + c] * scale + offset;
+            if (bad) v = (outC == 1) ? 1.0f : (c == 1 ? 0.0f : 1.0f); // magenta flags NaN/inf
+            px[p * outC + c] = (unsigned char)std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f);
+        }
+    }
+    if (!stbi_write_png(path.c_str(), img.width, img.height, outC, px.data(), img.width * outC))
+        throw Error("cannot write " + path);
+}
+
+Image readPng(const std::string& path) {
+    int w = 0, h = 0, c = 0;
+    unsigned char* px = stbi_load(path.c_str(), &w, &h, &c, 0);
+    if (!px) throw Error("cannot read " + path);
+    Image img{w, h, c, std::vector<float>(size_t(w) * h * c)};
+    for (size_t i = 0; i < img.data.size(); ++i) img.data[i] = float(px[i]) / 255.0f;
+    stbi_image_free(px);
+    return img;
+}
+
+Stats stats(const Image& img, const Image* mask) {
+    Stats s;
+    double sum = 0;
+    s.min = std::numeric_limits<double>::infinity();
+    s.max = -s.min;
+    for (size_t p = 0; p < size_t(img.width) * img.height; ++p) {
+        for (int c = 0; c < img.channels; ++c)
+            if (!std::isfinite(img.data[p * img.channels + c])) ++s.nonFinite;
+        if (mask && !(mask->data[p * mask->channels] > 0.0f)) continue;
+        float v = img.data[p * img.channels];
+        if (!std::isfinite(v)) continue;
+        ++s.count;
+        sum += v;
+        s.min = std::min(s.min, double(v));
+        s.max = std::max(s.max, double(v));
+    }
+    if (s.count) s.mean = sum / double(s.count);
+    else s.min = s.max = 0;
+    return s;
+}
+
+} // namespace ssao

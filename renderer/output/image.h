@@ -1,0 +1,36 @@
+// Float images read back from GL (rows top-to-bottom), EXR/PNG writers, and statistics.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace ssao {
+
+namespace gl { class Texture2D; }
+
+struct Image {
+    int width = 0, height = 0, channels = 0;
+    std::vector<float> data; // row-major, top row first, interleaved channels
+
+    float at(int x, int y, int c = 0) const { return data[(size_t(y) * width + x) * channels + c]; }
+    Image channel(int c) const;
+};
+
+// Reads `channels` channels of a texture (flipping GL's bottom-up rows).
+Image readBack(const gl::Texture2D& tex, int channels);
+
+// OpenEXR, 32-bit float channels (1 = Y, 3 = RGB, 4 = RGBA). Throws ssao::Error.
+void writeExr(const Image& img, const std::string& path);
+Image readExr(const std::string& path);
+// 8-bit PNG of `img` mapped through value * scale + offset, clamped to [0,1]; NaN → magenta.
+void writePng(const Image& img, const std::string& path, float scale = 1.0f, float offset = 0.0f);
+Image readPng(const std::string& path); // values in [0,1]
+
+struct Stats {
+    long nonFinite = 0;   // NaN or ±inf values over all pixels and channels
+    long count = 0;       // finite values over masked pixels
+    double min = 0, mean = 0, max = 0;
+};
+// Statistics of channel 0 over pixels where mask (if given) has channel 0 > 0.
+Stats stats(const Image& img, const Image* mask = nullptr);
+
+} // namespace ssao

@@ -1,0 +1,26 @@
+#include "passes/composite_pass.h"
+
+#include "../../shaders/include/bindings.h"
+
+namespace ssao {
+
+void CompositePass::run(const FrameInputs& in) {
+    if (!fbo_ || color_.width() != in.width || color_.height() != in.height) {
+        fbo_.reset();
+        color_ = gl::Texture2D(in.width, in.height, GL_RGBA8, "composite");
+        fbo_ = std::make_unique<gl::Framebuffer>(std::vector<const gl::Texture2D*>{&color_}, nullptr, "composite");
+    }
+    gl::Defines defs;
+    if (in.settings.gbuffer.normalFormat == TargetFormat::RGBA8) defs.push_back({"NORMAL_UNORM", "1"});
+    GLuint prog = in.shaders.program("passes/fullscreen.vert", "passes/composite.frag", defs);
+    glUseProgram(prog);
+    glProgramUniform2f(prog, 0, in.settings.composite.ambient, in.settings.composite.light);
+    gbuffer_.position().bind(SSAO_TEX_POSITION);
+    gbuffer_.normal().bind(SSAO_TEX_NORMAL);
+    gbuffer_.albedo().bind(SSAO_TEX_ALBEDO);
+    blur_.ao().bind(SSAO_TEX_AO);
+    fbo_->bind();
+    in.triangle.draw();
+}
+
+} // namespace ssao

@@ -1,0 +1,238 @@
+// glTF 2.0 → Scene: meshes under the default scene's node hierarchy, flattened to world space.
+#include "scene/gltf_loader.h"
+
+#include "util/error.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <tiny_gltf.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <functional>
+
+namespace ssao {
+
+namespace {
+
+const char* kUnsupportedExtensions[] = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
+                                        "KHR_mesh_quantization", "KHR_texture_basisu"};
+
+// Reads element i of a float VEC3 accessor honouring byteStride.
+struct Vec3Reader {
+    const unsigned char* base = nullptr;
+    size_t stride = 0;
+    size_t count = 0;
+    glm::vec3 operator[](size_t i) const {
+        glm::vec3 v;
+        std::memcpy(&v, base + i * stride, sizeof v);
+        return v;
+    }
+};
+
+const unsigned char* accessorData(const tinygltf::Model& m, const tinygltf::Accessor& a, const std::string& what,
+                                  size_t elemSize, size_t& stride) {
+    if (a.sparse.isSparse) throw Error(what + ": sparse accessors are not supported");
+    if (a.bufferView < 0 || a.bufferView >= int(m.bufferViews.size())) throw Error(what + ": accessor has no bufferView");
+    const auto& bv = m.bufferViews[a.bufferView];
+    if (bv.buffer < 0 || bv.buffer >= int(m.buffers.size())) throw Error(what + ": bufferView has no buffer");
+    const auto& buf = m.buffers[bv.buffer];
+    stride = bv.byteStride ? bv.byteStride : elemSize;
+    size_t begin = bv.byteOffset + a.byteOffset;
+    size_t need = a.count ? begin + (a.count - 1) * stride + elemSize : begin;
+    if (need > buf.data.size() || a.byteOffset + (a.count ? (a.count - 1) * stride + elemSize : 0) > bv.byteLength)
+        throw Error(what + ": accessor reads past the end of its buffer");
+    return buf.data.data() + begin;
+}
+
+Vec3Reader vec3Accessor(const tinygltf::Model& m, int index, const std::string& what) {
+    if (index < 0 || index >= int(m.accessors.size())) throw Error(what + ": bad accessor index");
+    const auto& a = m.accessors[index];
+    if (a.type != TINYGLTF_TYPE_VEC3 || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || a.normalized)
+        throw Error(what + ": only float VEC3 is supported (quantized attributes need KHR_mesh_quantization)");
+    Vec3Reader r;
+    r.count = a.count;
+    r.base = accessorData(m, a, what, sizeof(glm::vec3), r.stride);
+    return r;
+}
+
+std::vector<uint32_t> readIndices(const tinygltf::Model& m, const tinygltf::Primitive& p, size_t vertexCount,
+                                  const std::string& what) {
+    std::vector<uint32_t> idx;
+    if (p.indices < 0) {
+        idx.resize(vertexCount);
+        for (size_t i = 0; i < vertexCount; ++i) idx[i] = uint32_t(i);
+        return idx;
+    }
+    if (p.indices >= int(m.accessors.size())) throw Error(what + ": bad index accessor");
+    const auto& a = m.accessors[p.indices];
+    size_t size = 0;
+    switch (a.componentType) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: size = 1; break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: size = 2; break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: size = 4; break;
+    default: throw Error(what + ": index component type " + std::to_string(a.componentType) + " is not an unsigned integer");
+    }
+    size_t stride = 0;
+    const unsigned char* data = accessorData(m, a, what + " indices", size, stride);
+    idx.resize(a.count);
+    for (size_t i = 0; i < a.count; ++i) {
+        const unsigned char* e = data + i * stride;
+        uint32_t v = size == 1 ? *e : size == 2 ? uint32_t(e[0] | (e[1] << 8)) : uint32_t(e[0] | (e[1] << 8) | (e[2] << 16) | (uint32_t(e[3]) << 24));
+        if (v >= vertexCount) throw Error(what + ": index " + std::to_string(v) + " out of range");
+        idx[i] = v;
+    }
+    return idx;
+}
+
+// Converts strips and fans to lists; returns an empty list for points/lines (no surface, no AO).
+std::vector<uint32_t> toTriangleList(const std::vector<uint32_t>& in, int mode) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) return in;
+    std::vector<uint32_t> out;
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+        for (size_t i = 2; i < in.size(); ++i) {
+            if (i % 2 == 0) out.insert(out.end(), {in[i - 2], in[i - 1], in[i]});
+            else out.insert(out.end(), {in[i - 1], in[i - 2], in[i]});
+        }
+    } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+        for (size_t i = 2; i < in.size(); ++i) out.insert(out.end(), {in[0], in[i - 1], in[i]});
+    }
+    return out;
+}
+
+glm::mat4 localMatrix(const tinygltf::Node& n) {
+    if (n.matrix.size() == 16) {
+        glm::mat4 m;
+        for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = float(n.matrix[i]);
+        return m;
+    }
+    glm::mat4 m(1.0f);
+    if (n.translation.size() == 3) m = glm::translate(m, glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
+    if (n.rotation.size() == 4) m *= glm::mat4_cast(glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2])));
+    if (n.scale.size() == 3) m = glm::scale(m, glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
+    return m;
+}
+
+void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, const glm::mat4& world, Scene& s,
+                     const std::string& what) {
+    auto posIt = p.attributes.find("POSITION");
+    if (posIt == p.attributes.end()) throw Error(what + ": primitive has no POSITION");
+    Vec3Reader pos = vec3Accessor(m, posIt->second, what + " POSITION");
+    std::vector<uint32_t> idx = toTriangleList(readIndices(m, p, pos.count, what), p.mode);
+    if (idx.empty()) return;
+
+    const glm::mat3 normalMat = glm::transpose(glm::inverse(glm::mat3(world)));
+    const bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
+    Draw d;
+    d.firstIndex = uint32_t(s.indices.size());
+    if (p.material >= 0 && p.material < int(m.materials.size())) {
+        const auto& f = m.materials[p.material].pbrMetallicRoughness.baseColorFactor;
+        if (f.size() == 4) d.baseColor = glm::vec4(f[0], f[1], f[2], f[3]);
+    }
+    auto nrmIt = p.attributes.find("NORMAL");
+    const uint32_t base = uint32_t(s.vertices.size());
+    if (nrmIt != p.attributes.end()) {
+        Vec3Reader nrm = vec3Accessor(m, nrmIt->second, what + " NORMAL");
+        if (nrm.count != pos.count) throw Error(what + ": NORMAL count differs from POSITION count");
+        for (size_t i = 0; i < pos.count; ++i) {
+            glm::vec3 wp = glm::vec3(world * glm::vec4(pos[i], 1.0f));
+            glm::vec3 n = normalMat * nrm[i];
+            float len = glm::length(n);
+            n = (len > 1e-20f && std::isfinite(len)) ? n / len : glm::vec3(0, 1, 0);
+            s.vertices.push_back({wp, n});
+        }
+        for (size_t t = 0; t + 2 < idx.size(); t += 3) {
+            uint32_t a = idx[t], b = idx[t + 1], c = idx[t + 2];
+            if (mirrored) std::swap(b, c); // keep counter-clockwise front faces
+            s.indices.insert(s.indices.end(), {base + a, base + b, base + c});
+        }
+    } else {
+        // No normals: flat normals per face (glTF spec: "client implementations MUST calculate flat normals").
+        for (size_t t = 0; t + 2 < idx.size(); t += 3) {
+            glm::vec3 p0 = glm::vec3(world * glm::vec4(pos[idx[t]], 1.0f));
+            glm::vec3 p1 = glm::vec3(world * glm::vec4(pos[idx[t + 1]], 1.0f));
+            glm::vec3 p2 = glm::vec3(world * glm::vec4(pos[idx[t + 2]], 1.0f));
+            if (mirrored) std::swap(p1, p2);
+            glm::vec3 n = glm::cross(p1 - p0, p2 - p0);
+            float len = glm::length(n);
+            n = len > 1e-30f ? n / len : glm::vec3(0, 1, 0);
+            uint32_t v0 = uint32_t(s.vertices.size());
+            s.vertices.push_back({p0, n});
+            s.vertices.push_back({p1, n});
+            s.vertices.push_back({p2, n});
+            s.indices.insert(s.indices.end(), {v0, v0 + 1, v0 + 2});
+        }
+    }
+    d.indexCount = uint32_t(s.indices.size()) - d.firstIndex;
+    if (d.indexCount) s.draws.push_back(d);
+}
+
+std::optional<Camera> cameraFromNode(const tinygltf::Model& m, const tinygltf::Node& n, const glm::mat4& world) {
+    const auto& c = m.cameras[n.camera];
+    if (c.type != "perspective") {
+        std::fprintf(stderr, "note: glTF camera '%s' is %s; framing the scene instead\n", c.name.c_str(), c.type.c_str());
+        return std::nullopt;
+    }
+    Camera cam;
+    cam.eye = glm::vec3(world * glm::vec4(0, 0, 0, 1));
+    glm::vec3 fwd = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
+    cam.target = cam.eye + fwd;
+    cam.up = glm::normalize(glm::vec3(world * glm::vec4(0, 1, 0, 0)));
+    cam.fovYDeg = float(glm::degrees(c.perspective.yfov));
+    cam.nearZ = float(c.perspective.znear);
+    cam.farZ = c.perspective.zfar > 0.0 ? float(c.perspective.zfar) : 0.0f; // 0 = infinite, fixed up later
+    return cam;
+}
+
+} // namespace
+
+Scene loadGltf(const std::string& path) {
+    {
+        std::ifstream probe(path, std::ios::binary);
+        if (!probe) throw Error("scene file not found: " + path);
+    }
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string err, warn;
+    const bool binary = path.size() > 4 && path.substr(path.size() - 4) == ".glb";
+    bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                     : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    if (!ok || !err.empty()) {
+        std::string msg = err.empty() ? warn : err;
+        while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ')) msg.pop_back();
+        for (auto& ch : msg) if (ch == '\n') ch = ';';
+        throw Error("cannot load glTF " + path + ": " + (msg.empty() ? "unknown error" : msg));
+    }
+    for (const auto& ext : model.extensionsRequired)
+        for (const char* bad : kUnsupportedExtensions)
+            if (ext == bad) throw Error("glTF " + path + " requires unsupported extension " + ext);
+
+    Scene s;
+    s.name = path;
+    std::vector<int> roots;
+    int sceneIdx = model.defaultScene >= 0 ? model.defaultScene : 0;
+    if (sceneIdx < int(model.scenes.size())) roots = model.scenes[sceneIdx].nodes;
+    else for (int i = 0; i < int(model.nodes.size()); ++i) roots.push_back(i);
+
+    std::function<void(int, const glm::mat4&, int)> visit = [&](int ni, const glm::mat4& parent, int depth) {
+        if (ni < 0 || ni >= int(model.nodes.size()) || depth > 64) throw Error("glTF " + path + ": bad node hierarchy");
+        const auto& n = model.nodes[ni];
+        glm::mat4 world = parent * localMatrix(n);
+        if (n.mesh >= 0) {
+            if (n.mesh >= int(model.meshes.size())) throw Error("glTF " + path + ": node refers to missing mesh");
+            const auto& mesh = model.meshes[n.mesh];
+            for (const auto& p : mesh.primitives) appendPrimitive(model, p, world, s, "glTF mesh '" + mesh.name + "'");
+        }
+        if (n.camera >= 0 && n.camera < int(model.cameras.size()) && !s.camera) s.camera = cameraFromNode(model, n, world);
+        for (int c : n.children) visit(c, world, depth + 1);
+    };
+    for (int r : roots) visit(r, glm::mat4(1.0f), 0);
+    if (s.indices.empty()) throw Error("glTF " + path + " has no triangles to render");
+    s.computeBounds();
+    if (!s.bounds.valid() || !std::isfinite(s.bounds.radius())) throw Error("glTF " + path + " has non-finite positions");
+    return s;
+}
+
+} // namespace ssao

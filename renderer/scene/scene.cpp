@@ -1,0 +1,19 @@
+#include "scene/scene.h"
+
+#include "scene/builtin_scenes.h"
+#include "scene/gltf_loader.h"
+
+namespace ssao {
+
+void Scene::computeBounds() {
+    bounds = Bounds{};
+    for (const auto& v : vertices) bounds.add(v.position);
+}
+
+Scene loadScene(const std::string& spec) {
+    const std::string prefix = "builtin:";
+    if (spec.rfind(prefix, 0) == 0) return makeBuiltinScene(spec.substr(prefix.size()));
+    return loadGltf(spec);
+}
+
+} // namespace ssao

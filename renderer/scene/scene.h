@@ -1,0 +1,53 @@
+// CPU scene: world-space triangles (instances flattened), grouped into draws by material.
+// The same data feeds the GL renderer and, later, the Embree reference tracer.
+#pragma once
+#include "scene/camera.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ssao {
+
+struct Vertex {
+    glm::vec3 position; // world space (scene units: metres for glTF, mm for the CAD scenes)
+    glm::vec3 normal;   // world space, unit length
+};
+
+struct Draw {
+    uint32_t firstIndex = 0;
+    uint32_t indexCount = 0;
+    glm::vec4 baseColor{1.0f}; // glTF pbrMetallicRoughness.baseColorFactor (linear)
+};
+
+struct Bounds {
+    glm::vec3 min{1e30f};
+    glm::vec3 max{-1e30f};
+    void add(const glm::vec3& p) {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+    bool valid() const { return min.x <= max.x; }
+    glm::vec3 center() const { return (min + max) * 0.5f; }
+    float radius() const { return glm::length(max - min) * 0.5f; }
+};
+
+struct Scene {
+    std::string name;
+    std::vector<Vertex> vertices;
+    std::vector<uint32_t> indices;
+    std::vector<Draw> draws;
+    Bounds bounds;
+    std::optional<Camera> camera; // the file's first camera, or a built-in scene's designed view
+
+    size_t triangleCount() const { return indices.size() / 3; }
+    void computeBounds();
+};
+
+// "builtin:NAME" → procedural scene, anything else → glTF file. Throws ssao::Error.
+Scene loadScene(const std::string& spec);
+
+} // namespace ssao
