@@ -1,0 +1,152 @@
+// Whole program: the ssaolab binary on real scenes and on bad input.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+struct CliRun {
+    int exitCode = -1;
+    bool signaled = false;
+    std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+CliRun ssaolab(const std::string& args) {
+    std::filesystem::create_directories(SSAOLAB_TEST_TMP);
+    const std::string base = std::string(SSAOLAB_TEST_TMP) + "/cli_" + std::to_string(::getpid());
+    const std::string cmd = std::string("'") + SSAOLAB_BINARY + "' " + args + " >" + base + ".out 2>" + base + ".err </dev/null";
+    int status = std::system(cmd.c_str());
+    CliRun r;
+    r.signaled = WIFSIGNALED(status);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(base + ".out");
+    r.err = slurp(base + ".err");
+    return r;
+}
+
+std::string tmpFile(const std::string& name, const std::string& text) {
+    std::filesystem::create_directories(SSAOLAB_TEST_TMP);
+    std::string p = std::string(SSAOLAB_TEST_TMP) + "/" + name;
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+}
+
+std::string outDir(const std::string& name) { return std::string(SSAOLAB_TEST_TMP) + "/out_" + name; }
+
+// One clear line naming the problem, exit code 1 (not a crash, not a hang).
+void expectCleanFailure(const CliRun& r, const std::string& needle) {
+    EXPECT_FALSE(r.signaled) << r.err;
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "expected one line, got:\n" << r.err;
+    EXPECT_NE(r.err.find(needle), std::string::npos) << "expected '" << needle << "' in: " << r.err;
+}
+
+} // namespace
+
+TEST(Cli, HelpDescribesCommands) {
+    CliRun r = ssaolab("--help");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("render"), std::string::npos);
+    EXPECT_NE(r.out.find("params"), std::string::npos);
+    r = ssaolab("render --help");
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char* opt : {"--scene", "--preset", "--set", "--size", "--camera", "--out"})
+        EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+    r = ssaolab("params");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("ssao.radius"), std::string::npos);
+}
+
+TEST(Cli, RenderWritesEveryBufferAndMetrics) {
+    const std::string out = outDir("showcase");
+    std::filesystem::remove_all(out);
+    CliRun r = ssaolab("render --scene builtin:showcase --preset learnopengl --set ssao.radius=0.8 --set ssao.kernel=sphere "
+                    "--set blur.kind=gaussian --size 320x180 --timing-frames 1 --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    for (const char* f : {"position.exr", "normal.exr", "depth.exr", "ao_raw.exr", "ao.exr", "position.png", "normal.png",
+                          "depth.png", "albedo.png", "ao_raw.png", "ao.png", "composite.png", "metrics.json"})
+        EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
+    auto m = nlohmann::json::parse(slurp(out + "/metrics.json"));
+    EXPECT_EQ(m["settings"]["ssao"]["radius"], 0.8);
+    EXPECT_EQ(m["settings"]["ssao"]["kernel"], "sphere");
+    EXPECT_EQ(m["settings"]["blur"]["kind"], "gaussian");
+    EXPECT_EQ(m["size"], nlohmann::json({320, 180}));
+    EXPECT_EQ(m["passes_run"], nlohmann::json({"gbuffer", "ssao", "blur", "composite"}));
+    for (auto& [k, v] : m["nonfinite"].items()) EXPECT_EQ(v, 0) << k;
+    for (const char* p : {"gbuffer", "ssao", "blur", "composite"}) EXPECT_GE(m["gpu_ms"][p].get<double>(), 0.0) << p;
+    EXPECT_FALSE(m["gl_renderer"].get<std::string>().empty());
+    const double mn = m["ao"]["min"], mean = m["ao"]["mean"], mx = m["ao"]["max"];
+    EXPECT_LE(0.0, mn);
+    EXPECT_LE(mn, mean);
+    EXPECT_LE(mean, mx);
+    EXPECT_LE(mx, 1.0);
+}
+
+TEST(Cli, EveryThirdPartySceneRendersWithItsOwnCamera) {
+    int n = 0;
+    for (auto& dir : std::filesystem::directory_iterator(SSAOLAB_SCENES_DIR)) {
+        if (!dir.is_directory()) continue;
+        for (auto& f : std::filesystem::directory_iterator(dir.path())) {
+            if (f.path().extension() != ".gltf") continue;
+            const std::string name = f.path().stem().string();
+            const std::string out = outDir(name);
+            // A radius of ~1/50 of each scene's size keeps AO meaningful for metres and millimetres.
+            CliRun r = ssaolab("render --scene '" + f.path().string() + "' --size 256x144 --timing-frames 1 --out " + out);
+            ASSERT_EQ(r.exitCode, 0) << name << ": " << r.err;
+            auto m = nlohmann::json::parse(slurp(out + "/metrics.json"));
+            // The file's first camera when it has one, else a view framing the bounds.
+            const bool hasCamera = nlohmann::json::parse(slurp(f.path().string())).contains("cameras");
+            EXPECT_EQ(m["camera"]["source"], hasCamera ? "file" : "framed") << name;
+            for (auto& [k, v] : m["nonfinite"].items()) EXPECT_EQ(v, 0) << name << " " << k;
+            EXPECT_GT(m["geometry_pixels"].get<long>(), 256 * 144 / 100) << name << " is barely visible";
+            EXPECT_GE(m["ao"]["min"].get<double>(), 0.0) << name;
+            EXPECT_LE(m["ao"]["max"].get<double>(), 1.0) << name;
+            ++n;
+        }
+    }
+    EXPECT_GE(n, 8);
+}
+
+TEST(Cli, BadInputGivesOneClearLineAndExitCodeOne) {
+    const std::string out = " --out " + outDir("bad");
+    expectCleanFailure(ssaolab("render --scene /nonexistent/missing.gltf" + out), "scene file not found: /nonexistent/missing.gltf");
+    expectCleanFailure(ssaolab("render --scene " + tmpFile("corrupt.gltf", "{ \"asset\": [ broken") + out), "cannot load glTF");
+    expectCleanFailure(ssaolab("render --scene builtin:nope" + out), "unknown built-in scene");
+    expectCleanFailure(ssaolab("render --preset " + tmpFile("bad.json", "{ not json") + out), "is not valid JSON");
+    expectCleanFailure(ssaolab("render --preset /nonexistent.json" + out), "preset file not found");
+    expectCleanFailure(ssaolab("render --preset " + tmpFile("unk.json", R"({"ssao":{"radiu":1}})") + out), "unknown key 'ssao.radiu'");
+    expectCleanFailure(ssaolab("render --set ssao.bogus=1" + out), "unknown parameter 'ssao.bogus'");
+    expectCleanFailure(ssaolab("render --set ssao.radius=-0.5" + out), "ssao.radius: value -0.5 is out of range");
+    expectCleanFailure(ssaolab("render --set ssao.samples=100000" + out), "ssao.samples");
+    expectCleanFailure(ssaolab("render --size 0x0" + out), "--size '0x0'");
+    expectCleanFailure(ssaolab("render --size 640" + out), "--size '640'");
+    expectCleanFailure(ssaolab("render --camera 1,2,3" + out), "--camera");
+    expectCleanFailure(ssaolab("render --camera 0,0,0,0,0,0" + out), "eye and target coincide");
+}
+
+TEST(Cli, NoGlIsAClearError) {
+    // Point EGL at a vendor library that does not exist: no platform can give a context.
+    CliRun r = ssaolab("render --size 32x32 --out " + outDir("nogl") + " 2>&1");
+    ASSERT_EQ(r.exitCode, 0) << r.out; // sanity: it works normally
+    std::string env = "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json ";
+    std::string cmd = env + "'" + SSAOLAB_BINARY + "' render --size 32x32 --out " + outDir("nogl") + " 2>" +
+                      SSAOLAB_TEST_TMP + "/nogl.err";
+    int status = std::system(cmd.c_str());
+    EXPECT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 1);
+    std::string err = slurp(std::string(SSAOLAB_TEST_TMP) + "/nogl.err");
+    EXPECT_NE(err.find("no GL"), std::string::npos) << err;
+}

@@ -1,0 +1,80 @@
+#include "gl_fixture.h"
+
+#include "scene/scene.h"
+
+#include <cmath>
+#include <memory>
+
+namespace ssaotest {
+
+namespace {
+class GlEnvironment : public ::testing::Environment {
+  public:
+    void SetUp() override {
+        context_ = std::make_unique<ssao::gl::HeadlessContext>();
+        ssao::gl::installDebugOutput(false);
+        std::printf("GL renderer: %s via %s\n", context_->renderer().c_str(), context_->platform().c_str());
+    }
+    void TearDown() override { context_.reset(); }
+
+  private:
+    std::unique_ptr<ssao::gl::HeadlessContext> context_;
+};
+const auto* const kEnv = ::testing::AddGlobalTestEnvironment(new GlEnvironment);
+} // namespace
+
+void GlTest::SetUp() { ssao::gl::resetGlErrorCount(); }
+
+void GlTest::TearDown() {
+    ssao::gl::pollGlErrors();
+    EXPECT_EQ(ssao::gl::glErrorCount(), 0) << "OpenGL reported errors during the test";
+}
+
+ssao::Settings preset(const std::string& name) {
+    return ssao::loadPreset(std::string(SSAOLAB_ASSET_DIR) + "/presets/" + name + ".json");
+}
+
+ssao::Camera sceneCamera(const ssao::Scene& s) {
+    ssao::Camera c = s.camera.value_or(ssao::frameBounds(s.bounds));
+    if (c.farZ <= c.nearZ) c.farZ = c.nearZ + 4.0f * (glm::length(c.eye - s.bounds.center()) + s.bounds.radius());
+    return c;
+}
+
+Rendered readAll(ssao::Renderer& r) {
+    Rendered out;
+    out.position = ssao::readBack(r.gbuffer().position(), 4);
+    out.normal = ssao::readBack(r.gbuffer().normal(), 3);
+    out.depth = ssao::readBack(r.gbuffer().linearDepth(), 1);
+    out.aoRaw = ssao::readBack(r.ssao().aoRaw(), 1);
+    out.ao = ssao::readBack(r.blur().ao(), 1);
+    out.camera = r.camera();
+    return out;
+}
+
+Rendered render(const std::string& sceneSpec, const ssao::Settings& s, int w, int h, std::optional<ssao::Camera> camera) {
+    ssao::Scene scene = ssao::loadScene(sceneSpec);
+    ssao::Renderer r(SSAOLAB_SHADER_DIR);
+    r.setSize(w, h);
+    r.setScene(scene);
+    r.setCamera(camera.value_or(sceneCamera(scene)));
+    r.setSettings(s);
+    ssao::FrameReport rep = r.render();
+    Rendered out = readAll(r);
+    out.report = rep;
+    return out;
+}
+
+::testing::AssertionResult finiteInRange(const ssao::Image& img, float lo, float hi) {
+    long bad = 0, out = 0;
+    float mn = INFINITY, mx = -INFINITY;
+    for (float v : img.data) {
+        if (!std::isfinite(v)) ++bad;
+        else if (v < lo || v > hi) ++out;
+        if (std::isfinite(v)) mn = std::min(mn, v), mx = std::max(mx, v);
+    }
+    if (bad == 0 && out == 0) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << bad << " non-finite and " << out << " out-of-range values (min " << mn
+                                         << ", max " << mx << ")";
+}
+
+} // namespace ssaotest

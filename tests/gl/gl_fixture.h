@@ -1,0 +1,38 @@
+// GL test support: one headless context per test binary (llvmpipe in CI — never skipped), and
+// a helper that renders a scene and reads every buffer back.
+#pragma once
+#include "gl/context.h"
+#include "output/image.h"
+#include "renderer.h"
+#include "settings/params.h"
+
+#include <gtest/gtest.h>
+
+#include <optional>
+#include <string>
+
+namespace ssaotest {
+
+struct Rendered {
+    ssao::Image position, normal, depth, aoRaw, ao;
+    ssao::FrameReport report;
+    ssao::Camera camera;
+};
+
+// Fails the test (gtest) on any GL error raised during the test.
+class GlTest : public ::testing::Test {
+  protected:
+    void SetUp() override;
+    void TearDown() override;
+};
+
+ssao::Settings preset(const std::string& name);
+ssao::Camera sceneCamera(const ssao::Scene& s);
+Rendered readAll(ssao::Renderer& r);
+Rendered render(const std::string& scene, const ssao::Settings& s, int w, int h,
+                std::optional<ssao::Camera> camera = std::nullopt);
+
+// Checks a float image: no NaN/inf anywhere and every value in [lo, hi].
+::testing::AssertionResult finiteInRange(const ssao::Image& img, float lo, float hi);
+
+} // namespace ssaotest

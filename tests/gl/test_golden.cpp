@@ -1,0 +1,49 @@
+// Golden images of the seed presets on the showcase scene, compared with a tolerance.
+// Regenerate with SSAOLAB_UPDATE_GOLDEN=1 (and look at the images before committing them).
+#include "gl_fixture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+using namespace ssao;
+using namespace ssaotest;
+
+namespace {
+class Golden : public GlTest, public ::testing::WithParamInterface<const char*> {};
+}
+
+TEST_P(Golden, SeedPresetOnShowcaseMatchesGolden) {
+    const std::string name = GetParam();
+    Rendered r = render("builtin:showcase", preset(name), 320, 180);
+    const std::string path = std::string(SSAOLAB_ASSET_DIR) + "/golden/showcase_" + name + "_ao.png";
+    if (std::getenv("SSAOLAB_UPDATE_GOLDEN")) {
+        std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+        writePng(r.ao, path);
+        GTEST_SKIP() << "golden written: " << path;
+    }
+    ASSERT_TRUE(std::filesystem::exists(path)) << "missing golden " << path;
+    Image golden = readPng(path);
+    ASSERT_EQ(golden.width, r.ao.width);
+    ASSERT_EQ(golden.height, r.ao.height);
+    double sum = 0;
+    long big = 0;
+    for (size_t i = 0; i < r.ao.data.size(); ++i) {
+        double d = std::abs(std::clamp(r.ao.data[i], 0.0f, 1.0f) - golden.data[i * size_t(golden.channels)]);
+        sum += d;
+        big += d > 0.05;
+    }
+    const double mean = sum / double(r.ao.data.size());
+    EXPECT_LT(mean, 0.004) << name;
+    EXPECT_LT(double(big) / double(r.ao.data.size()), 0.005) << name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, Golden,
+                         ::testing::Values("learnopengl", "seed000", "crytek-sphere", "seed001", "seed003",
+                                           "seed003-separable"),
+                         [](const auto& info) {
+                             std::string n = info.param;
+                             for (auto& c : n) if (c == '-') c = '_';
+                             return n;
+                         });

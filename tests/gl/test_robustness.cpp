@@ -1,0 +1,86 @@
+// The numerical traps of SSAO (research-accuracy.md §4), each provoked on purpose.
+#include "gl_fixture.h"
+
+#include <cmath>
+
+using namespace ssao;
+using namespace ssaotest;
+
+namespace {
+class Robustness : public GlTest {};
+}
+
+TEST_F(Robustness, RandomVectorParallelToTheNormalGivesNoNaN) {
+    // Look along the corner's wall: its normal (+z world) becomes view-space ±x, exactly the
+    // fixed rotation vector (1,0,0) used with noise off, so Gram–Schmidt yields a zero tangent.
+    Settings s = defaultSettings();
+    s.ssao.noise = Noise::None;
+    Camera cam{{6.0f, 1.5f, 0.0f}, {-6.0f, 1.0f, 0.0f}, {0, 1, 0}, 60.0f, 0.1f, 50.0f};
+    Rendered r = render("builtin:corner", s, 200, 120, cam);
+    long degenerate = 0;
+    for (int y = 0; y < r.normal.height; ++y)
+        for (int x = 0; x < r.normal.width; ++x)
+            if (r.position.at(x, y, 3) > 0 && std::abs(r.normal.at(x, y, 0)) > 0.999f) ++degenerate;
+    EXPECT_GT(degenerate, 1000) << "the wall must cover many pixels with n parallel to the random vector";
+    EXPECT_TRUE(finiteInRange(r.aoRaw, 0.0f, 1.0f));
+    EXPECT_TRUE(finiteInRange(r.ao, 0.0f, 1.0f));
+}
+
+TEST_F(Robustness, TinyRadiusWithoutBiasGivesNoNaN) {
+    // radius → 0 with equal depths was 0/0 in the seeds' range check.
+    for (const char* range : {"smoothstep", "hard", "off"}) {
+        Settings s = defaultSettings();
+        setParam(s, "ssao.radius", "0.0001");
+        setParam(s, "ssao.bias", "0");
+        setParam(s, "ssao.range_check", range);
+        Rendered r = render("builtin:showcase", s, 160, 90);
+        EXPECT_TRUE(finiteInRange(r.aoRaw, 0.0f, 1.0f)) << range;
+        EXPECT_TRUE(finiteInRange(r.ao, 0.0f, 1.0f)) << range;
+    }
+}
+
+TEST_F(Robustness, SamplesBehindTheCameraAndOffScreenAreGuarded) {
+    // Eye 5 cm from the sphere with a 3 m radius: many samples project behind the eye (w <= 0)
+    // or far off screen, for both off-screen policies.
+    for (const char* off : {"skip", "clamp"}) {
+        Settings s = defaultSettings();
+        setParam(s, "ssao.radius", "3");
+        setParam(s, "ssao.offscreen", off);
+        setParam(s, "ssao.kernel", "sphere");
+        Camera cam{{-1.5f, 0.8f, -1.15f}, {-1.5f, 0.8f, -2.0f}, {0, 1, 0}, 90.0f, 0.01f, 60.0f};
+        Rendered r = render("builtin:showcase", s, 160, 90, cam);
+        EXPECT_TRUE(finiteInRange(r.aoRaw, 0.0f, 1.0f)) << off;
+        EXPECT_TRUE(finiteInRange(r.ao, 0.0f, 1.0f)) << off;
+    }
+}
+
+TEST_F(Robustness, EightBitNormalsAreRenormalised) {
+    Settings a = defaultSettings(), b = defaultSettings();
+    a.ssao.noise = b.ssao.noise = Noise::None;
+    b.gbuffer.normalFormat = TargetFormat::RGBA8;
+    Rendered ra = render("builtin:showcase", a, 160, 90), rb = render("builtin:showcase", b, 160, 90);
+    // The decoded 8-bit normals are within quantisation of the float ones...
+    double maxErr = 0;
+    for (size_t p = 0; p < size_t(160 * 90); ++p) {
+        if (ra.position.data[p * 4 + 3] == 0) continue;
+        glm::vec3 na(ra.normal.data[p * 3], ra.normal.data[p * 3 + 1], ra.normal.data[p * 3 + 2]);
+        glm::vec3 nb(rb.normal.data[p * 3], rb.normal.data[p * 3 + 1], rb.normal.data[p * 3 + 2]);
+        maxErr = std::max(maxErr, double(glm::length(na - (nb * 2.0f - 1.0f))));
+    }
+    EXPECT_LT(maxErr, 0.01);
+    // ...and the AO they produce is nearly the same.
+    double sum = 0;
+    for (size_t i = 0; i < ra.aoRaw.data.size(); ++i) sum += std::abs(ra.aoRaw.data[i] - rb.aoRaw.data[i]);
+    EXPECT_LT(sum / double(ra.aoRaw.data.size()), 0.01);
+}
+
+TEST_F(Robustness, SkyPixelsAreUnoccludedAndCostNothing) {
+    Rendered r = render("builtin:showcase", defaultSettings(), 160, 90);
+    long sky = 0;
+    for (size_t p = 0; p < size_t(160 * 90); ++p)
+        if (r.position.data[p * 4 + 3] == 0) {
+            ++sky;
+            EXPECT_EQ(r.aoRaw.data[p], 1.0f);
+        }
+    EXPECT_GT(sky, 100) << "the showcase view includes some sky";
+}
