@@ -123,8 +123,9 @@ bool g_verbose = false;
 
 void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
                                const GLchar* message, const void*) {
-    (void)source;
     (void)length;
+    // Compile errors are reported (with file:line) by the ShaderLibrary's exception instead.
+    if (source == GL_DEBUG_SOURCE_SHADER_COMPILER && !g_verbose) return;
     const bool isError = type == GL_DEBUG_TYPE_ERROR;
     if (isError) ++g_errors;
     if (isError || severity == GL_DEBUG_SEVERITY_HIGH || g_verbose)

@@ -123,11 +123,11 @@ TEST(Cli, EveryThirdPartySceneRendersWithItsOwnCamera) {
 TEST(Cli, BadInputGivesOneClearLineAndExitCodeOne) {
     const std::string out = " --out " + outDir("bad");
     expectCleanFailure(ssaolab("render --scene /nonexistent/missing.gltf" + out), "scene file not found: /nonexistent/missing.gltf");
-    expectCleanFailure(ssaolab("render --scene " + tmpFile("corrupt.gltf", "{ \"asset\": [ broken") + out), "cannot load glTF");
+    expectCleanFailure(ssaolab("render --scene " + tmpFile("cli_corrupt.gltf", "{ \"asset\": [ broken") + out), "cannot load glTF");
     expectCleanFailure(ssaolab("render --scene builtin:nope" + out), "unknown built-in scene");
-    expectCleanFailure(ssaolab("render --preset " + tmpFile("bad.json", "{ not json") + out), "is not valid JSON");
+    expectCleanFailure(ssaolab("render --preset " + tmpFile("cli_bad.json", "{ not json") + out), "is not valid JSON");
     expectCleanFailure(ssaolab("render --preset /nonexistent.json" + out), "preset file not found");
-    expectCleanFailure(ssaolab("render --preset " + tmpFile("unk.json", R"({"ssao":{"radiu":1}})") + out), "unknown key 'ssao.radiu'");
+    expectCleanFailure(ssaolab("render --preset " + tmpFile("cli_unk.json", R"({"ssao":{"radiu":1}})") + out), "unknown key 'ssao.radiu'");
     expectCleanFailure(ssaolab("render --set ssao.bogus=1" + out), "unknown parameter 'ssao.bogus'");
     expectCleanFailure(ssaolab("render --set ssao.radius=-0.5" + out), "ssao.radius: value -0.5 is out of range");
     expectCleanFailure(ssaolab("render --set ssao.samples=100000" + out), "ssao.samples");

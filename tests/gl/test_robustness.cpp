@@ -2,6 +2,10 @@
 #include "gl_fixture.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "util/error.h"
 
 using namespace ssao;
 using namespace ssaotest;
@@ -83,4 +87,23 @@ TEST_F(Robustness, SkyPixelsAreUnoccludedAndCostNothing) {
             EXPECT_EQ(r.aoRaw.data[p], 1.0f);
         }
     EXPECT_GT(sky, 100) << "the showcase view includes some sky";
+}
+
+TEST_F(Robustness, ShaderCompileErrorsNameFileAndLine) {
+    const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/broken_shaders";
+    std::filesystem::create_directories(dir + "/include");
+    std::ofstream(dir + "/include/util.glsl") << "float ok() { return 1.0; }\nfloat bad() { return undefined_symbol; }\n";
+    std::ofstream(dir + "/main.frag") << "#version 450 core\n#include \"include/util.glsl\"\nout vec4 c;\nvoid main() { c = vec4(ok()); }\n";
+    std::ofstream(dir + "/main.vert") << "#version 450 core\nvoid main() { gl_Position = vec4(0.0); }\n";
+    gl::ShaderLibrary lib(dir);
+    try {
+        lib.program("main.vert", "main.frag");
+        FAIL() << "compile should fail";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("shaders/include/util.glsl:2"), std::string::npos) << e.what();
+    }
+    // The real shaders compile in every variant the passes use.
+    gl::ShaderLibrary real(SSAOLAB_SHADER_DIR);
+    EXPECT_NE(real.program("passes/gbuffer.vert", "passes/gbuffer.frag", {{"NORMAL_UNORM", "1"}}), 0u);
+    EXPECT_NE(real.program("passes/fullscreen.vert", "passes/ssao.frag"), 0u);
 }
