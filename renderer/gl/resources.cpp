@@ -63,6 +63,13 @@ void Framebuffer::bind() const {
     glViewport(0, 0, w_, h2_);
 }
 
+void RenderTarget::ensure(int width, int height, GLenum internalFormat, const std::string& name) {
+    if (fbo_ && tex_.width() == width && tex_.height() == height && tex_.format() == internalFormat) return;
+    fbo_ = Framebuffer();
+    tex_ = Texture2D(width, height, internalFormat, name);
+    fbo_ = Framebuffer({&tex_}, nullptr, name);
+}
+
 UniformBuffer::UniformBuffer(std::size_t bytes, const std::string& name) : size_(bytes) {
     GLuint id = 0;
     glCreateBuffers(1, &id);

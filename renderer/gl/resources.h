@@ -36,10 +36,24 @@ class Framebuffer {
     Framebuffer(const std::vector<const Texture2D*>& colors, const Texture2D* depth, const std::string& name);
     GLuint id() const { return h_.id(); }
     void bind() const;
+    explicit operator bool() const { return bool(h_); }
 
   private:
     FramebufferHandle h_;
     int w_ = 0, h2_ = 0;
+};
+
+// One colour texture with its framebuffer: the output of a full-screen pass.
+class RenderTarget {
+  public:
+    // (Re)creates the texture and framebuffer when size or format differ from the current ones.
+    void ensure(int width, int height, GLenum internalFormat, const std::string& name);
+    const Texture2D& texture() const { return tex_; }
+    void bind() const { fbo_.bind(); }
+
+  private:
+    Texture2D tex_;
+    Framebuffer fbo_;
 };
 
 class UniformBuffer {

@@ -85,6 +85,14 @@ std::string mapLogToFiles(const std::string& log, const std::vector<std::string>
 
 namespace {
 
+std::string infoLog(GLuint id, bool program) {
+    GLint len = 0;
+    program ? glGetProgramiv(id, GL_INFO_LOG_LENGTH, &len) : glGetShaderiv(id, GL_INFO_LOG_LENGTH, &len);
+    std::string log(size_t(std::max(len, 1)), '\0');
+    program ? glGetProgramInfoLog(id, len, nullptr, log.data()) : glGetShaderInfoLog(id, len, nullptr, log.data());
+    return log.c_str();
+}
+
 ShaderHandle compile(GLenum stage, const std::string& dir, const std::string& file, const Defines& defines) {
     std::vector<std::string> files;
     std::string src = preprocessShader(dir, file, defines, files);
@@ -94,13 +102,7 @@ ShaderHandle compile(GLenum stage, const std::string& dir, const std::string& fi
     glCompileShader(sh.id());
     GLint ok = 0;
     glGetShaderiv(sh.id(), GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        GLint len = 0;
-        glGetShaderiv(sh.id(), GL_INFO_LOG_LENGTH, &len);
-        std::string log(size_t(std::max(len, 1)), '\0');
-        glGetShaderInfoLog(sh.id(), len, nullptr, log.data());
-        throw Error("shader compile failed: " + mapLogToFiles(log.c_str(), files));
-    }
+    if (!ok) throw Error("shader compile failed: " + mapLogToFiles(infoLog(sh.id(), false), files));
     return sh;
 }
 
@@ -122,13 +124,7 @@ GLuint ShaderLibrary::program(const std::string& vert, const std::string& frag, 
     glLinkProgram(prog.id());
     GLint ok = 0;
     glGetProgramiv(prog.id(), GL_LINK_STATUS, &ok);
-    if (!ok) {
-        GLint len = 0;
-        glGetProgramiv(prog.id(), GL_INFO_LOG_LENGTH, &len);
-        std::string log(size_t(std::max(len, 1)), '\0');
-        glGetProgramInfoLog(prog.id(), len, nullptr, log.data());
-        throw Error("shader link failed (" + vert + " + " + frag + "): " + log.c_str());
-    }
+    if (!ok) throw Error("shader link failed (" + vert + " + " + frag + "): " + infoLog(prog.id(), true));
     label(GL_PROGRAM, prog.id(), frag);
     GLuint id = prog.id();
     cache_.emplace(key, std::move(prog));

@@ -2,8 +2,6 @@
 #pragma once
 #include "passes/ssao_pass.h"
 
-#include <memory>
-
 namespace ssao {
 
 class BlurPass final : public Pass {
@@ -14,12 +12,11 @@ class BlurPass final : public Pass {
     std::vector<const Pass*> inputs() const override { return {&ssao_}; }
     void run(const FrameInputs& in) override;
 
-    const gl::Texture2D& ao() const { return out_; }
+    const gl::Texture2D& ao() const { return out_.texture(); }
 
   private:
     const SsaoPass& ssao_;
-    gl::Texture2D tmp_, out_;
-    std::unique_ptr<gl::Framebuffer> fboTmp_, fboOut_;
+    gl::RenderTarget tmp_, out_;
     gl::UniformBuffer ubo_[2];
 };
 

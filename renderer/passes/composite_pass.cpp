@@ -5,11 +5,7 @@
 namespace ssao {
 
 void CompositePass::run(const FrameInputs& in) {
-    if (!fbo_ || color_.width() != in.width || color_.height() != in.height) {
-        fbo_.reset();
-        color_ = gl::Texture2D(in.width, in.height, GL_RGBA8, "composite");
-        fbo_ = std::make_unique<gl::Framebuffer>(std::vector<const gl::Texture2D*>{&color_}, nullptr, "composite");
-    }
+    target_.ensure(in.width, in.height, GL_RGBA8, "composite");
     gl::Defines defs;
     if (in.settings.gbuffer.normalFormat == TargetFormat::RGBA8) defs.push_back({"NORMAL_UNORM", "1"});
     GLuint prog = in.shaders.program("passes/fullscreen.vert", "passes/composite.frag", defs);
@@ -19,7 +15,7 @@ void CompositePass::run(const FrameInputs& in) {
     gbuffer_.normal().bind(SSAO_TEX_NORMAL);
     gbuffer_.albedo().bind(SSAO_TEX_ALBEDO);
     blur_.ao().bind(SSAO_TEX_AO);
-    fbo_->bind();
+    target_.bind();
     in.triangle.draw();
 }
 

@@ -2,8 +2,6 @@
 #pragma once
 #include "passes/blur_pass.h"
 
-#include <memory>
-
 namespace ssao {
 
 class CompositePass final : public Pass {
@@ -14,13 +12,12 @@ class CompositePass final : public Pass {
     std::vector<const Pass*> inputs() const override { return {&gbuffer_, &blur_}; }
     void run(const FrameInputs& in) override;
 
-    const gl::Texture2D& color() const { return color_; }
+    const gl::Texture2D& color() const { return target_.texture(); }
 
   private:
     const GBufferPass& gbuffer_;
     const BlurPass& blur_;
-    gl::Texture2D color_;
-    std::unique_ptr<gl::Framebuffer> fbo_;
+    gl::RenderTarget target_;
 };
 
 } // namespace ssao

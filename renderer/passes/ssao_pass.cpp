@@ -6,11 +6,7 @@
 namespace ssao {
 
 void SsaoPass::run(const FrameInputs& in) {
-    if (!fbo_ || ao_.width() != in.width || ao_.height() != in.height) {
-        fbo_.reset();
-        ao_ = gl::Texture2D(in.width, in.height, GL_R32F, "ssao.ao_raw");
-        fbo_ = std::make_unique<gl::Framebuffer>(std::vector<const gl::Texture2D*>{&ao_}, nullptr, "ssao");
-    }
+    target_.ensure(in.width, in.height, GL_R32F, "ssao.ao_raw");
     if (!ubo_) ubo_ = gl::UniformBuffer(sizeof(gpu::SsaoConstants), "ssao.constants");
     if (noiseSeed_ != in.settings.ssao.seed) {
         // 4x4 tile of rotation vectors (seed 000), REPEAT-wrapped across the screen.
@@ -29,7 +25,7 @@ void SsaoPass::run(const FrameInputs& in) {
     gbuffer_.normal().bind(SSAO_TEX_NORMAL);
     gbuffer_.depth().bind(SSAO_TEX_DEPTH);
     noise_.bind(SSAO_TEX_NOISE);
-    fbo_->bind();
+    target_.bind();
     glUseProgram(in.shaders.program("passes/fullscreen.vert", "passes/ssao.frag"));
     in.triangle.draw();
 }

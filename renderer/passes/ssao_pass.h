@@ -3,8 +3,6 @@
 #pragma once
 #include "passes/gbuffer_pass.h"
 
-#include <memory>
-
 namespace ssao {
 
 class SsaoPass final : public Pass {
@@ -15,12 +13,12 @@ class SsaoPass final : public Pass {
     std::vector<const Pass*> inputs() const override { return {&gbuffer_}; }
     void run(const FrameInputs& in) override;
 
-    const gl::Texture2D& aoRaw() const { return ao_; }
+    const gl::Texture2D& aoRaw() const { return target_.texture(); }
 
   private:
     const GBufferPass& gbuffer_;
-    gl::Texture2D ao_, noise_;
-    std::unique_ptr<gl::Framebuffer> fbo_;
+    gl::RenderTarget target_;
+    gl::Texture2D noise_;
     gl::UniformBuffer ubo_;
     int noiseSeed_ = -1;
 };
