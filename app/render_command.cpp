@@ -3,6 +3,7 @@
 #include "gl/context.h"
 #include "output/report.h"
 #include "settings/params.h"
+#include "settings/preset.h"
 #include "util/error.h"
 
 #include <CLI/CLI.hpp>
@@ -49,7 +50,10 @@ int runRender(const RenderOptions& o) {
     // Validate everything that needs no GL first, so bad input fails fast with one line.
     int w = 0, h = 0;
     parseSize(o.size, w, h);
-    Settings settings = o.preset.empty() ? defaultSettings() : loadPreset(resolvePreset(o.preset));
+    Preset preset;
+    preset.settings = defaultSettings();
+    if (!o.preset.empty()) preset = readPresetFile(resolvePreset(o.preset));
+    Settings settings = preset.settings;
     for (const auto& a : o.sets) applyAssignment(settings, a);
     Scene scene = loadScene(o.scene);
 
@@ -60,13 +64,12 @@ int runRender(const RenderOptions& o) {
     if (!o.camera.empty()) {
         cam = parseCamera(o.camera, scene.camera.value_or(frameBounds(scene.bounds)));
         info.cameraSource = "--camera";
+    } else if (preset.camera) { // the preset's camera bookmark
+        cam = *preset.camera;
+        info.cameraSource = "preset";
     } else if (scene.camera) {
         cam = *scene.camera;
         info.cameraSource = o.scene.rfind("builtin:", 0) == 0 ? "builtin" : "file";
-        if (cam.farZ <= cam.nearZ) { // glTF infinite projection: far from the scene bounds
-            float d = glm::length(cam.eye - scene.bounds.center()) + scene.bounds.radius();
-            cam.farZ = std::max(d * 1.5f, cam.nearZ * 10.0f);
-        }
     } else {
         cam = frameBounds(scene.bounds);
         info.cameraSource = "framed";

@@ -225,13 +225,27 @@ Scene loadGltf(const std::string& path) {
             const auto& mesh = model.meshes[n.mesh];
             for (const auto& p : mesh.primitives) appendPrimitive(model, p, world, s, "glTF mesh '" + mesh.name + "'");
         }
-        if (n.camera >= 0 && n.camera < int(model.cameras.size()) && !s.camera) s.camera = cameraFromNode(model, n, world);
+        if (n.camera >= 0 && n.camera < int(model.cameras.size())) {
+            if (auto cam = cameraFromNode(model, n, world)) {
+                std::string name = !n.name.empty() ? n.name : model.cameras[n.camera].name;
+                s.cameras.emplace_back(name.empty() ? "camera " + std::to_string(s.cameras.size()) : name, *cam);
+                if (!s.camera) s.camera = cam;
+            }
+        }
         for (int c : n.children) visit(c, world, depth + 1);
     };
     for (int r : roots) visit(r, glm::mat4(1.0f), 0);
     if (s.indices.empty()) throw Error("glTF " + path + " has no triangles to render");
     s.computeBounds();
     if (!s.bounds.valid() || !std::isfinite(s.bounds.radius())) throw Error("glTF " + path + " has non-finite positions");
+    // Infinite projections (no zfar): put the far plane safely behind the whole scene.
+    auto fixFar = [&](Camera& c) {
+        if (c.farZ > c.nearZ) return;
+        float d = glm::length(c.eye - s.bounds.center()) + s.bounds.radius();
+        c.farZ = std::max(d * 1.5f, c.nearZ * 10.0f);
+    };
+    if (s.camera) fixFar(*s.camera);
+    for (auto& [name, c] : s.cameras) fixFar(c);
     return s;
 }
 

@@ -42,6 +42,7 @@ struct Scene {
     std::vector<Draw> draws;
     Bounds bounds;
     std::optional<Camera> camera; // the file's first camera, or a built-in scene's designed view
+    std::vector<std::pair<std::string, Camera>> cameras; // every perspective camera of the file, named
 
     size_t triangleCount() const { return indices.size() / 3; }
     void computeBounds();

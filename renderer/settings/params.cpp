@@ -1,5 +1,7 @@
 #include "settings/params.h"
 
+#include "settings/preset.h"
+
 #include "util/error.h"
 
 #include <nlohmann/json.hpp>
@@ -204,7 +206,7 @@ nlohmann::json toJson(const Settings& s) {
 void applyJson(Settings& s, const nlohmann::json& patch, const std::string& origin) {
     if (!patch.is_object()) throw Error(origin + ": a preset must be a JSON object");
     for (auto& [group, members] : patch.items()) {
-        if (group == "name" || group == "description") continue;
+        if (group == "name" || group == "description" || group == "camera") continue; // preset metadata
         if (!members.is_object()) throw Error(origin + ": '" + group + "' must be an object of parameters");
         for (auto& [name, value] : members.items()) {
             const std::string key = group + "." + name;
@@ -231,20 +233,7 @@ void applyJson(Settings& s, const nlohmann::json& patch, const std::string& orig
     }
 }
 
-Settings loadPreset(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw Error("preset file not found: " + path);
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::parse_error& e) {
-        std::string what = e.what();
-        throw Error("preset " + path + " is not valid JSON (" + what.substr(what.find("parse error")) + ")");
-    }
-    Settings s = defaultSettings();
-    applyJson(s, j, "preset " + path);
-    return s;
-}
+Settings loadPreset(const std::string& path) { return readPresetFile(path).settings; }
 
 bool operator==(const Settings& a, const Settings& b) {
     for (const auto& p : paramTable())

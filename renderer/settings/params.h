@@ -45,7 +45,8 @@ void applyAssignment(Settings& s, const std::string& assignment);
 // JSON: {"ssao": {"radius": 0.5, ...}, ...}. Presets are patches over defaults; toJson
 // writes every key, so write → read round-trips exactly.
 nlohmann::json toJson(const Settings& s);
-// Applies a patch; "name" and "description" at top level are metadata and ignored.
+// Applies a patch; "name", "description" and "camera" at top level are preset metadata (see
+// settings/preset.h) and ignored here.
 void applyJson(Settings& s, const nlohmann::json& patch, const std::string& origin);
 Settings loadPreset(const std::string& path); // defaults + the file's patch
 

@@ -35,9 +35,7 @@ ssao::Settings preset(const std::string& name) {
 }
 
 ssao::Camera sceneCamera(const ssao::Scene& s) {
-    ssao::Camera c = s.camera.value_or(ssao::frameBounds(s.bounds));
-    if (c.farZ <= c.nearZ) c.farZ = c.nearZ + 4.0f * (glm::length(c.eye - s.bounds.center()) + s.bounds.radius());
-    return c;
+    return s.camera.value_or(ssao::frameBounds(s.bounds));
 }
 
 Rendered readAll(ssao::Renderer& r) {
