@@ -1,5 +1,7 @@
-// ssaolab command line: `render` (headless), `params` (the parameter table).
+// ssaolab command line: `view` (window), `render` (headless), `params` (the parameter table).
+// Without a subcommand: the window when there is a display, else a headless render into out/.
 #include "render_command.h"
+#include "view/window_app.h"
 #include "scene/builtin_scenes.h"
 #include "settings/params.h"
 #include "util/error.h"
@@ -31,12 +33,23 @@ void printParams() {
 
 int main(int argc, char** argv) {
     CLI::App app{"ssaolab — explore screen-space ambient occlusion: every parameter, every buffer, measured.\n"
-                 "Without a subcommand it renders the default scene headless into ./out/."};
+                 "Without a subcommand it opens the window (or, with no display, renders the default scene\n"
+                 "headless into ./out/)."};
     app.require_subcommand(0, 1);
     ssao::RenderOptions ro;
     CLI::App* render = app.add_subcommand("render", "render a scene headless (EGL) into EXR/PNG buffers and metrics.json");
     ssao::addRenderOptions(*render, ro);
     app.add_subcommand("params", "list every parameter: key, default, unit, range, help");
+    ssao::WindowOptions wo;
+    std::string windowSize = "1600x900";
+    CLI::App* view = app.add_subcommand("view", "open the interactive explorer window (GLFW + Dear ImGui)");
+    view->add_option("--scene", wo.app.scene, "builtin:NAME or a .gltf/.glb file")->capture_default_str();
+    view->add_option("--preset", wo.app.preset, "preset name or JSON file");
+    view->add_option("--shaders", wo.app.shaderDir, "shader folder (edits are hot-reloaded)");
+    view->add_option("--preset-dir", wo.app.userPresetDir, "folder for saved presets (default $XDG_CONFIG_HOME/ssaolab/presets)");
+    view->add_option("--size", windowSize, "window size WIDTHxHEIGHT")->capture_default_str();
+    view->add_option("--frames", wo.frames, "draw N frames then exit (for tests and screenshots)")->check(CLI::Range(0, 1000000));
+    view->add_option("--screenshot", wo.screenshot, "with --frames: save the last frame as PNG");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -47,8 +60,14 @@ int main(int argc, char** argv) {
             printParams();
             return 0;
         }
-        if (!app.got_subcommand("render") && std::getenv("DISPLAY"))
-            std::fprintf(stderr, "ssaolab: the window app is not built yet; rendering headless into %s/\n", ro.out.c_str());
+        if (app.got_subcommand("view") || (!app.got_subcommand("render") && ssao::haveDisplay())) {
+            if (std::sscanf(windowSize.c_str(), "%dx%d", &wo.width, &wo.height) != 2 || wo.width <= 0 || wo.height <= 0)
+                throw ssao::Error("--size '" + windowSize + "': expected WIDTHxHEIGHT");
+            return ssao::runWindowApp(wo);
+        }
+        if (!app.got_subcommand("render"))
+            std::printf("no display: rendering headless into %s/ (for the window run `xvfb-run -a ssaolab` or set DISPLAY)\n",
+                        ro.out.c_str());
         return ssao::runRender(ro);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "ssaolab: error: %s\n", e.what());

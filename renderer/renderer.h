@@ -46,6 +46,10 @@ class Renderer {
     const BlurPass& blur() const { return blur_; }
     const CompositePass& composite() const { return composite_; }
     gl::ShaderLibrary& shaders() { return shaders_; }
+    void drawFullscreen() const { triangle_.draw(); }
+    // Version of the scene uploaded last (bumped by setScene).
+    unsigned sceneVersion() const { return sceneVersion_; }
+    float sceneRadius() const { return scene_ ? scene_->radius() : 1.0f; }
 
   private:
     std::string keyFor(const Pass& p) const;

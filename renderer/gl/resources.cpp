@@ -38,6 +38,15 @@ std::vector<float> Texture2D::readFloats(int components) const {
     return out;
 }
 
+glm::vec4 Texture2D::readTexel(int x, int yFromTop) const {
+    glm::vec4 v(0.0f);
+    if (x < 0 || yFromTop < 0 || x >= w_ || yFromTop >= h_) return v;
+    const bool depth = fmt_ == GL_DEPTH_COMPONENT32F || fmt_ == GL_DEPTH_COMPONENT24;
+    glGetTextureSubImage(id(), 0, x, h_ - 1 - yFromTop, 0, 1, 1, 1, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT,
+                         depth ? sizeof(float) : sizeof v, &v);
+    return v;
+}
+
 Framebuffer::Framebuffer(const std::vector<const Texture2D*>& colors, const Texture2D* depth,
                          const std::string& name) {
     GLuint id = 0;

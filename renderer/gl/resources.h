@@ -2,6 +2,8 @@
 #pragma once
 #include "gl/handle.h"
 
+#include <glm/glm.hpp>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -22,6 +24,8 @@ class Texture2D {
     void bind(GLuint unit) const { glBindTextureUnit(unit, id()); }
     // Reads the texture back as `components` floats per texel, rows bottom-to-top (GL order).
     std::vector<float> readFloats(int components) const;
+    // One texel (x from the left, y from the top of the image) as RGBA floats.
+    glm::vec4 readTexel(int x, int yFromTop) const;
 
   private:
     TextureHandle h_id_;

@@ -110,14 +110,10 @@ ShaderHandle compile(GLenum stage, const std::string& dir, const std::string& fi
 
 ShaderLibrary::ShaderLibrary(std::string shaderDir) : dir_(std::move(shaderDir)) {}
 
-GLuint ShaderLibrary::program(const std::string& vert, const std::string& frag, const Defines& defines) {
-    std::string key = vert + "|" + frag;
-    for (auto& [k, v] : defines) key += "|" + k + "=" + v;
-    auto it = cache_.find(key);
-    if (it != cache_.end()) return it->second.id();
-
-    ShaderHandle vs = compile(GL_VERTEX_SHADER, dir_, vert, defines);
-    ShaderHandle fs = compile(GL_FRAGMENT_SHADER, dir_, frag, defines);
+ProgramHandle ShaderLibrary::build(const std::string& dir, const std::string& vert, const std::string& frag,
+                                  const Defines& defines) {
+    ShaderHandle vs = compile(GL_VERTEX_SHADER, dir, vert, defines);
+    ShaderHandle fs = compile(GL_FRAGMENT_SHADER, dir, frag, defines);
     ProgramHandle prog(glCreateProgram());
     glAttachShader(prog.id(), vs.id());
     glAttachShader(prog.id(), fs.id());
@@ -126,9 +122,33 @@ GLuint ShaderLibrary::program(const std::string& vert, const std::string& frag, 
     glGetProgramiv(prog.id(), GL_LINK_STATUS, &ok);
     if (!ok) throw Error("shader link failed (" + vert + " + " + frag + "): " + infoLog(prog.id(), true));
     label(GL_PROGRAM, prog.id(), frag);
-    GLuint id = prog.id();
-    cache_.emplace(key, std::move(prog));
+    return prog;
+}
+
+GLuint ShaderLibrary::program(const std::string& vert, const std::string& frag, const Defines& defines) {
+    std::string key = vert + "|" + frag;
+    for (auto& [k, v] : defines) key += "|" + k + "=" + v;
+    auto it = cache_.find(key);
+    if (it != cache_.end()) return it->second.program.id();
+    Entry e{build(dir_, vert, frag, defines), vert, frag, defines};
+    GLuint id = e.program.id();
+    cache_.emplace(key, std::move(e));
     return id;
+}
+
+void ShaderLibrary::reload() {
+    std::map<std::string, Entry> fresh;
+    for (auto& [key, e] : cache_) fresh.emplace(key, Entry{build(dir_, e.vert, e.frag, e.defines), e.vert, e.frag, e.defines});
+    cache_.swap(fresh); // only reached when every program compiled and linked
+}
+
+std::filesystem::file_time_type ShaderLibrary::newestSourceTime() const {
+    std::filesystem::file_time_type newest{};
+    std::error_code ec;
+    for (auto it = std::filesystem::recursive_directory_iterator(dir_, ec); !ec && it != std::filesystem::end(it);
+         it.increment(ec))
+        if (it->is_regular_file(ec)) newest = std::max(newest, it->last_write_time(ec));
+    return newest;
 }
 
 } // namespace ssao::gl

@@ -5,6 +5,7 @@
 #pragma once
 #include "gl/handle.h"
 
+#include <filesystem>
 #include <map>
 #include <string>
 #include <utility>
@@ -30,9 +31,22 @@ class ShaderLibrary {
     const std::string& dir() const { return dir_; }
     void clear() { cache_.clear(); }
 
+    // Hot reload: recompiles every cached program from disk, all or nothing. On a compile error
+    // the previous programs stay in use and the error (with file:line) is thrown.
+    void reload();
+    // Newest modification time of any file under the shader folder (cheap: a few files).
+    std::filesystem::file_time_type newestSourceTime() const;
+
   private:
+    struct Entry {
+        ProgramHandle program;
+        std::string vert, frag;
+        Defines defines;
+    };
+    static ProgramHandle build(const std::string& dir, const std::string& vert, const std::string& frag,
+                               const Defines& defines);
     std::string dir_;
-    std::map<std::string, ProgramHandle> cache_;
+    std::map<std::string, Entry> cache_;
 };
 
 } // namespace ssao::gl

@@ -11,6 +11,7 @@ void CompositePass::run(const FrameInputs& in) {
     GLuint prog = in.shaders.program("passes/fullscreen.vert", "passes/composite.frag", defs);
     glUseProgram(prog);
     glProgramUniform2f(prog, 0, in.settings.composite.ambient, in.settings.composite.light);
+    glProgramUniform1f(prog, 1, in.settings.composite.useAo ? 1.0f : 0.0f);
     gbuffer_.position().bind(SSAO_TEX_POSITION);
     gbuffer_.normal().bind(SSAO_TEX_NORMAL);
     gbuffer_.albedo().bind(SSAO_TEX_ALBEDO);

@@ -95,6 +95,8 @@ std::vector<Param> buildTable() {
                 "Ambient term strength: ambient * albedo * AO (seed 004 uses 0.1 with a bright light)."),
         FLOAT_P("composite.light", "Light", composite.light, 1.0, 0.0, 10.0, "",
                 "Intensity of the one point light at the camera (0 shows ambient * AO only)."),
+        BOOL_P("composite.ao", "Apply AO", composite.useAo, 1,
+               "Multiply the ambient term by AO; off shows the same frame without SSAO."),
     };
 }
 
@@ -147,6 +149,11 @@ std::string Param::format(double v) const {
     case T::Float: std::snprintf(buf, sizeof buf, "%g", shortFloat(v)); return buf;
     }
     return {};
+}
+
+bool Param::isDefault(const Settings& s) const {
+    static const Settings defaults = defaultSettings();
+    return get(s) == get(defaults);
 }
 
 const std::vector<Param>& paramTable() {

@@ -28,6 +28,8 @@ struct Param {
     std::string name() const { return key.substr(key.find('.') + 1); }
     // Text form of a value ("0.5", "true", "hemisphere").
     std::string format(double v) const;
+    // Whether `s` holds this parameter's default (compared at the field's own precision).
+    bool isDefault(const Settings& s) const;
 };
 
 const std::vector<Param>& paramTable();

@@ -44,6 +44,7 @@ struct BlurSettings {
 struct CompositeSettings {
     float ambient = 0.3f;     // ambient strength multiplied by albedo and AO
     float light = 1.0f;       // point-light intensity (0 = AO-only shading)
+    bool useAo = true;        // false: the same image without SSAO (N8AO-style AO on/off compare)
 };
 
 struct Settings {

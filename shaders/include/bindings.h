@@ -11,6 +11,15 @@
 #define SSAO_TEX_NOISE 4      // 4x4 rotation-noise tile
 #define SSAO_TEX_AO 5         // AO input of the blur / composite passes
 #define SSAO_TEX_LINEAR_DEPTH 6 // linear view distance (positive), 0 = sky
+#define SSAO_TEX_VIEW_SOURCE 7  // buffer shown by the debug view pass
+#define SSAO_TEX_VIEW_MASK 8    // geometry mask (position.w) for the debug view pass
+
+// Debug view modes (debug_view.frag)
+#define SSAO_VIEW_COLOR 0     // rgb as is (albedo, composite)
+#define SSAO_VIEW_SIGNED 1    // x * 0.5 + 0.5 (normals)
+#define SSAO_VIEW_POSITION 2  // x * scale + 0.5
+#define SSAO_VIEW_SCALAR 3    // r * scale, grey (depth, AO)
+#define SSAO_VIEW_UNORM_NORMAL 4 // already (n+1)/2
 
 // ---- Uniform buffer bindings ---------------------------------------------------------------
 #define SSAO_UBO_FRAME 0      // FrameConstants

@@ -9,6 +9,7 @@ layout(binding = SSAO_TEX_ALBEDO) uniform sampler2D gAlbedo;
 layout(binding = SSAO_TEX_AO) uniform sampler2D aoIn;
 
 layout(location = 0) uniform vec2 uAmbientLight; // x: ambient strength, y: light intensity
+layout(location = 1) uniform float uUseAo;       // 1: apply AO, 0: AO off (comparison)
 
 in vec2 vUv;
 layout(location = 0) out vec4 oColor;
@@ -25,7 +26,7 @@ void main() {
 #endif
     N = normalize(N);
     vec3 albedo = texture(gAlbedo, vUv).rgb;
-    float ao = texture(aoIn, vUv).r;
+    float ao = mix(1.0, texture(aoIn, vUv).r, uUseAo);
 
     float R = max(frame.clip.z, 1e-6);
     vec3 lightPos = vec3(-0.6, 0.9, 0.3) * R; // view space: above-left of the camera

@@ -1,0 +1,34 @@
+// Orbit (default) and fly navigation, as pure math on a Camera: testable without a window.
+#pragma once
+#include "scene/camera.h"
+
+namespace ssao {
+
+class CameraController {
+  public:
+    enum class Mode { Orbit, Fly };
+
+    // Adopts `c` (e.g. the scene's camera or a bookmark); sceneRadius scales speeds and clip planes.
+    void reset(const Camera& c, float sceneRadius);
+    void setMode(Mode m) { mode_ = m; }
+    Mode mode() const { return mode_; }
+
+    // Mouse drag in pixels. Orbit: rotate around the target; fly: look around.
+    void rotate(float dxPixels, float dyPixels);
+    // Pan the view (target and eye together), in pixels of a viewport `viewportHeight` tall.
+    void pan(float dxPixels, float dyPixels, float viewportHeight);
+    // Scroll: dolly towards the target (orbit) or move forward (fly).
+    void zoom(float steps);
+    // Fly: move along (right, up, forward) by `amount` scene radii.
+    void move(const glm::vec3& rightUpForward, float amount);
+
+    const Camera& camera() const { return cam_; }
+
+  private:
+    void updateClip();
+    Camera cam_;
+    float radius_ = 1.0f;
+    Mode mode_ = Mode::Orbit;
+};
+
+} // namespace ssao

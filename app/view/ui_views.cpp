@@ -1,0 +1,195 @@
+// The main view: a labelled grid of every buffer (click one to enlarge it), a single enlarged
+// buffer with the sample inspector drawn over it, and a split A | B comparison. Dragging orbits
+// (left) or pans (right/middle); the wheel zooms; WASD/QE fly in fly mode.
+#include "view/app_core.h"
+
+#include <cmath>
+
+namespace ssao {
+
+namespace {
+
+ImTextureID texId(const gl::Texture2D& t) { return (ImTextureID)(intptr_t)t.id(); }
+
+// Largest rectangle of the render's aspect that fits `avail`, centred.
+void fit(ImVec2 avail, float aspect, ImVec2& outPos, ImVec2& outSize) {
+    ImVec2 s(avail.x, avail.x / aspect);
+    if (s.y > avail.y) s = ImVec2(avail.y * aspect, avail.y);
+    outPos = ImVec2((avail.x - s.x) * 0.5f, (avail.y - s.y) * 0.5f);
+    outSize = s;
+}
+
+// Camera interaction and hover over an image rectangle; returns true on a click (no drag).
+bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
+    ImGui::SetCursorScreenPos(pos);
+    ImGui::InvisibleButton(id, size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                                         ImGuiButtonFlags_MouseButtonMiddle);
+    const ImGuiIO& io = ImGui::GetIO();
+    CameraController& cc = app.cameraController();
+    bool moved = false;
+    if (ImGui::IsItemActive()) {
+        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f) && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
+            cc.rotate(io.MouseDelta.x, io.MouseDelta.y);
+            moved = true;
+        }
+        if ((ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle)) &&
+            (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
+            cc.pan(io.MouseDelta.x, io.MouseDelta.y, size.y);
+            moved = true;
+        }
+    }
+    if (ImGui::IsItemHovered()) {
+        if (io.MouseWheel != 0) {
+            cc.zoom(io.MouseWheel);
+            moved = true;
+        }
+        if (cc.mode() == CameraController::Mode::Fly) {
+            glm::vec3 m(0.0f);
+            m.z += ImGui::IsKeyDown('W') - ImGui::IsKeyDown('S');
+            m.x += ImGui::IsKeyDown('D') - ImGui::IsKeyDown('A');
+            m.y += ImGui::IsKeyDown('E') - ImGui::IsKeyDown('Q');
+            if (m != glm::vec3(0.0f)) {
+                cc.move(m, 0.6f * io.DeltaTime);
+                moved = true;
+            }
+        }
+        if (!app.pinPixel) {
+            const Renderer& r = app.renderer();
+            const ImVec2 rel((io.MousePos.x - pos.x) / size.x, (io.MousePos.y - pos.y) / size.y);
+            app.hoverPixel = glm::ivec2(std::clamp(int(rel.x * float(r.width())), 0, r.width() - 1),
+                                        std::clamp(int(rel.y * float(r.height())), 0, r.height() - 1));
+        }
+    }
+    if (moved) app.poke();
+    const bool click = ImGui::IsItemDeactivated() && ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).x == 0.0f &&
+                       ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).y == 0.0f;
+    return click;
+}
+
+void label(ImDrawList* dl, ImVec2 pos, const char* text) {
+    const ImVec2 ts = ImGui::CalcTextSize(text);
+    dl->AddRectFilled(pos, ImVec2(pos.x + ts.x + 8, pos.y + ts.y + 4), IM_COL32(0, 0, 0, 170));
+    dl->AddText(ImVec2(pos.x + 4, pos.y + 2), IM_COL32(255, 255, 255, 255), text);
+}
+
+void drawSamples(AppCore& app, ImDrawList* dl, ImVec2 pos, ImVec2 size) {
+    if (!app.showSamples || app.hoverPixel.x < 0) return;
+    const PixelInspection& pi = app.inspection();
+    const Renderer& r = app.renderer();
+    const ImVec2 c(pos.x + (float(app.hoverPixel.x) + 0.5f) / float(r.width()) * size.x,
+                   pos.y + (float(app.hoverPixel.y) + 0.5f) / float(r.height()) * size.y);
+    dl->AddCircle(c, 6.0f, IM_COL32(255, 255, 0, 255), 12, 2.0f);
+    for (const SampleTap& t : pi.taps) {
+        if (t.state == SampleTap::State::BehindEye) continue;
+        const ImVec2 p(pos.x + t.uv.x * size.x, pos.y + (1.0f - t.uv.y) * size.y);
+        ImU32 col = t.state == SampleTap::State::Occluded  ? IM_COL32(255, 60, 60, 255)
+                    : t.state == SampleTap::State::Open    ? IM_COL32(60, 255, 90, 255)
+                    : t.state == SampleTap::State::Sky     ? IM_COL32(80, 160, 255, 255)
+                                                           : IM_COL32(160, 160, 160, 255);
+        dl->AddLine(c, p, (col & 0x00FFFFFF) | 0x40000000);
+        dl->AddCircleFilled(p, 2.5f, col);
+    }
+}
+
+void toolbar(AppCore& app) {
+    int mode = int(app.viewMode);
+    ImGui::RadioButton("Grid", &mode, int(ViewMode::Grid));
+    ImGui::SameLine();
+    ImGui::RadioButton("Single", &mode, int(ViewMode::Single));
+    ImGui::SameLine();
+    ImGui::RadioButton("Split A|B", &mode, int(ViewMode::Split));
+    if (mode != int(app.viewMode)) app.viewMode = ViewMode(mode), app.poke();
+    if (app.viewMode == ViewMode::Single) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(140);
+        if (ImGui::BeginCombo("##buffer", bufferName(app.enlarged))) {
+            for (int i = 0; i < kBufferCount; ++i)
+                if (ImGui::Selectable(bufferName(BufferId(i)), int(app.enlarged) == i)) app.enlarged = BufferId(i);
+            ImGui::EndCombo();
+        }
+    }
+    if (app.viewMode == ViewMode::Split) {
+        ImGui::SameLine();
+        int kind = int(app.splitKind);
+        ImGui::RadioButton("AO on | off", &kind, int(SplitKind::AoOnOff));
+        ImGui::SameLine();
+        ImGui::RadioButton("current | preset", &kind, int(SplitKind::Presets));
+        if (kind != int(app.splitKind)) app.splitKind = SplitKind(kind), app.poke();
+        if (app.splitKind == SplitKind::Presets) {
+            ImGui::SameLine();
+            ImGui::SetNextItemWidth(160);
+            if (ImGui::BeginCombo("B", app.splitPresetB.c_str())) {
+                for (const auto& e : app.presets().entries())
+                    if (ImGui::Selectable(e.name.c_str(), e.name == app.splitPresetB)) app.splitPresetB = e.name, app.poke();
+                ImGui::EndCombo();
+            }
+        }
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(120);
+        ImGui::SliderFloat("split", &app.splitPosition, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    }
+}
+
+} // namespace
+
+void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
+    ImGui::SetNextWindowPos(pos);
+    ImGui::SetNextWindowSize(size);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
+    ImGui::Begin("view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar |
+                                      ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    toolbar(app);
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    // Render at the size the enlarged view shows (1:1 pixels, framebuffer scale included).
+    const ImVec2 fbScale = ImGui::GetIO().DisplayFramebufferScale;
+    app.renderIfNeeded(int(avail.x * fbScale.x), int(avail.y * fbScale.y));
+    const Renderer& r = app.renderer();
+    const float aspect = float(r.width()) / float(r.height());
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+
+    if (app.viewMode == ViewMode::Grid) {
+        const int cols = 3, rows = 3;
+        const ImVec2 cell(avail.x / cols, avail.y / rows);
+        for (int i = 0; i < kBufferCount; ++i) {
+            ImVec2 off, sz;
+            fit(ImVec2(cell.x - 4, cell.y - 4), aspect, off, sz);
+            const ImVec2 p(origin.x + float(i % cols) * cell.x + off.x, origin.y + float(i / cols) * cell.y + off.y);
+            ImGui::PushID(i);
+            const bool clicked = interact(app, "cell", p, sz);
+            ImGui::PopID();
+            dl->AddImage(texId(app.viewTexture(BufferId(i))), p, ImVec2(p.x + sz.x, p.y + sz.y), ImVec2(0, 1), ImVec2(1, 0));
+            label(dl, p, bufferName(BufferId(i)));
+            app.widgetRects[std::string("view#") + bufferName(BufferId(i))] = ImVec4(p.x, p.y, p.x + sz.x, p.y + sz.y);
+            if (clicked) {
+                app.enlarged = BufferId(i);
+                app.viewMode = ViewMode::Single;
+                app.poke();
+            }
+        }
+    } else {
+        ImVec2 off, sz;
+        fit(avail, aspect, off, sz);
+        const ImVec2 p(origin.x + off.x, origin.y + off.y), q(p.x + sz.x, p.y + sz.y);
+        if (interact(app, "image", p, sz) && app.viewMode == ViewMode::Single) app.pinPixel = !app.pinPixel;
+        app.widgetRects["view#main"] = ImVec4(p.x, p.y, q.x, q.y);
+        if (app.viewMode == ViewMode::Single) {
+            dl->AddImage(texId(app.viewTexture(app.enlarged)), p, q, ImVec2(0, 1), ImVec2(1, 0));
+            label(dl, p, bufferName(app.enlarged));
+            drawSamples(app, dl, p, sz);
+        } else if (Renderer* b = app.rendererB()) {
+            const float s = app.splitPosition, x = p.x + sz.x * s;
+            dl->AddImage(texId(app.viewTexture(BufferId::Composite)), p, ImVec2(x, q.y), ImVec2(0, 1), ImVec2(s, 0));
+            dl->AddImage(texId(b->composite().color()), ImVec2(x, p.y), q, ImVec2(s, 1), ImVec2(1, 0));
+            dl->AddLine(ImVec2(x, p.y), ImVec2(x, q.y), IM_COL32(255, 255, 0, 255), 2.0f);
+            label(dl, p, "A: current");
+            const std::string bl = app.splitKind == SplitKind::AoOnOff ? "B: AO off" : "B: " + app.splitPresetB;
+            label(dl, ImVec2(q.x - ImGui::CalcTextSize(bl.c_str()).x - 10, p.y), bl.c_str());
+        }
+    }
+    ImGui::End();
+    ImGui::PopStyleVar();
+}
+
+} // namespace ssao

@@ -1,0 +1,150 @@
+#include "view/window_app.h"
+
+#include "gl/context.h"
+#include "output/image.h"
+#include "util/error.h"
+
+#include <epoxy/gl.h>
+// GLFW after epoxy: epoxy provides the GL declarations.
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <chrono>
+#include <cstdlib>
+
+namespace ssao {
+
+namespace {
+
+std::string g_glfwError;
+void onGlfwError(int code, const char* msg) { g_glfwError = std::string(msg) + " (" + std::to_string(code) + ")"; }
+
+AppCore* appOf(GLFWwindow* w) { return static_cast<AppCore*>(glfwGetWindowUserPointer(w)); }
+void pokeOnly(GLFWwindow* w) {
+    if (AppCore* a = appOf(w)) a->poke();
+}
+
+// Installed before ImGui's backend, which chains to them: every input event wakes the loop.
+void installWakeCallbacks(GLFWwindow* w) {
+    glfwSetCursorPosCallback(w, [](GLFWwindow* win, double, double) { pokeOnly(win); });
+    glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int, int, int) { pokeOnly(win); });
+    glfwSetScrollCallback(w, [](GLFWwindow* win, double, double) { pokeOnly(win); });
+    glfwSetKeyCallback(w, [](GLFWwindow* win, int, int, int, int) { pokeOnly(win); });
+    glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) { pokeOnly(win); });
+    glfwSetWindowFocusCallback(w, [](GLFWwindow* win, int) { pokeOnly(win); });
+    glfwSetCursorEnterCallback(w, [](GLFWwindow* win, int) { pokeOnly(win); });
+    glfwSetFramebufferSizeCallback(w, [](GLFWwindow* win, int, int) { pokeOnly(win); });
+    glfwSetWindowRefreshCallback(w, [](GLFWwindow* win) { pokeOnly(win); });
+    glfwSetDropCallback(w, [](GLFWwindow* win, int n, const char** paths) {
+        if (AppCore* a = appOf(win)) a->dropFiles(std::vector<std::string>(paths, paths + n));
+    });
+}
+
+void screenshot(int w, int h, const std::string& path) {
+    Image img{w, h, 3, std::vector<float>(size_t(w) * h * 3)};
+    std::vector<unsigned char> px(size_t(w) * h * 3);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, px.data());
+    for (int y = 0; y < h; ++y)
+        for (int i = 0; i < w * 3; ++i) img.data[size_t(y) * w * 3 + i] = float(px[size_t(h - 1 - y) * w * 3 + i]) / 255.0f;
+    writePng(img, path);
+}
+
+struct GlfwSession {
+    GlfwSession() {
+        glfwSetErrorCallback(onGlfwError);
+        if (!glfwInit())
+            throw Error("no display: cannot open a window (" + g_glfwError +
+                        "); use `ssaolab render` for headless output, or run under Xvfb: xvfb-run -a ssaolab");
+    }
+    ~GlfwSession() { glfwTerminate(); }
+};
+
+} // namespace
+
+bool haveDisplay() {
+    const char* x = std::getenv("DISPLAY");
+    const char* wl = std::getenv("WAYLAND_DISPLAY");
+    return (x && *x) || (wl && *wl);
+}
+
+int runWindowApp(const WindowOptions& o) {
+    GlfwSession glfw;
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE); // HiDPI: window sized in logical pixels
+    GLFWwindow* window = glfwCreateWindow(o.width, o.height, "ssaolab", nullptr, nullptr);
+    if (!window) throw Error("no GL: cannot create an OpenGL 4.5 core window (" + g_glfwError + ")");
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(1);
+    gl::installDebugOutput(false);
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr; // layout is computed, nothing to persist
+    float xs = 1.0f, ys = 1.0f;
+    glfwGetWindowContentScale(window, &xs, &ys);
+    io.FontGlobalScale = std::max(xs, 1.0f);
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().ScaleAllSizes(std::max(xs, 1.0f));
+    installWakeCallbacks(window);
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 450 core");
+
+    int rc = 0;
+    {
+        AppCore app(o.app);
+        glfwSetWindowUserPointer(window, &app);
+        int frame = 0;
+        while (!glfwWindowShouldClose(window)) {
+            if (o.frames == 0 && !app.busy()) {
+                // Idle costs nothing: sleep until an event (or a periodic check for edited shaders).
+                glfwWaitEventsTimeout(0.5);
+                app.pollShaderReload();
+                if (!app.busy()) continue;
+            } else {
+                glfwPollEvents();
+                app.pollShaderReload();
+            }
+            const auto t0 = std::chrono::steady_clock::now();
+            ImGui_ImplOpenGL3_NewFrame();
+            ImGui_ImplGlfw_NewFrame();
+            ImGui::NewFrame();
+            app.drawUi();
+            ImGui::Render();
+            int fw = 0, fh = 0;
+            glfwGetFramebufferSize(window, &fw, &fh);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glViewport(0, 0, fw, fh);
+            glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+            ++frame;
+            if (o.frames > 0 && frame >= o.frames) {
+                if (!o.screenshot.empty()) screenshot(fw, fh, o.screenshot);
+                break;
+            }
+            glfwSwapBuffers(window);
+            app.noteFrameMs(std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count());
+        }
+        gl::pollGlErrors();
+        if (gl::glErrorCount() > 0) {
+            std::fprintf(stderr, "ssaolab: error: OpenGL reported %d error(s) during the session\n", gl::glErrorCount());
+            rc = 1;
+        }
+        glfwSetWindowUserPointer(window, nullptr);
+    } // AppCore (and every GL object) released while the context is still current
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window);
+    return rc;
+}
+
+} // namespace ssao
