@@ -32,6 +32,7 @@ AppCore::AppCore(const AppOptions& o)
     : opts_(o), store_(std::string(SSAOLAB_ASSET_DIR) + "/presets",
                        o.userPresetDir.empty() ? PresetStore::defaultUserDir() : o.userPresetDir) {
     if (opts_.shaderDir.empty()) opts_.shaderDir = SSAOLAB_SHADER_DIR;
+    renderScale = std::clamp(o.renderScale, 0.25f, 1.0f);
     loaded_.settings = defaultSettings();
     loaded_.name = "defaults";
     if (!o.preset.empty()) {
@@ -163,8 +164,8 @@ Settings AppCore::settingsB() const {
 }
 
 void AppCore::renderIfNeeded(int width, int height) {
-    width = std::max(width, 16);
-    height = std::max(height, 16);
+    width = std::max(int(float(width) * renderScale), 16);
+    height = std::max(int(float(height) * renderScale), 16);
     Renderer& r = *rendererA_;
     if (r.width() != width || r.height() != height) r.setSize(width, height);
     r.setCamera(camera_.camera());

@@ -25,6 +25,7 @@ struct AppOptions {
     std::string preset;     // name or path; empty = defaults
     std::string shaderDir;  // empty = the source tree's shaders/
     std::string userPresetDir;
+    float renderScale = 1.0f; // render resolution relative to the view's pixels (0.25..1)
 };
 
 enum class ViewMode { Grid, Single, Split };
@@ -76,6 +77,7 @@ class AppCore {
     SplitKind splitKind = SplitKind::AoOnOff;
     std::string splitPresetB = "crytek-sphere";
     float splitPosition = 0.5f;
+    float renderScale = 1.0f;
     bool showSamples = true;
     bool pinPixel = false;
     glm::ivec2 hoverPixel{-1, -1};

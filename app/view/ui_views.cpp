@@ -99,6 +99,10 @@ void toolbar(AppCore& app) {
     ImGui::SameLine();
     ImGui::RadioButton("Split A|B", &mode, int(ViewMode::Split));
     if (mode != int(app.viewMode)) app.viewMode = ViewMode(mode), app.poke();
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(110);
+    if (ImGui::SliderFloat("resolution", &app.renderScale, 0.25f, 1.0f, "%.2fx", ImGuiSliderFlags_AlwaysClamp)) app.poke();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Render resolution relative to the view (lower is faster on slow GPUs / llvmpipe)");
     if (app.viewMode == ViewMode::Single) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(140);

@@ -143,7 +143,7 @@ void ShaderLibrary::reload() {
 }
 
 std::filesystem::file_time_type ShaderLibrary::newestSourceTime() const {
-    std::filesystem::file_time_type newest{};
+    auto newest = std::filesystem::file_time_type::min(); // libstdc++ file times before 2174 are negative
     std::error_code ec;
     for (auto it = std::filesystem::recursive_directory_iterator(dir_, ec); !ec && it != std::filesystem::end(it);
          it.increment(ec))

@@ -1,0 +1,83 @@
+// Camera controller and preset store: pure logic, no GL.
+#include "settings/params.h"
+#include "util/error.h"
+#include "view/camera_controller.h"
+#include "view/preset_store.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace ssao;
+namespace fs = std::filesystem;
+
+TEST(CameraController, OrbitKeepsDistanceAndTarget) {
+    CameraController c;
+    c.reset(Camera{{0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 60, 0.1f, 100}, 2.0f);
+    c.rotate(100, 40);
+    EXPECT_NEAR(glm::length(c.camera().eye), 5.0f, 1e-4f);
+    EXPECT_EQ(c.camera().target, glm::vec3(0));
+    EXPECT_GT(c.camera().eye.y, 0.0f); // dragging down looks from above
+    c.rotate(0, 100000); // pitch is clamped short of the pole: the view never degenerates
+    EXPECT_NO_THROW(validateCamera(c.camera()));
+}
+
+TEST(CameraController, ZoomPanAndFly) {
+    CameraController c;
+    c.reset(Camera{{0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 60, 0.1f, 100}, 2.0f);
+    c.zoom(1);
+    EXPECT_NEAR(glm::length(c.camera().eye), 4.5f, 1e-4f);
+    c.pan(10, 0, 100);
+    EXPECT_LT(c.camera().target.x, 0.0f); // dragging right moves the scene right: camera goes left
+    c.setMode(CameraController::Mode::Fly);
+    const glm::vec3 eye = c.camera().eye;
+    c.move({0, 0, 1}, 0.5f); // forward by half a scene radius
+    EXPECT_NEAR(glm::length(c.camera().eye - eye), 1.0f, 1e-4f);
+    const glm::vec3 e2 = c.camera().eye;
+    c.rotate(50, 0); // fly: look around, the eye stays
+    EXPECT_NEAR(glm::length(c.camera().eye - e2), 0.0f, 1e-5f);
+}
+
+TEST(PresetStore, SaveListRenameDeleteAndNameRules) {
+    const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/store";
+    fs::remove_all(dir);
+    PresetStore store(std::string(SSAOLAB_ASSET_DIR) + "/presets", dir);
+    const size_t builtins = store.entries().size();
+    EXPECT_GE(builtins, 6u);
+    Preset p;
+    p.name = "mine";
+    p.settings = defaultSettings();
+    p.settings.ssao.samples = 17;
+    p.camera = Camera{{1, 2, 3}, {0, 0, 0}, {0, 1, 0}, 50, 0.5f, 50};
+    store.save(p);
+    ASSERT_EQ(store.entries().size(), builtins + 1);
+    EXPECT_FALSE(store.entries().back().builtin);
+    Preset back = store.load("mine");
+    EXPECT_EQ(back.settings.ssao.samples, 17);
+    ASSERT_TRUE(back.camera.has_value());
+    EXPECT_EQ(back.camera->eye, glm::vec3(1, 2, 3));
+    EXPECT_FLOAT_EQ(back.camera->fovYDeg, 50.0f);
+    p.name = "../escape";
+    EXPECT_THROW(store.save(p), Error);
+    p.name = "";
+    EXPECT_THROW(store.save(p), Error);
+    p.name = "seed003";
+    EXPECT_THROW(store.save(p), Error);
+    store.rename("mine", "yours");
+    EXPECT_EQ(store.find("mine"), nullptr);
+    EXPECT_NE(store.find("yours"), nullptr);
+    EXPECT_THROW(store.remove("learnopengl"), Error);
+    store.remove("yours");
+    EXPECT_EQ(store.entries().size(), builtins);
+}
+
+TEST(PresetFiles, CameraBookmarkIsValidated) {
+    nlohmann::json j = {{"camera", {{"eye", {0, 0, 0}}, {"target", {0, 0, 0}}}}};
+    EXPECT_THROW(presetFromJson(j, "t"), Error); // eye == target
+    j = {{"camera", {{"eye", {0, 0, 1}}, {"target", {0, 0, 0}}, {"zoom", 2}}}};
+    EXPECT_THROW(presetFromJson(j, "t"), Error); // unknown camera key
+    j = {{"camera", {{"eye", {0, 0, 1}}, {"target", {0, 0, 0}}, {"near", 0.5}, {"far", 9}}}, {"ssao", {{"radius", 2}}}};
+    Preset p = presetFromJson(j, "t");
+    EXPECT_FLOAT_EQ(p.settings.ssao.radius, 2.0f);
+    EXPECT_FLOAT_EQ(p.camera->farZ, 9.0f);
+}

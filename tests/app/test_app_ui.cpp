@@ -1,0 +1,258 @@
+// The explorer's UI code, driven through Dear ImGui with the real renderer (llvmpipe in CI).
+#include "gl_fixture.h"
+#include "ui_driver.h"
+
+#include "settings/preset.h"
+
+#include <filesystem>
+#include <fstream>
+
+using namespace ssao;
+using namespace ssaotest;
+namespace fs = std::filesystem;
+
+namespace {
+
+class AppUi : public GlTest {
+  protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        userDir_ = std::string(SSAOLAB_TEST_TMP) + "/user_presets_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        fs::remove_all(userDir_);
+        AppOptions o;
+        o.userPresetDir = userDir_;
+        o.renderScale = 0.3f; // keeps llvmpipe fast; the UI logic is the same at any scale
+        ui_ = std::make_unique<UiDriver>(o);
+    }
+    void TearDown() override {
+        ui_.reset();
+        GlTest::TearDown();
+    }
+    Image aoRaw() { return readBack(ui_->app().renderer().ssao().aoRaw(), 1); }
+    Image composite() { return readBack(ui_->app().renderer().composite().color(), 4); }
+    std::string userDir_;
+    std::unique_ptr<UiDriver> ui_;
+};
+
+} // namespace
+
+TEST_F(AppUi, CheckboxChangesTheSettingAndTheAoImage) {
+    Image before = aoRaw();
+    ASSERT_FALSE(ui_->app().settings().ssao.separable);
+    ui_->click("ssao.separable", 0.1f);
+    ui_->frames(2);
+    EXPECT_TRUE(ui_->app().settings().ssao.separable);
+    EXPECT_TRUE(ui_->app().unsavedChanges());
+    EXPECT_NE(aoRaw().data, before.data);
+}
+
+TEST_F(AppUi, SliderClickSetsAValueInRangeAndReRendersOnlyWhatItInvalidates) {
+    Image before = aoRaw();
+    ui_->click("ssao.radius", 0.8f);
+    ui_->frame();
+    const float r = ui_->app().settings().ssao.radius;
+    EXPECT_NE(r, 0.5f);
+    EXPECT_GE(r, 1e-4f);
+    EXPECT_LE(r, 1e4f);
+    EXPECT_NE(aoRaw().data, before.data);
+    // The last frame that rendered ran the SSAO pass and what follows, not the G-buffer.
+    EXPECT_EQ(ui_->app().lastReport().ran(), (std::vector<std::string>{"ssao", "blur", "composite"}));
+}
+
+TEST_F(AppUi, CtrlClickTextEntryIsClampedToTheRange) {
+    ui_->click("ssao.radius", 0.5f, /*ctrl=*/true); // Ctrl+Click turns the slider into a text field (all selected)
+    ui_->type("99999");
+    ui_->pressEnter();
+    ui_->frames(2);
+    EXPECT_FLOAT_EQ(ui_->app().settings().ssao.radius, 1e4f); // AlwaysClamp: not 99999
+}
+
+TEST_F(AppUi, ResetButtonRestoresTheDefault) {
+    ui_->app().settings().ssao.bias = 0.3f;
+    ui_->frames(2);
+    ui_->click("ssao.bias#reset");
+    ui_->frame();
+    EXPECT_FLOAT_EQ(ui_->app().settings().ssao.bias, 0.025f);
+}
+
+TEST_F(AppUi, ComboSelectsAnotherKernel) {
+    Image mask = readBack(ui_->app().renderer().gbuffer().position(), 4).channel(3);
+    const double before = stats(aoRaw(), &mask).mean;
+    ui_->click("ssao.kernel");
+    ui_->frame();
+    ASSERT_TRUE(ui_->has("ssao.kernel#sphere"));
+    ui_->click("ssao.kernel#sphere");
+    ui_->frames(2);
+    EXPECT_EQ(ui_->app().settings().ssao.kernel, Kernel::Sphere);
+    EXPECT_LT(stats(aoRaw(), &mask).mean, before - 0.2); // the sphere kernel's false occlusion
+}
+
+TEST_F(AppUi, PresetSavedFromTheUiLoadsBackAndRendersTheSameHeadless) {
+    ui_->app().settings().ssao.radius = 0.8f;
+    ui_->app().settings().blur.kind = BlurKind::Gaussian;
+    ui_->frames(2);
+    ui_->click("preset#name");
+    ui_->type("my tuned");
+    ui_->click("preset#save");
+    ui_->frames(2);
+    const std::string path = userDir_ + "/my tuned.json";
+    ASSERT_TRUE(fs::exists(path)) << ui_->app().status();
+    EXPECT_FALSE(ui_->app().unsavedChanges());
+    Preset p = readPresetFile(path);
+    EXPECT_TRUE(p.settings == ui_->app().settings());
+    ASSERT_TRUE(p.camera.has_value());
+
+    // The same preset rendered headless at the app's size equals the app's frame.
+    Renderer& appR = ui_->app().renderer();
+    Renderer headless(SSAOLAB_SHADER_DIR);
+    headless.setSize(appR.width(), appR.height());
+    headless.setScene(ui_->app().scene());
+    headless.setCamera(*p.camera);
+    headless.setSettings(p.settings);
+    headless.render();
+    Image a = readBack(appR.blur().ao(), 1), b = readBack(headless.blur().ao(), 1);
+    double maxDiff = 0;
+    for (size_t i = 0; i < a.data.size(); ++i) maxDiff = std::max(maxDiff, double(std::abs(a.data[i] - b.data[i])));
+    EXPECT_LT(maxDiff, 1e-4);
+    Image ca = readBack(appR.composite().color(), 4), cb = readBack(headless.composite().color(), 4);
+    EXPECT_EQ(ca.data, cb.data);
+
+    // It is listed, and loading it from the list restores the settings.
+    ui_->app().settings().ssao.radius = 0.3f;
+    EXPECT_TRUE(ui_->app().unsavedChanges());
+    ui_->frame();
+    ui_->click("preset#my tuned");
+    ui_->click("preset#load");
+    EXPECT_FLOAT_EQ(ui_->app().settings().ssao.radius, 0.8f);
+}
+
+TEST_F(AppUi, PresetRenameAndDeleteWorkOnUserPresetsOnly) {
+    ASSERT_TRUE(ui_->app().savePreset("first"));
+    EXPECT_TRUE(ui_->app().renamePreset("first", "second"));
+    EXPECT_TRUE(fs::exists(userDir_ + "/second.json"));
+    EXPECT_FALSE(fs::exists(userDir_ + "/first.json"));
+    EXPECT_FALSE(ui_->app().renamePreset("learnopengl", "x"));
+    EXPECT_TRUE(ui_->app().statusIsError());
+    EXPECT_FALSE(ui_->app().deletePreset("learnopengl"));
+    EXPECT_FALSE(ui_->app().savePreset("learnopengl")); // may not shadow a seed preset
+    EXPECT_TRUE(ui_->app().deletePreset("second"));
+    EXPECT_FALSE(fs::exists(userDir_ + "/second.json"));
+    // Built-in presets are listed first.
+    const auto& e = ui_->app().presets().entries();
+    ASSERT_FALSE(e.empty());
+    EXPECT_TRUE(e.front().builtin);
+}
+
+TEST_F(AppUi, DroppingABadFileShowsTheErrorAndKeepsTheScene) {
+    const std::string name = ui_->app().scene().name;
+    const std::string bad = std::string(SSAOLAB_TEST_TMP) + "/app_corrupt.gltf";
+    std::ofstream(bad) << "{ corrupt";
+    ui_->app().dropFiles({bad});
+    ui_->frame();
+    EXPECT_TRUE(ui_->app().statusIsError());
+    EXPECT_NE(ui_->app().status().find("cannot load glTF"), std::string::npos) << ui_->app().status();
+    EXPECT_EQ(ui_->app().scene().name, name);
+    ui_->app().dropFiles({std::string(SSAOLAB_ASSET_DIR) + "/presets/seed003.json"});
+    EXPECT_FALSE(ui_->app().statusIsError());
+    EXPECT_EQ(ui_->app().settings().ssao.rangeCheck, RangeCheck::Hard);
+    ui_->app().dropFiles({std::string(SSAOLAB_SCENES_DIR) + "/ShaderBall/shader_ball.gltf"});
+    ui_->frames(2);
+    EXPECT_NE(ui_->app().scene().name.find("shader_ball"), std::string::npos);
+    EXPECT_TRUE(finiteInRange(aoRaw(), 0.0f, 1.0f));
+}
+
+TEST_F(AppUi, ClickingAGridCellEnlargesItAndTheInspectorsFollowTheCursor) {
+    ASSERT_EQ(ui_->app().viewMode, ViewMode::Grid);
+    ui_->click("view#ao_raw");
+    ui_->frame();
+    EXPECT_EQ(ui_->app().viewMode, ViewMode::Single);
+    EXPECT_EQ(ui_->app().enlarged, BufferId::AoRaw);
+    // Hover the middle of the enlarged view: the pixel inspector and sample inspector follow.
+    const ImVec4 r = ui_->rect("view#main");
+    ui_->frame((r.x + r.z) * 0.5f, r.y + (r.w - r.y) * 0.7f);
+    ui_->frame((r.x + r.z) * 0.5f, r.y + (r.w - r.y) * 0.7f);
+    const glm::ivec2 px = ui_->app().hoverPixel;
+    EXPECT_NEAR(px.x, ui_->app().renderer().width() / 2, 2);
+    const PixelInspection& pi = ui_->app().inspection();
+    ASSERT_TRUE(pi.geometry);
+    EXPECT_EQ(int(pi.taps.size()), ui_->app().settings().ssao.samples);
+    EXPECT_NEAR(pi.ao, ui_->app().texelOf(BufferId::AoRaw, px.x, px.y).x, 1.01 / 64);
+}
+
+TEST_F(AppUi, DraggingTheViewOrbitsTheCamera) {
+    ui_->click("view#composite");
+    ui_->frame();
+    const Camera before = ui_->app().cameraController().camera();
+    const ImVec4 r = ui_->rect("view#main");
+    const float cx = (r.x + r.z) * 0.5f, cy = (r.y + r.w) * 0.5f;
+    ui_->drag(cx, cy, cx + 120, cy + 30);
+    ui_->frame();
+    const Camera after = ui_->app().cameraController().camera();
+    EXPECT_GT(glm::length(after.eye - before.eye), 0.1f);
+    EXPECT_NEAR(glm::length(after.eye - after.target), glm::length(before.eye - before.target), 1e-3f); // orbit keeps distance
+    EXPECT_EQ(ui_->app().lastReport().ran().size(), 4u); // a camera move re-renders everything
+}
+
+TEST_F(AppUi, SplitViewComparesAoOnAndOff) {
+    ui_->app().viewMode = ViewMode::Split;
+    ui_->app().splitKind = SplitKind::AoOnOff;
+    ui_->frames(2);
+    ASSERT_NE(ui_->app().rendererB(), nullptr);
+    Image a = readBack(ui_->app().renderer().composite().color(), 4);
+    Image b = readBack(ui_->app().rendererB()->composite().color(), 4);
+    double sumA = 0, sumB = 0;
+    for (size_t i = 0; i < a.data.size(); ++i) sumA += a.data[i], sumB += b.data[i];
+    EXPECT_LT(sumA, sumB); // with AO the frame is darker
+    ui_->app().splitKind = SplitKind::Presets;
+    ui_->app().splitPresetB = "crytek-sphere";
+    ui_->frames(2);
+    EXPECT_EQ(ui_->app().rendererB()->settings().ssao.kernel, Kernel::Sphere);
+}
+
+TEST_F(AppUi, IdleFramesRenderNothing) {
+    ui_->frames(6); // let hover/input settle
+    const int rendered = ui_->app().framesRendered();
+    ui_->frames(10);
+    EXPECT_EQ(ui_->app().framesRendered(), rendered); // no SSAO pass ran without a change
+    EXPECT_FALSE(ui_->app().busy());                  // and the window loop may sleep
+    ui_->app().settings().blur.sigma = 2.5f;
+    ui_->app().poke();
+    ui_->frame();
+    EXPECT_EQ(ui_->app().framesRendered(), rendered + 1);
+}
+
+TEST_F(AppUi, BrokenShaderKeepsTheLastGoodProgramAndShowsFileAndLine) {
+    // Work on a copy of shaders/ so the real files are never touched.
+    const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/hot_shaders";
+    fs::remove_all(dir);
+    fs::copy(SSAOLAB_SHADER_DIR, dir, fs::copy_options::recursive);
+    ui_.reset();
+    AppOptions o;
+    o.userPresetDir = userDir_;
+    o.shaderDir = dir;
+    o.renderScale = 0.3f;
+    ui_ = std::make_unique<UiDriver>(o);
+    ui_->frames(2);
+    Image good = aoRaw();
+
+    const std::string frag = dir + "/passes/ssao.frag";
+    std::string text;
+    {
+        std::ifstream in(frag);
+        text.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    std::ofstream(frag) << text << "\nthis is not glsl;\n";
+    fs::last_write_time(frag, fs::last_write_time(frag) + std::chrono::seconds(2));
+    ui_->app().pollShaderReload();
+    ui_->frame();
+    EXPECT_NE(ui_->app().shaderError().find("passes/ssao.frag:"), std::string::npos) << ui_->app().shaderError() << " / " << ui_->app().status();
+    ui_->app().renderer().invalidate(); // still renders, with the last good program
+    ui_->frames(2);
+    EXPECT_EQ(aoRaw().data, good.data);
+
+    std::ofstream(frag) << text; // fixed: the error clears
+    fs::last_write_time(frag, fs::last_write_time(frag) + std::chrono::seconds(4));
+    ui_->app().pollShaderReload();
+    ui_->frame();
+    EXPECT_TRUE(ui_->app().shaderError().empty()) << ui_->app().shaderError();
+}
