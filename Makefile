@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build run test clean
+.PHONY: deps configure build run test screenshot clean
 
 deps:
 	@bash .ci/install-deps.sh
@@ -15,9 +15,16 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
-# Main job: the app. Without a display it renders the default scene headless into $(OUT)/.
+# Main job: the app (a window when there is a display; otherwise a headless render of the
+# default scene into ./out/, with a hint on how to get a window).
 run: build
-	@$(BUILD)/app/ssaolab render --scene $(SCENE) --out $(OUT)
+	@$(BUILD)/app/ssaolab
+
+# README screenshot, taken by the app itself under Xvfb.
+screenshot: build
+	@mkdir -p assets/screenshots
+	@SSAOLAB_PRESET_DIR=$$(mktemp -d) xvfb-run -a -s "-screen 0 1920x1080x24" \
+	  $(BUILD)/app/ssaolab view --size 1600x900 --frames 8 --screenshot assets/screenshots/explorer.png
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)

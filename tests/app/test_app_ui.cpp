@@ -177,6 +177,7 @@ TEST_F(AppUi, ClickingAGridCellEnlargesItAndTheInspectorsFollowTheCursor) {
     ASSERT_TRUE(pi.geometry);
     EXPECT_EQ(int(pi.taps.size()), ui_->app().settings().ssao.samples);
     EXPECT_NEAR(pi.ao, ui_->app().texelOf(BufferId::AoRaw, px.x, px.y).x, 1.01 / 64);
+    ui_->save(std::string(SSAOLAB_TEST_TMP) + "/ui_single_view.png");
 }
 
 TEST_F(AppUi, DraggingTheViewOrbitsTheCamera) {

@@ -1,5 +1,7 @@
 #include "ui_driver.h"
 
+#include "output/image.h"
+
 #include <backends/imgui_impl_opengl3.h>
 #include <gtest/gtest.h>
 
@@ -42,6 +44,8 @@ void UiDriver::frame(float x, float y, bool down) {
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
+
+void UiDriver::save(const std::string& path) const { ssao::writePng(ssao::readBack(target_.texture(), 3), path); }
 
 ImVec4 UiDriver::rect(const std::string& key) const {
     auto it = app_->widgetRects.find(key);

@@ -28,6 +28,8 @@ class UiDriver {
     void pressEnter();
     bool has(const std::string& key) const { return app_->widgetRects.count(key) != 0; }
     ImVec4 rect(const std::string& key) const;
+    // The last UI frame as PNG (to look at what a test saw).
+    void save(const std::string& path) const;
 
   private:
     int w_, h_;
