@@ -257,3 +257,17 @@ TEST_F(AppUi, BrokenShaderKeepsTheLastGoodProgramAndShowsFileAndLine) {
     ui_->frame();
     EXPECT_TRUE(ui_->app().shaderError().empty()) << ui_->app().shaderError();
 }
+
+TEST_F(AppUi, ClosingTheAppReleasesEveryGlObject) {
+    ui_->app().viewMode = ViewMode::Split; // also create the second renderer
+    ui_->frames(2);
+    std::vector<GLuint> textures;
+    for (int i = 0; i < kBufferCount; ++i) textures.push_back(ui_->app().viewTexture(BufferId(i)).id());
+    Renderer& r = ui_->app().renderer();
+    for (const gl::Texture2D* t : {&r.gbuffer().position(), &r.gbuffer().normal(), &r.gbuffer().depth(),
+                                   &r.ssao().aoRaw(), &r.blur().ao(), &ui_->app().rendererB()->composite().color()})
+        textures.push_back(t->id());
+    for (GLuint id : textures) ASSERT_TRUE(glIsTexture(id)) << id;
+    ui_.reset();
+    for (GLuint id : textures) EXPECT_FALSE(glIsTexture(id)) << "texture " << id << " leaked";
+}
