@@ -21,6 +21,7 @@ std::string g_glfwError;
 void onGlfwError(int code, const char* msg) { g_glfwError = std::string(msg) + " (" + std::to_string(code) + ")"; }
 
 AppCore* appOf(GLFWwindow* w) { return static_cast<AppCore*>(glfwGetWindowUserPointer(w)); }
+bool g_screenshotRequested = false; // F12
 void pokeOnly(GLFWwindow* w) {
     if (AppCore* a = appOf(w)) a->poke();
 }
@@ -30,7 +31,10 @@ void installWakeCallbacks(GLFWwindow* w) {
     glfwSetCursorPosCallback(w, [](GLFWwindow* win, double, double) { pokeOnly(win); });
     glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int, int, int) { pokeOnly(win); });
     glfwSetScrollCallback(w, [](GLFWwindow* win, double, double) { pokeOnly(win); });
-    glfwSetKeyCallback(w, [](GLFWwindow* win, int, int, int, int) { pokeOnly(win); });
+    glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int) {
+        if (key == GLFW_KEY_F12 && action == GLFW_PRESS) g_screenshotRequested = true;
+        pokeOnly(win);
+    });
     glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) { pokeOnly(win); });
     glfwSetWindowFocusCallback(w, [](GLFWwindow* win, int) { pokeOnly(win); });
     glfwSetCursorEnterCallback(w, [](GLFWwindow* win, int) { pokeOnly(win); });
@@ -126,6 +130,17 @@ int runWindowApp(const WindowOptions& o) {
             glClear(GL_COLOR_BUFFER_BIT);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             ++frame;
+            if (g_screenshotRequested) { // F12: the window as the user sees it, into the current folder
+                g_screenshotRequested = false;
+                static int shots = 0;
+                const std::string name = "ssaolab-screenshot-" + std::to_string(++shots) + ".png";
+                try {
+                    screenshot(fw, fh, name);
+                    app.setStatus("saved " + name, false);
+                } catch (const std::exception& e) {
+                    app.setStatus(e.what(), true);
+                }
+            }
             if (o.frames > 0 && frame >= o.frames) {
                 if (!o.screenshot.empty()) screenshot(fw, fh, o.screenshot);
                 break;

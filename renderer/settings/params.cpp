@@ -91,9 +91,9 @@ std::vector<Param> buildTable() {
         FLOAT_P("blur.spacing", "Tap spacing", blur.spacing, 1.0, 0.25, 16.0, "pixels",
                 "Distance between gaussian taps (seed 003 blurRadius); >1 widens the blur without more taps."),
         // ---- Composite ------------------------------------------------------------------------
-        FLOAT_P("composite.ambient", "Ambient", composite.ambient, 0.3, 0.0, 4.0, "",
+        FLOAT_P("composite.ambient", "Ambient", composite.ambient, 0.7, 0.0, 4.0, "",
                 "Ambient term strength: ambient * albedo * AO (seed 004 uses 0.1 with a bright light)."),
-        FLOAT_P("composite.light", "Light", composite.light, 1.0, 0.0, 10.0, "",
+        FLOAT_P("composite.light", "Light", composite.light, 0.6, 0.0, 10.0, "",
                 "Intensity of the one point light at the camera (0 shows ambient * AO only)."),
         BOOL_P("composite.ao", "Apply AO", composite.useAo, 1,
                "Multiply the ambient term by AO; off shows the same frame without SSAO."),

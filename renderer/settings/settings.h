@@ -42,8 +42,8 @@ struct BlurSettings {
 };
 
 struct CompositeSettings {
-    float ambient = 0.3f;     // ambient strength multiplied by albedo and AO
-    float light = 1.0f;       // point-light intensity (0 = AO-only shading)
+    float ambient = 0.7f;     // ambient strength multiplied by albedo and AO (strong: AO is what we look at)
+    float light = 0.6f;       // point-light intensity (0 = AO-only shading)
     bool useAo = true;        // false: the same image without SSAO (N8AO-style AO on/off compare)
 };
 
