@@ -271,3 +271,35 @@ TEST_F(AppUi, ClosingTheAppReleasesEveryGlObject) {
     ui_.reset();
     for (GLuint id : textures) EXPECT_FALSE(glIsTexture(id)) << "texture " << id << " leaked";
 }
+
+TEST_F(AppUi, GltfCamerasAreSelectableAndScenesWithoutOneAreFramed) {
+    ASSERT_TRUE(ui_->app().openScene(std::string(SSAOLAB_SCENES_DIR) + "/CornellBox/cornellBox.gltf"));
+    ASSERT_FALSE(ui_->app().scene().cameras.empty());
+    ui_->app().cameraController().rotate(200, 0); // move away from the file's camera...
+    ui_->app().selectSceneCamera(0);             // ...and back to it
+    EXPECT_EQ(ui_->app().cameraController().camera().eye, ui_->app().scene().cameras[0].second.eye);
+    ASSERT_TRUE(ui_->app().openScene(std::string(SSAOLAB_SCENES_DIR) + "/FlightHelmet/FlightHelmet.gltf"));
+    const Camera framed = frameBounds(ui_->app().scene().bounds);
+    EXPECT_EQ(ui_->app().cameraController().camera().eye, framed.eye);
+    ui_->frames(2);
+    Image mask = readBack(ui_->app().renderer().gbuffer().position(), 4).channel(3);
+    EXPECT_GT(stats(mask, &mask).count, mask.width * mask.height / 20) << "the framed helmet fills the view";
+}
+
+TEST_F(AppUi, FlyModeMovesWithWasdWhileHoveringTheView) {
+    ui_->click("view#composite");
+    ui_->frame();
+    ui_->app().cameraController().setMode(CameraController::Mode::Fly);
+    const ImVec4 r = ui_->rect("view#main");
+    const float cx = (r.x + r.z) * 0.5f, cy = (r.y + r.w) * 0.5f;
+    ui_->frame(cx, cy);
+    const Camera before = ui_->app().cameraController().camera();
+    ImGui::GetIO().KeysDown['W'] = true;
+    for (int i = 0; i < 10; ++i) ui_->frame(cx, cy);
+    ImGui::GetIO().KeysDown['W'] = false;
+    ui_->frame(cx, cy);
+    const Camera after = ui_->app().cameraController().camera();
+    const glm::vec3 fwd = glm::normalize(before.target - before.eye);
+    EXPECT_GT(glm::dot(after.eye - before.eye, fwd), 0.01f); // moved forward
+    EXPECT_NEAR(glm::length(glm::cross(after.eye - before.eye, fwd)), 0.0f, 1e-3f); // along the view only
+}
