@@ -1,10 +1,10 @@
 // ssaolab command line: `view` (window), `render` (headless), `params` (the parameter table).
 // Without a subcommand: the window when there is a display, else a headless render into out/.
 #include "render_command.h"
-#include "view/window_app.h"
 #include "scene/builtin_scenes.h"
 #include "settings/params.h"
 #include "util/error.h"
+#include "view/window_app.h"
 
 #include <CLI/CLI.hpp>
 
@@ -18,7 +18,8 @@ void printParams() {
     for (const auto& p : ssao::paramTable()) {
         std::string range;
         if (p.type == ssao::Param::Type::Enum) {
-            for (auto& c : p.choices) range += (range.empty() ? "" : "|") + c;
+            for (auto& c : p.choices)
+                range += (range.empty() ? "" : "|") + c;
         } else if (p.type == ssao::Param::Type::Bool) {
             range = "true|false";
         } else {
@@ -32,12 +33,14 @@ void printParams() {
 } // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"ssaolab — explore screen-space ambient occlusion: every parameter, every buffer, measured.\n"
-                 "Without a subcommand it opens the window (or, with no display, renders the default scene\n"
-                 "headless into ./out/)."};
+    CLI::App app{
+        "ssaolab — explore screen-space ambient occlusion: every parameter, every buffer, measured.\n"
+        "Without a subcommand it opens the window (or, with no display, renders the default scene\n"
+        "headless into ./out/)."};
     app.require_subcommand(0, 1);
     ssao::RenderOptions ro;
-    CLI::App* render = app.add_subcommand("render", "render a scene headless (EGL) into EXR/PNG buffers and metrics.json");
+    CLI::App* render =
+        app.add_subcommand("render", "render a scene headless (EGL) into EXR/PNG buffers and metrics.json");
     ssao::addRenderOptions(*render, ro);
     app.add_subcommand("params", "list every parameter: key, default, unit, range, help");
     ssao::WindowOptions wo;
@@ -46,9 +49,11 @@ int main(int argc, char** argv) {
     view->add_option("--scene", wo.app.scene, "builtin:NAME or a .gltf/.glb file")->capture_default_str();
     view->add_option("--preset", wo.app.preset, "preset name or JSON file");
     view->add_option("--shaders", wo.app.shaderDir, "shader folder (edits are hot-reloaded)");
-    view->add_option("--preset-dir", wo.app.userPresetDir, "folder for saved presets (default $XDG_CONFIG_HOME/ssaolab/presets)");
+    view->add_option("--preset-dir", wo.app.userPresetDir,
+                     "folder for saved presets (default $XDG_CONFIG_HOME/ssaolab/presets)");
     view->add_option("--size", windowSize, "window size WIDTHxHEIGHT")->capture_default_str();
-    view->add_option("--frames", wo.frames, "draw N frames then exit (for tests and screenshots)")->check(CLI::Range(0, 1000000));
+    view->add_option("--frames", wo.frames, "draw N frames then exit (for tests and screenshots)")
+        ->check(CLI::Range(0, 1000000));
     view->add_option("--screenshot", wo.screenshot, "with --frames: save the last frame as PNG");
     try {
         app.parse(argc, argv);
@@ -61,12 +66,14 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (app.got_subcommand("view") || (!app.got_subcommand("render") && ssao::haveDisplay())) {
-            if (std::sscanf(windowSize.c_str(), "%dx%d", &wo.width, &wo.height) != 2 || wo.width <= 0 || wo.height <= 0)
+            if (std::sscanf(windowSize.c_str(), "%dx%d", &wo.width, &wo.height) != 2 || wo.width <= 0 ||
+                wo.height <= 0)
                 throw ssao::Error("--size '" + windowSize + "': expected WIDTHxHEIGHT");
             return ssao::runWindowApp(wo);
         }
         if (!app.got_subcommand("render"))
-            std::printf("no display: rendering headless into %s/ (for the window run `xvfb-run -a ssaolab` or set DISPLAY)\n",
+            std::printf("no display: rendering headless into %s/ (for the window run `xvfb-run -a ssaolab` "
+                        "or set DISPLAY)\n",
                         ro.out.c_str());
         return ssao::runRender(ro);
     } catch (const std::exception& e) {

@@ -14,14 +14,16 @@
 namespace ssao {
 
 void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
-    cmd.add_option("--scene", o.scene, "builtin:showcase|plane|corner, or a .gltf/.glb file")->capture_default_str();
+    cmd.add_option("--scene", o.scene, "builtin:showcase|plane|corner, or a .gltf/.glb file")
+        ->capture_default_str();
     cmd.add_option("--preset", o.preset, "preset JSON file, or a name in assets/presets (e.g. learnopengl)");
     cmd.add_option("--set", o.sets, "override one parameter, key=value (repeatable; see `ssaolab params`)");
     cmd.add_option("--size", o.size, "output size WIDTHxHEIGHT")->capture_default_str();
     cmd.add_option("--camera", o.camera, "eye,target[,up[,fov_deg[,near,far]]] as comma-separated numbers");
     cmd.add_option("--out", o.out, "output folder (EXR, PNG, metrics.json)")->capture_default_str();
     cmd.add_option("--timing-frames", o.timingFrames, "extra frames, every pass forced, averaged into gpu_ms")
-        ->capture_default_str()->check(CLI::Range(1, 1000));
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000));
     cmd.add_option("--shaders", o.shaderDir, "shader folder (default: the source tree's shaders/)");
     cmd.add_flag("--verbose-gl", o.verboseGl, "log every KHR_debug message");
     cmd.add_flag("--quiet", o.quiet, "print nothing on success");
@@ -54,7 +56,8 @@ int runRender(const RenderOptions& o) {
     preset.settings = defaultSettings();
     if (!o.preset.empty()) preset = readPresetFile(resolvePreset(o.preset));
     Settings settings = preset.settings;
-    for (const auto& a : o.sets) applyAssignment(settings, a);
+    for (const auto& a : o.sets)
+        applyAssignment(settings, a);
     Scene scene = loadScene(o.scene);
 
     RunInfo info;
@@ -95,7 +98,8 @@ int runRender(const RenderOptions& o) {
     for (int f = 0; f < o.timingFrames; ++f) {
         r.invalidate();
         FrameReport fr = r.render();
-        for (size_t i = 0; i < fr.passes.size(); ++i) sums[i] += fr.passes[i].gpuMs;
+        for (size_t i = 0; i < fr.passes.size(); ++i)
+            sums[i] += fr.passes[i].gpuMs;
     }
     double total = 0;
     for (size_t i = 0; i < first.passes.size(); ++i) {
@@ -112,13 +116,17 @@ int runRender(const RenderOptions& o) {
                     (glErr.empty() ? "" : " (" + glErr + ")"));
     if (!o.quiet) {
         std::printf("%s: %dx%d on %s; AO mean %.4f (raw %.4f); gpu ms:", scene.name.c_str(), w, h,
-                    info.glRenderer.c_str(), m["ao"]["mean"].get<double>(), m["ao_raw"]["mean"].get<double>());
-        for (auto& [k, v] : timing.items()) std::printf(" %s %.3f", k.c_str(), v.get<double>());
+                    info.glRenderer.c_str(), m["ao"]["mean"].get<double>(),
+                    m["ao_raw"]["mean"].get<double>());
+        for (auto& [k, v] : timing.items())
+            std::printf(" %s %.3f", k.c_str(), v.get<double>());
         std::printf("\nwrote %s/{position,normal,depth,ao_raw,ao}.exr, *.png, metrics.json\n", o.out.c_str());
     }
     long bad = 0;
-    for (auto& [k, v] : m["nonfinite"].items()) bad += v.get<long>();
-    if (bad > 0) throw Error(std::to_string(bad) + " non-finite values in the output buffers (see metrics.json)");
+    for (auto& [k, v] : m["nonfinite"].items())
+        bad += v.get<long>();
+    if (bad > 0)
+        throw Error(std::to_string(bad) + " non-finite values in the output buffers (see metrics.json)");
     return 0;
 }
 

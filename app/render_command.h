@@ -3,19 +3,21 @@
 #include <string>
 #include <vector>
 
-namespace CLI { class App; }
+namespace CLI {
+class App;
+}
 
 namespace ssao {
 
 struct RenderOptions {
     std::string scene = "builtin:showcase";
-    std::string preset;              // file path, or a name under assets/presets/
-    std::vector<std::string> sets;   // key=value
+    std::string preset;            // file path, or a name under assets/presets/
+    std::vector<std::string> sets; // key=value
     std::string size = "1280x720";
-    std::string camera;              // eye,target[,up[,fov[,near,far]]]
+    std::string camera; // eye,target[,up[,fov[,near,far]]]
     std::string out = "out";
-    std::string shaderDir;           // default: the source tree's shaders/
-    int timingFrames = 3;            // extra frames, all passes forced, averaged for gpu_ms
+    std::string shaderDir; // default: the source tree's shaders/
+    int timingFrames = 3;  // extra frames, all passes forced, averaged for gpu_ms
     bool verboseGl = false;
     bool quiet = false;
 };

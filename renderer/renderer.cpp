@@ -44,11 +44,14 @@ void Renderer::setCamera(const Camera& camera) {
     camera_ = camera;
 }
 
-void Renderer::setSettings(const Settings& settings) { settings_ = settings; }
+void Renderer::setSettings(const Settings& settings) {
+    settings_ = settings;
+}
 
 void Renderer::setSize(int width, int height) {
     if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
-        throw Error("size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1x1..16384x16384");
+        throw Error("size " + std::to_string(width) + "x" + std::to_string(height) +
+                    " is outside 1x1..16384x16384");
     width_ = width;
     height_ = height;
 }
@@ -57,15 +60,17 @@ std::string Renderer::keyFor(const Pass& p) const {
     char buf[512];
     std::string key = std::to_string(width_) + "x" + std::to_string(height_);
     const nlohmann::json j = toJson(settings_);
-    for (const auto& g : p.settingGroups()) key += "|" + j.at(g).dump();
+    for (const auto& g : p.settingGroups())
+        key += "|" + j.at(g).dump();
     if (p.readsScene()) key += "|scene" + std::to_string(sceneVersion_);
     if (p.readsCamera()) {
         const Camera& c = camera_;
-        std::snprintf(buf, sizeof buf, "|cam%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a", c.eye.x, c.eye.y, c.eye.z, c.target.x,
-                      c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg, c.nearZ, c.farZ);
+        std::snprintf(buf, sizeof buf, "|cam%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a", c.eye.x, c.eye.y, c.eye.z,
+                      c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg, c.nearZ, c.farZ);
         key += buf;
     }
-    for (const Pass* in : p.inputs()) key += "|" + std::string(in->name()) + std::to_string(in->version());
+    for (const Pass* in : p.inputs())
+        key += "|" + std::string(in->name()) + std::to_string(in->version());
     return key;
 }
 

@@ -15,7 +15,8 @@ namespace ssao {
 
 namespace {
 std::string lower(std::string s) {
-    for (auto& c : s) c = char(std::tolower((unsigned char)c));
+    for (auto& c : s)
+        c = char(std::tolower((unsigned char)c));
     return s;
 }
 constexpr size_t kTimingHistory = 60;
@@ -24,7 +25,8 @@ constexpr size_t kTimingHistory = 60;
 double AppCore::PassTiming::average() const {
     if (ms.empty()) return 0.0;
     double s = 0;
-    for (double v : ms) s += v;
+    for (double v : ms)
+        s += v;
     return s / double(ms.size());
 }
 
@@ -70,14 +72,16 @@ void AppCore::resetCamera() {
 }
 
 void AppCore::selectSceneCamera(int index) {
-    if (index >= 0 && index < int(scene_.cameras.size())) camera_.reset(scene_.cameras[size_t(index)].second, scene_.bounds.radius());
+    if (index >= 0 && index < int(scene_.cameras.size()))
+        camera_.reset(scene_.cameras[size_t(index)].second, scene_.bounds.radius());
     poke();
 }
 
 bool AppCore::openScene(const std::string& spec) {
     try {
         adoptScene(loadScene(spec), false);
-        setStatus("loaded " + scene_.name + " (" + std::to_string(scene_.triangleCount()) + " triangles)", false);
+        setStatus("loaded " + scene_.name + " (" + std::to_string(scene_.triangleCount()) + " triangles)",
+                  false);
         return true;
     } catch (const std::exception& e) {
         setStatus(std::string("could not load scene: ") + e.what(), true);
@@ -102,9 +106,12 @@ bool AppCore::openPreset(const std::string& nameOrPath) {
 void AppCore::dropFiles(const std::vector<std::string>& paths) {
     for (const auto& p : paths) {
         const std::string ext = lower(fs::path(p).extension().string());
-        if (ext == ".gltf" || ext == ".glb") openScene(p);
-        else if (ext == ".json") openPreset(p);
-        else setStatus("dropped file " + p + " is neither a .gltf/.glb scene nor a .json preset", true);
+        if (ext == ".gltf" || ext == ".glb")
+            openScene(p);
+        else if (ext == ".json")
+            openPreset(p);
+        else
+            setStatus("dropped file " + p + " is neither a .gltf/.glb scene nor a .json preset", true);
     }
 }
 
@@ -148,7 +155,9 @@ bool AppCore::deletePreset(const std::string& name) {
     }
 }
 
-bool AppCore::unsavedChanges() const { return settings_ != loaded_.settings; }
+bool AppCore::unsavedChanges() const {
+    return settings_ != loaded_.settings;
+}
 
 Settings AppCore::settingsB() const {
     if (splitKind == SplitKind::AoOnOff) {
@@ -188,7 +197,8 @@ void AppCore::renderIfNeeded(int width, int height) {
                 rendererB_ = std::make_unique<Renderer>(opts_.shaderDir);
                 rendererB_->setScene(scene_);
             }
-            if (rendererB_->width() != width || rendererB_->height() != height) rendererB_->setSize(width, height);
+            if (rendererB_->width() != width || rendererB_->height() != height)
+                rendererB_->setSize(width, height);
             rendererB_->setCamera(camera_.camera());
             rendererB_->setSettings(settingsB());
             rendererB_->render();
@@ -224,13 +234,20 @@ void AppCore::pollShaderReload() {
 glm::vec4 AppCore::texelOf(BufferId id, int x, int y) {
     Renderer& r = *rendererA_;
     switch (id) {
-    case BufferId::Position: return r.gbuffer().position().readTexel(x, y);
-    case BufferId::Normal: return r.gbuffer().normal().readTexel(x, y);
-    case BufferId::Depth: return r.gbuffer().linearDepth().readTexel(x, y);
-    case BufferId::Albedo: return r.gbuffer().albedo().readTexel(x, y);
-    case BufferId::AoRaw: return r.ssao().aoRaw().readTexel(x, y);
-    case BufferId::Ao: return r.blur().ao().readTexel(x, y);
-    default: return r.composite().color().readTexel(x, y);
+    case BufferId::Position:
+        return r.gbuffer().position().readTexel(x, y);
+    case BufferId::Normal:
+        return r.gbuffer().normal().readTexel(x, y);
+    case BufferId::Depth:
+        return r.gbuffer().linearDepth().readTexel(x, y);
+    case BufferId::Albedo:
+        return r.gbuffer().albedo().readTexel(x, y);
+    case BufferId::AoRaw:
+        return r.ssao().aoRaw().readTexel(x, y);
+    case BufferId::Ao:
+        return r.blur().ao().readTexel(x, y);
+    default:
+        return r.composite().color().readTexel(x, y);
     }
 }
 
@@ -243,8 +260,8 @@ const PixelInspection& AppCore::inspection() {
         cpuVersion_ = r.gbuffer().version();
         inspectedKey_.clear();
     }
-    const std::string key = toJson(settings_).dump() + std::to_string(hoverPixel.x) + "," + std::to_string(hoverPixel.y) +
-                            "," + std::to_string(cpuVersion_);
+    const std::string key = toJson(settings_).dump() + std::to_string(hoverPixel.x) + "," +
+                            std::to_string(hoverPixel.y) + "," + std::to_string(cpuVersion_);
     if (key != inspectedKey_) {
         const gpu::FrameConstants fc = packFrameConstants(r.camera(), r.width(), r.height(), r.sceneRadius());
         inspection_ = inspectPixel(settings_.ssao, settings_.gbuffer, fc, {&cpuPos_, &cpuNormal_, &cpuDepth_},

@@ -22,8 +22,8 @@ namespace ssao {
 
 struct AppOptions {
     std::string scene = "builtin:showcase";
-    std::string preset;     // name or path; empty = defaults
-    std::string shaderDir;  // empty = the source tree's shaders/
+    std::string preset;    // name or path; empty = defaults
+    std::string shaderDir; // empty = the source tree's shaders/
     std::string userPresetDir;
     float renderScale = 1.0f; // render resolution relative to the view's pixels (0.25..1)
 };

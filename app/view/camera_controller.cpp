@@ -10,7 +10,7 @@ namespace ssao {
 namespace {
 constexpr float kRadiansPerPixel = 0.005f;
 constexpr float kMaxPitch = 1.55f; // just short of straight up/down, where lookAt degenerates
-}
+} // namespace
 
 void CameraController::reset(const Camera& c, float sceneRadius) {
     cam_ = c;
@@ -30,8 +30,10 @@ void CameraController::rotate(float dx, float dy) {
     yaw += sign * dx * kRadiansPerPixel;
     pitch = std::clamp(pitch + (mode_ == Mode::Fly ? -dy : dy) * kRadiansPerPixel, -kMaxPitch, kMaxPitch);
     dir = glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
-    if (mode_ == Mode::Orbit) cam_.eye = cam_.target + dir * dist;
-    else cam_.target = cam_.eye + dir * dist;
+    if (mode_ == Mode::Orbit)
+        cam_.eye = cam_.target + dir * dist;
+    else
+        cam_.target = cam_.eye + dir * dist;
     cam_.up = {0.0f, 1.0f, 0.0f};
     updateClip();
 }
@@ -42,7 +44,8 @@ void CameraController::pan(float dx, float dy, float viewportHeight) {
     const glm::vec3 up = glm::cross(right, fwd);
     // One pixel moves the point under the cursor by one pixel at the target's distance.
     const float dist = glm::length(cam_.target - cam_.eye);
-    const float perPixel = 2.0f * dist * std::tan(glm::radians(cam_.fovYDeg) * 0.5f) / std::max(viewportHeight, 1.0f);
+    const float perPixel =
+        2.0f * dist * std::tan(glm::radians(cam_.fovYDeg) * 0.5f) / std::max(viewportHeight, 1.0f);
     const glm::vec3 d = (-dx * right + dy * up) * perPixel;
     cam_.eye += d;
     cam_.target += d;
@@ -51,7 +54,8 @@ void CameraController::pan(float dx, float dy, float viewportHeight) {
 void CameraController::zoom(float steps) {
     const glm::vec3 offset = cam_.eye - cam_.target;
     if (mode_ == Mode::Orbit) {
-        const float dist = std::clamp(glm::length(offset) * std::pow(0.9f, steps), radius_ * 1e-3f, radius_ * 100.0f);
+        const float dist =
+            std::clamp(glm::length(offset) * std::pow(0.9f, steps), radius_ * 1e-3f, radius_ * 100.0f);
         cam_.eye = cam_.target + glm::normalize(offset) * dist;
         updateClip();
     } else {

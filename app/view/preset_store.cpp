@@ -27,8 +27,10 @@ void PresetStore::refresh() {
     auto scan = [&](const std::string& dir, bool builtin) {
         std::vector<PresetEntry> found;
         std::error_code ec;
-        for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
-            if (it->path().extension() == ".json") found.push_back({it->path().stem().string(), it->path().string(), builtin});
+        for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator();
+             it.increment(ec))
+            if (it->path().extension() == ".json")
+                found.push_back({it->path().stem().string(), it->path().string(), builtin});
         std::sort(found.begin(), found.end(), [](auto& a, auto& b) { return a.name < b.name; });
         entries_.insert(entries_.end(), found.begin(), found.end());
     };
@@ -55,8 +57,10 @@ void PresetStore::checkName(const std::string& name) const {
     for (char c : name)
         if (!(std::isalnum((unsigned char)c) || c == ' ' || c == '_' || c == '-' || c == '.'))
             throw Error("preset name '" + name + "' may only use letters, digits, space, _ - .");
-    if (name.front() == '.' || name.front() == ' ') throw Error("preset name '" + name + "' must start with a letter or digit");
-    if (const PresetEntry* e = find(name); e && e->builtin) throw Error("'" + name + "' is a built-in preset; choose another name");
+    if (name.front() == '.' || name.front() == ' ')
+        throw Error("preset name '" + name + "' must start with a letter or digit");
+    if (const PresetEntry* e = find(name); e && e->builtin)
+        throw Error("'" + name + "' is a built-in preset; choose another name");
 }
 
 std::string PresetStore::save(const Preset& p) {

@@ -27,7 +27,8 @@ bool inputText(const char* label, std::string& s) {
 std::string rangeText(const Param& p) {
     if (p.type == Param::Type::Enum) {
         std::string r;
-        for (auto& c : p.choices) r += (r.empty() ? "" : " | ") + c;
+        for (auto& c : p.choices)
+            r += (r.empty() ? "" : " | ") + c;
         return r;
     }
     if (p.type == Param::Type::Bool) return "on | off";
@@ -39,7 +40,8 @@ void tooltip(const Param& p) {
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
     ImGui::TextUnformatted(p.help.c_str());
-    ImGui::TextDisabled("%s   range %s   default %s", p.key.c_str(), rangeText(p).c_str(), p.format(p.def).c_str());
+    ImGui::TextDisabled("%s   range %s   default %s", p.key.c_str(), rangeText(p).c_str(),
+                        p.format(p.def).c_str());
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
 }
@@ -58,7 +60,8 @@ bool paramWidget(AppCore& app, const Param& p, Settings& s) {
         ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
         if (p.max > 100.0 * std::max(p.min, 1e-3)) flags |= ImGuiSliderFlags_Logarithmic;
         std::string fmt = "%.4g" + (p.unit.empty() ? std::string() : " " + p.unit);
-        if (ImGui::SliderFloat(label.c_str(), &v, float(p.min), float(p.max), fmt.c_str(), flags)) p.set(s, v);
+        if (ImGui::SliderFloat(label.c_str(), &v, float(p.min), float(p.max), fmt.c_str(), flags))
+            p.set(s, v);
         break;
     }
     case Param::Type::Int: {
@@ -91,7 +94,8 @@ bool paramWidget(AppCore& app, const Param& p, Settings& s) {
     if (ImGui::Button("R", ImVec2(resetWidth, 0))) p.set(s, p.def);
     ImGui::EndDisabled();
     remember(app, p.key + "#reset");
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("reset to %s", p.format(p.def).c_str());
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("reset to %s", p.format(p.def).c_str());
     ImGui::PopID();
     return p.get(s) != before;
 }
@@ -123,7 +127,8 @@ void sceneSection(AppCore& app) {
     }
     ImGui::NewLine();
     const Camera& c = cc.camera();
-    ImGui::TextDisabled("eye %.3g %.3g %.3g  fov %.0f  near %.3g far %.3g", c.eye.x, c.eye.y, c.eye.z, c.fovYDeg, c.nearZ, c.farZ);
+    ImGui::TextDisabled("eye %.3g %.3g %.3g  fov %.0f  near %.3g far %.3g", c.eye.x, c.eye.y, c.eye.z,
+                        c.fovYDeg, c.nearZ, c.farZ);
 }
 
 void presetSection(AppCore& app) {
@@ -183,7 +188,8 @@ void timingSection(AppCore& app) {
         ImGui::TextDisabled("last frame %.2f ms (CPU, UI included); idle frames are not drawn", f.back());
     }
     std::string ran;
-    for (auto& n : app.lastReport().ran()) ran += n + " ";
+    for (auto& n : app.lastReport().ran())
+        ran += n + " ";
     ImGui::TextDisabled("last change re-ran: %s", ran.c_str());
 }
 
@@ -207,9 +213,10 @@ void inspectorSection(AppCore& app) {
         return;
     }
     int counts[5] = {};
-    for (const auto& t : pi.taps) ++counts[int(t.state)];
-    ImGui::Text("%zu taps: %d open, %d occluded, %d off screen, %d behind eye, %d sky", pi.taps.size(), counts[0],
-                counts[1], counts[3], counts[2], counts[4]);
+    for (const auto& t : pi.taps)
+        ++counts[int(t.state)];
+    ImGui::Text("%zu taps: %d open, %d occluded, %d off screen, %d behind eye, %d sky", pi.taps.size(),
+                counts[0], counts[1], counts[3], counts[2], counts[4]);
     ImGui::Text("AO replayed on CPU %.4f (ao_raw %.4f)", pi.ao, app.texelOf(BufferId::AoRaw, px.x, px.y).x);
 }
 
@@ -218,10 +225,12 @@ void inspectorSection(AppCore& app) {
 void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size) {
     ImGui::SetNextWindowPos(pos);
     ImGui::SetNextWindowSize(size);
-    ImGui::Begin("ssaolab", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                                         ImGuiWindowFlags_NoSavedSettings);
+    ImGui::Begin("ssaolab", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoSavedSettings);
     if (!app.status().empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, app.statusIsError() ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1));
+        ImGui::PushStyleColor(ImGuiCol_Text,
+                              app.statusIsError() ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1));
         ImGui::TextWrapped("%s", app.status().c_str());
         ImGui::PopStyleColor();
     }

@@ -9,7 +9,9 @@ namespace ssao {
 
 namespace {
 
-ImTextureID texId(const gl::Texture2D& t) { return (ImTextureID)(intptr_t)t.id(); }
+ImTextureID texId(const gl::Texture2D& t) {
+    return (ImTextureID)(intptr_t)t.id();
+}
 
 // Largest rectangle of the render's aspect that fits `avail`, centred.
 void fit(ImVec2 avail, float aspect, ImVec2& outPos, ImVec2& outSize) {
@@ -22,13 +24,15 @@ void fit(ImVec2 avail, float aspect, ImVec2& outPos, ImVec2& outSize) {
 // Camera interaction and hover over an image rectangle; returns true on a click (no drag).
 bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
     ImGui::SetCursorScreenPos(pos);
-    ImGui::InvisibleButton(id, size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
-                                         ImGuiButtonFlags_MouseButtonMiddle);
+    ImGui::InvisibleButton(id, size,
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
     const ImGuiIO& io = ImGui::GetIO();
     CameraController& cc = app.cameraController();
     bool moved = false;
     if (ImGui::IsItemActive()) {
-        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f) && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
+        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f) &&
+            (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
             cc.rotate(io.MouseDelta.x, io.MouseDelta.y);
             moved = true;
         }
@@ -61,7 +65,8 @@ bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
         }
     }
     if (moved) app.poke();
-    const bool click = ImGui::IsItemDeactivated() && ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).x == 0.0f &&
+    const bool click = ImGui::IsItemDeactivated() &&
+                       ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).x == 0.0f &&
                        ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).y == 0.0f;
     return click;
 }
@@ -82,10 +87,10 @@ void drawSamples(AppCore& app, ImDrawList* dl, ImVec2 pos, ImVec2 size) {
     for (const SampleTap& t : pi.taps) {
         if (t.state == SampleTap::State::BehindEye) continue;
         const ImVec2 p(pos.x + t.uv.x * size.x, pos.y + (1.0f - t.uv.y) * size.y);
-        ImU32 col = t.state == SampleTap::State::Occluded  ? IM_COL32(255, 60, 60, 255)
-                    : t.state == SampleTap::State::Open    ? IM_COL32(60, 255, 90, 255)
-                    : t.state == SampleTap::State::Sky     ? IM_COL32(80, 160, 255, 255)
-                                                           : IM_COL32(160, 160, 160, 255);
+        ImU32 col = t.state == SampleTap::State::Occluded ? IM_COL32(255, 60, 60, 255)
+                    : t.state == SampleTap::State::Open   ? IM_COL32(60, 255, 90, 255)
+                    : t.state == SampleTap::State::Sky    ? IM_COL32(80, 160, 255, 255)
+                                                          : IM_COL32(160, 160, 160, 255);
         dl->AddLine(c, p, (col & 0x00FFFFFF) | 0x40000000);
         dl->AddCircleFilled(p, 2.5f, col);
     }
@@ -101,14 +106,18 @@ void toolbar(AppCore& app) {
     if (mode != int(app.viewMode)) app.viewMode = ViewMode(mode), app.poke();
     ImGui::SameLine();
     ImGui::SetNextItemWidth(110);
-    if (ImGui::SliderFloat("resolution", &app.renderScale, 0.25f, 1.0f, "%.2fx", ImGuiSliderFlags_AlwaysClamp)) app.poke();
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Render resolution relative to the view (lower is faster on slow GPUs / llvmpipe)");
+    if (ImGui::SliderFloat("resolution", &app.renderScale, 0.25f, 1.0f, "%.2fx",
+                           ImGuiSliderFlags_AlwaysClamp))
+        app.poke();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Render resolution relative to the view (lower is faster on slow GPUs / llvmpipe)");
     if (app.viewMode == ViewMode::Single) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(140);
         if (ImGui::BeginCombo("##buffer", bufferName(app.enlarged))) {
             for (int i = 0; i < kBufferCount; ++i)
-                if (ImGui::Selectable(bufferName(BufferId(i)), int(app.enlarged) == i)) app.enlarged = BufferId(i);
+                if (ImGui::Selectable(bufferName(BufferId(i)), int(app.enlarged) == i))
+                    app.enlarged = BufferId(i);
             ImGui::EndCombo();
         }
     }
@@ -124,7 +133,8 @@ void toolbar(AppCore& app) {
             ImGui::SetNextItemWidth(160);
             if (ImGui::BeginCombo("B", app.splitPresetB.c_str())) {
                 for (const auto& e : app.presets().entries())
-                    if (ImGui::Selectable(e.name.c_str(), e.name == app.splitPresetB)) app.splitPresetB = e.name, app.poke();
+                    if (ImGui::Selectable(e.name.c_str(), e.name == app.splitPresetB))
+                        app.splitPresetB = e.name, app.poke();
                 ImGui::EndCombo();
             }
         }
@@ -140,9 +150,10 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
     ImGui::SetNextWindowPos(pos);
     ImGui::SetNextWindowSize(size);
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
-    ImGui::Begin("view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar |
-                                      ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    ImGui::Begin("view", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar |
+                     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     toolbar(app);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -159,13 +170,16 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
         for (int i = 0; i < kBufferCount; ++i) {
             ImVec2 off, sz;
             fit(ImVec2(cell.x - 4, cell.y - 4), aspect, off, sz);
-            const ImVec2 p(origin.x + float(i % cols) * cell.x + off.x, origin.y + float(i / cols) * cell.y + off.y);
+            const ImVec2 p(origin.x + float(i % cols) * cell.x + off.x,
+                           origin.y + float(i / cols) * cell.y + off.y);
             ImGui::PushID(i);
             const bool clicked = interact(app, "cell", p, sz);
             ImGui::PopID();
-            dl->AddImage(texId(app.viewTexture(BufferId(i))), p, ImVec2(p.x + sz.x, p.y + sz.y), ImVec2(0, 1), ImVec2(1, 0));
+            dl->AddImage(texId(app.viewTexture(BufferId(i))), p, ImVec2(p.x + sz.x, p.y + sz.y), ImVec2(0, 1),
+                         ImVec2(1, 0));
             label(dl, p, bufferName(BufferId(i)));
-            app.widgetRects[std::string("view#") + bufferName(BufferId(i))] = ImVec4(p.x, p.y, p.x + sz.x, p.y + sz.y);
+            app.widgetRects[std::string("view#") + bufferName(BufferId(i))] =
+                ImVec4(p.x, p.y, p.x + sz.x, p.y + sz.y);
             if (clicked) {
                 app.enlarged = BufferId(i);
                 app.viewMode = ViewMode::Single;
@@ -184,11 +198,13 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
             drawSamples(app, dl, p, sz);
         } else if (Renderer* b = app.rendererB()) {
             const float s = app.splitPosition, x = p.x + sz.x * s;
-            dl->AddImage(texId(app.viewTexture(BufferId::Composite)), p, ImVec2(x, q.y), ImVec2(0, 1), ImVec2(s, 0));
+            dl->AddImage(texId(app.viewTexture(BufferId::Composite)), p, ImVec2(x, q.y), ImVec2(0, 1),
+                         ImVec2(s, 0));
             dl->AddImage(texId(b->composite().color()), ImVec2(x, p.y), q, ImVec2(s, 1), ImVec2(1, 0));
             dl->AddLine(ImVec2(x, p.y), ImVec2(x, q.y), IM_COL32(255, 255, 0, 255), 2.0f);
             label(dl, p, "A: current");
-            const std::string bl = app.splitKind == SplitKind::AoOnOff ? "B: AO off" : "B: " + app.splitPresetB;
+            const std::string bl =
+                app.splitKind == SplitKind::AoOnOff ? "B: AO off" : "B: " + app.splitPresetB;
             label(dl, ImVec2(q.x - ImGui::CalcTextSize(bl.c_str()).x - 10, p.y), bl.c_str());
         }
     }

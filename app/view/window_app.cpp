@@ -18,9 +18,13 @@ namespace ssao {
 namespace {
 
 std::string g_glfwError;
-void onGlfwError(int code, const char* msg) { g_glfwError = std::string(msg) + " (" + std::to_string(code) + ")"; }
+void onGlfwError(int code, const char* msg) {
+    g_glfwError = std::string(msg) + " (" + std::to_string(code) + ")";
+}
 
-AppCore* appOf(GLFWwindow* w) { return static_cast<AppCore*>(glfwGetWindowUserPointer(w)); }
+AppCore* appOf(GLFWwindow* w) {
+    return static_cast<AppCore*>(glfwGetWindowUserPointer(w));
+}
 bool g_screenshotRequested = false; // F12
 void pokeOnly(GLFWwindow* w) {
     if (AppCore* a = appOf(w)) a->poke();
@@ -52,7 +56,8 @@ void screenshot(int w, int h, const std::string& path) {
     glReadBuffer(GL_BACK);
     glReadPixels(0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, px.data());
     for (int y = 0; y < h; ++y)
-        for (int i = 0; i < w * 3; ++i) img.data[size_t(y) * w * 3 + i] = float(px[size_t(h - 1 - y) * w * 3 + i]) / 255.0f;
+        for (int i = 0; i < w * 3; ++i)
+            img.data[size_t(y) * w * 3 + i] = float(px[size_t(h - 1 - y) * w * 3 + i]) / 255.0f;
     writePng(img, path);
 }
 
@@ -60,8 +65,9 @@ struct GlfwSession {
     GlfwSession() {
         glfwSetErrorCallback(onGlfwError);
         if (!glfwInit())
-            throw Error("no display: cannot open a window (" + g_glfwError +
-                        "); use `ssaolab render` for headless output, or run under Xvfb: xvfb-run -a ssaolab");
+            throw Error(
+                "no display: cannot open a window (" + g_glfwError +
+                "); use `ssaolab render` for headless output, or run under Xvfb: xvfb-run -a ssaolab");
     }
     ~GlfwSession() { glfwTerminate(); }
 };
@@ -146,11 +152,13 @@ int runWindowApp(const WindowOptions& o) {
                 break;
             }
             glfwSwapBuffers(window);
-            app.noteFrameMs(std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count());
+            app.noteFrameMs(
+                std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count());
         }
         gl::pollGlErrors();
         if (gl::glErrorCount() > 0) {
-            std::fprintf(stderr, "ssaolab: error: OpenGL reported %d error(s) during the session\n", gl::glErrorCount());
+            std::fprintf(stderr, "ssaolab: error: OpenGL reported %d error(s) during the session\n",
+                         gl::glErrorCount());
             rc = 1;
         }
         glfwSetWindowUserPointer(window, nullptr);

@@ -9,8 +9,8 @@ namespace ssao {
 struct WindowOptions {
     AppOptions app;
     int width = 1600, height = 900; // window size in screen coordinates
-    int frames = 0;                  // > 0: draw this many frames, then exit (tests, screenshots)
-    std::string screenshot;          // with frames: PNG of the last frame
+    int frames = 0;                 // > 0: draw this many frames, then exit (tests, screenshots)
+    std::string screenshot;         // with frames: PNG of the last frame
 };
 
 // True when a window can plausibly open (an X11 or Wayland display is set).

@@ -36,9 +36,15 @@ EGLContext createCoreContext(EGLDisplay dpy) {
     EGLint n = 0;
     // Surfaceless contexts may use EGL_NO_CONFIG_KHR; fall back to it when no config is offered.
     if (!eglChooseConfig(dpy, cfgAttribs, &cfg, 1, &n) || n == 0) cfg = nullptr;
-    const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                 EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE, EGL_NONE};
+    const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                 4,
+                                 EGL_CONTEXT_MINOR_VERSION,
+                                 5,
+                                 EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                 EGL_CONTEXT_OPENGL_DEBUG,
+                                 EGL_TRUE,
+                                 EGL_NONE};
     EGLContext ctx = eglCreateContext(dpy, cfg, EGL_NO_CONTEXT, ctxAttribs);
     if (ctx == EGL_NO_CONTEXT) return EGL_NO_CONTEXT;
     if (!eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
@@ -71,7 +77,8 @@ HeadlessContext::HeadlessContext(EglPlatform platform) : impl_(std::make_unique<
     }
     const char* clientExts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (!clientExts || !hasExtension(clientExts, "EGL_EXT_platform_base"))
-        throw Error("no GL: EGL client has no EGL_EXT_platform_base (is libegl1 with Mesa or NVIDIA installed?)");
+        throw Error(
+            "no GL: EGL client has no EGL_EXT_platform_base (is libegl1 with Mesa or NVIDIA installed?)");
 
     // 1. A hardware device (NVIDIA through EGL_EXT_platform_device), skipping Mesa's software one.
     if (platform != EglPlatform::Surfaceless && hasExtension(clientExts, "EGL_EXT_platform_device") &&
@@ -81,7 +88,8 @@ HeadlessContext::HeadlessContext(EglPlatform platform) : impl_(std::make_unique<
         if (eglQueryDevicesEXT(16, devices, &count)) {
             for (EGLint i = 0; i < count; ++i) {
                 const char* devExts = eglQueryDeviceStringEXT(devices[i], EGL_EXTENSIONS);
-                if (platform == EglPlatform::Auto && hasExtension(devExts, "EGL_MESA_device_software")) continue;
+                if (platform == EglPlatform::Auto && hasExtension(devExts, "EGL_MESA_device_software"))
+                    continue;
                 EGLDisplay dpy = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
                 if (tryDisplay(dpy, this, impl_->dpy, impl_->ctx)) {
                     platform_ = "EGL_EXT_platform_device";
@@ -93,7 +101,8 @@ HeadlessContext::HeadlessContext(EglPlatform platform) : impl_(std::make_unique<
     // 2. Mesa surfaceless (llvmpipe on a machine without a GPU).
     if (impl_->ctx == EGL_NO_CONTEXT && platform != EglPlatform::Device &&
         hasExtension(clientExts, "EGL_MESA_platform_surfaceless")) {
-        EGLDisplay dpy = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        EGLDisplay dpy =
+            eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         if (tryDisplay(dpy, this, impl_->dpy, impl_->ctx)) platform_ = "EGL_PLATFORM_SURFACELESS_MESA";
     }
     if (impl_->ctx == EGL_NO_CONTEXT)
@@ -142,8 +151,12 @@ void installDebugOutput(bool verbose) {
     glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_TRUE);
 }
 
-int glErrorCount() { return g_errors.load(); }
-void resetGlErrorCount() { g_errors = 0; }
+int glErrorCount() {
+    return g_errors.load();
+}
+void resetGlErrorCount() {
+    g_errors = 0;
+}
 
 std::string pollGlErrors() {
     std::string first;

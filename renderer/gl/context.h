@@ -16,7 +16,7 @@ class HeadlessContext {
     HeadlessContext(const HeadlessContext&) = delete;
     HeadlessContext& operator=(const HeadlessContext&) = delete;
 
-    std::string renderer() const;  // GL_RENDERER
+    std::string renderer() const; // GL_RENDERER
     std::string platform() const { return platform_; }
 
   private:

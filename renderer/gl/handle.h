@@ -35,14 +35,30 @@ template <void (*Delete)(GLuint)> class Handle {
 };
 
 namespace detail {
-inline void deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
-inline void deleteBuffer(GLuint id) { glDeleteBuffers(1, &id); }
-inline void deleteFramebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
-inline void deleteVertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }
-inline void deleteProgram(GLuint id) { glDeleteProgram(id); }
-inline void deleteShader(GLuint id) { glDeleteShader(id); }
-inline void deleteQuery(GLuint id) { glDeleteQueries(1, &id); }
-inline void deleteSampler(GLuint id) { glDeleteSamplers(1, &id); }
+inline void deleteTexture(GLuint id) {
+    glDeleteTextures(1, &id);
+}
+inline void deleteBuffer(GLuint id) {
+    glDeleteBuffers(1, &id);
+}
+inline void deleteFramebuffer(GLuint id) {
+    glDeleteFramebuffers(1, &id);
+}
+inline void deleteVertexArray(GLuint id) {
+    glDeleteVertexArrays(1, &id);
+}
+inline void deleteProgram(GLuint id) {
+    glDeleteProgram(id);
+}
+inline void deleteShader(GLuint id) {
+    glDeleteShader(id);
+}
+inline void deleteQuery(GLuint id) {
+    glDeleteQueries(1, &id);
+}
+inline void deleteSampler(GLuint id) {
+    glDeleteSamplers(1, &id);
+}
 } // namespace detail
 
 using TextureHandle = Handle<detail::deleteTexture>;

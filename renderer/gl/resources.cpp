@@ -42,8 +42,8 @@ glm::vec4 Texture2D::readTexel(int x, int yFromTop) const {
     glm::vec4 v(0.0f);
     if (x < 0 || yFromTop < 0 || x >= w_ || yFromTop >= h_) return v;
     const bool depth = fmt_ == GL_DEPTH_COMPONENT32F || fmt_ == GL_DEPTH_COMPONENT24;
-    glGetTextureSubImage(id(), 0, x, h_ - 1 - yFromTop, 0, 1, 1, 1, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT,
-                         depth ? sizeof(float) : sizeof v, &v);
+    glGetTextureSubImage(id(), 0, x, h_ - 1 - yFromTop, 0, 1, 1, 1, depth ? GL_DEPTH_COMPONENT : GL_RGBA,
+                         GL_FLOAT, depth ? sizeof(float) : sizeof v, &v);
     return v;
 }
 
@@ -98,7 +98,9 @@ GpuTimer::GpuTimer() {
     q_ = QueryHandle(id);
 }
 
-void GpuTimer::begin() { glBeginQuery(GL_TIME_ELAPSED, q_.id()); }
+void GpuTimer::begin() {
+    glBeginQuery(GL_TIME_ELAPSED, q_.id());
+}
 
 void GpuTimer::end() {
     glEndQuery(GL_TIME_ELAPSED);

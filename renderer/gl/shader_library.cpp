@@ -61,7 +61,8 @@ std::string preprocessShader(const std::string& shaderDir, const std::string& fi
         throw Error(shaderDir + "/" + file + ":1: shader must start with #version");
     std::ostringstream out;
     out << m.str(0);
-    for (auto& [k, v] : defines) out << "#define " << k << " " << v << "\n";
+    for (auto& [k, v] : defines)
+        out << "#define " << k << " " << v << "\n";
     out << "#line 2 0\n" << text.substr(m.length(0));
     return out.str();
 }
@@ -76,7 +77,8 @@ std::string mapLogToFiles(const std::string& log, const std::vector<std::string>
         std::smatch m;
         if (std::regex_search(line, m, mesaRe) || std::regex_search(line, m, nvRe)) {
             size_t id = std::stoul(m[1]);
-            if (id < files.size()) line = "shaders/" + files[id] + ":" + m[2].str() + line.substr(m.position(0) + m.length(0));
+            if (id < files.size())
+                line = "shaders/" + files[id] + ":" + m[2].str() + line.substr(m.position(0) + m.length(0));
         }
         out << line << "\n";
     }
@@ -89,7 +91,8 @@ std::string infoLog(GLuint id, bool program) {
     GLint len = 0;
     program ? glGetProgramiv(id, GL_INFO_LOG_LENGTH, &len) : glGetShaderiv(id, GL_INFO_LOG_LENGTH, &len);
     std::string log(size_t(std::max(len, 1)), '\0');
-    program ? glGetProgramInfoLog(id, len, nullptr, log.data()) : glGetShaderInfoLog(id, len, nullptr, log.data());
+    program ? glGetProgramInfoLog(id, len, nullptr, log.data())
+            : glGetShaderInfoLog(id, len, nullptr, log.data());
     return log.c_str();
 }
 
@@ -111,7 +114,7 @@ ShaderHandle compile(GLenum stage, const std::string& dir, const std::string& fi
 ShaderLibrary::ShaderLibrary(std::string shaderDir) : dir_(std::move(shaderDir)) {}
 
 ProgramHandle ShaderLibrary::build(const std::string& dir, const std::string& vert, const std::string& frag,
-                                  const Defines& defines) {
+                                   const Defines& defines) {
     ShaderHandle vs = compile(GL_VERTEX_SHADER, dir, vert, defines);
     ShaderHandle fs = compile(GL_FRAGMENT_SHADER, dir, frag, defines);
     ProgramHandle prog(glCreateProgram());
@@ -127,7 +130,8 @@ ProgramHandle ShaderLibrary::build(const std::string& dir, const std::string& ve
 
 GLuint ShaderLibrary::program(const std::string& vert, const std::string& frag, const Defines& defines) {
     std::string key = vert + "|" + frag;
-    for (auto& [k, v] : defines) key += "|" + k + "=" + v;
+    for (auto& [k, v] : defines)
+        key += "|" + k + "=" + v;
     auto it = cache_.find(key);
     if (it != cache_.end()) return it->second.program.id();
     Entry e{build(dir_, vert, frag, defines), vert, frag, defines};
@@ -138,15 +142,16 @@ GLuint ShaderLibrary::program(const std::string& vert, const std::string& frag, 
 
 void ShaderLibrary::reload() {
     std::map<std::string, Entry> fresh;
-    for (auto& [key, e] : cache_) fresh.emplace(key, Entry{build(dir_, e.vert, e.frag, e.defines), e.vert, e.frag, e.defines});
+    for (auto& [key, e] : cache_)
+        fresh.emplace(key, Entry{build(dir_, e.vert, e.frag, e.defines), e.vert, e.frag, e.defines});
     cache_.swap(fresh); // only reached when every program compiled and linked
 }
 
 std::filesystem::file_time_type ShaderLibrary::newestSourceTime() const {
     auto newest = std::filesystem::file_time_type::min(); // libstdc++ file times before 2174 are negative
     std::error_code ec;
-    for (auto it = std::filesystem::recursive_directory_iterator(dir_, ec); !ec && it != std::filesystem::end(it);
-         it.increment(ec))
+    for (auto it = std::filesystem::recursive_directory_iterator(dir_, ec);
+         !ec && it != std::filesystem::end(it); it.increment(ec))
         if (it->is_regular_file(ec)) newest = std::max(newest, it->last_write_time(ec));
     return newest;
 }

@@ -16,7 +16,8 @@ namespace ssao {
 
 Image Image::channel(int c) const {
     Image out{width, height, 1, std::vector<float>(size_t(width) * height)};
-    for (size_t i = 0; i < out.data.size(); ++i) out.data[i] = data[i * channels + c];
+    for (size_t i = 0; i < out.data.size(); ++i)
+        out.data[i] = data[i * channels + c];
     return out;
 }
 
@@ -26,7 +27,8 @@ Image readBack(const gl::Texture2D& tex, int channels) {
     img.data.resize(raw.size());
     const size_t row = size_t(img.width) * channels;
     for (int y = 0; y < img.height; ++y)
-        std::copy_n(raw.begin() + ptrdiff_t(size_t(img.height - 1 - y) * row), row, img.data.begin() + ptrdiff_t(size_t(y) * row));
+        std::copy_n(raw.begin() + ptrdiff_t(size_t(img.height - 1 - y) * row), row,
+                    img.data.begin() + ptrdiff_t(size_t(y) * row));
     return img;
 }
 
@@ -60,7 +62,8 @@ void writePng(const Image& img, const std::string& path, float scale, float offs
     std::vector<unsigned char> px(size_t(img.width) * img.height * outC);
     for (size_t p = 0; p < size_t(img.width) * img.height; ++p) {
         bool bad = false;
-        for (int c = 0; c < outC; ++c) bad |= !std::isfinite(img.data[p * img.channels + c]);
+        for (int c = 0; c < outC; ++c)
+            bad |= !std::isfinite(img.data[p * img.channels + c]);
         for (int c = 0; c < outC; ++c) {
             float v = img.data[p * img.channels + c] * scale + offset;
             if (bad) v = (outC == 1) ? 1.0f : (c == 1 ? 0.0f : 1.0f); // magenta flags NaN/inf
@@ -76,7 +79,8 @@ Image readPng(const std::string& path) {
     unsigned char* px = stbi_load(path.c_str(), &w, &h, &c, 0);
     if (!px) throw Error("cannot read " + path);
     Image img{w, h, c, std::vector<float>(size_t(w) * h * c)};
-    for (size_t i = 0; i < img.data.size(); ++i) img.data[i] = float(px[i]) / 255.0f;
+    for (size_t i = 0; i < img.data.size(); ++i)
+        img.data[i] = float(px[i]) / 255.0f;
     stbi_image_free(px);
     return img;
 }
@@ -97,8 +101,10 @@ Stats stats(const Image& img, const Image* mask) {
         s.min = std::min(s.min, double(v));
         s.max = std::max(s.max, double(v));
     }
-    if (s.count) s.mean = sum / double(s.count);
-    else s.min = s.max = 0;
+    if (s.count)
+        s.mean = sum / double(s.count);
+    else
+        s.min = s.max = 0;
     return s;
 }
 

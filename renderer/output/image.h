@@ -5,7 +5,9 @@
 
 namespace ssao {
 
-namespace gl { class Texture2D; }
+namespace gl {
+class Texture2D;
+}
 
 struct Image {
     int width = 0, height = 0, channels = 0;
@@ -26,8 +28,8 @@ void writePng(const Image& img, const std::string& path, float scale = 1.0f, flo
 Image readPng(const std::string& path); // values in [0,1]
 
 struct Stats {
-    long nonFinite = 0;   // NaN or ±inf values over all pixels and channels
-    long count = 0;       // finite values over masked pixels
+    long nonFinite = 0; // NaN or ±inf values over all pixels and channels
+    long count = 0;     // finite values over masked pixels
     double min = 0, mean = 0, max = 0;
 };
 // Statistics of channel 0 over pixels where mask (if given) has channel 0 > 0.

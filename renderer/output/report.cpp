@@ -22,7 +22,8 @@ Buffers readAll(const Renderer& r) {
     b.position = readBack(r.gbuffer().position(), 4);
     b.normal = readBack(r.gbuffer().normal(), 3);
     if (r.settings().gbuffer.normalFormat == TargetFormat::RGBA8) // stored (n+1)/2: write decoded n
-        for (auto& v : b.normal.data) v = v * 2.0f - 1.0f;
+        for (auto& v : b.normal.data)
+            v = v * 2.0f - 1.0f;
     b.albedo = readBack(r.gbuffer().albedo(), 3);
     b.depth = readBack(r.gbuffer().linearDepth(), 1);
     b.aoRaw = readBack(r.ssao().aoRaw(), 1);
@@ -38,8 +39,10 @@ nlohmann::json statsJson(const Stats& s) {
 nlohmann::json statistics(const Buffers& b) {
     Image mask = b.position.channel(3); // w = 1 on geometry, 0 on sky
     nlohmann::json j;
-    j["nonfinite"] = {{"position", stats(b.position).nonFinite}, {"normal", stats(b.normal).nonFinite},
-                      {"depth", stats(b.depth).nonFinite},       {"ao_raw", stats(b.aoRaw).nonFinite},
+    j["nonfinite"] = {{"position", stats(b.position).nonFinite},
+                      {"normal", stats(b.normal).nonFinite},
+                      {"depth", stats(b.depth).nonFinite},
+                      {"ao_raw", stats(b.aoRaw).nonFinite},
                       {"ao", stats(b.ao).nonFinite}};
     j["ao_raw"] = statsJson(stats(b.aoRaw, &mask));
     j["ao"] = statsJson(stats(b.ao, &mask));
@@ -49,7 +52,9 @@ nlohmann::json statistics(const Buffers& b) {
 
 } // namespace
 
-nlohmann::json frameStatistics(const Renderer& r) { return statistics(readAll(r)); }
+nlohmann::json frameStatistics(const Renderer& r) {
+    return statistics(readAll(r));
+}
 
 nlohmann::json writeOutputs(const Renderer& r, const std::string& dir, const RunInfo& info,
                             const FrameReport& firstFrame, const nlohmann::json& timing) {
@@ -61,7 +66,8 @@ nlohmann::json writeOutputs(const Renderer& r, const std::string& dir, const Run
 
     Image pos3{b.position.width, b.position.height, 3, {}};
     for (size_t i = 0; i < size_t(pos3.width) * pos3.height; ++i)
-        for (int c = 0; c < 3; ++c) pos3.data.push_back(b.position.data[i * 4 + c]);
+        for (int c = 0; c < 3; ++c)
+            pos3.data.push_back(b.position.data[i * 4 + c]);
     writeExr(pos3, path("position.exr"));
     writeExr(b.normal, path("normal.exr"));
     writeExr(b.depth, path("depth.exr"));
@@ -70,7 +76,8 @@ nlohmann::json writeOutputs(const Renderer& r, const std::string& dir, const Run
 
     // Previews: position and depth scaled by the scene's extent seen in this frame.
     float maxDepth = 0.0f;
-    for (float v : b.depth.data) if (std::isfinite(v)) maxDepth = std::max(maxDepth, v);
+    for (float v : b.depth.data)
+        if (std::isfinite(v)) maxDepth = std::max(maxDepth, v);
     const float posScale = maxDepth > 0 ? 0.5f / maxDepth : 1.0f;
     writePng(pos3, path("position.png"), posScale, 0.5f);
     writePng(b.normal, path("normal.png"), 0.5f, 0.5f);

@@ -28,7 +28,8 @@ void BufferViews::update(Renderer& r) {
     const bool unorm = r.settings().gbuffer.normalFormat == TargetFormat::RGBA8;
     const Src srcs[] = {
         {BufferId::Position, &r.gbuffer().position(), &r.gbuffer(), SSAO_VIEW_POSITION, 0.5f / extent},
-        {BufferId::Normal, &r.gbuffer().normal(), &r.gbuffer(), unorm ? SSAO_VIEW_UNORM_NORMAL : SSAO_VIEW_SIGNED, 1.0f},
+        {BufferId::Normal, &r.gbuffer().normal(), &r.gbuffer(),
+         unorm ? SSAO_VIEW_UNORM_NORMAL : SSAO_VIEW_SIGNED, 1.0f},
         {BufferId::Depth, &r.gbuffer().linearDepth(), &r.gbuffer(), SSAO_VIEW_SCALAR, 1.0f / extent},
         {BufferId::Albedo, &r.gbuffer().albedo(), &r.gbuffer(), SSAO_VIEW_COLOR, 1.0f},
         {BufferId::AoRaw, &r.ssao().aoRaw(), &r.ssao(), SSAO_VIEW_SCALAR, 1.0f},

@@ -6,9 +6,12 @@ namespace ssao {
 
 GLenum glFormat(TargetFormat f) {
     switch (f) {
-    case TargetFormat::RGBA16F: return GL_RGBA16F;
-    case TargetFormat::RGBA32F: return GL_RGBA32F;
-    case TargetFormat::RGBA8: return GL_RGBA8;
+    case TargetFormat::RGBA16F:
+        return GL_RGBA16F;
+    case TargetFormat::RGBA32F:
+        return GL_RGBA32F;
+    case TargetFormat::RGBA8:
+        return GL_RGBA8;
     }
     return GL_RGBA32F;
 }
@@ -24,12 +27,14 @@ void GBufferPass::run(const FrameInputs& in) {
         linearDepth_ = gl::Texture2D(in.width, in.height, GL_R32F, "gbuffer.linear_depth");
         depth_ = gl::Texture2D(in.width, in.height, GL_DEPTH_COMPONENT32F, "gbuffer.depth");
         fbo_ = std::make_unique<gl::Framebuffer>(
-            std::vector<const gl::Texture2D*>{&position_, &normal_, &albedo_, &linearDepth_}, &depth_, "gbuffer");
+            std::vector<const gl::Texture2D*>{&position_, &normal_, &albedo_, &linearDepth_}, &depth_,
+            "gbuffer");
         built_ = g;
     }
     fbo_->bind();
     const float zero[4] = {0, 0, 0, 0};
-    for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(fbo_->id(), GL_COLOR, i, zero); // w = 0: sky
+    for (int i = 0; i < 4; ++i)
+        glClearNamedFramebufferfv(fbo_->id(), GL_COLOR, i, zero); // w = 0: sky
     const float one = 1.0f;
     glClearNamedFramebufferfv(fbo_->id(), GL_DEPTH, 0, &one);
 

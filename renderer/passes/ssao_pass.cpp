@@ -13,11 +13,13 @@ void SsaoPass::run(const FrameInputs& in) {
         noise_ = gl::Texture2D(4, 4, GL_RGBA32F, "ssao.noise");
         noise_.setWrap(GL_REPEAT);
         std::vector<glm::vec4> texels;
-        for (auto& v : makeNoise(uint32_t(in.settings.ssao.seed))) texels.emplace_back(v, 0.0f);
+        for (auto& v : makeNoise(uint32_t(in.settings.ssao.seed)))
+            texels.emplace_back(v, 0.0f);
         glTextureSubImage2D(noise_.id(), 0, 0, 0, 4, 4, GL_RGBA, GL_FLOAT, texels.data());
         noiseSeed_ = in.settings.ssao.seed;
     }
-    const gpu::SsaoConstants c = packSsaoConstants(in.settings.ssao, in.settings.gbuffer, in.width, in.height);
+    const gpu::SsaoConstants c =
+        packSsaoConstants(in.settings.ssao, in.settings.gbuffer, in.width, in.height);
     ubo_.upload(&c, sizeof c);
     ubo_.bind(SSAO_UBO_SSAO);
 

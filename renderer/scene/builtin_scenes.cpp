@@ -29,12 +29,14 @@ class Builder {
     void quad(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p3) {
         glm::vec3 n = glm::normalize(glm::cross(p1 - p0, p3 - p0));
         uint32_t b = uint32_t(s_.vertices.size());
-        for (auto& p : {p0, p1, p2, p3}) s_.vertices.push_back({p, n});
+        for (auto& p : {p0, p1, p2, p3})
+            s_.vertices.push_back({p, n});
         s_.indices.insert(s_.indices.end(), {b, b + 1, b + 2, b, b + 2, b + 3});
     }
     void box(glm::vec3 lo, glm::vec3 hi) {
         glm::vec3 c[8];
-        for (int i = 0; i < 8; ++i) c[i] = {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
+        for (int i = 0; i < 8; ++i)
+            c[i] = {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
         quad(c[0], c[4], c[6], c[2]); // -x
         quad(c[1], c[3], c[7], c[5]); // +x
         quad(c[0], c[1], c[5], c[4]); // -y
@@ -76,7 +78,7 @@ Scene showcase() {
     b.begin(kFloor);
     b.floor(6.0f);
     b.begin(kWall);
-    b.box({-6.0f, 0.0f, -6.0f}, {6.0f, 3.0f, -5.8f});  // back wall: floor/wall edge
+    b.box({-6.0f, 0.0f, -6.0f}, {6.0f, 3.0f, -5.8f}); // back wall: floor/wall edge
     b.box({-6.0f, 0.0f, -5.8f}, {-5.8f, 3.0f, 2.0f}); // left wall: second edge and a 3-way corner
     b.begin(kBlue);
     for (int i = 0; i < 4; ++i) // stairs rising towards the back wall: concave step corners
@@ -116,16 +118,22 @@ Scene corner() {
 
 } // namespace
 
-std::vector<std::string> builtinSceneNames() { return {"showcase", "plane", "corner"}; }
+std::vector<std::string> builtinSceneNames() {
+    return {"showcase", "plane", "corner"};
+}
 
 Scene makeBuiltinScene(const std::string& name) {
     Scene s;
-    if (name == "showcase") s = showcase();
-    else if (name == "plane") s = plane();
-    else if (name == "corner") s = corner();
+    if (name == "showcase")
+        s = showcase();
+    else if (name == "plane")
+        s = plane();
+    else if (name == "corner")
+        s = corner();
     else {
         std::string list;
-        for (auto& n : builtinSceneNames()) list += (list.empty() ? "" : ", ") + n;
+        for (auto& n : builtinSceneNames())
+            list += (list.empty() ? "" : ", ") + n;
         throw Error("unknown built-in scene 'builtin:" + name + "' (available: " + list + ")");
     }
     s.name = "builtin:" + name;

@@ -11,7 +11,9 @@
 
 namespace ssao {
 
-glm::mat4 Camera::view() const { return glm::lookAt(eye, target, up); }
+glm::mat4 Camera::view() const {
+    return glm::lookAt(eye, target, up);
+}
 
 glm::mat4 Camera::projection(float aspect) const {
     return glm::perspective(glm::radians(fovYDeg), aspect, nearZ, farZ);
@@ -33,11 +35,14 @@ Camera frameBounds(const Bounds& b) {
 }
 
 void validateCamera(const Camera& c) {
-    auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    auto finite = [](const glm::vec3& v) {
+        return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+    };
     if (!finite(c.eye) || !finite(c.target) || !finite(c.up)) throw Error("camera: non-finite vector");
     glm::vec3 fwd = c.target - c.eye;
     if (glm::length(fwd) < 1e-12f) throw Error("camera: eye and target coincide");
-    if (glm::length(glm::cross(fwd, c.up)) < 1e-9f * glm::length(fwd)) throw Error("camera: up is parallel to the view direction");
+    if (glm::length(glm::cross(fwd, c.up)) < 1e-9f * glm::length(fwd))
+        throw Error("camera: up is parallel to the view direction");
     if (!(c.fovYDeg > 0.5f && c.fovYDeg < 179.0f)) throw Error("camera: fov must be in (0.5, 179) degrees");
     if (!(c.nearZ > 0.0f) || !std::isfinite(c.nearZ)) throw Error("camera: near must be > 0");
     if (!(c.farZ > c.nearZ) || !std::isfinite(c.farZ)) throw Error("camera: far must be > near");
@@ -58,8 +63,9 @@ Camera parseCamera(const std::string& text, const Camera& base) {
         }
     }
     if (!(v.size() == 6 || v.size() == 9 || v.size() == 10 || v.size() == 12))
-        throw Error("--camera: expected 6, 9, 10 or 12 numbers (eye, target[, up[, fov[, near, far]]]), got " +
-                    std::to_string(v.size()));
+        throw Error(
+            "--camera: expected 6, 9, 10 or 12 numbers (eye, target[, up[, fov[, near, far]]]), got " +
+            std::to_string(v.size()));
     Camera c = base;
     c.eye = {v[0], v[1], v[2]};
     c.target = {v[3], v[4], v[5]};

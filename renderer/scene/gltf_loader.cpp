@@ -32,17 +32,19 @@ struct Vec3Reader {
     }
 };
 
-const unsigned char* accessorData(const tinygltf::Model& m, const tinygltf::Accessor& a, const std::string& what,
-                                  size_t elemSize, size_t& stride) {
+const unsigned char* accessorData(const tinygltf::Model& m, const tinygltf::Accessor& a,
+                                  const std::string& what, size_t elemSize, size_t& stride) {
     if (a.sparse.isSparse) throw Error(what + ": sparse accessors are not supported");
-    if (a.bufferView < 0 || a.bufferView >= int(m.bufferViews.size())) throw Error(what + ": accessor has no bufferView");
+    if (a.bufferView < 0 || a.bufferView >= int(m.bufferViews.size()))
+        throw Error(what + ": accessor has no bufferView");
     const auto& bv = m.bufferViews[a.bufferView];
     if (bv.buffer < 0 || bv.buffer >= int(m.buffers.size())) throw Error(what + ": bufferView has no buffer");
     const auto& buf = m.buffers[bv.buffer];
     stride = bv.byteStride ? bv.byteStride : elemSize;
     size_t begin = bv.byteOffset + a.byteOffset;
     size_t need = a.count ? begin + (a.count - 1) * stride + elemSize : begin;
-    if (need > buf.data.size() || a.byteOffset + (a.count ? (a.count - 1) * stride + elemSize : 0) > bv.byteLength)
+    if (need > buf.data.size() ||
+        a.byteOffset + (a.count ? (a.count - 1) * stride + elemSize : 0) > bv.byteLength)
         throw Error(what + ": accessor reads past the end of its buffer");
     return buf.data.data() + begin;
 }
@@ -51,7 +53,8 @@ Vec3Reader vec3Accessor(const tinygltf::Model& m, int index, const std::string& 
     if (index < 0 || index >= int(m.accessors.size())) throw Error(what + ": bad accessor index");
     const auto& a = m.accessors[index];
     if (a.type != TINYGLTF_TYPE_VEC3 || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || a.normalized)
-        throw Error(what + ": only float VEC3 is supported (quantized attributes need KHR_mesh_quantization)");
+        throw Error(what +
+                    ": only float VEC3 is supported (quantized attributes need KHR_mesh_quantization)");
     Vec3Reader r;
     r.count = a.count;
     r.base = accessorData(m, a, what, sizeof(glm::vec3), r.stride);
@@ -63,24 +66,35 @@ std::vector<uint32_t> readIndices(const tinygltf::Model& m, const tinygltf::Prim
     std::vector<uint32_t> idx;
     if (p.indices < 0) {
         idx.resize(vertexCount);
-        for (size_t i = 0; i < vertexCount; ++i) idx[i] = uint32_t(i);
+        for (size_t i = 0; i < vertexCount; ++i)
+            idx[i] = uint32_t(i);
         return idx;
     }
     if (p.indices >= int(m.accessors.size())) throw Error(what + ": bad index accessor");
     const auto& a = m.accessors[p.indices];
     size_t size = 0;
     switch (a.componentType) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: size = 1; break;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: size = 2; break;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: size = 4; break;
-    default: throw Error(what + ": index component type " + std::to_string(a.componentType) + " is not an unsigned integer");
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        size = 1;
+        break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        size = 2;
+        break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        size = 4;
+        break;
+    default:
+        throw Error(what + ": index component type " + std::to_string(a.componentType) +
+                    " is not an unsigned integer");
     }
     size_t stride = 0;
     const unsigned char* data = accessorData(m, a, what + " indices", size, stride);
     idx.resize(a.count);
     for (size_t i = 0; i < a.count; ++i) {
         const unsigned char* e = data + i * stride;
-        uint32_t v = size == 1 ? *e : size == 2 ? uint32_t(e[0] | (e[1] << 8)) : uint32_t(e[0] | (e[1] << 8) | (e[2] << 16) | (uint32_t(e[3]) << 24));
+        uint32_t v = size == 1   ? *e
+                     : size == 2 ? uint32_t(e[0] | (e[1] << 8))
+                                 : uint32_t(e[0] | (e[1] << 8) | (e[2] << 16) | (uint32_t(e[3]) << 24));
         if (v >= vertexCount) throw Error(what + ": index " + std::to_string(v) + " out of range");
         idx[i] = v;
     }
@@ -93,11 +107,14 @@ std::vector<uint32_t> toTriangleList(const std::vector<uint32_t>& in, int mode) 
     std::vector<uint32_t> out;
     if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
         for (size_t i = 2; i < in.size(); ++i) {
-            if (i % 2 == 0) out.insert(out.end(), {in[i - 2], in[i - 1], in[i]});
-            else out.insert(out.end(), {in[i - 1], in[i - 2], in[i]});
+            if (i % 2 == 0)
+                out.insert(out.end(), {in[i - 2], in[i - 1], in[i]});
+            else
+                out.insert(out.end(), {in[i - 1], in[i - 2], in[i]});
         }
     } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
-        for (size_t i = 2; i < in.size(); ++i) out.insert(out.end(), {in[0], in[i - 1], in[i]});
+        for (size_t i = 2; i < in.size(); ++i)
+            out.insert(out.end(), {in[0], in[i - 1], in[i]});
     }
     return out;
 }
@@ -105,12 +122,16 @@ std::vector<uint32_t> toTriangleList(const std::vector<uint32_t>& in, int mode) 
 glm::mat4 localMatrix(const tinygltf::Node& n) {
     if (n.matrix.size() == 16) {
         glm::mat4 m;
-        for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = float(n.matrix[i]);
+        for (int i = 0; i < 16; ++i)
+            glm::value_ptr(m)[i] = float(n.matrix[i]);
         return m;
     }
     glm::mat4 m(1.0f);
-    if (n.translation.size() == 3) m = glm::translate(m, glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
-    if (n.rotation.size() == 4) m *= glm::mat4_cast(glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2])));
+    if (n.translation.size() == 3)
+        m = glm::translate(m, glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
+    if (n.rotation.size() == 4)
+        m *= glm::mat4_cast(glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]),
+                                      float(n.rotation[2])));
     if (n.scale.size() == 3) m = glm::scale(m, glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
     return m;
 }
@@ -149,7 +170,8 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
             s.indices.insert(s.indices.end(), {base + a, base + b, base + c});
         }
     } else {
-        // No normals: flat normals per face (glTF spec: "client implementations MUST calculate flat normals").
+        // No normals: flat normals per face (glTF spec: "client implementations MUST calculate flat
+        // normals").
         for (size_t t = 0; t + 2 < idx.size(); t += 3) {
             glm::vec3 p0 = glm::vec3(world * glm::vec4(pos[idx[t]], 1.0f));
             glm::vec3 p1 = glm::vec3(world * glm::vec4(pos[idx[t + 1]], 1.0f));
@@ -169,10 +191,12 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
     if (d.indexCount) s.draws.push_back(d);
 }
 
-std::optional<Camera> cameraFromNode(const tinygltf::Model& m, const tinygltf::Node& n, const glm::mat4& world) {
+std::optional<Camera> cameraFromNode(const tinygltf::Model& m, const tinygltf::Node& n,
+                                     const glm::mat4& world) {
     const auto& c = m.cameras[n.camera];
     if (c.type != "perspective") {
-        std::fprintf(stderr, "note: glTF camera '%s' is %s; framing the scene instead\n", c.name.c_str(), c.type.c_str());
+        std::fprintf(stderr, "note: glTF camera '%s' is %s; framing the scene instead\n", c.name.c_str(),
+                     c.type.c_str());
         return std::nullopt;
     }
     Camera cam;
@@ -201,8 +225,10 @@ Scene loadGltf(const std::string& path) {
                      : loader.LoadASCIIFromFile(&model, &err, &warn, path);
     if (!ok || !err.empty()) {
         std::string msg = err.empty() ? warn : err;
-        while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ')) msg.pop_back();
-        for (auto& ch : msg) if (ch == '\n') ch = ';';
+        while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' '))
+            msg.pop_back();
+        for (auto& ch : msg)
+            if (ch == '\n') ch = ';';
         throw Error("cannot load glTF " + path + ": " + (msg.empty() ? "unknown error" : msg));
     }
     for (const auto& ext : model.extensionsRequired)
@@ -213,31 +239,41 @@ Scene loadGltf(const std::string& path) {
     s.name = path;
     std::vector<int> roots;
     int sceneIdx = model.defaultScene >= 0 ? model.defaultScene : 0;
-    if (sceneIdx < int(model.scenes.size())) roots = model.scenes[sceneIdx].nodes;
-    else for (int i = 0; i < int(model.nodes.size()); ++i) roots.push_back(i);
+    if (sceneIdx < int(model.scenes.size()))
+        roots = model.scenes[sceneIdx].nodes;
+    else
+        for (int i = 0; i < int(model.nodes.size()); ++i)
+            roots.push_back(i);
 
     std::function<void(int, const glm::mat4&, int)> visit = [&](int ni, const glm::mat4& parent, int depth) {
-        if (ni < 0 || ni >= int(model.nodes.size()) || depth > 64) throw Error("glTF " + path + ": bad node hierarchy");
+        if (ni < 0 || ni >= int(model.nodes.size()) || depth > 64)
+            throw Error("glTF " + path + ": bad node hierarchy");
         const auto& n = model.nodes[ni];
         glm::mat4 world = parent * localMatrix(n);
         if (n.mesh >= 0) {
-            if (n.mesh >= int(model.meshes.size())) throw Error("glTF " + path + ": node refers to missing mesh");
+            if (n.mesh >= int(model.meshes.size()))
+                throw Error("glTF " + path + ": node refers to missing mesh");
             const auto& mesh = model.meshes[n.mesh];
-            for (const auto& p : mesh.primitives) appendPrimitive(model, p, world, s, "glTF mesh '" + mesh.name + "'");
+            for (const auto& p : mesh.primitives)
+                appendPrimitive(model, p, world, s, "glTF mesh '" + mesh.name + "'");
         }
         if (n.camera >= 0 && n.camera < int(model.cameras.size())) {
             if (auto cam = cameraFromNode(model, n, world)) {
                 std::string name = !n.name.empty() ? n.name : model.cameras[n.camera].name;
-                s.cameras.emplace_back(name.empty() ? "camera " + std::to_string(s.cameras.size()) : name, *cam);
+                s.cameras.emplace_back(name.empty() ? "camera " + std::to_string(s.cameras.size()) : name,
+                                       *cam);
                 if (!s.camera) s.camera = cam;
             }
         }
-        for (int c : n.children) visit(c, world, depth + 1);
+        for (int c : n.children)
+            visit(c, world, depth + 1);
     };
-    for (int r : roots) visit(r, glm::mat4(1.0f), 0);
+    for (int r : roots)
+        visit(r, glm::mat4(1.0f), 0);
     if (s.indices.empty()) throw Error("glTF " + path + " has no triangles to render");
     s.computeBounds();
-    if (!s.bounds.valid() || !std::isfinite(s.bounds.radius())) throw Error("glTF " + path + " has non-finite positions");
+    if (!s.bounds.valid() || !std::isfinite(s.bounds.radius()))
+        throw Error("glTF " + path + " has non-finite positions");
     // Infinite projections (no zfar): put the far plane safely behind the whole scene.
     auto fixFar = [&](Camera& c) {
         if (c.farZ > c.nearZ) return;
@@ -245,7 +281,8 @@ Scene loadGltf(const std::string& path) {
         c.farZ = std::max(d * 1.5f, c.nearZ * 10.0f);
     };
     if (s.camera) fixFar(*s.camera);
-    for (auto& [name, c] : s.cameras) fixFar(c);
+    for (auto& [name, c] : s.cameras)
+        fixFar(c);
     return s;
 }
 

@@ -9,8 +9,10 @@ GpuScene::GpuScene(const Scene& scene) : draws_(scene.draws), radius_(scene.boun
     glCreateBuffers(2, ids);
     vbo_ = gl::BufferHandle(ids[0]);
     ibo_ = gl::BufferHandle(ids[1]);
-    glNamedBufferStorage(vbo_.id(), GLsizeiptr(scene.vertices.size() * sizeof(Vertex)), scene.vertices.data(), 0);
-    glNamedBufferStorage(ibo_.id(), GLsizeiptr(scene.indices.size() * sizeof(uint32_t)), scene.indices.data(), 0);
+    glNamedBufferStorage(vbo_.id(), GLsizeiptr(scene.vertices.size() * sizeof(Vertex)), scene.vertices.data(),
+                         0);
+    glNamedBufferStorage(ibo_.id(), GLsizeiptr(scene.indices.size() * sizeof(uint32_t)), scene.indices.data(),
+                         0);
     gl::label(GL_BUFFER, vbo_.id(), "scene-vertices");
     gl::label(GL_BUFFER, ibo_.id(), "scene-indices");
 

@@ -7,7 +7,8 @@ namespace ssao {
 
 void Scene::computeBounds() {
     bounds = Bounds{};
-    for (const auto& v : vertices) bounds.add(v.position);
+    for (const auto& v : vertices)
+        bounds.add(v.position);
 }
 
 Scene loadScene(const std::string& spec) {

@@ -23,18 +23,23 @@ Param row(const char* key, const char* label, T type, double def, double lo, dou
     return Param{key, label, type, def, lo, hi, unit, help, std::move(choices), get, set};
 }
 
-#define FLOAT_P(key, label, field, def, lo, hi, unit, help)                                                     \
-    row(key, label, T::Float, def, lo, hi, unit, help, {}, [](const Settings& s) { return double(s.field); }, \
+#define FLOAT_P(key, label, field, def, lo, hi, unit, help)                                                  \
+    row(                                                                                                     \
+        key, label, T::Float, def, lo, hi, unit, help, {},                                                   \
+        [](const Settings& s) { return double(s.field); },                                                   \
         [](Settings& s, double v) { s.field = float(v); })
-#define INT_P(key, label, field, def, lo, hi, unit, help)                                                     \
-    row(key, label, T::Int, def, lo, hi, unit, help, {}, [](const Settings& s) { return double(s.field); }, \
+#define INT_P(key, label, field, def, lo, hi, unit, help)                                                    \
+    row(                                                                                                     \
+        key, label, T::Int, def, lo, hi, unit, help, {}, [](const Settings& s) { return double(s.field); },  \
         [](Settings& s, double v) { s.field = int(v); })
 #define BOOL_P(key, label, field, def, help)                                                                 \
-    row(key, label, T::Bool, def, 0, 1, "", help, {}, [](const Settings& s) { return s.field ? 1.0 : 0.0; }, \
+    row(                                                                                                     \
+        key, label, T::Bool, def, 0, 1, "", help, {}, [](const Settings& s) { return s.field ? 1.0 : 0.0; }, \
         [](Settings& s, double v) { s.field = v != 0.0; })
-#define ENUM_P(key, label, field, E, def, help, ...)                                                        \
-    row(key, label, T::Enum, def, 0, std::vector<std::string>{__VA_ARGS__}.size() - 1, "", help,             \
-        {__VA_ARGS__}, [](const Settings& s) { return double(int(s.field)); },                              \
+#define ENUM_P(key, label, field, E, def, help, ...)                                                         \
+    row(                                                                                                     \
+        key, label, T::Enum, def, 0, std::vector<std::string>{__VA_ARGS__}.size() - 1, "", help,             \
+        {__VA_ARGS__}, [](const Settings& s) { return double(int(s.field)); },                               \
         [](Settings& s, double v) { s.field = E(int(v)); })
 
 std::vector<Param> buildTable() {
@@ -58,13 +63,16 @@ std::vector<Param> buildTable() {
         FLOAT_P("ssao.radius", "Radius", ssao.radius, 0.5, 1e-4, 1e4, "scene units",
                 "World-size of the sampling kernel: how far away geometry can still occlude."),
         FLOAT_P("ssao.bias", "Bias", ssao.bias, 0.025, 0.0, 1e3, "scene units",
-                "Depth margin before a sample counts as occluded; removes self-occlusion acne, too much loses contact shadows."),
+                "Depth margin before a sample counts as occluded; removes self-occlusion acne, too much "
+                "loses contact shadows."),
         ENUM_P("ssao.range_check", "Range check", ssao.rangeCheck, RangeCheck, 0,
-               "Fades occluders far in depth from the pixel: smoothstep(radius/|dz|) (seed 004), hard |dz|<radius "
+               "Fades occluders far in depth from the pixel: smoothstep(radius/|dz|) (seed 004), hard "
+               "|dz|<radius "
                "(seed 003) or off (dark halos behind silhouettes).",
                "smoothstep", "hard", "off"),
         ENUM_P("ssao.depth_test", "Depth test", ssao.depthTest, DepthTest, 0,
-               "sample: occluded if the surface is in front of the sample (seeds 000/004); fragment: if it is behind "
+               "sample: occluded if the surface is in front of the sample (seeds 000/004); fragment: if it "
+               "is behind "
                "the pixel itself (seed 003).",
                "sample", "fragment"),
         FLOAT_P("ssao.power", "Power", ssao.power, 1.0, 0.1, 16.0, "",
@@ -74,22 +82,26 @@ std::vector<Param> buildTable() {
                "tex4x4", "none"),
         INT_P("ssao.seed", "Seed", ssao.seed, 0, 0, 1000000, "",
               "Random seed of the kernel and noise; change it to see which artefacts are sampling luck."),
-        ENUM_P("ssao.position_source", "Position source", ssao.positionSource, PositionSource, 0,
-               "Read positions from the G-buffer target, or reconstruct them from the depth buffer (seed 001).",
-               "gbuffer", "depth"),
-        ENUM_P("ssao.offscreen", "Off-screen samples", ssao.offscreen, Offscreen, 0,
-               "Samples projecting outside the screen: skip (count as open) or clamp to the edge texel (seeds).",
-               "skip", "clamp"),
+        ENUM_P(
+            "ssao.position_source", "Position source", ssao.positionSource, PositionSource, 0,
+            "Read positions from the G-buffer target, or reconstruct them from the depth buffer (seed 001).",
+            "gbuffer", "depth"),
+        ENUM_P(
+            "ssao.offscreen", "Off-screen samples", ssao.offscreen, Offscreen, 0,
+            "Samples projecting outside the screen: skip (count as open) or clamp to the edge texel (seeds).",
+            "skip", "clamp"),
         // ---- Blur -----------------------------------------------------------------------------
         ENUM_P("blur.kind", "Blur", blur.kind, BlurKind, 1,
-               "Removes the 4x4 noise pattern: none, 4x4 box (seed 004) or gaussian (seed 003). Both run separably.",
+               "Removes the 4x4 noise pattern: none, 4x4 box (seed 004) or gaussian (seed 003). Both run "
+               "separably.",
                "none", "box4", "gaussian"),
         FLOAT_P("blur.sigma", "Sigma", blur.sigma, 1.5, 0.1, 32.0, "taps",
                 "Gaussian standard deviation; weight = exp(-d^2 / (2 sigma^2))."),
         INT_P("blur.radius", "Half-width", blur.radius, 2, 0, 32, "taps",
               "Gaussian taps each side of the centre (2 gives the seed's 5x5)."),
-        FLOAT_P("blur.spacing", "Tap spacing", blur.spacing, 1.0, 0.25, 16.0, "pixels",
-                "Distance between gaussian taps (seed 003 blurRadius); >1 widens the blur without more taps."),
+        FLOAT_P(
+            "blur.spacing", "Tap spacing", blur.spacing, 1.0, 0.25, 16.0, "pixels",
+            "Distance between gaussian taps (seed 003 blurRadius); >1 widens the blur without more taps."),
         // ---- Composite ------------------------------------------------------------------------
         FLOAT_P("composite.ambient", "Ambient", composite.ambient, 0.7, 0.0, 4.0, "",
                 "Ambient term strength: ambient * albedo * AO (seed 004 uses 0.1 with a bright light)."),
@@ -108,23 +120,24 @@ double parseNumber(const Param& p, const std::string& text) {
     } catch (...) {
         used = 0;
     }
-    if (used == 0 || used != text.size())
-        throw Error(p.key + ": '" + text + "' is not a number");
+    if (used == 0 || used != text.size()) throw Error(p.key + ": '" + text + "' is not a number");
     return v;
 }
 
 void checkAndSet(const Param& p, Settings& s, double v, const std::string& shown) {
     if (!std::isfinite(v)) throw Error(p.key + ": value " + shown + " is not finite");
-    if (p.type == T::Int && v != std::floor(v)) throw Error(p.key + ": value " + shown + " is not an integer");
+    if (p.type == T::Int && v != std::floor(v))
+        throw Error(p.key + ": value " + shown + " is not an integer");
     if (v < p.min || v > p.max)
-        throw Error(p.key + ": value " + shown + " is out of range [" + p.format(p.min) + ", " + p.format(p.max) + "]" +
-                    (p.unit.empty() ? "" : " " + p.unit));
+        throw Error(p.key + ": value " + shown + " is out of range [" + p.format(p.min) + ", " +
+                    p.format(p.max) + "]" + (p.unit.empty() ? "" : " " + p.unit));
     p.set(s, v);
 }
 
 std::string choiceList(const Param& p) {
     std::string out;
-    for (auto& c : p.choices) out += (out.empty() ? "" : "|") + c;
+    for (auto& c : p.choices)
+        out += (out.empty() ? "" : "|") + c;
     return out;
 }
 
@@ -143,10 +156,16 @@ double shortFloat(double v) {
 std::string Param::format(double v) const {
     char buf[32];
     switch (type) {
-    case T::Bool: return v != 0.0 ? "true" : "false";
-    case T::Enum: return choices.at(size_t(v));
-    case T::Int: std::snprintf(buf, sizeof buf, "%d", int(v)); return buf;
-    case T::Float: std::snprintf(buf, sizeof buf, "%g", shortFloat(v)); return buf;
+    case T::Bool:
+        return v != 0.0 ? "true" : "false";
+    case T::Enum:
+        return choices.at(size_t(v));
+    case T::Int:
+        std::snprintf(buf, sizeof buf, "%d", int(v));
+        return buf;
+    case T::Float:
+        std::snprintf(buf, sizeof buf, "%g", shortFloat(v));
+        return buf;
     }
     return {};
 }
@@ -169,7 +188,8 @@ const Param* findParam(const std::string& key) {
 
 Settings defaultSettings() {
     Settings s;
-    for (const auto& p : paramTable()) p.set(s, p.def);
+    for (const auto& p : paramTable())
+        p.set(s, p.def);
     return s;
 }
 
@@ -185,7 +205,8 @@ void setParam(Settings& s, const std::string& key, const std::string& text) {
         for (size_t i = 0; i < p->choices.size(); ++i)
             if (p->choices[i] == text) return p->set(s, double(i));
         throw Error(key + ": '" + text + "' is not one of " + choiceList(*p));
-    default: checkAndSet(*p, s, parseNumber(*p, text), text);
+    default:
+        checkAndSet(*p, s, parseNumber(*p, text), text);
     }
 }
 
@@ -201,10 +222,18 @@ nlohmann::json toJson(const Settings& s) {
         double v = p.get(s);
         auto& slot = j[p.group()][p.name()];
         switch (p.type) {
-        case T::Bool: slot = v != 0.0; break;
-        case T::Enum: slot = p.choices.at(size_t(v)); break;
-        case T::Int: slot = int(v); break;
-        case T::Float: slot = shortFloat(v); break;
+        case T::Bool:
+            slot = v != 0.0;
+            break;
+        case T::Enum:
+            slot = p.choices.at(size_t(v));
+            break;
+        case T::Int:
+            slot = int(v);
+            break;
+        case T::Float:
+            slot = shortFloat(v);
+            break;
         }
     }
     return j;
@@ -240,7 +269,9 @@ void applyJson(Settings& s, const nlohmann::json& patch, const std::string& orig
     }
 }
 
-Settings loadPreset(const std::string& path) { return readPresetFile(path).settings; }
+Settings loadPreset(const std::string& path) {
+    return readPresetFile(path).settings;
+}
 
 bool operator==(const Settings& a, const Settings& b) {
     for (const auto& p : paramTable())

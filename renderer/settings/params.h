@@ -14,12 +14,12 @@ namespace ssao {
 
 struct Param {
     enum class Type { Float, Int, Bool, Enum };
-    std::string key;     // "ssao.radius": group.name; the group is the pass that reads it
-    std::string label;   // UI label
+    std::string key;   // "ssao.radius": group.name; the group is the pass that reads it
+    std::string label; // UI label
     Type type;
     double def, min, max; // enum/bool: index
     std::string unit;
-    std::string help;     // one line: what changing it does
+    std::string help;                 // one line: what changing it does
     std::vector<std::string> choices; // Enum only
     std::function<double(const Settings&)> get;
     std::function<void(Settings&, double)> set;
@@ -53,6 +53,8 @@ void applyJson(Settings& s, const nlohmann::json& patch, const std::string& orig
 Settings loadPreset(const std::string& path); // defaults + the file's patch
 
 bool operator==(const Settings& a, const Settings& b);
-inline bool operator!=(const Settings& a, const Settings& b) { return !(a == b); }
+inline bool operator!=(const Settings& a, const Settings& b) {
+    return !(a == b);
+}
 
 } // namespace ssao

@@ -12,8 +12,8 @@ namespace ssao {
 namespace {
 glm::vec3 vec3From(const nlohmann::json& j, const char* key, const std::string& origin) {
     const auto it = j.find(key);
-    if (it == j.end() || !it->is_array() || it->size() != 3 || !(*it)[0].is_number() || !(*it)[1].is_number() ||
-        !(*it)[2].is_number())
+    if (it == j.end() || !it->is_array() || it->size() != 3 || !(*it)[0].is_number() ||
+        !(*it)[1].is_number() || !(*it)[2].is_number())
         throw Error(origin + ": camera." + key + " must be an array of 3 numbers");
     return {(*it)[0].get<float>(), (*it)[1].get<float>(), (*it)[2].get<float>()};
 }
@@ -26,9 +26,12 @@ float numberFrom(const nlohmann::json& j, const char* key, float def, const std:
 } // namespace
 
 nlohmann::json cameraToJson(const Camera& c) {
-    return {{"eye", {c.eye.x, c.eye.y, c.eye.z}}, {"target", {c.target.x, c.target.y, c.target.z}},
-            {"up", {c.up.x, c.up.y, c.up.z}},     {"fov_y_deg", c.fovYDeg},
-            {"near", c.nearZ},                    {"far", c.farZ}};
+    return {{"eye", {c.eye.x, c.eye.y, c.eye.z}},
+            {"target", {c.target.x, c.target.y, c.target.z}},
+            {"up", {c.up.x, c.up.y, c.up.z}},
+            {"fov_y_deg", c.fovYDeg},
+            {"near", c.nearZ},
+            {"far", c.farZ}};
 }
 
 Camera cameraFromJson(const nlohmann::json& j, const std::string& origin) {
@@ -68,7 +71,8 @@ Preset presetFromJson(const nlohmann::json& j, const std::string& origin) {
         if (!j["name"].is_string()) throw Error(origin + ": name must be a string");
         p.name = j["name"].get<std::string>();
     }
-    if (j.contains("description") && j["description"].is_string()) p.description = j["description"].get<std::string>();
+    if (j.contains("description") && j["description"].is_string())
+        p.description = j["description"].get<std::string>();
     if (j.contains("camera")) p.camera = cameraFromJson(j["camera"], origin);
     return p;
 }

@@ -26,7 +26,7 @@ Camera cameraFromJson(const nlohmann::json& j, const std::string& origin); // va
 
 nlohmann::json presetToJson(const Preset& p); // every parameter written: a complete preset
 Preset presetFromJson(const nlohmann::json& j, const std::string& origin);
-Preset readPresetFile(const std::string& path);   // throws ssao::Error naming file and key
+Preset readPresetFile(const std::string& path); // throws ssao::Error naming file and key
 void writePresetFile(const Preset& p, const std::string& path);
 
 } // namespace ssao

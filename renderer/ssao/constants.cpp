@@ -44,12 +44,15 @@ gpu::SsaoConstants packSsaoConstants(const SsaoSettings& s, const GBufferSetting
         b = makeKernel(KernelShape::PlaneYZ, n, seed);
         // The sphere option applies to the plane sets too: mirror z to [-1,1] on alternate samples.
         if (s.kernel == Kernel::Sphere)
-            for (int i = 0; i < n; i += 2) a[size_t(i)].z = -a[size_t(i)].z, b[size_t(i)].z = -b[size_t(i)].z;
+            for (int i = 0; i < n; i += 2)
+                a[size_t(i)].z = -a[size_t(i)].z, b[size_t(i)].z = -b[size_t(i)].z;
     } else {
         a = makeKernel(s.kernel == Kernel::Sphere ? KernelShape::Sphere : KernelShape::Hemisphere, n, seed);
     }
-    for (int i = 0; i < n; ++i) c.kernel[i] = glm::vec4(a[size_t(i)], 0.0f);
-    for (int i = 0; i < int(b.size()); ++i) c.kernel[SSAO_MAX_SAMPLES + i] = glm::vec4(b[size_t(i)], 0.0f);
+    for (int i = 0; i < n; ++i)
+        c.kernel[i] = glm::vec4(a[size_t(i)], 0.0f);
+    for (int i = 0; i < int(b.size()); ++i)
+        c.kernel[SSAO_MAX_SAMPLES + i] = glm::vec4(b[size_t(i)], 0.0f);
     return c;
 }
 
@@ -57,7 +60,8 @@ gpu::BlurConstants packBlurConstants(const BlurSettings& b, int direction) {
     gpu::BlurConstants c{};
     int count = 0;
     if (b.kind == BlurKind::Box4) {
-        for (int i = -2; i <= 1; ++i) c.offsetsWeights[count++] = {float(i), 0.25f, 0.0f, 0.0f};
+        for (int i = -2; i <= 1; ++i)
+            c.offsetsWeights[count++] = {float(i), 0.25f, 0.0f, 0.0f};
     } else if (b.kind == BlurKind::Gaussian) {
         const int r = std::clamp(b.radius, 0, (SSAO_MAX_BLUR_TAPS - 1) / 2);
         float sum = 0.0f;
@@ -66,7 +70,8 @@ gpu::BlurConstants packBlurConstants(const BlurSettings& b, int direction) {
             c.offsetsWeights[count++] = {float(i) * b.spacing, w, 0.0f, 0.0f};
             sum += w;
         }
-        for (int i = 0; i < count; ++i) c.offsetsWeights[i].y /= sum;
+        for (int i = 0; i < count; ++i)
+            c.offsetsWeights[i].y /= sum;
     } else {
         c.offsetsWeights[count++] = {0.0f, 1.0f, 0.0f, 0.0f};
     }

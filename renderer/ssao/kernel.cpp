@@ -19,10 +19,18 @@ std::vector<glm::vec3> makeKernel(KernelShape shape, int n, uint32_t seed) {
             float x = rng.uniform(-1.0f, 1.0f), y = rng.uniform(-1.0f, 1.0f);
             float zh = rng.uniform(0.0f, 1.0f), zs = rng.uniform(-1.0f, 1.0f);
             switch (shape) {
-            case KernelShape::Hemisphere: v = {x, y, zh}; break;
-            case KernelShape::Sphere: v = {x, y, zs}; break;
-            case KernelShape::PlaneXZ: v = {x, 0.0f, zh}; break;
-            case KernelShape::PlaneYZ: v = {0.0f, y, zh}; break;
+            case KernelShape::Hemisphere:
+                v = {x, y, zh};
+                break;
+            case KernelShape::Sphere:
+                v = {x, y, zs};
+                break;
+            case KernelShape::PlaneXZ:
+                v = {x, 0.0f, zh};
+                break;
+            case KernelShape::PlaneYZ:
+                v = {0.0f, y, zh};
+                break;
             }
         } while (glm::dot(v, v) < 1e-8f);
         v = glm::normalize(v) * rng.uniform(); // uniform length in [0,1) ...

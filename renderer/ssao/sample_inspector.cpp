@@ -16,7 +16,8 @@ glm::vec4 fetch(const Image& img, glm::vec2 uv) {
     int ty = std::clamp(int(std::floor(uv.y * float(img.height))), 0, img.height - 1);
     int row = img.height - 1 - ty;
     glm::vec4 v(0.0f, 0.0f, 0.0f, 1.0f);
-    for (int c = 0; c < std::min(img.channels, 4); ++c) v[c] = img.at(tx, row, c);
+    for (int c = 0; c < std::min(img.channels, 4); ++c)
+        v[c] = img.at(tx, row, c);
     return v;
 }
 
@@ -68,8 +69,10 @@ struct Replay {
         }
         float dz = std::abs(P.z - Q.z);
         float range = 1.0f;
-        if (c.modes.y == SSAO_RANGE_SMOOTHSTEP) range = smoothstep01(radius / std::max(dz, c.params0.w));
-        else if (c.modes.y == SSAO_RANGE_HARD) range = dz < radius ? 1.0f : 0.0f;
+        if (c.modes.y == SSAO_RANGE_SMOOTHSTEP)
+            range = smoothstep01(radius / std::max(dz, c.params0.w));
+        else if (c.modes.y == SSAO_RANGE_HARD)
+            range = dz < radius ? 1.0f : 0.0f;
         bool occluded = c.modes.z == SSAO_DEPTHTEST_SAMPLE ? Q.z >= S.z + bias : P.z + bias < Q.z;
         t.occlusion = occluded ? range : 0.0f;
         t.state = occluded && range > 0.0f ? SampleTap::State::Occluded : SampleTap::State::Open;
@@ -81,17 +84,22 @@ struct Replay {
 
 const char* tapStateName(SampleTap::State s) {
     switch (s) {
-    case SampleTap::State::Open: return "open";
-    case SampleTap::State::Occluded: return "occluded";
-    case SampleTap::State::BehindEye: return "behind eye";
-    case SampleTap::State::Offscreen: return "off screen";
-    case SampleTap::State::Sky: return "sky";
+    case SampleTap::State::Open:
+        return "open";
+    case SampleTap::State::Occluded:
+        return "occluded";
+    case SampleTap::State::BehindEye:
+        return "behind eye";
+    case SampleTap::State::Offscreen:
+        return "off screen";
+    case SampleTap::State::Sky:
+        return "sky";
     }
     return "?";
 }
 
-PixelInspection inspectPixel(const SsaoSettings& s, const GBufferSettings& g, const gpu::FrameConstants& frame,
-                             const GBufferImages& gb, int x, int y) {
+PixelInspection inspectPixel(const SsaoSettings& s, const GBufferSettings& g,
+                             const gpu::FrameConstants& frame, const GBufferImages& gb, int x, int y) {
     PixelInspection out;
     const int w = int(frame.viewport.x), h = int(frame.viewport.y);
     if (x < 0 || y < 0 || x >= w || y >= h) return out;

@@ -26,7 +26,7 @@ struct SampleTap {
     glm::vec2 uv{0.0f};      // where it projects (GL uv: origin bottom-left)
     float occlusion = 0.0f;  // contribution, range-check weight included
     State state = State::Open;
-    int set = 0;             // 0 = main / x-plane set, 1 = y-plane set (separable)
+    int set = 0; // 0 = main / x-plane set, 1 = y-plane set (separable)
 };
 
 struct PixelInspection {
@@ -37,8 +37,8 @@ struct PixelInspection {
 };
 
 // x, y: pixel, y counted from the top of the image.
-PixelInspection inspectPixel(const SsaoSettings& s, const GBufferSettings& g, const gpu::FrameConstants& frame,
-                             const GBufferImages& gb, int x, int y);
+PixelInspection inspectPixel(const SsaoSettings& s, const GBufferSettings& g,
+                             const gpu::FrameConstants& frame, const GBufferImages& gb, int x, int y);
 
 const char* tapStateName(SampleTap::State s);
 

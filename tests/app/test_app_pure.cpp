@@ -18,7 +18,7 @@ TEST(CameraController, OrbitKeepsDistanceAndTarget) {
     EXPECT_NEAR(glm::length(c.camera().eye), 5.0f, 1e-4f);
     EXPECT_EQ(c.camera().target, glm::vec3(0));
     EXPECT_GT(c.camera().eye.y, 0.0f); // dragging down looks from above
-    c.rotate(0, 100000); // pitch is clamped short of the pole: the view never degenerates
+    c.rotate(0, 100000);               // pitch is clamped short of the pole: the view never degenerates
     EXPECT_NO_THROW(validateCamera(c.camera()));
 }
 
@@ -76,7 +76,8 @@ TEST(PresetFiles, CameraBookmarkIsValidated) {
     EXPECT_THROW(presetFromJson(j, "t"), Error); // eye == target
     j = {{"camera", {{"eye", {0, 0, 1}}, {"target", {0, 0, 0}}, {"zoom", 2}}}};
     EXPECT_THROW(presetFromJson(j, "t"), Error); // unknown camera key
-    j = {{"camera", {{"eye", {0, 0, 1}}, {"target", {0, 0, 0}}, {"near", 0.5}, {"far", 9}}}, {"ssao", {{"radius", 2}}}};
+    j = {{"camera", {{"eye", {0, 0, 1}}, {"target", {0, 0, 0}}, {"near", 0.5}, {"far", 9}}},
+         {"ssao", {{"radius", 2}}}};
     Preset p = presetFromJson(j, "t");
     EXPECT_FLOAT_EQ(p.settings.ssao.radius, 2.0f);
     EXPECT_FLOAT_EQ(p.camera->farZ, 9.0f);

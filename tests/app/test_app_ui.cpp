@@ -17,7 +17,8 @@ class AppUi : public GlTest {
   protected:
     void SetUp() override {
         GlTest::SetUp();
-        userDir_ = std::string(SSAOLAB_TEST_TMP) + "/user_presets_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        userDir_ = std::string(SSAOLAB_TEST_TMP) + "/user_presets_" +
+                   ::testing::UnitTest::GetInstance()->current_test_info()->name();
         fs::remove_all(userDir_);
         AppOptions o;
         o.userPresetDir = userDir_;
@@ -60,7 +61,8 @@ TEST_F(AppUi, SliderClickSetsAValueInRangeAndReRendersOnlyWhatItInvalidates) {
 }
 
 TEST_F(AppUi, CtrlClickTextEntryIsClampedToTheRange) {
-    ui_->click("ssao.radius", 0.5f, /*ctrl=*/true); // Ctrl+Click turns the slider into a text field (all selected)
+    ui_->click("ssao.radius", 0.5f,
+               /*ctrl=*/true); // Ctrl+Click turns the slider into a text field (all selected)
     ui_->type("99999");
     ui_->pressEnter();
     ui_->frames(2);
@@ -112,7 +114,8 @@ TEST_F(AppUi, PresetSavedFromTheUiLoadsBackAndRendersTheSameHeadless) {
     headless.render();
     Image a = readBack(appR.blur().ao(), 1), b = readBack(headless.blur().ao(), 1);
     double maxDiff = 0;
-    for (size_t i = 0; i < a.data.size(); ++i) maxDiff = std::max(maxDiff, double(std::abs(a.data[i] - b.data[i])));
+    for (size_t i = 0; i < a.data.size(); ++i)
+        maxDiff = std::max(maxDiff, double(std::abs(a.data[i] - b.data[i])));
     EXPECT_LT(maxDiff, 1e-4);
     Image ca = readBack(appR.composite().color(), 4), cb = readBack(headless.composite().color(), 4);
     EXPECT_EQ(ca.data, cb.data);
@@ -190,7 +193,8 @@ TEST_F(AppUi, DraggingTheViewOrbitsTheCamera) {
     ui_->frame();
     const Camera after = ui_->app().cameraController().camera();
     EXPECT_GT(glm::length(after.eye - before.eye), 0.1f);
-    EXPECT_NEAR(glm::length(after.eye - after.target), glm::length(before.eye - before.target), 1e-3f); // orbit keeps distance
+    EXPECT_NEAR(glm::length(after.eye - after.target), glm::length(before.eye - before.target),
+                1e-3f);                                  // orbit keeps distance
     EXPECT_EQ(ui_->app().lastReport().ran().size(), 4u); // a camera move re-renders everything
 }
 
@@ -202,7 +206,8 @@ TEST_F(AppUi, SplitViewComparesAoOnAndOff) {
     Image a = readBack(ui_->app().renderer().composite().color(), 4);
     Image b = readBack(ui_->app().rendererB()->composite().color(), 4);
     double sumA = 0, sumB = 0;
-    for (size_t i = 0; i < a.data.size(); ++i) sumA += a.data[i], sumB += b.data[i];
+    for (size_t i = 0; i < a.data.size(); ++i)
+        sumA += a.data[i], sumB += b.data[i];
     EXPECT_LT(sumA, sumB); // with AO the frame is darker
     ui_->app().splitKind = SplitKind::Presets;
     ui_->app().splitPresetB = "crytek-sphere";
@@ -246,7 +251,8 @@ TEST_F(AppUi, BrokenShaderKeepsTheLastGoodProgramAndShowsFileAndLine) {
     fs::last_write_time(frag, fs::last_write_time(frag) + std::chrono::seconds(2));
     ui_->app().pollShaderReload();
     ui_->frame();
-    EXPECT_NE(ui_->app().shaderError().find("passes/ssao.frag:"), std::string::npos) << ui_->app().shaderError() << " / " << ui_->app().status();
+    EXPECT_NE(ui_->app().shaderError().find("passes/ssao.frag:"), std::string::npos)
+        << ui_->app().shaderError() << " / " << ui_->app().status();
     ui_->app().renderer().invalidate(); // still renders, with the last good program
     ui_->frames(2);
     EXPECT_EQ(aoRaw().data, good.data);
@@ -262,21 +268,25 @@ TEST_F(AppUi, ClosingTheAppReleasesEveryGlObject) {
     ui_->app().viewMode = ViewMode::Split; // also create the second renderer
     ui_->frames(2);
     std::vector<GLuint> textures;
-    for (int i = 0; i < kBufferCount; ++i) textures.push_back(ui_->app().viewTexture(BufferId(i)).id());
+    for (int i = 0; i < kBufferCount; ++i)
+        textures.push_back(ui_->app().viewTexture(BufferId(i)).id());
     Renderer& r = ui_->app().renderer();
-    for (const gl::Texture2D* t : {&r.gbuffer().position(), &r.gbuffer().normal(), &r.gbuffer().depth(),
-                                   &r.ssao().aoRaw(), &r.blur().ao(), &ui_->app().rendererB()->composite().color()})
+    for (const gl::Texture2D* t :
+         {&r.gbuffer().position(), &r.gbuffer().normal(), &r.gbuffer().depth(), &r.ssao().aoRaw(),
+          &r.blur().ao(), &ui_->app().rendererB()->composite().color()})
         textures.push_back(t->id());
-    for (GLuint id : textures) ASSERT_TRUE(glIsTexture(id)) << id;
+    for (GLuint id : textures)
+        ASSERT_TRUE(glIsTexture(id)) << id;
     ui_.reset();
-    for (GLuint id : textures) EXPECT_FALSE(glIsTexture(id)) << "texture " << id << " leaked";
+    for (GLuint id : textures)
+        EXPECT_FALSE(glIsTexture(id)) << "texture " << id << " leaked";
 }
 
 TEST_F(AppUi, GltfCamerasAreSelectableAndScenesWithoutOneAreFramed) {
     ASSERT_TRUE(ui_->app().openScene(std::string(SSAOLAB_SCENES_DIR) + "/CornellBox/cornellBox.gltf"));
     ASSERT_FALSE(ui_->app().scene().cameras.empty());
     ui_->app().cameraController().rotate(200, 0); // move away from the file's camera...
-    ui_->app().selectSceneCamera(0);             // ...and back to it
+    ui_->app().selectSceneCamera(0);              // ...and back to it
     EXPECT_EQ(ui_->app().cameraController().camera().eye, ui_->app().scene().cameras[0].second.eye);
     ASSERT_TRUE(ui_->app().openScene(std::string(SSAOLAB_SCENES_DIR) + "/FlightHelmet/FlightHelmet.gltf"));
     const Camera framed = frameBounds(ui_->app().scene().bounds);
@@ -295,11 +305,12 @@ TEST_F(AppUi, FlyModeMovesWithWasdWhileHoveringTheView) {
     ui_->frame(cx, cy);
     const Camera before = ui_->app().cameraController().camera();
     ImGui::GetIO().KeysDown['W'] = true;
-    for (int i = 0; i < 10; ++i) ui_->frame(cx, cy);
+    for (int i = 0; i < 10; ++i)
+        ui_->frame(cx, cy);
     ImGui::GetIO().KeysDown['W'] = false;
     ui_->frame(cx, cy);
     const Camera after = ui_->app().cameraController().camera();
     const glm::vec3 fwd = glm::normalize(before.target - before.eye);
-    EXPECT_GT(glm::dot(after.eye - before.eye, fwd), 0.01f); // moved forward
+    EXPECT_GT(glm::dot(after.eye - before.eye, fwd), 0.01f);                        // moved forward
     EXPECT_NEAR(glm::length(glm::cross(after.eye - before.eye, fwd)), 0.0f, 1e-3f); // along the view only
 }

@@ -45,7 +45,9 @@ void UiDriver::frame(float x, float y, bool down) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void UiDriver::save(const std::string& path) const { ssao::writePng(ssao::readBack(target_.texture(), 3), path); }
+void UiDriver::save(const std::string& path) const {
+    ssao::writePng(ssao::readBack(target_.texture(), 3), path);
+}
 
 ImVec4 UiDriver::rect(const std::string& key) const {
     auto it = app_->widgetRects.find(key);
@@ -70,13 +72,15 @@ void UiDriver::click(const std::string& key, float fx, bool ctrl) {
 void UiDriver::drag(float x0, float y0, float x1, float y1, int steps) {
     frame(x0, y0, false);
     frame(x0, y0, true);
-    for (int i = 1; i <= steps; ++i) frame(x0 + (x1 - x0) * float(i) / float(steps), y0 + (y1 - y0) * float(i) / float(steps), true);
+    for (int i = 1; i <= steps; ++i)
+        frame(x0 + (x1 - x0) * float(i) / float(steps), y0 + (y1 - y0) * float(i) / float(steps), true);
     frame(x1, y1, false);
 }
 
 void UiDriver::type(const std::string& text) {
     ImGuiIO& io = ImGui::GetIO();
-    for (char c : text) io.AddInputCharacter(unsigned(c));
+    for (char c : text)
+        io.AddInputCharacter(unsigned(c));
     frame(mx_, my_, false);
 }
 

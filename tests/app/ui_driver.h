@@ -18,7 +18,8 @@ class UiDriver {
     // One frame with the mouse at (x, y), button 0 `down`.
     void frame(float x = -1, float y = -1, bool down = false);
     void frames(int n) {
-        for (int i = 0; i < n; ++i) frame(mx_, my_, false);
+        for (int i = 0; i < n; ++i)
+            frame(mx_, my_, false);
     }
     // Press and release at the centre of a widget recorded under `key` (or at a fraction of its width).
     void click(const std::string& key, float fx = 0.5f, bool ctrl = false);

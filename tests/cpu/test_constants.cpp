@@ -27,11 +27,13 @@ TEST(PackSsao, ModesFlagsAndParameters) {
     EXPECT_FLOAT_EQ(c.params0.x, 0.8f);
     EXPECT_FLOAT_EQ(c.params0.y, 0.05f);
     EXPECT_FLOAT_EQ(c.params0.z, 2.0f);
-    EXPECT_GT(c.params0.w, 0.0f); // range-check epsilon: |dz| = 0 never divides by zero
+    EXPECT_GT(c.params0.w, 0.0f);            // range-check epsilon: |dz| = 0 never divides by zero
     EXPECT_FLOAT_EQ(c.noiseScale.x, 160.0f); // screen / 4: one noise tile per 4x4 pixels
     EXPECT_FLOAT_EQ(c.noiseScale.y, 90.0f);
-    for (int i = 0; i < 17; ++i) EXPECT_GT(glm::length(glm::vec3(c.kernel[i])), 0.0f);
-    for (int i = 17; i < 2 * SSAO_MAX_SAMPLES; ++i) EXPECT_EQ(c.kernel[i], glm::vec4(0.0f)) << i;
+    for (int i = 0; i < 17; ++i)
+        EXPECT_GT(glm::length(glm::vec3(c.kernel[i])), 0.0f);
+    for (int i = 17; i < 2 * SSAO_MAX_SAMPLES; ++i)
+        EXPECT_EQ(c.kernel[i], glm::vec4(0.0f)) << i;
 }
 
 TEST(PackSsao, SeparableFillsTwoPlaneSets) {
@@ -74,9 +76,11 @@ TEST(PackBlur, GaussianWeightsNormalisedSymmetricAndGaussian) {
     auto c = packBlurConstants(b, 0);
     ASSERT_EQ(c.taps.x, 7);
     float sum = 0;
-    for (int i = 0; i < 7; ++i) sum += c.offsetsWeights[i].y;
+    for (int i = 0; i < 7; ++i)
+        sum += c.offsetsWeights[i].y;
     EXPECT_NEAR(sum, 1.0f, 1e-6f);
-    for (int i = 0; i < 3; ++i) EXPECT_FLOAT_EQ(c.offsetsWeights[i].y, c.offsetsWeights[6 - i].y);
+    for (int i = 0; i < 3; ++i)
+        EXPECT_FLOAT_EQ(c.offsetsWeights[i].y, c.offsetsWeights[6 - i].y);
     EXPECT_FLOAT_EQ(c.offsetsWeights[0].x, -6.0f); // spacing 2 pixels
     EXPECT_NEAR(c.offsetsWeights[4].y / c.offsetsWeights[3].y, std::exp(-1.0f / (2 * 1.3f * 1.3f)), 1e-6f);
 }
@@ -94,7 +98,8 @@ TEST(PackFrame, MatricesAndViewport) {
     auto f = packFrameConstants(cam, 800, 400, 5.0f);
     glm::mat4 id = f.invProj * f.proj;
     for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) EXPECT_NEAR(id[i][j], i == j ? 1.0f : 0.0f, 1e-5f);
+        for (int j = 0; j < 4; ++j)
+            EXPECT_NEAR(id[i][j], i == j ? 1.0f : 0.0f, 1e-5f);
     EXPECT_EQ(f.viewport, glm::vec4(800, 400, 1.0f / 800, 1.0f / 400));
     EXPECT_EQ(f.clip, glm::vec4(0.1f, 100.0f, 5.0f, 0.0f));
     // The eye maps to the view-space origin; the target lies on -z.

@@ -17,7 +17,8 @@ std::string base64(const std::vector<unsigned char>& in) {
     static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     std::string out;
     for (size_t i = 0; i < in.size(); i += 3) {
-        unsigned v = in[i] << 16 | (i + 1 < in.size() ? in[i + 1] << 8 : 0) | (i + 2 < in.size() ? in[i + 2] : 0);
+        unsigned v =
+            in[i] << 16 | (i + 1 < in.size() ? in[i + 1] << 8 : 0) | (i + 2 < in.size() ? in[i + 2] : 0);
         out += t[(v >> 18) & 63];
         out += t[(v >> 12) & 63];
         out += i + 1 < in.size() ? t[(v >> 6) & 63] : '=';
@@ -75,7 +76,10 @@ TEST(Gltf, Uint8IndicesNodeTransformMaterialAndFlatNormals) {
 }
 
 TEST(Gltf, RequiredDracoIsAClearError) {
-    std::string p = writeTemp("draco.gltf", triangleGltf(R"("extensionsUsed":["KHR_draco_mesh_compression"],"extensionsRequired":["KHR_draco_mesh_compression"],)"));
+    std::string p = writeTemp(
+        "draco.gltf",
+        triangleGltf(
+            R"("extensionsUsed":["KHR_draco_mesh_compression"],"extensionsRequired":["KHR_draco_mesh_compression"],)"));
     EXPECT_NE(errorOf(p).find("KHR_draco_mesh_compression"), std::string::npos) << errorOf(p);
 }
 
@@ -96,7 +100,8 @@ TEST(Gltf, CornellBoxLoadsWithItsCamera) {
     ASSERT_TRUE(s.camera.has_value());
     EXPECT_NEAR(s.bounds.min.y, -5.05f, 1e-3f);
     EXPECT_NEAR(s.bounds.max.x, 5.05f, 1e-3f);
-    for (auto& v : s.vertices) ASSERT_NEAR(glm::length(v.normal), 1.0f, 1e-4f);
+    for (auto& v : s.vertices)
+        ASSERT_NEAR(glm::length(v.normal), 1.0f, 1e-4f);
 }
 
 TEST(Gltf, EveryThirdPartySceneLoads) {

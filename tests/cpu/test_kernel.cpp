@@ -7,12 +7,14 @@
 using namespace ssao;
 
 namespace {
-const KernelShape kShapes[] = {KernelShape::Hemisphere, KernelShape::Sphere, KernelShape::PlaneXZ, KernelShape::PlaneYZ};
+const KernelShape kShapes[] = {KernelShape::Hemisphere, KernelShape::Sphere, KernelShape::PlaneXZ,
+                               KernelShape::PlaneYZ};
 }
 
 TEST(Kernel, CountMatchesRequestForEveryShape) {
     for (KernelShape s : kShapes)
-        for (int n : {1, 2, 9, 64, 256}) EXPECT_EQ(makeKernel(s, n, 0).size(), size_t(n));
+        for (int n : {1, 2, 9, 64, 256})
+            EXPECT_EQ(makeKernel(s, n, 0).size(), size_t(n));
 }
 
 TEST(Kernel, EverySampleInsideUnitBallAndWithinItsScale) {
@@ -31,15 +33,19 @@ TEST(Kernel, EverySampleInsideUnitBallAndWithinItsScale) {
 
 TEST(Kernel, HemisphereAndPlaneSetsStayAboveTheSurface) {
     for (KernelShape s : {KernelShape::Hemisphere, KernelShape::PlaneXZ, KernelShape::PlaneYZ})
-        for (auto& v : makeKernel(s, 256, 11)) EXPECT_GE(v.z, 0.0f);
-    for (auto& v : makeKernel(KernelShape::PlaneXZ, 64, 1)) EXPECT_EQ(v.y, 0.0f);
-    for (auto& v : makeKernel(KernelShape::PlaneYZ, 64, 1)) EXPECT_EQ(v.x, 0.0f);
+        for (auto& v : makeKernel(s, 256, 11))
+            EXPECT_GE(v.z, 0.0f);
+    for (auto& v : makeKernel(KernelShape::PlaneXZ, 64, 1))
+        EXPECT_EQ(v.y, 0.0f);
+    for (auto& v : makeKernel(KernelShape::PlaneYZ, 64, 1))
+        EXPECT_EQ(v.x, 0.0f);
 }
 
 TEST(Kernel, SphereKernelPutsAboutHalfTheSamplesBelowTheSurface) {
     int below = 0;
     auto k = makeKernel(KernelShape::Sphere, 256, 5);
-    for (auto& v : k) below += v.z < 0.0f;
+    for (auto& v : k)
+        below += v.z < 0.0f;
     EXPECT_GT(below, 256 * 0.38);
     EXPECT_LT(below, 256 * 0.62);
 }
@@ -56,7 +62,8 @@ TEST(Kernel, DensityIncreasesTowardTheCentre) {
     EXPECT_LT(first / 64, 0.25 * last / 64);
     // And more than half of all samples lie within half the radius.
     int inner = 0;
-    for (auto& v : k) inner += glm::length(v) < 0.5f;
+    for (auto& v : k)
+        inner += glm::length(v) < 0.5f;
     EXPECT_GT(inner, 128);
 }
 
@@ -87,7 +94,8 @@ void expectOrthonormal(const glm::mat3& m, const glm::vec3& n) {
     for (int i = 0; i < 3; ++i) {
         ASSERT_TRUE(std::isfinite(m[i].x) && std::isfinite(m[i].y) && std::isfinite(m[i].z));
         EXPECT_NEAR(glm::length(m[i]), 1.0f, 1e-4f);
-        for (int j = i + 1; j < 3; ++j) EXPECT_NEAR(glm::dot(m[i], m[j]), 0.0f, 1e-4f);
+        for (int j = i + 1; j < 3; ++j)
+            EXPECT_NEAR(glm::dot(m[i], m[j]), 0.0f, 1e-4f);
     }
     EXPECT_NEAR(glm::length(m[2] - n), 0.0f, 1e-6f); // the third column is the normal itself
     EXPECT_GT(glm::determinant(m), 0.0f);            // right-handed: t x b = n
@@ -97,7 +105,8 @@ void expectOrthonormal(const glm::mat3& m, const glm::vec3& n) {
 TEST(TangentFrame, OrthonormalForRandomInputs) {
     Rng rng(7);
     for (int i = 0; i < 2000; ++i) {
-        glm::vec3 n = glm::normalize(glm::vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)) + 1e-3f);
+        glm::vec3 n =
+            glm::normalize(glm::vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)) + 1e-3f);
         glm::vec3 r(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.0f);
         expectOrthonormal(tangentFrame(n, r), n);
     }
@@ -105,11 +114,12 @@ TEST(TangentFrame, OrthonormalForRandomInputs) {
 
 TEST(TangentFrame, OrthonormalWhenTheRandomVectorIsDegenerate) {
     // Gram–Schmidt gives a zero tangent here; the seeds' normalize(0) would be NaN.
-    const glm::vec3 normals[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}, glm::normalize(glm::vec3(1, 1, 0))};
+    const glm::vec3 normals[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
+                                 {0, 0, 1}, {0, 0, -1}, glm::normalize(glm::vec3(1, 1, 0))};
     for (const auto& n : normals) {
-        expectOrthonormal(tangentFrame(n, n), n);          // r parallel to n
-        expectOrthonormal(tangentFrame(n, -n * 0.3f), n);  // r anti-parallel
-        expectOrthonormal(tangentFrame(n, glm::vec3(0)), n); // r zero
+        expectOrthonormal(tangentFrame(n, n), n);                          // r parallel to n
+        expectOrthonormal(tangentFrame(n, -n * 0.3f), n);                  // r anti-parallel
+        expectOrthonormal(tangentFrame(n, glm::vec3(0)), n);               // r zero
         expectOrthonormal(tangentFrame(n, n + glm::vec3(1e-5f, 0, 0)), n); // almost parallel
     }
 }

@@ -41,9 +41,10 @@ TEST(ParamTable, KeysUniqueDefaultsInRangeAndDocumented) {
         }
     }
     // The issue's required knobs are all in the table.
-    for (const char* k : {"ssao.kernel", "ssao.separable", "ssao.samples", "ssao.radius", "ssao.bias", "ssao.range_check",
-                          "ssao.power", "ssao.noise", "ssao.seed", "ssao.position_source", "blur.kind", "blur.sigma",
-                          "blur.spacing", "gbuffer.position_format", "gbuffer.normal_format"})
+    for (const char* k :
+         {"ssao.kernel", "ssao.separable", "ssao.samples", "ssao.radius", "ssao.bias", "ssao.range_check",
+          "ssao.power", "ssao.noise", "ssao.seed", "ssao.position_source", "blur.kind", "blur.sigma",
+          "blur.spacing", "gbuffer.position_format", "gbuffer.normal_format"})
         EXPECT_NE(findParam(k), nullptr) << k;
     EXPECT_EQ(findParam("ssao.samples")->max, 256.0); // not capped at 64
 }
@@ -62,7 +63,8 @@ TEST(ParamTable, EveryValueOfEveryParameterRoundTrips) {
         if (p.type == Param::Type::Float) values.push_back(p.min + (p.max - p.min) * 0.37);
         for (double v : values) {
             Settings s = defaultSettings();
-            if (p.type == Param::Type::Int || p.type == Param::Type::Enum || p.type == Param::Type::Bool) v = std::floor(v);
+            if (p.type == Param::Type::Int || p.type == Param::Type::Enum || p.type == Param::Type::Bool)
+                v = std::floor(v);
             p.set(s, v);
             Settings back = defaultSettings();
             applyJson(back, nlohmann::json::parse(toJson(s).dump()), "roundtrip");
@@ -91,22 +93,32 @@ TEST(ParamSet, ParsesEveryType) {
 
 TEST(ParamSet, ErrorsNameTheKeyAndTheProblem) {
     Settings s = defaultSettings();
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.radiuss=1"); }).find("unknown parameter 'ssao.radiuss'"), std::string::npos);
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.radius=-1"); }).find("ssao.radius: value -1 is out of range"), std::string::npos);
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.radius=abc"); }).find("ssao.radius: 'abc' is not a number"), std::string::npos);
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.radiuss=1"); }).find("unknown parameter 'ssao.radiuss'"),
+              std::string::npos);
+    EXPECT_NE(
+        errorOf([&] { applyAssignment(s, "ssao.radius=-1"); }).find("ssao.radius: value -1 is out of range"),
+        std::string::npos);
+    EXPECT_NE(
+        errorOf([&] { applyAssignment(s, "ssao.radius=abc"); }).find("ssao.radius: 'abc' is not a number"),
+        std::string::npos);
     EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.radius=nan"); }).find("ssao.radius"), std::string::npos);
     EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.radius=inf"); }).find("ssao.radius"), std::string::npos);
     EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.samples=0"); }).find("ssao.samples"), std::string::npos);
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.samples=257"); }).find("out of range [1, 256]"), std::string::npos);
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.samples=2.5"); }).find("not an integer"), std::string::npos);
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.kernel=cube"); }).find("hemisphere|sphere"), std::string::npos);
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.separable=maybe"); }).find("not a boolean"), std::string::npos);
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.samples=257"); }).find("out of range [1, 256]"),
+              std::string::npos);
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.samples=2.5"); }).find("not an integer"),
+              std::string::npos);
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.kernel=cube"); }).find("hemisphere|sphere"),
+              std::string::npos);
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.separable=maybe"); }).find("not a boolean"),
+              std::string::npos);
     EXPECT_NE(errorOf([&] { applyAssignment(s, "radius"); }).find("expected key=value"), std::string::npos);
     EXPECT_TRUE(s == defaultSettings()); // failed assignments leave settings untouched
 }
 
 TEST(Presets, BadFilesGiveOneClearError) {
-    EXPECT_NE(errorOf([] { loadPreset("/nonexistent/p.json"); }).find("preset file not found"), std::string::npos);
+    EXPECT_NE(errorOf([] { loadPreset("/nonexistent/p.json"); }).find("preset file not found"),
+              std::string::npos);
     auto bad = writeTemp("bad.json", "{ \"ssao\": { \"radius\": 0.5, }");
     EXPECT_NE(errorOf([&] { loadPreset(bad); }).find("is not valid JSON"), std::string::npos);
     auto unknown = writeTemp("unknown.json", R"({"ssao": {"radios": 0.5}})");
@@ -114,7 +126,8 @@ TEST(Presets, BadFilesGiveOneClearError) {
     auto group = writeTemp("group.json", R"({"ssoa": {"radius": 0.5}})");
     EXPECT_NE(errorOf([&] { loadPreset(group); }).find("unknown key 'ssoa.radius'"), std::string::npos);
     auto neg = writeTemp("neg.json", R"({"ssao": {"radius": -2}})");
-    EXPECT_NE(errorOf([&] { loadPreset(neg); }).find("ssao.radius: value -2 is out of range"), std::string::npos);
+    EXPECT_NE(errorOf([&] { loadPreset(neg); }).find("ssao.radius: value -2 is out of range"),
+              std::string::npos);
     auto type = writeTemp("type.json", R"({"ssao": {"samples": "many"}})");
     EXPECT_NE(errorOf([&] { loadPreset(type); }).find("ssao.samples: expected a number"), std::string::npos);
     auto arr = writeTemp("arr.json", R"([1,2])");
@@ -149,5 +162,6 @@ TEST(Presets, ShippedSeedPresetsReproduceTheArticles) {
     Settings s1 = loadPreset(dir + "seed001.json");
     EXPECT_EQ(s1.ssao.positionSource, PositionSource::Depth);
 
-    for (auto& e : std::filesystem::directory_iterator(dir)) EXPECT_NO_THROW(loadPreset(e.path().string())) << e.path();
+    for (auto& e : std::filesystem::directory_iterator(dir))
+        EXPECT_NO_THROW(loadPreset(e.path().string())) << e.path();
 }

@@ -13,7 +13,8 @@ std::string makeDir() {
     std::string dir = std::string(SSAOLAB_TEST_TMP) + "/shaders";
     std::filesystem::create_directories(dir + "/include");
     std::ofstream(dir + "/include/a.glsl") << "float a() { return 1.0; }\n";
-    std::ofstream(dir + "/main.frag") << "#version 450 core\n// comment\n#include \"include/a.glsl\"\n#include \"include/a.glsl\"\nvoid main() {}\n";
+    std::ofstream(dir + "/main.frag") << "#version 450 core\n// comment\n#include "
+                                         "\"include/a.glsl\"\n#include \"include/a.glsl\"\nvoid main() {}\n";
     std::ofstream(dir + "/noversion.frag") << "void main() {}\n";
     return dir;
 }
@@ -43,5 +44,6 @@ TEST(ShaderText, MissingFilesAndVersionAreErrors) {
 TEST(ShaderText, DriverLogsAreMappedToFileAndLine) {
     std::vector<std::string> files = {"passes/ssao.frag", "include/onb.glsl"};
     EXPECT_EQ(gl::mapLogToFiles("1:12(3): error: bad", files), "shaders/include/onb.glsl:12: error: bad\n");
-    EXPECT_EQ(gl::mapLogToFiles("0(7) : error C0000: x", files), "shaders/passes/ssao.frag:7 : error C0000: x\n");
+    EXPECT_EQ(gl::mapLogToFiles("0(7) : error C0000: x", files),
+              "shaders/passes/ssao.frag:7 : error C0000: x\n");
 }

@@ -23,7 +23,9 @@ class GlEnvironment : public ::testing::Environment {
 const auto* const kEnv = ::testing::AddGlobalTestEnvironment(new GlEnvironment);
 } // namespace
 
-void GlTest::SetUp() { ssao::gl::resetGlErrorCount(); }
+void GlTest::SetUp() {
+    ssao::gl::resetGlErrorCount();
+}
 
 void GlTest::TearDown() {
     ssao::gl::pollGlErrors();
@@ -49,7 +51,8 @@ Rendered readAll(ssao::Renderer& r) {
     return out;
 }
 
-Rendered render(const std::string& sceneSpec, const ssao::Settings& s, int w, int h, std::optional<ssao::Camera> camera) {
+Rendered render(const std::string& sceneSpec, const ssao::Settings& s, int w, int h,
+                std::optional<ssao::Camera> camera) {
     ssao::Scene scene = ssao::loadScene(sceneSpec);
     ssao::Renderer r(SSAOLAB_SHADER_DIR);
     r.setSize(w, h);
@@ -66,13 +69,15 @@ Rendered render(const std::string& sceneSpec, const ssao::Settings& s, int w, in
     long bad = 0, out = 0;
     float mn = INFINITY, mx = -INFINITY;
     for (float v : img.data) {
-        if (!std::isfinite(v)) ++bad;
-        else if (v < lo || v > hi) ++out;
+        if (!std::isfinite(v))
+            ++bad;
+        else if (v < lo || v > hi)
+            ++out;
         if (std::isfinite(v)) mn = std::min(mn, v), mx = std::max(mx, v);
     }
     if (bad == 0 && out == 0) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << bad << " non-finite and " << out << " out-of-range values (min " << mn
-                                         << ", max " << mx << ")";
+    return ::testing::AssertionFailure()
+           << bad << " non-finite and " << out << " out-of-range values (min " << mn << ", max " << mx << ")";
 }
 
 } // namespace ssaotest

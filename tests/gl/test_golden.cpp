@@ -12,7 +12,7 @@ using namespace ssaotest;
 
 namespace {
 class Golden : public GlTest, public ::testing::WithParamInterface<const char*> {};
-}
+} // namespace
 
 TEST_P(Golden, SeedPresetOnShowcaseMatchesGolden) {
     const std::string name = GetParam();
@@ -44,6 +44,7 @@ INSTANTIATE_TEST_SUITE_P(Seeds, Golden,
                                            "seed003-separable"),
                          [](const auto& info) {
                              std::string n = info.param;
-                             for (auto& c : n) if (c == '-') c = '_';
+                             for (auto& c : n)
+                                 if (c == '-') c = '_';
                              return n;
                          });

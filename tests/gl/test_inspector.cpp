@@ -12,12 +12,19 @@ using namespace ssaotest;
 
 namespace {
 class Inspector : public GlTest {};
-}
+} // namespace
 
 TEST_F(Inspector, CpuReplayMatchesGpuAoForEveryMode) {
-    const char* modes[] = {"", "ssao.kernel=sphere", "ssao.separable=true", "ssao.position_source=depth",
-                           "gbuffer.normal_format=rgba8", "ssao.range_check=hard", "ssao.depth_test=fragment",
-                           "ssao.noise=none", "ssao.offscreen=clamp", "ssao.power=2.5"};
+    const char* modes[] = {"",
+                           "ssao.kernel=sphere",
+                           "ssao.separable=true",
+                           "ssao.position_source=depth",
+                           "gbuffer.normal_format=rgba8",
+                           "ssao.range_check=hard",
+                           "ssao.depth_test=fragment",
+                           "ssao.noise=none",
+                           "ssao.offscreen=clamp",
+                           "ssao.power=2.5"};
     for (const char* mode : modes) {
         Settings s = defaultSettings();
         s.ssao.samples = 32;
@@ -64,7 +71,8 @@ TEST_F(Inspector, TapsReportWhereSamplesLandAndWhy) {
     r.setCamera(*scene.camera);
     r.setSettings(s);
     r.render();
-    Image pos = readBack(r.gbuffer().position(), 4), nrm = readBack(r.gbuffer().normal(), 3), dep = readBack(r.gbuffer().depth(), 1);
+    Image pos = readBack(r.gbuffer().position(), 4), nrm = readBack(r.gbuffer().normal(), 3),
+          dep = readBack(r.gbuffer().depth(), 1);
     GBufferImages gb{&pos, &nrm, &dep};
     const gpu::FrameConstants fc = packFrameConstants(*scene.camera, 320, 240, scene.bounds.radius());
     // Find the floor pixel right at the wall in the centre column: half its hemisphere is wall.

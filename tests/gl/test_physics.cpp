@@ -42,9 +42,11 @@ TEST_F(Physics, CrytekSphereKernelDarkensAFlatPlaneToAboutHalf) {
 TEST_F(Physics, SphereKernelWithBiasForgivesOnlySamplesWithinTheBias) {
     Settings s = preset("learnopengl");
     s.ssao.kernel = Kernel::Sphere;
-    const double withBias = geometryMean(render("builtin:plane", s, 320, 180), render("builtin:plane", s, 320, 180).aoRaw);
+    const double withBias =
+        geometryMean(render("builtin:plane", s, 320, 180), render("builtin:plane", s, 320, 180).aoRaw);
     s.ssao.bias = 0.0f;
-    const double noBias = geometryMean(render("builtin:plane", s, 320, 180), render("builtin:plane", s, 320, 180).aoRaw);
+    const double noBias =
+        geometryMean(render("builtin:plane", s, 320, 180), render("builtin:plane", s, 320, 180).aoRaw);
     std::printf("plane, sphere kernel: AO %.4f with bias 0.025, %.4f without\n", withBias, noBias);
     EXPECT_GT(withBias, noBias + 0.05);
     EXPECT_LT(withBias, 0.9); // still clearly falsely occluded
@@ -87,8 +89,8 @@ TEST_F(Physics, CornerDarkensMonotonicallyTowardTheWall) {
         if (bin * 0.05 > 1.5 * s.ssao.radius) far = mean;
     }
     std::printf("corner: AO %.3f at the wall, %.3f beyond 1.5 radii\n", nearWall, far);
-    EXPECT_LT(nearWall, 0.8);           // a concave 90° edge is clearly occluded...
-    EXPECT_GT(far, 0.97);               // ...and the floor beyond the radius is open
+    EXPECT_LT(nearWall, 0.8); // a concave 90° edge is clearly occluded...
+    EXPECT_GT(far, 0.97);     // ...and the floor beyond the radius is open
     EXPECT_LT(nearWall, far - 0.2);
 }
 
@@ -100,7 +102,8 @@ TEST_F(Physics, PositionReconstructedFromDepthMatchesThePositionTarget) {
     b.ssao.positionSource = PositionSource::Depth;
     Rendered ra = render("builtin:showcase", a, 320, 180), rb = render("builtin:showcase", b, 320, 180);
     double sum = 0;
-    for (size_t i = 0; i < ra.aoRaw.data.size(); ++i) sum += std::abs(ra.aoRaw.data[i] - rb.aoRaw.data[i]);
+    for (size_t i = 0; i < ra.aoRaw.data.size(); ++i)
+        sum += std::abs(ra.aoRaw.data[i] - rb.aoRaw.data[i]);
     const double mad = sum / double(ra.aoRaw.data.size());
     std::printf("position from depth vs G-buffer: mean |dAO| = %.7f\n", mad);
     EXPECT_LT(mad, 0.01);
@@ -115,8 +118,8 @@ TEST_F(Physics, EveryKernelBlurSeparableCombinationIsFiniteAndInUnitRange) {
                 s.blur.kind = b;
                 s.ssao.separable = sep;
                 Rendered r = render("builtin:showcase", s, 160, 90);
-                const std::string what = std::string(k == Kernel::Sphere ? "sphere" : "hemisphere") + "/blur" +
-                                         std::to_string(int(b)) + (sep ? "/separable" : "");
+                const std::string what = std::string(k == Kernel::Sphere ? "sphere" : "hemisphere") +
+                                         "/blur" + std::to_string(int(b)) + (sep ? "/separable" : "");
                 EXPECT_TRUE(finiteInRange(r.aoRaw, 0.0f, 1.0f)) << what << " ao_raw";
                 EXPECT_TRUE(finiteInRange(r.ao, 0.0f, 1.0f)) << what << " ao";
                 // And AO actually varies: the showcase has occluded corners.
@@ -126,10 +129,20 @@ TEST_F(Physics, EveryKernelBlurSeparableCombinationIsFiniteAndInUnitRange) {
 }
 
 TEST_F(Physics, EveryOtherModeIsFiniteAndInUnitRange) {
-    const char* sets[] = {"ssao.position_source=depth", "gbuffer.normal_format=rgba8", "gbuffer.normal_format=rgba32f",
-                          "gbuffer.position_format=rgba16f", "ssao.range_check=hard", "ssao.range_check=off",
-                          "ssao.depth_test=fragment", "ssao.offscreen=clamp", "ssao.noise=none", "ssao.power=4",
-                          "ssao.power=0.1", "ssao.samples=1", "ssao.samples=256", "blur.spacing=3.5",
+    const char* sets[] = {"ssao.position_source=depth",
+                          "gbuffer.normal_format=rgba8",
+                          "gbuffer.normal_format=rgba32f",
+                          "gbuffer.position_format=rgba16f",
+                          "ssao.range_check=hard",
+                          "ssao.range_check=off",
+                          "ssao.depth_test=fragment",
+                          "ssao.offscreen=clamp",
+                          "ssao.noise=none",
+                          "ssao.power=4",
+                          "ssao.power=0.1",
+                          "ssao.samples=1",
+                          "ssao.samples=256",
+                          "blur.spacing=3.5",
                           "blur.radius=32"};
     for (const char* a : sets) {
         Settings s = defaultSettings();

@@ -12,7 +12,7 @@ using namespace ssaotest;
 
 namespace {
 class Robustness : public GlTest {};
-}
+} // namespace
 
 TEST_F(Robustness, RandomVectorParallelToTheNormalGivesNoNaN) {
     // Look along the corner's wall: its normal (+z world) becomes view-space ±x, exactly the
@@ -74,7 +74,8 @@ TEST_F(Robustness, EightBitNormalsAreRenormalised) {
     EXPECT_LT(maxErr, 0.01);
     // ...and the AO they produce is nearly the same.
     double sum = 0;
-    for (size_t i = 0; i < ra.aoRaw.data.size(); ++i) sum += std::abs(ra.aoRaw.data[i] - rb.aoRaw.data[i]);
+    for (size_t i = 0; i < ra.aoRaw.data.size(); ++i)
+        sum += std::abs(ra.aoRaw.data[i] - rb.aoRaw.data[i]);
     EXPECT_LT(sum / double(ra.aoRaw.data.size()), 0.01);
 }
 
@@ -92,8 +93,10 @@ TEST_F(Robustness, SkyPixelsAreUnoccludedAndCostNothing) {
 TEST_F(Robustness, ShaderCompileErrorsNameFileAndLine) {
     const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/broken_shaders";
     std::filesystem::create_directories(dir + "/include");
-    std::ofstream(dir + "/include/util.glsl") << "float ok() { return 1.0; }\nfloat bad() { return undefined_symbol; }\n";
-    std::ofstream(dir + "/main.frag") << "#version 450 core\n#include \"include/util.glsl\"\nout vec4 c;\nvoid main() { c = vec4(ok()); }\n";
+    std::ofstream(dir + "/include/util.glsl")
+        << "float ok() { return 1.0; }\nfloat bad() { return undefined_symbol; }\n";
+    std::ofstream(dir + "/main.frag") << "#version 450 core\n#include \"include/util.glsl\"\nout vec4 "
+                                         "c;\nvoid main() { c = vec4(ok()); }\n";
     std::ofstream(dir + "/main.vert") << "#version 450 core\nvoid main() { gl_Position = vec4(0.0); }\n";
     gl::ShaderLibrary lib(dir);
     try {
