@@ -77,30 +77,32 @@ void AppCore::selectSceneCamera(int index) {
     poke();
 }
 
-bool AppCore::openScene(const std::string& spec) {
+bool AppCore::attempt(const char* what, const std::function<std::string()>& action) {
     try {
-        adoptScene(loadScene(spec), false);
-        setStatus("loaded " + scene_.name + " (" + std::to_string(scene_.triangleCount()) + " triangles)",
-                  false);
+        setStatus(action(), false);
         return true;
     } catch (const std::exception& e) {
-        setStatus(std::string("could not load scene: ") + e.what(), true);
+        // The error is shown in the window; the current scene, preset and settings stay.
+        setStatus(std::string("could not ") + what + ": " + e.what(), true);
         return false;
     }
 }
 
+bool AppCore::openScene(const std::string& spec) {
+    return attempt("load scene", [&] {
+        adoptScene(loadScene(spec), false);
+        return "loaded " + scene_.name + " (" + std::to_string(scene_.triangleCount()) + " triangles)";
+    });
+}
+
 bool AppCore::openPreset(const std::string& nameOrPath) {
-    try {
+    return attempt("load preset", [&] {
         Preset p = store_.find(nameOrPath) ? store_.load(nameOrPath) : readPresetFile(nameOrPath);
         loaded_ = p;
         settings_ = p.settings;
         if (p.camera) camera_.reset(*p.camera, scene_.bounds.radius());
-        setStatus("preset " + p.name + " loaded", false);
-        return true;
-    } catch (const std::exception& e) {
-        setStatus(std::string("could not load preset: ") + e.what(), true);
-        return false;
-    }
+        return "preset " + p.name + " loaded";
+    });
 }
 
 void AppCore::dropFiles(const std::vector<std::string>& paths) {
@@ -116,7 +118,7 @@ void AppCore::dropFiles(const std::vector<std::string>& paths) {
 }
 
 bool AppCore::savePreset(const std::string& name) {
-    try {
+    return attempt("save preset", [&] {
         Preset p;
         p.name = name;
         p.description = "saved from the ssaolab app";
@@ -124,35 +126,23 @@ bool AppCore::savePreset(const std::string& name) {
         p.camera = camera_.camera(); // the camera as a bookmark
         const std::string path = store_.save(p);
         loaded_ = p;
-        setStatus("saved preset " + name + " to " + path, false);
-        return true;
-    } catch (const std::exception& e) {
-        setStatus(std::string("could not save preset: ") + e.what(), true);
-        return false;
-    }
+        return "saved preset " + name + " to " + path;
+    });
 }
 
 bool AppCore::renamePreset(const std::string& from, const std::string& to) {
-    try {
+    return attempt("rename preset", [&] {
         store_.rename(from, to);
         if (loaded_.name == from) loaded_.name = to;
-        setStatus("renamed preset " + from + " to " + to, false);
-        return true;
-    } catch (const std::exception& e) {
-        setStatus(std::string("could not rename preset: ") + e.what(), true);
-        return false;
-    }
+        return "renamed preset " + from + " to " + to;
+    });
 }
 
 bool AppCore::deletePreset(const std::string& name) {
-    try {
+    return attempt("delete preset", [&] {
         store_.remove(name);
-        setStatus("deleted preset " + name, false);
-        return true;
-    } catch (const std::exception& e) {
-        setStatus(std::string("could not delete preset: ") + e.what(), true);
-        return false;
-    }
+        return "deleted preset " + name;
+    });
 }
 
 bool AppCore::unsavedChanges() const {

@@ -13,6 +13,7 @@
 #include <imgui.h>
 
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -100,6 +101,8 @@ class AppCore {
     void setStatus(const std::string& s, bool error);
 
   private:
+    // Runs an action that returns its success message; on an exception shows the error instead.
+    bool attempt(const char* what, const std::function<std::string()>& action);
     void adoptScene(Scene s, bool keepCamera);
     Settings settingsB() const;
 
