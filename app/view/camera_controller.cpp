@@ -74,8 +74,13 @@ void CameraController::move(const glm::vec3& ruf, float amount) {
 }
 
 void CameraController::updateClip() {
-    // Keep the far plane beyond the scene from wherever the camera is (near stays as set).
-    cam_.farZ = std::max(cam_.farZ, glm::length(cam_.eye - cam_.target) + 3.0f * radius_);
+    // Keep the far plane beyond the scene from wherever the camera is, and pull the near plane
+    // in when the camera comes close, so moving never clips the geometry being looked at. The
+    // near/far ratio stays below ~1e5 (float32 depth keeps ~1e-6 relative precision there).
+    const float dist = glm::length(cam_.eye - cam_.target);
+    cam_.farZ = std::max(cam_.farZ, dist + 3.0f * radius_);
+    cam_.nearZ = std::min(cam_.nearZ, std::max(0.1f * dist, 1e-3f * radius_));
+    cam_.nearZ = std::max(cam_.nearZ, cam_.farZ * 1e-5f);
 }
 
 } // namespace ssao

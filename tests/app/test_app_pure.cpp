@@ -22,6 +22,17 @@ TEST(CameraController, OrbitKeepsDistanceAndTarget) {
     EXPECT_NO_THROW(validateCamera(c.camera()));
 }
 
+TEST(CameraController, ClipPlanesFollowTheCamera) {
+    CameraController c;
+    c.reset(Camera{{0, 0, 50}, {0, 0, 0}, {0, 1, 0}, 60, 20.0f, 100}, 2.0f);
+    for (int i = 0; i < 40; ++i)
+        c.zoom(1); // dolly in to ~0.7 units from the target
+    const float dist = glm::length(c.camera().eye - c.camera().target);
+    EXPECT_LT(c.camera().nearZ, dist); // the target is never behind the near plane
+    EXPECT_GT(c.camera().farZ, dist + 2.0f * 2.0f);
+    EXPECT_NO_THROW(validateCamera(c.camera()));
+}
+
 TEST(CameraController, ZoomPanAndFly) {
     CameraController c;
     c.reset(Camera{{0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 60, 0.1f, 100}, 2.0f);
