@@ -314,3 +314,20 @@ TEST_F(AppUi, FlyModeMovesWithWasdWhileHoveringTheView) {
     EXPECT_GT(glm::dot(after.eye - before.eye, fwd), 0.01f);                        // moved forward
     EXPECT_NEAR(glm::length(glm::cross(after.eye - before.eye, fwd)), 0.0f, 1e-3f); // along the view only
 }
+
+TEST_F(AppUi, WindowResizeAndHiDpiScaleTheRenderSize) {
+    ui_->frames(2);
+    const int w0 = ui_->app().renderer().width(), h0 = ui_->app().renderer().height();
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(1200, 1800); // the window got smaller
+    ui_->frames(2);
+    const int w1 = ui_->app().renderer().width();
+    EXPECT_LT(w1, w0);
+    EXPECT_EQ(ui_->app().lastReport().ran().size(), 4u); // a new size re-renders every pass
+    io.DisplayFramebufferScale = ImVec2(2, 2);           // a HiDPI monitor: twice the pixels
+    ui_->frames(2);
+    EXPECT_NEAR(ui_->app().renderer().width(), 2 * w1, 2);
+    EXPECT_GT(ui_->app().renderer().height(), h0);
+    io.DisplayFramebufferScale = ImVec2(1, 1);
+    EXPECT_TRUE(finiteInRange(aoRaw(), 0.0f, 1.0f));
+}
