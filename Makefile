@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build run test screenshot clean
+.PHONY: deps configure build run test screenshot goldens clean
 
 deps:
 	@bash .ci/install-deps.sh
@@ -28,6 +28,13 @@ screenshot: build
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# Golden AO images of the seed presets on builtin:showcase (tests/gl/test_golden.cpp compares).
+GOLDEN_PRESETS = learnopengl seed000 crytek-sphere seed001 seed003 seed003-separable
+goldens: build
+	@for p in $(GOLDEN_PRESETS); do \
+	  d=$$(mktemp -d) && $(BUILD)/app/ssaolab render --preset $$p --size 320x180 --timing-frames 1 --quiet --out $$d && \
+	  cp $$d/ao.png assets/golden/showcase_$$p\_ao.png && rm -rf $$d && echo "golden: $$p"; done
 
 clean:
 	@rm -rf $(BUILD) $(OUT)
