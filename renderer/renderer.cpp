@@ -56,12 +56,11 @@ void Renderer::setSize(int width, int height) {
     height_ = height;
 }
 
-std::string Renderer::keyFor(const Pass& p) const {
+std::string Renderer::keyFor(const Pass& p, const nlohmann::json& settingsJson) const {
     char buf[512];
     std::string key = std::to_string(width_) + "x" + std::to_string(height_);
-    const nlohmann::json j = toJson(settings_);
     for (const auto& g : p.settingGroups())
-        key += "|" + j.at(g).dump();
+        key += "|" + settingsJson.at(g).dump();
     if (p.readsScene()) key += "|scene" + std::to_string(sceneVersion_);
     if (p.readsCamera()) {
         const Camera& c = camera_;
@@ -74,6 +73,30 @@ std::string Renderer::keyFor(const Pass& p) const {
     return key;
 }
 
+const char* bufferName(BufferId id) {
+    static const char* names[] = {"position", "normal", "depth", "albedo", "ao_raw", "ao", "composite"};
+    return names[int(id)];
+}
+
+const gl::Texture2D& Renderer::buffer(BufferId id) const {
+    switch (id) {
+    case BufferId::Position:
+        return gbuffer_.position();
+    case BufferId::Normal:
+        return gbuffer_.normal();
+    case BufferId::Depth:
+        return gbuffer_.linearDepth();
+    case BufferId::Albedo:
+        return gbuffer_.albedo();
+    case BufferId::AoRaw:
+        return ssao_.aoRaw();
+    case BufferId::Ao:
+        return blur_.ao();
+    default:
+        return composite_.color();
+    }
+}
+
 FrameReport Renderer::render() {
     if (!scene_) throw Error("renderer: no scene set");
     if (width_ <= 0) throw Error("renderer: no size set");
@@ -82,9 +105,11 @@ FrameReport Renderer::render() {
     frameUbo_.bind(SSAO_UBO_FRAME);
 
     FrameInputs in{settings_, *scene_, camera_, width_, height_, shaders_, triangle_};
+    const nlohmann::json settingsJson = toJson(settings_); // once per frame, shared by every key
     FrameReport report;
     for (Pass* p : chain_) {
-        std::string key = keyFor(*p);
+        // Upstream passes run earlier in the chain, so their versions are final by now.
+        std::string key = keyFor(*p, settingsJson);
         PassReport r{p->name()};
         auto it = keys_.find(p);
         if (it == keys_.end() || it->second != key) {
@@ -94,7 +119,7 @@ FrameReport Renderer::render() {
             p->timer().end();
             glPopDebugGroup();
             p->markRan();
-            keys_[p] = keyFor(*p); // recomputed: inputs' versions may have moved this frame
+            keys_[p] = std::move(key);
             r.ran = true;
         }
         report.passes.push_back(r);

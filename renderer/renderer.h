@@ -6,12 +6,19 @@
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace ssao {
+
+// Every intermediate buffer a user can look at, in display order.
+enum class BufferId { Position, Normal, Depth, Albedo, AoRaw, Ao, Composite, Count };
+constexpr int kBufferCount = int(BufferId::Count);
+const char* bufferName(BufferId id); // "position", "normal", ... (also the EXR/PNG file stems)
 
 struct PassReport {
     std::string name;
@@ -45,6 +52,8 @@ class Renderer {
     const SsaoPass& ssao() const { return ssao_; }
     const BlurPass& blur() const { return blur_; }
     const CompositePass& composite() const { return composite_; }
+    // The texture behind a buffer (depth = linear view distance, R32F).
+    const gl::Texture2D& buffer(BufferId id) const;
     gl::ShaderLibrary& shaders() { return shaders_; }
     void drawFullscreen() const { triangle_.draw(); }
     // Version of the scene uploaded last (bumped by setScene).
@@ -52,7 +61,7 @@ class Renderer {
     float sceneRadius() const { return scene_ ? scene_->radius() : 1.0f; }
 
   private:
-    std::string keyFor(const Pass& p) const;
+    std::string keyFor(const Pass& p, const nlohmann::json& settingsJson) const;
 
     gl::ShaderLibrary shaders_;
     gl::FullscreenTriangle triangle_;

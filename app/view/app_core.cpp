@@ -5,8 +5,6 @@
 #include "ssao/constants.h"
 #include "util/error.h"
 
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
 
 namespace fs = std::filesystem;
@@ -149,27 +147,37 @@ bool AppCore::unsavedChanges() const {
     return settings_ != loaded_.settings;
 }
 
-Settings AppCore::settingsB() const {
+Settings AppCore::settingsB() {
     if (splitKind == SplitKind::AoOnOff) {
         Settings s = settings_;
         s.composite.useAo = false;
         return s;
     }
-    try {
-        return store_.load(splitPresetB).settings;
-    } catch (const std::exception&) {
-        return settings_;
+    // The B preset is read from disk when it is chosen, not on every frame.
+    if (splitPresetB != cachedSplitPreset_) {
+        cachedSplitPreset_ = splitPresetB;
+        try {
+            cachedSplitSettings_ = store_.load(splitPresetB).settings;
+        } catch (const std::exception& e) {
+            cachedSplitSettings_ = settings_;
+            setStatus(std::string("split view: ") + e.what(), true);
+        }
     }
+    return cachedSplitSettings_;
 }
 
 void AppCore::renderIfNeeded(int width, int height) {
     width = std::max(int(float(width) * renderScale), 16);
     height = std::max(int(float(height) * renderScale), 16);
-    Renderer& r = *rendererA_;
-    if (r.width() != width || r.height() != height) r.setSize(width, height);
-    r.setCamera(camera_.camera());
-    r.setSettings(settings_);
+    // Cheap when nothing changed: the renderer compares keys and runs no pass.
+    auto prepare = [&](Renderer& r, const Settings& s) {
+        if (r.width() != width || r.height() != height) r.setSize(width, height);
+        r.setCamera(camera_.camera());
+        r.setSettings(s);
+    };
     try {
+        Renderer& r = *rendererA_;
+        prepare(r, settings_);
         FrameReport rep = r.render();
         if (!rep.ran().empty()) {
             lastReport_ = rep;
@@ -187,10 +195,7 @@ void AppCore::renderIfNeeded(int width, int height) {
                 rendererB_ = std::make_unique<Renderer>(opts_.shaderDir);
                 rendererB_->setScene(scene_);
             }
-            if (rendererB_->width() != width || rendererB_->height() != height)
-                rendererB_->setSize(width, height);
-            rendererB_->setCamera(camera_.camera());
-            rendererB_->setSettings(settingsB());
+            prepare(*rendererB_, settingsB());
             rendererB_->render();
         }
     } catch (const std::exception& e) {
@@ -222,23 +227,7 @@ void AppCore::pollShaderReload() {
 }
 
 glm::vec4 AppCore::texelOf(BufferId id, int x, int y) {
-    Renderer& r = *rendererA_;
-    switch (id) {
-    case BufferId::Position:
-        return r.gbuffer().position().readTexel(x, y);
-    case BufferId::Normal:
-        return r.gbuffer().normal().readTexel(x, y);
-    case BufferId::Depth:
-        return r.gbuffer().linearDepth().readTexel(x, y);
-    case BufferId::Albedo:
-        return r.gbuffer().albedo().readTexel(x, y);
-    case BufferId::AoRaw:
-        return r.ssao().aoRaw().readTexel(x, y);
-    case BufferId::Ao:
-        return r.blur().ao().readTexel(x, y);
-    default:
-        return r.composite().color().readTexel(x, y);
-    }
+    return rendererA_->buffer(id).readTexel(x, y);
 }
 
 const PixelInspection& AppCore::inspection() {
@@ -248,15 +237,16 @@ const PixelInspection& AppCore::inspection() {
         cpuNormal_ = readBack(r.gbuffer().normal(), 3);
         cpuDepth_ = readBack(r.gbuffer().depth(), 1);
         cpuVersion_ = r.gbuffer().version();
-        inspectedKey_.clear();
+        inspectionStale_ = true;
     }
-    const std::string key = toJson(settings_).dump() + std::to_string(hoverPixel.x) + "," +
-                            std::to_string(hoverPixel.y) + "," + std::to_string(cpuVersion_);
-    if (key != inspectedKey_) {
+    // Replayed only when the pixel, the settings or the G-buffer changed, not on every frame.
+    if (inspectionStale_ || hoverPixel != inspectedPixel_ || settings_ != inspectedSettings_) {
         const gpu::FrameConstants fc = packFrameConstants(r.camera(), r.width(), r.height(), r.sceneRadius());
         inspection_ = inspectPixel(settings_.ssao, settings_.gbuffer, fc, {&cpuPos_, &cpuNormal_, &cpuDepth_},
                                    hoverPixel.x, hoverPixel.y);
-        inspectedKey_ = key;
+        inspectedPixel_ = hoverPixel;
+        inspectedSettings_ = settings_;
+        inspectionStale_ = false;
     }
     return inspection_;
 }

@@ -104,9 +104,11 @@ class AppCore {
     // Runs an action that returns its success message; on an exception shows the error instead.
     bool attempt(const char* what, const std::function<std::string()>& action);
     void adoptScene(Scene s, bool keepCamera);
-    Settings settingsB() const;
+    Settings settingsB();
 
     AppOptions opts_;
+    std::string cachedSplitPreset_;
+    Settings cachedSplitSettings_;
     PresetStore store_;
     Scene scene_;
     Settings settings_;
@@ -127,7 +129,8 @@ class AppCore {
     unsigned cpuVersion_ = ~0u;
     PixelInspection inspection_;
     glm::ivec2 inspectedPixel_{-1, -1};
-    std::string inspectedKey_;
+    Settings inspectedSettings_;
+    bool inspectionStale_ = true;
 };
 
 // UI pieces (ui_panels.cpp, ui_views.cpp).

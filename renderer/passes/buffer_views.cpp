@@ -6,11 +6,6 @@
 
 namespace ssao {
 
-const char* bufferName(BufferId id) {
-    static const char* names[] = {"position", "normal", "depth", "albedo", "ao_raw", "ao", "composite"};
-    return names[int(id)];
-}
-
 void BufferViews::update(Renderer& r) {
     if (owner_ != &r) versions_.fill(0), owner_ = &r;
     composite_ = &r.composite().color();

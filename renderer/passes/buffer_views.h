@@ -8,10 +8,6 @@
 
 namespace ssao {
 
-enum class BufferId { Position, Normal, Depth, Albedo, AoRaw, Ao, Composite, Count };
-constexpr int kBufferCount = int(BufferId::Count);
-const char* bufferName(BufferId id); // "position", "normal", ... (also the EXR/PNG file stems)
-
 class BufferViews {
   public:
     // Brings every view up to date with the renderer's buffers.
