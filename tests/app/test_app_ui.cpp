@@ -3,6 +3,7 @@
 #include "ui_driver.h"
 
 #include "settings/preset.h"
+#include "test_util.h"
 
 #include <filesystem>
 #include <fstream>
@@ -148,8 +149,7 @@ TEST_F(AppUi, PresetRenameAndDeleteWorkOnUserPresetsOnly) {
 
 TEST_F(AppUi, DroppingABadFileShowsTheErrorAndKeepsTheScene) {
     const std::string name = ui_->app().scene().name;
-    const std::string bad = std::string(SSAOLAB_TEST_TMP) + "/app_corrupt.gltf";
-    std::ofstream(bad) << "{ corrupt";
+    const std::string bad = writeTemp("app_corrupt.gltf", "{ corrupt");
     ui_->app().dropFiles({bad});
     ui_->frame();
     EXPECT_TRUE(ui_->app().statusIsError());

@@ -1,4 +1,6 @@
 // Whole program: the ssaolab binary on real scenes and on bad input.
+#include "test_util.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -9,6 +11,9 @@
 #include <fstream>
 #include <sstream>
 
+using ssaotest::slurp;
+using ssaotest::writeTemp;
+
 namespace {
 
 struct CliRun {
@@ -16,13 +21,6 @@ struct CliRun {
     bool signaled = false;
     std::string out, err;
 };
-
-std::string slurp(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 CliRun ssaolab(const std::string& args) {
     std::filesystem::create_directories(SSAOLAB_TEST_TMP);
@@ -36,13 +34,6 @@ CliRun ssaolab(const std::string& args) {
     r.out = slurp(base + ".out");
     r.err = slurp(base + ".err");
     return r;
-}
-
-std::string tmpFile(const std::string& name, const std::string& text) {
-    std::filesystem::create_directories(SSAOLAB_TEST_TMP);
-    std::string p = std::string(SSAOLAB_TEST_TMP) + "/" + name;
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
 }
 
 std::string outDir(const std::string& name) {
@@ -135,14 +126,15 @@ TEST(Cli, BadInputGivesOneClearLineAndExitCodeOne) {
     expectCleanFailure(ssaolab("render --scene /nonexistent/missing.gltf" + out),
                        "scene file not found: /nonexistent/missing.gltf");
     expectCleanFailure(
-        ssaolab("render --scene " + tmpFile("cli_corrupt.gltf", "{ \"asset\": [ broken") + out),
+        ssaolab("render --scene " + writeTemp("cli_corrupt.gltf", "{ \"asset\": [ broken") + out),
         "cannot load glTF");
     expectCleanFailure(ssaolab("render --scene builtin:nope" + out), "unknown built-in scene");
-    expectCleanFailure(ssaolab("render --preset " + tmpFile("cli_bad.json", "{ not json") + out),
+    expectCleanFailure(ssaolab("render --preset " + writeTemp("cli_bad.json", "{ not json") + out),
                        "is not valid JSON");
     expectCleanFailure(ssaolab("render --preset /nonexistent.json" + out), "preset file not found");
-    expectCleanFailure(ssaolab("render --preset " + tmpFile("cli_unk.json", R"({"ssao":{"radiu":1}})") + out),
-                       "unknown key 'ssao.radiu'");
+    expectCleanFailure(
+        ssaolab("render --preset " + writeTemp("cli_unk.json", R"({"ssao":{"radiu":1}})") + out),
+        "unknown key 'ssao.radiu'");
     expectCleanFailure(ssaolab("render --set ssao.bogus=1" + out), "unknown parameter 'ssao.bogus'");
     expectCleanFailure(ssaolab("render --set ssao.radius=-0.5" + out),
                        "ssao.radius: value -0.5 is out of range");

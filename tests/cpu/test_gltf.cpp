@@ -2,6 +2,8 @@
 #include "scene/gltf_loader.h"
 #include "util/error.h"
 
+#include "test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +12,7 @@
 #include <fstream>
 
 using namespace ssao;
+using ssaotest::writeTemp;
 
 namespace {
 
@@ -42,13 +45,6 @@ std::string triangleGltf(const std::string& extra = "") {
       "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":3}],
       "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,-1],"max":[1,0,0]},
                    {"bufferView":1,"componentType":5121,"count":3,"type":"SCALAR"}]})";
-}
-
-std::string writeTemp(const std::string& name, const std::string& text) {
-    std::filesystem::create_directories(SSAOLAB_TEST_TMP);
-    std::string path = std::string(SSAOLAB_TEST_TMP) + "/" + name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
 }
 
 std::string errorOf(const std::string& path) {

@@ -1,6 +1,8 @@
 #include "settings/params.h"
 #include "util/error.h"
 
+#include "test_util.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -9,6 +11,7 @@
 #include <set>
 
 using namespace ssao;
+using ssaotest::writeTemp;
 
 namespace {
 std::string errorOf(const std::function<void()>& f) {
@@ -18,12 +21,6 @@ std::string errorOf(const std::function<void()>& f) {
         return e.what();
     }
     return "";
-}
-std::string writeTemp(const std::string& name, const std::string& text) {
-    std::filesystem::create_directories(SSAOLAB_TEST_TMP);
-    std::string path = std::string(SSAOLAB_TEST_TMP) + "/" + name;
-    std::ofstream(path) << text;
-    return path;
 }
 } // namespace
 

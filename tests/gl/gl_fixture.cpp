@@ -51,16 +51,21 @@ Rendered readAll(ssao::Renderer& r) {
     return out;
 }
 
+std::unique_ptr<ssao::Renderer> makeRenderer(const ssao::Scene& scene, const ssao::Settings& s, int w, int h,
+                                             std::optional<ssao::Camera> camera) {
+    auto r = std::make_unique<ssao::Renderer>(SSAOLAB_SHADER_DIR);
+    r->setSize(w, h);
+    r->setScene(scene);
+    r->setCamera(camera.value_or(sceneCamera(scene)));
+    r->setSettings(s);
+    return r;
+}
+
 Rendered render(const std::string& sceneSpec, const ssao::Settings& s, int w, int h,
                 std::optional<ssao::Camera> camera) {
-    ssao::Scene scene = ssao::loadScene(sceneSpec);
-    ssao::Renderer r(SSAOLAB_SHADER_DIR);
-    r.setSize(w, h);
-    r.setScene(scene);
-    r.setCamera(camera.value_or(sceneCamera(scene)));
-    r.setSettings(s);
-    ssao::FrameReport rep = r.render();
-    Rendered out = readAll(r);
+    auto r = makeRenderer(ssao::loadScene(sceneSpec), s, w, h, camera);
+    ssao::FrameReport rep = r->render();
+    Rendered out = readAll(*r);
     out.report = rep;
     return out;
 }

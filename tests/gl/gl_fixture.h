@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -29,6 +30,9 @@ class GlTest : public ::testing::Test {
 ssao::Settings preset(const std::string& name);
 ssao::Camera sceneCamera(const ssao::Scene& s);
 Rendered readAll(ssao::Renderer& r);
+// A renderer set up on `scene` (its own camera unless one is given); nothing rendered yet.
+std::unique_ptr<ssao::Renderer> makeRenderer(const ssao::Scene& scene, const ssao::Settings& s, int w, int h,
+                                             std::optional<ssao::Camera> camera = std::nullopt);
 Rendered render(const std::string& scene, const ssao::Settings& s, int w, int h,
                 std::optional<ssao::Camera> camera = std::nullopt);
 

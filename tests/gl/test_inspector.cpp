@@ -30,12 +30,9 @@ TEST_F(Inspector, CpuReplayMatchesGpuAoForEveryMode) {
         s.ssao.samples = 32;
         if (*mode) applyAssignment(s, mode);
         Scene scene = loadScene("builtin:showcase");
-        Renderer r(SSAOLAB_SHADER_DIR);
         const int w = 96, h = 54;
-        r.setSize(w, h);
-        r.setScene(scene);
-        r.setCamera(*scene.camera);
-        r.setSettings(s);
+        auto rp = makeRenderer(scene, s, w, h);
+        Renderer& r = *rp;
         r.render();
         Image pos = readBack(r.gbuffer().position(), 4), nrm = readBack(r.gbuffer().normal(), 3);
         Image dep = readBack(r.gbuffer().depth(), 1), ao = readBack(r.ssao().aoRaw(), 1);
@@ -65,11 +62,8 @@ TEST_F(Inspector, TapsReportWhereSamplesLandAndWhy) {
     s.ssao.noise = Noise::None;
     s.ssao.radius = 1.0f;
     Scene scene = loadScene("builtin:corner");
-    Renderer r(SSAOLAB_SHADER_DIR);
-    r.setSize(320, 240);
-    r.setScene(scene);
-    r.setCamera(*scene.camera);
-    r.setSettings(s);
+    auto rp = makeRenderer(scene, s, 320, 240);
+    Renderer& r = *rp;
     r.render();
     Image pos = readBack(r.gbuffer().position(), 4), nrm = readBack(r.gbuffer().normal(), 3),
           dep = readBack(r.gbuffer().depth(), 1);

@@ -12,11 +12,7 @@ class Passes : public GlTest {
     void SetUp() override {
         GlTest::SetUp();
         scene_ = loadScene("builtin:showcase");
-        r_ = std::make_unique<Renderer>(SSAOLAB_SHADER_DIR);
-        r_->setSize(160, 90);
-        r_->setScene(scene_);
-        r_->setCamera(*scene_.camera);
-        r_->setSettings(defaultSettings());
+        r_ = makeRenderer(scene_, defaultSettings(), 160, 90);
     }
     void TearDown() override {
         r_.reset();
