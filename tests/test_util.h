@@ -1,9 +1,11 @@
 // Small helpers shared by every test binary: files under the build's test tmp folder.
 #pragma once
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace ssaotest {
 
@@ -20,6 +22,18 @@ inline std::string slurp(const std::string& path) {
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();
+}
+
+// Every .gltf of the third-party scenes beside the repository (../shared/scenes), sorted.
+inline std::vector<std::filesystem::path> sharedSceneFiles() {
+    std::vector<std::filesystem::path> out;
+    for (auto& dir : std::filesystem::directory_iterator(SSAOLAB_SCENES_DIR)) {
+        if (!dir.is_directory()) continue;
+        for (auto& f : std::filesystem::directory_iterator(dir.path()))
+            if (f.path().extension() == ".gltf") out.push_back(f.path());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 } // namespace ssaotest

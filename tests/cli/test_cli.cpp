@@ -95,30 +95,25 @@ TEST(Cli, RenderWritesEveryBufferAndMetrics) {
 }
 
 TEST(Cli, EveryThirdPartySceneRendersWithItsOwnCamera) {
-    int n = 0;
-    for (auto& dir : std::filesystem::directory_iterator(SSAOLAB_SCENES_DIR)) {
-        if (!dir.is_directory()) continue;
-        for (auto& f : std::filesystem::directory_iterator(dir.path())) {
-            if (f.path().extension() != ".gltf") continue;
-            const std::string name = f.path().stem().string();
-            const std::string out = outDir(name);
-            // Default settings (radius 0.5 scene units): the point here is loading, cameras and finiteness.
-            CliRun r = ssaolab("render --scene '" + f.path().string() +
-                               "' --size 256x144 --timing-frames 1 --out " + out);
-            ASSERT_EQ(r.exitCode, 0) << name << ": " << r.err;
-            auto m = nlohmann::json::parse(slurp(out + "/metrics.json"));
-            // The file's first camera when it has one, else a view framing the bounds.
-            const bool hasCamera = nlohmann::json::parse(slurp(f.path().string())).contains("cameras");
-            EXPECT_EQ(m["camera"]["source"], hasCamera ? "file" : "framed") << name;
-            for (auto& [k, v] : m["nonfinite"].items())
-                EXPECT_EQ(v, 0) << name << " " << k;
-            EXPECT_GT(m["geometry_pixels"].get<long>(), 256 * 144 / 100) << name << " is barely visible";
-            EXPECT_GE(m["ao"]["min"].get<double>(), 0.0) << name;
-            EXPECT_LE(m["ao"]["max"].get<double>(), 1.0) << name;
-            ++n;
-        }
+    const auto files = ssaotest::sharedSceneFiles();
+    for (const auto& f : files) {
+        const std::string name = f.stem().string();
+        const std::string out = outDir(name);
+        // Default settings (radius 0.5 scene units): the point here is loading, cameras and finiteness.
+        CliRun r =
+            ssaolab("render --scene '" + f.string() + "' --size 256x144 --timing-frames 1 --out " + out);
+        ASSERT_EQ(r.exitCode, 0) << name << ": " << r.err;
+        auto m = nlohmann::json::parse(slurp(out + "/metrics.json"));
+        // The file's first camera when it has one, else a view framing the bounds.
+        const bool hasCamera = nlohmann::json::parse(slurp(f.string())).contains("cameras");
+        EXPECT_EQ(m["camera"]["source"], hasCamera ? "file" : "framed") << name;
+        for (auto& [k, v] : m["nonfinite"].items())
+            EXPECT_EQ(v, 0) << name << " " << k;
+        EXPECT_GT(m["geometry_pixels"].get<long>(), 256 * 144 / 100) << name << " is barely visible";
+        EXPECT_GE(m["ao"]["min"].get<double>(), 0.0) << name;
+        EXPECT_LE(m["ao"]["max"].get<double>(), 1.0) << name;
     }
-    EXPECT_GE(n, 8);
+    EXPECT_GE(files.size(), 8u);
 }
 
 TEST(Cli, BadInputGivesOneClearLineAndExitCodeOne) {

@@ -101,18 +101,13 @@ TEST(Gltf, CornellBoxLoadsWithItsCamera) {
 }
 
 TEST(Gltf, EveryThirdPartySceneLoads) {
-    int n = 0;
-    for (auto& dir : std::filesystem::directory_iterator(SSAOLAB_SCENES_DIR)) {
-        if (!dir.is_directory()) continue;
-        for (auto& f : std::filesystem::directory_iterator(dir.path())) {
-            if (f.path().extension() != ".gltf") continue;
-            Scene s = loadGltf(f.path().string());
-            EXPECT_GT(s.triangleCount(), 1000u) << f.path();
-            EXPECT_TRUE(std::isfinite(s.bounds.radius())) << f.path();
-            ++n;
-        }
+    const auto files = ssaotest::sharedSceneFiles();
+    for (const auto& f : files) {
+        Scene s = loadGltf(f.string());
+        EXPECT_GT(s.triangleCount(), 1000u) << f;
+        EXPECT_TRUE(std::isfinite(s.bounds.radius())) << f;
     }
-    EXPECT_GE(n, 8);
+    EXPECT_GE(files.size(), 8u);
 }
 
 TEST(BuiltinScenes, AllBuildAndUnknownNamesAreListed) {
