@@ -112,16 +112,20 @@ int runWindowApp(const WindowOptions& o) {
         AppCore app(o.app);
         glfwSetWindowUserPointer(window, &app);
         int frame = 0;
+        double lastShaderCheck = glfwGetTime();
         while (!glfwWindowShouldClose(window)) {
             if (o.frames == 0 && !app.busy()) {
                 // Idle costs nothing: sleep until an event (or a periodic check for edited shaders).
                 glfwWaitEventsTimeout(0.5);
-                app.pollShaderReload();
-                if (!app.busy()) continue;
             } else {
                 glfwPollEvents();
+            }
+            // Shader files are checked at most twice a second, not on every busy frame.
+            if (const double now = glfwGetTime(); now - lastShaderCheck >= 0.5) {
+                lastShaderCheck = now;
                 app.pollShaderReload();
             }
+            if (o.frames == 0 && !app.busy()) continue;
             const auto t0 = std::chrono::steady_clock::now();
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
