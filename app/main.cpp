@@ -3,7 +3,9 @@
 #include "render_command.h"
 #include "scene/builtin_scenes.h"
 #include "settings/params.h"
+#include "settings/preset_store.h"
 #include "util/error.h"
+#include "util/paths.h"
 #include "view/window_app.h"
 
 #include <CLI/CLI.hpp>
@@ -14,7 +16,7 @@
 namespace {
 
 void printParams() {
-    std::printf("%-26s %-10s %-12s %-22s %s\n", "key", "default", "unit", "range", "what it does");
+    std::printf("%-26s %-10s %-12s %-30s %s\n", "key", "default", "unit", "range", "what it does");
     for (const auto& p : ssao::paramTable()) {
         std::string range;
         if (p.type == ssao::Param::Type::Enum) {
@@ -25,8 +27,8 @@ void printParams() {
         } else {
             range = "[" + p.format(p.min) + ", " + p.format(p.max) + "]";
         }
-        std::printf("%-26s %-10s %-12s %-22s %s\n", p.key.c_str(), p.format(p.def).c_str(), p.unit.c_str(),
-                    range.c_str(), p.help.c_str());
+        std::printf("%-26s %-10s %-12s %-30s %s%s\n", p.key.c_str(), p.format(p.def).c_str(), p.unit.c_str(),
+                    range.c_str(), p.help.c_str(), p.when.empty() ? "" : (" [applies when " + p.whenText() + "]").c_str());
     }
 }
 
@@ -43,10 +45,11 @@ int main(int argc, char** argv) {
         app.add_subcommand("render", "render a scene headless (EGL) into EXR/PNG buffers and metrics.json");
     ssao::addRenderOptions(*render, ro);
     app.add_subcommand("params", "list every parameter: key, default, unit, range, help");
+    app.add_subcommand("paths", "where this binary finds its shaders, assets and presets");
     ssao::WindowOptions wo;
     std::string windowSize = "1600x900";
     CLI::App* view = app.add_subcommand("view", "open the interactive explorer window (GLFW + Dear ImGui)");
-    view->add_option("--scene", wo.app.scene, "builtin:NAME or a .gltf/.glb file")->capture_default_str();
+    view->add_option("--scene", wo.app.scene, "builtin:NAME or a .gltf/.glb file (default: the preset's, else showcase)");
     view->add_option("--preset", wo.app.preset, "preset name or JSON file");
     view->add_option("--shaders", wo.app.shaderDir, "shader folder (edits are hot-reloaded)");
     view->add_option("--preset-dir", wo.app.userPresetDir,
@@ -63,6 +66,13 @@ int main(int argc, char** argv) {
     try {
         if (app.got_subcommand("params")) {
             printParams();
+            return 0;
+        }
+        if (app.got_subcommand("paths")) {
+            std::printf("binary   %s\ndata     %s (%s)\nshaders  %s\npresets  %s/presets, then %s\n",
+                        ssao::executablePath().c_str(), ssao::dataRoot().c_str(), ssao::dataRootSource().c_str(),
+                        ssao::shaderRoot().c_str(), ssao::assetRoot().c_str(),
+                        ssao::PresetStore::defaultUserDir().c_str());
             return 0;
         }
         if (app.got_subcommand("view") || (!app.got_subcommand("render") && ssao::haveDisplay())) {

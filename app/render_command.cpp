@@ -4,7 +4,9 @@
 #include "output/report.h"
 #include "settings/params.h"
 #include "settings/preset.h"
+#include "settings/preset_store.h"
 #include "util/error.h"
+#include "util/paths.h"
 
 #include <CLI/CLI.hpp>
 
@@ -14,26 +16,26 @@
 namespace ssao {
 
 void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
-    cmd.add_option("--scene", o.scene, "builtin:showcase|plane|corner, or a .gltf/.glb file")
-        ->capture_default_str();
-    cmd.add_option("--preset", o.preset, "preset JSON file, or a name in assets/presets (e.g. learnopengl)");
+    cmd.add_option("--scene", o.scene,
+                   "builtin:showcase|plane|corner, or a .gltf/.glb file (default: the preset's scene, else "
+                   "builtin:showcase)");
+    cmd.add_option("--preset", o.preset,
+                   "preset JSON file, or a name: the seed presets (e.g. learnopengl), then the ones saved in the app");
     cmd.add_option("--set", o.sets, "override one parameter, key=value (repeatable; see `ssaolab params`)");
-    cmd.add_option("--size", o.size, "output size WIDTHxHEIGHT")->capture_default_str();
+    cmd.add_option("--size", o.size, "output size WIDTHxHEIGHT (default: the preset's size, else 1280x720)");
     cmd.add_option("--camera", o.camera, "eye,target[,up[,fov_deg[,near,far]]] as comma-separated numbers");
+    cmd.add_option("--clip", o.clip, "clip planes: fit (to the scene, default) or fixed (the camera's own near/far)")
+        ->check(CLI::IsMember({"fit", "fixed"}));
     cmd.add_option("--out", o.out, "output folder (EXR, PNG, metrics.json)")->capture_default_str();
     cmd.add_option("--timing-frames", o.timingFrames, "extra frames, every pass forced, averaged into gpu_ms")
         ->capture_default_str()
         ->check(CLI::Range(1, 1000));
-    cmd.add_option("--shaders", o.shaderDir, "shader folder (default: the source tree's shaders/)");
+    cmd.add_flag("--fit-range", o.fitRange, "PNG previews: fit every buffer's range (as the app's 'fit range')");
+    cmd.add_flag("--false-colour", o.falseColor, "PNG previews: scalar buffers in false colour");
+    cmd.add_option("--shaders", o.shaderDir, "shader folder (default: the installed or source tree's shaders/)");
+    cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)");
     cmd.add_flag("--verbose-gl", o.verboseGl, "log every KHR_debug message");
     cmd.add_flag("--quiet", o.quiet, "print nothing on success");
-}
-
-std::string resolvePreset(const std::string& arg) {
-    if (std::filesystem::exists(arg)) return arg;
-    std::string named = std::string(SSAOLAB_ASSET_DIR) + "/presets/" + arg + ".json";
-    if (arg.find('/') == std::string::npos && std::filesystem::exists(named)) return named;
-    return arg; // loadPreset reports "not found" with the name the user gave
 }
 
 namespace {
@@ -50,19 +52,27 @@ void parseSize(const std::string& s, int& w, int& h) {
 
 int runRender(const RenderOptions& o) {
     // Validate everything that needs no GL first, so bad input fails fast with one line.
-    int w = 0, h = 0;
-    parseSize(o.size, w, h);
     Preset preset;
-    preset.settings = defaultSettings();
-    if (!o.preset.empty()) preset = readPresetFile(resolvePreset(o.preset));
+    if (!o.preset.empty()) preset = PresetStore::standard(o.presetDir).open(o.preset);
+    int w = 1280, h = 720;
+    if (!o.size.empty())
+        parseSize(o.size, w, h);
+    else if (preset.size)
+        std::tie(w, h) = *preset.size;
     Settings settings = preset.settings;
     for (const auto& a : o.sets)
         applyAssignment(settings, a);
-    Scene scene = loadScene(o.scene);
+    const std::string sceneSpec = !o.scene.empty() ? o.scene : preset.scene.value_or("builtin:showcase");
+    if (o.scene.empty() && !preset.scene && preset.camera && !o.quiet)
+        std::fprintf(stderr, "note: preset %s has a camera but no scene; rendering %s\n", preset.name.c_str(),
+                     sceneSpec.c_str());
+    Scene scene = loadScene(sceneSpec);
 
     RunInfo info;
     info.sceneName = scene.name;
     info.triangles = scene.triangleCount();
+    info.style.fit = o.fitRange;
+    info.style.falseColor = o.falseColor;
     Camera cam;
     if (!o.camera.empty()) {
         cam = parseCamera(o.camera, scene.camera.value_or(frameBounds(scene.bounds)));
@@ -72,11 +82,13 @@ int runRender(const RenderOptions& o) {
         info.cameraSource = "preset";
     } else if (scene.camera) {
         cam = *scene.camera;
-        info.cameraSource = o.scene.rfind("builtin:", 0) == 0 ? "builtin" : "file";
+        info.cameraSource = sceneSpec.rfind("builtin:", 0) == 0 ? "builtin" : "file";
     } else {
         cam = frameBounds(scene.bounds);
         info.cameraSource = "framed";
     }
+    if (o.clip == "fit") cam.clip = ClipMode::Fit;
+    if (o.clip == "fixed") cam.clip = ClipMode::Fixed;
     validateCamera(cam);
 
     gl::HeadlessContext ctx;
@@ -85,14 +97,14 @@ int runRender(const RenderOptions& o) {
     info.glPlatform = ctx.platform();
     info.timingFrames = o.timingFrames;
 
-    Renderer r(o.shaderDir.empty() ? std::string(SSAOLAB_SHADER_DIR) : o.shaderDir);
+    Renderer r(o.shaderDir.empty() ? shaderRoot() : o.shaderDir);
     r.setSize(w, h);
     r.setScene(scene);
     r.setCamera(cam);
     r.setSettings(settings);
     FrameReport first = r.render();
 
-    // Timing: force every pass for `timingFrames` frames and average (first frame includes JIT).
+    // Timing: force every pass for `timingFrames` frames and average (the first frame includes JIT).
     nlohmann::json timing = nlohmann::json::object();
     std::vector<double> sums(first.passes.size(), 0.0);
     for (int f = 0; f < o.timingFrames; ++f) {
@@ -103,30 +115,31 @@ int runRender(const RenderOptions& o) {
     }
     double total = 0;
     for (size_t i = 0; i < first.passes.size(); ++i) {
-        double ms = o.timingFrames > 0 ? sums[i] / o.timingFrames : first.passes[i].gpuMs;
+        const double ms = sums[i] / o.timingFrames;
         timing[first.passes[i].name] = ms;
         total += ms;
     }
     timing["total"] = total;
 
     nlohmann::json m = writeOutputs(r, o.out, info, first, timing);
-    std::string glErr = gl::pollGlErrors();
+    const std::string glErr = gl::pollGlErrors();
     if (gl::glErrorCount() > 0)
         throw Error("OpenGL reported " + std::to_string(gl::glErrorCount()) + " error(s) during the run" +
                     (glErr.empty() ? "" : " (" + glErr + ")"));
     if (!o.quiet) {
-        std::printf("%s: %dx%d on %s; AO mean %.4f (raw %.4f); gpu ms:", scene.name.c_str(), w, h,
-                    info.glRenderer.c_str(), m["ao"]["mean"].get<double>(),
-                    m["ao_raw"]["mean"].get<double>());
+        std::printf("%s: %dx%d on %s; AO mean %.4f (raw %.4f), darkest 5%% <= %.3f; radius %.4g units = %.1f px at "
+                    "the centre; gpu ms:",
+                    scene.name.c_str(), w, h, info.glRenderer.c_str(), m["ao"]["mean"].get<double>(),
+                    m["ao_raw"]["mean"].get<double>(), m["ao"]["p05"].get<double>(),
+                    m["radius"]["world_at_centre"].get<double>(), m["radius"]["pixels_at_centre"].get<double>());
         for (auto& [k, v] : timing.items())
             std::printf(" %s %.3f", k.c_str(), v.get<double>());
-        std::printf("\nwrote %s/{position,normal,depth,ao_raw,ao}.exr, *.png, metrics.json\n", o.out.c_str());
+        std::printf("\nwrote %s/: one .exr per float buffer, one .png per buffer, metrics.json\n", o.out.c_str());
     }
     long bad = 0;
-    for (auto& [k, v] : m["nonfinite"].items())
-        bad += v.get<long>();
-    if (bad > 0)
-        throw Error(std::to_string(bad) + " non-finite values in the output buffers (see metrics.json)");
+    for (auto& [name, b] : m["buffers"].items())
+        bad += b["nonfinite"].get<long>();
+    if (bad > 0) throw Error(std::to_string(bad) + " non-finite values in the output buffers (see metrics.json)");
     return 0;
 }
 

@@ -10,14 +10,17 @@ class App;
 namespace ssao {
 
 struct RenderOptions {
-    std::string scene = "builtin:showcase";
-    std::string preset;            // file path, or a name under assets/presets/
+    std::string scene;             // empty: the preset's scene, else builtin:showcase
+    std::string preset;            // file path, or a name (seed presets, then the user's)
     std::vector<std::string> sets; // key=value
-    std::string size = "1280x720";
-    std::string camera; // eye,target[,up[,fov[,near,far]]]
+    std::string size;              // empty: the preset's size, else 1280x720
+    std::string camera;            // eye,target[,up[,fov[,near,far]]]
+    std::string clip;              // fit | fixed (empty: the camera's own setting)
     std::string out = "out";
-    std::string shaderDir; // default: the source tree's shaders/
+    std::string shaderDir; // default: the installation's (or source tree's) shaders/
+    std::string presetDir; // user presets (default: as the app)
     int timingFrames = 3;  // extra frames, all passes forced, averaged for gpu_ms
+    bool fitRange = false, falseColor = false;
     bool verboseGl = false;
     bool quiet = false;
 };
@@ -25,8 +28,5 @@ struct RenderOptions {
 void addRenderOptions(CLI::App& cmd, RenderOptions& o);
 // Throws ssao::Error on any problem; returns the process exit code.
 int runRender(const RenderOptions& o);
-
-// Resolves a preset argument: an existing path, or NAME → assets/presets/NAME.json.
-std::string resolvePreset(const std::string& arg);
 
 } // namespace ssao

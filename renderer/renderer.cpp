@@ -1,25 +1,36 @@
 #include "renderer.h"
 
+#include "gl/shader_library.h"
+#include "passes/composite_pass.h"
+#include "passes/denoise_pass.h"
+#include "passes/gbuffer_pass.h"
+#include "scene/view_fit.h"
 #include "settings/params.h"
-#include "ssao/constants.h"
+#include "techniques/ao_common.h"
+#include "techniques/technique.h"
 #include "util/error.h"
 
+#include <glm/gtc/matrix_inverse.hpp>
 #include <nlohmann/json.hpp>
 
-#include <cstdio>
+#include <typeinfo>
 
 namespace ssao {
 
-std::vector<std::string> FrameReport::ran() const {
-    std::vector<std::string> out;
-    for (const auto& p : passes)
-        if (p.ran) out.push_back(p.name);
-    return out;
+namespace {
+gpu::FrameConstants packFrameConstants(const Camera& cam, int width, int height, float sceneRadius) {
+    gpu::FrameConstants f{};
+    f.view = cam.view();
+    f.proj = cam.projection(float(width) / float(height));
+    f.invProj = glm::inverse(f.proj);
+    f.viewport = {float(width), float(height), 1.0f / float(width), 1.0f / float(height)};
+    f.clip = {cam.nearZ, cam.farZ, sceneRadius, 0.0f};
+    return f;
 }
+} // namespace
 
 Renderer::Renderer(const std::string& shaderDir)
-    : shaders_(shaderDir), frameUbo_(sizeof(gpu::FrameConstants), "frame.constants"),
-      settings_(defaultSettings()) {
+    : shaders_(shaderDir), frameUbo_(sizeof(gpu::FrameConstants), "frame.constants") {
     // llvmpipe answers the first GL_TIME_ELAPSED query around a context's first drawing with
     // the time since boot (seen: 2.4e6 ms). One tiny clear inside a query up front keeps every
     // reported pass time real.
@@ -34,8 +45,11 @@ Renderer::Renderer(const std::string& shaderDir)
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+Renderer::~Renderer() = default;
+
 void Renderer::setScene(const Scene& scene) {
     scene_ = std::make_unique<GpuScene>(scene);
+    bounds_ = scene.bounds;
     ++sceneVersion_;
 }
 
@@ -45,7 +59,13 @@ void Renderer::setCamera(const Camera& camera) {
 }
 
 void Renderer::setSettings(const Settings& settings) {
+    findTechnique(settings.ao.technique); // an unknown id fails here, naming the known ones
     settings_ = settings;
+}
+
+void Renderer::setSettingsB(std::optional<Settings> settings) {
+    if (settings) findTechnique(settings->ao.technique);
+    settingsB_ = std::move(settings);
 }
 
 void Renderer::setSize(int width, int height) {
@@ -56,78 +76,100 @@ void Renderer::setSize(int width, int height) {
     height_ = height;
 }
 
-std::string Renderer::keyFor(const Pass& p, const nlohmann::json& settingsJson) const {
-    char buf[512];
-    std::string key = std::to_string(width_) + "x" + std::to_string(height_);
-    for (const auto& g : p.settingGroups())
-        key += "|" + settingsJson.at(g).dump();
-    if (p.readsScene()) key += "|scene" + std::to_string(sceneVersion_);
-    if (p.readsCamera()) {
-        const Camera& c = camera_;
-        std::snprintf(buf, sizeof buf, "|cam%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a", c.eye.x, c.eye.y, c.eye.z,
-                      c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg, c.nearZ, c.farZ);
-        key += buf;
-    }
-    for (const Pass* in : p.inputs())
-        key += "|" + std::string(in->name()) + std::to_string(in->version());
-    return key;
+Pass& Renderer::passFor(const std::string& key, const std::function<std::unique_ptr<Pass>()>& make) {
+    auto& slot = passes_[key];
+    if (!slot) slot = make();
+    return *slot;
 }
 
-const char* bufferName(BufferId id) {
-    static const char* names[] = {"position", "normal", "depth", "albedo", "ao_raw", "ao", "composite"};
-    return names[int(id)];
-}
-
-const gl::Texture2D& Renderer::buffer(BufferId id) const {
-    switch (id) {
-    case BufferId::Position:
-        return gbuffer_.position();
-    case BufferId::Normal:
-        return gbuffer_.normal();
-    case BufferId::Depth:
-        return gbuffer_.linearDepth();
-    case BufferId::Albedo:
-        return gbuffer_.albedo();
-    case BufferId::AoRaw:
-        return ssao_.aoRaw();
-    case BufferId::Ao:
-        return blur_.ao();
-    default:
-        return composite_.color();
+void Renderer::buildGraph() {
+    std::vector<FrameGraph::Node> nodes;
+    std::map<std::string, std::string> aliases;
+    nodes.push_back({&passFor("gbuffer", [] { return std::make_unique<GBufferPass>(); }), &settings_});
+    auto chain = [&](const Branch& b, const Settings& s) {
+        const TechniqueInfo& t = findTechnique(s.ao.technique);
+        return std::vector<Pass*>{
+            &passFor(b.prefix + "technique:" + t.id, [&] { return t.makePass(b); }),
+            &passFor(b.prefix + "denoise", [&] { return std::make_unique<DenoisePass>(b); }),
+            &passFor(b.prefix + "composite", [&] { return std::make_unique<CompositePass>(b); })};
+    };
+    const std::vector<Pass*> a = chain(Branch::a(), settings_);
+    for (Pass* p : a)
+        nodes.push_back({p, &settings_});
+    if (settingsB_) {
+        // A pass of chain B whose settings groups and (resolved) inputs equal its chain-A
+        // counterpart's would compute the same image: its outputs alias A's instead of running.
+        const nlohmann::json ja = toJson(settings_), jb = toJson(*settingsB_);
+        const std::vector<Pass*> b = chain(Branch::b(), *settingsB_);
+        for (size_t i = 0; i < b.size(); ++i) {
+            const PassDecl da = FrameGraph::declare(*a[i], settings_), db = FrameGraph::declare(*b[i], *settingsB_);
+            bool same = da.groups == db.groups && da.reads.size() == db.reads.size() &&
+                        da.writes.size() == db.writes.size() && typeid(*a[i]) == typeid(*b[i]);
+            for (const auto& g : db.groups)
+                same = same && ja.at(g) == jb.at(g);
+            for (size_t r = 0; same && r < db.reads.size(); ++r) {
+                auto it = aliases.find(db.reads[r]);
+                same = (it != aliases.end() ? it->second : db.reads[r]) == da.reads[r];
+            }
+            if (same) {
+                for (size_t w = 0; w < db.writes.size(); ++w)
+                    aliases[db.writes[w].name] = da.writes[w].name;
+            } else {
+                nodes.push_back({b[i], &*settingsB_});
+            }
+        }
     }
+    graph_.compile(nodes, aliases, width_, height_);
 }
 
 FrameReport Renderer::render() {
     if (!scene_) throw Error("renderer: no scene set");
     if (width_ <= 0) throw Error("renderer: no size set");
-    const gpu::FrameConstants fc = packFrameConstants(camera_, width_, height_, scene_->radius());
+    effective_ = effectiveCamera(camera_, bounds_);
+    const gpu::FrameConstants fc = packFrameConstants(effective_, width_, height_, sceneRadius());
     frameUbo_.upload(&fc, sizeof fc);
     frameUbo_.bind(SSAO_UBO_FRAME);
+    buildGraph();
+    frame_ = FrameInfo{scene_.get(), sceneVersion_, sceneRadius(), &effective_, width_, height_};
+    return graph_.execute(frame_, shaders_, triangle_);
+}
 
-    FrameInputs in{settings_, *scene_, camera_, width_, height_, shaders_, triangle_};
-    const nlohmann::json settingsJson = toJson(settings_); // once per frame, shared by every key
-    FrameReport report;
-    for (Pass* p : chain_) {
-        // Upstream passes run earlier in the chain, so their versions are final by now.
-        std::string key = keyFor(*p, settingsJson);
-        PassReport r{p->name()};
-        auto it = keys_.find(p);
-        if (it == keys_.end() || it->second != key) {
-            glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, p->name());
-            p->timer().begin();
-            p->run(in);
-            p->timer().end();
-            glPopDebugGroup();
-            p->markRan();
-            keys_[p] = std::move(key);
-            r.ran = true;
-        }
-        report.passes.push_back(r);
-    }
-    for (size_t i = 0; i < chain_.size(); ++i)
-        if (report.passes[i].ran) report.passes[i].gpuMs = chain_[i]->timer().resultMs();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return report;
+std::vector<const Resource*> Renderer::buffers() const {
+    std::vector<const Resource*> out;
+    for (const Resource* r : graph_.resources())
+        if (r->desc.name.rfind(Branch::b().prefix, 0) != 0) out.push_back(r);
+    return out;
+}
+
+std::optional<PixelInspection> Renderer::inspect(int branch, glm::ivec2 pixel) {
+    const Branch b = branch == 1 ? Branch::b() : Branch::a();
+    // Chain B's AO may be an alias of A's: inspect the pass that really produced it.
+    const Resource* ao = graph_.find(b.res("ao.raw"));
+    if (!ao || !frame_.scene) return std::nullopt;
+    Pass* p = graph_.pass(ao->producer);
+    const Settings* s = graph_.settingsOf(ao->producer);
+    if (!p || !s || pixel.x < 0 || pixel.y < 0 || pixel.x >= width_ || pixel.y >= height_) return std::nullopt;
+    const glm::ivec2 aoPixel(int(float(pixel.x) * float(ao->width()) / float(width_)),
+                             int(float(pixel.y) * float(ao->height()) / float(height_)));
+    frameUbo_.bind(SSAO_UBO_FRAME);
+    PassContext ctx(graph_, *s, frame_, shaders_, triangle_, ao->producer);
+    PixelInspection out;
+    if (!p->inspect(ctx, aoPixel, out)) return std::nullopt;
+    return out;
+}
+
+RadiusInfo Renderer::radiusAtCentre() const {
+    RadiusInfo ri;
+    ri.sceneDiagonal = 2.0f * sceneRadius();
+    const Camera& c = effective_;
+    if (const Resource* d = graph_.find("gbuffer.depth"))
+        ri.depth = d->texture.readTexel(d->width() / 2, d->height() / 2).x;
+    if (!(ri.depth > 0.0f)) ri.depth = glm::length(camera_.target - camera_.eye); // sky at the centre
+    const int h = height_ > 0 ? height_ : 1;
+    const float upp = unitsPerPixelAtUnitDepth(c.projection(float(std::max(width_, 1)) / float(h)), h);
+    ri.world = worldRadius(settings_.ao, ri.sceneDiagonal, ri.depth, upp);
+    ri.pixels = radiusInPixels(settings_.ao, ri.sceneDiagonal, ri.depth, upp);
+    return ri;
 }
 
 } // namespace ssao

@@ -1,83 +1,86 @@
-// The SSAO pipeline: gbuffer → ssao → blur → composite. Knows what each pass depends on and
-// re-runs only passes whose inputs (settings groups, scene, camera, size, upstream outputs)
-// changed since they last ran.
+// The SSAO renderer: a frame graph of the G-buffer pass, the chosen AO technique, the denoise
+// stage and the composite — plus, for the split view, a second AO chain "b." with its own settings
+// that shares the G-buffer (and any pass whose settings and inputs equal the first chain's).
 #pragma once
-#include "passes/composite_pass.h"
+#include "gl/shader_library.h"
+#include "graph/frame_graph.h"
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
 
-#include <nlohmann/json_fwd.hpp>
-
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace ssao {
 
-// Every intermediate buffer a user can look at, in display order.
-enum class BufferId { Position, Normal, Depth, Albedo, AoRaw, Ao, Composite, Count };
-constexpr int kBufferCount = int(BufferId::Count);
-const char* bufferName(BufferId id); // "position", "normal", ... (also the EXR/PNG file stems)
-
-struct PassReport {
-    std::string name;
-    bool ran = false;
-    double gpuMs = -1.0; // GL_TIME_ELAPSED of this frame's run; -1 when skipped
-};
-
-struct FrameReport {
-    std::vector<PassReport> passes;
-    std::vector<std::string> ran() const;
+// The AO radius as it is at the centre of the view (the panel and metrics.json show it).
+struct RadiusInfo {
+    float sceneDiagonal = 0; // scene units
+    float depth = 0;         // view depth at the centre pixel (or of the orbit target over sky)
+    float world = 0;         // radius in scene units there
+    float pixels = 0;        // radius in G-buffer pixels there
 };
 
 class Renderer {
   public:
     explicit Renderer(const std::string& shaderDir);
+    ~Renderer();
 
     void setScene(const Scene& scene);
-    void setCamera(const Camera& camera);
+    void setCamera(const Camera& camera); // clip planes fitted per frame unless camera.clip is Fixed
     void setSettings(const Settings& settings);
+    void setSettingsB(std::optional<Settings> settings); // chain B on (the split view) or off
     void setSize(int width, int height);
     // Forces every pass to run on the next frame (e.g. for timing all passes).
-    void invalidate() { keys_.clear(); }
+    void invalidate() { graph_.invalidate(); }
 
     FrameReport render();
 
     const Settings& settings() const { return settings_; }
-    const Camera& camera() const { return camera_; }
+    const std::optional<Settings>& settingsB() const { return settingsB_; }
+    const Camera& camera() const { return effective_; } // as rendered: fitted near/far
+    const Camera& userCamera() const { return camera_; }
     int width() const { return width_; }
     int height() const { return height_; }
-    const GBufferPass& gbuffer() const { return gbuffer_; }
-    const SsaoPass& ssao() const { return ssao_; }
-    const BlurPass& blur() const { return blur_; }
-    const CompositePass& composite() const { return composite_; }
-    // The texture behind a buffer (depth = linear view distance, R32F).
-    const gl::Texture2D& buffer(BufferId id) const;
-    gl::ShaderLibrary& shaders() { return shaders_; }
-    void drawFullscreen() const { triangle_.draw(); }
-    // Version of the scene uploaded last (bumped by setScene).
+    const Bounds& bounds() const { return bounds_; }
+    float sceneRadius() const { return bounds_.valid() ? bounds_.radius() : 1.0f; }
     unsigned sceneVersion() const { return sceneVersion_; }
-    float sceneRadius() const { return scene_ ? scene_->radius() : 1.0f; }
+
+    const FrameGraph& graph() const { return graph_; }
+    // The texture of a resource ("gbuffer.depth", "ao.raw", "b.composite", ...); throws if unknown.
+    const gl::Texture2D& texture(const std::string& resource) const { return graph_.get(resource).texture; }
+    const Resource& resource(const std::string& name) const { return graph_.get(name); }
+    // Chain A's and the shared buffers in production order (what the grid, EXR/PNG and metrics list).
+    std::vector<const Resource*> buffers() const;
+    // GPU sample inspector for chain `branch` (0 = A, 1 = B) at a pixel of the G-buffer resolution
+    // (y from the top); nullopt when the technique records no taps or the pixel is outside.
+    std::optional<PixelInspection> inspect(int branch, glm::ivec2 pixel);
+
+    RadiusInfo radiusAtCentre() const;
+
+    gl::ShaderLibrary& shaders() { return shaders_; }
+    const gl::FullscreenTriangle& triangle() const { return triangle_; }
+    void drawFullscreen() const { triangle_.draw(); }
 
   private:
-    std::string keyFor(const Pass& p, const nlohmann::json& settingsJson) const;
+    void buildGraph();
+    Pass& passFor(const std::string& key, const std::function<std::unique_ptr<Pass>()>& make);
 
     gl::ShaderLibrary shaders_;
     gl::FullscreenTriangle triangle_;
     gl::UniformBuffer frameUbo_;
     std::unique_ptr<GpuScene> scene_;
+    Bounds bounds_;
     unsigned sceneVersion_ = 0;
-    Camera camera_;
+    Camera camera_, effective_;
     Settings settings_;
+    std::optional<Settings> settingsB_;
     int width_ = 0, height_ = 0;
-
-    GBufferPass gbuffer_;
-    SsaoPass ssao_{gbuffer_};
-    BlurPass blur_{ssao_};
-    CompositePass composite_{gbuffer_, blur_};
-    std::vector<Pass*> chain_{&gbuffer_, &ssao_, &blur_, &composite_};
-    std::map<const Pass*, std::string> keys_;
+    FrameGraph graph_;
+    FrameInfo frame_;
+    std::map<std::string, std::unique_ptr<Pass>> passes_; // kept across rebuilds (they own GL state)
 };
 
 } // namespace ssao

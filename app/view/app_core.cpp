@@ -1,11 +1,12 @@
+// AppCore's actions: scenes, presets, camera, status.
 #include "view/app_core.h"
 
 #include "scene/builtin_scenes.h"
 #include "settings/params.h"
-#include "ssao/constants.h"
 #include "util/error.h"
+#include "util/paths.h"
 
-#include <filesystem>
+#include <cstdio>
 
 namespace fs = std::filesystem;
 
@@ -17,34 +18,31 @@ std::string lower(std::string s) {
         c = char(std::tolower((unsigned char)c));
     return s;
 }
-constexpr size_t kTimingHistory = 60;
+// A scene spec that still means the same file from another folder (presets store it).
+std::string absoluteSpec(const std::string& spec) {
+    if (spec.rfind("builtin:", 0) == 0) return spec;
+    std::error_code ec;
+    const fs::path p = fs::weakly_canonical(fs::absolute(spec, ec), ec);
+    return ec ? spec : p.string();
+}
 } // namespace
 
-double AppCore::PassTiming::average() const {
-    if (ms.empty()) return 0.0;
-    double s = 0;
-    for (double v : ms)
-        s += v;
-    return s / double(ms.size());
-}
-
 AppCore::AppCore(const AppOptions& o)
-    : opts_(o), store_(std::string(SSAOLAB_ASSET_DIR) + "/presets",
-                       o.userPresetDir.empty() ? PresetStore::defaultUserDir() : o.userPresetDir) {
-    if (opts_.shaderDir.empty()) opts_.shaderDir = SSAOLAB_SHADER_DIR;
+    : opts_(o), store_(PresetStore::standard(o.userPresetDir)) {
+    if (opts_.shaderDir.empty()) opts_.shaderDir = shaderRoot();
     renderScale = std::clamp(o.renderScale, 0.25f, 1.0f);
-    loaded_.settings = defaultSettings();
+    interactiveScale = std::clamp(o.interactiveScale, 0.1f, 1.0f);
     loaded_.name = "defaults";
-    if (!o.preset.empty()) {
-        const PresetEntry* e = store_.find(o.preset);
-        loaded_ = e ? store_.load(o.preset) : readPresetFile(o.preset);
-    }
+    if (!o.preset.empty()) loaded_ = store_.open(o.preset);
     settings_ = loaded_.settings;
-    rendererA_ = std::make_unique<Renderer>(opts_.shaderDir);
-    adoptScene(loadScene(o.scene), false);
+    renderer_ = std::make_unique<Renderer>(opts_.shaderDir);
+    const std::string spec = !o.scene.empty() ? o.scene : loaded_.scene.value_or("builtin:showcase");
+    adoptScene(loadScene(spec), spec, false);
     if (loaded_.camera) camera_.reset(*loaded_.camera, scene_.bounds.radius());
-    shaderTime_ = rendererA_->shaders().newestSourceTime();
-    setStatus("loaded " + scene_.name + (o.preset.empty() ? "" : " with preset " + loaded_.name), false);
+    shaderTime_ = renderer_->shaders().newestSourceTime();
+    setStatus("loaded " + scene_.name + (o.preset.empty() ? "" : " with preset " + loaded_.name) + "; " +
+                  radiusNote(),
+              false);
 }
 
 AppCore::~AppCore() = default;
@@ -55,12 +53,30 @@ void AppCore::setStatus(const std::string& s, bool error) {
     poke();
 }
 
-void AppCore::adoptScene(Scene s, bool keepCamera) {
+std::string AppCore::radiusNote() const {
+    const float diag = 2.0f * scene_.bounds.radius();
+    char buf[200];
+    const AoSettings& a = settings_.ao;
+    if (a.radiusMode == RadiusMode::Scene)
+        std::snprintf(buf, sizeof buf, "AO radius follows the scene: %.3g x diagonal %.4g = %.4g units", a.radiusScene,
+                      diag, a.radiusScene * diag);
+    else if (a.radiusMode == RadiusMode::World)
+        std::snprintf(buf, sizeof buf, "AO radius %.4g scene units (set by the preset; diagonal %.4g)", a.radius, diag);
+    else
+        std::snprintf(buf, sizeof buf, "AO radius %.3g pixels at every depth", a.radiusPx);
+    return buf;
+}
+
+void AppCore::adoptScene(Scene s, const std::string& spec, bool keepCamera) {
     scene_ = std::move(s);
-    rendererA_->setScene(scene_);
-    if (rendererB_) rendererB_->setScene(scene_);
+    sceneSpec_ = absoluteSpec(spec);
+    renderer_->setScene(scene_);
+    // A radius the preset did not choose follows the scene: a radius tuned by hand for the last
+    // scene (e.g. 0.5 m) would make a millimetre model flat grey.
+    if (!loaded_.fixesRadius()) resetRadius(settings_);
+    timingFull_ = {};
+    timingInteractive_ = {};
     if (!keepCamera) resetCamera();
-    cpuVersion_ = ~0u;
     poke();
 }
 
@@ -88,18 +104,22 @@ bool AppCore::attempt(const char* what, const std::function<std::string()>& acti
 
 bool AppCore::openScene(const std::string& spec) {
     return attempt("load scene", [&] {
-        adoptScene(loadScene(spec), false);
-        return "loaded " + scene_.name + " (" + std::to_string(scene_.triangleCount()) + " triangles)";
+        adoptScene(loadScene(spec), spec, false);
+        return "loaded " + scene_.name + " (" + std::to_string(scene_.triangleCount()) + " triangles); " +
+               radiusNote();
     });
 }
 
 bool AppCore::openPreset(const std::string& nameOrPath) {
     return attempt("load preset", [&] {
-        Preset p = store_.find(nameOrPath) ? store_.load(nameOrPath) : readPresetFile(nameOrPath);
+        Preset p = store_.open(nameOrPath);
+        std::optional<Scene> s;
+        if (p.scene && absoluteSpec(*p.scene) != sceneSpec_) s = loadScene(*p.scene); // may throw: nothing changed yet
         loaded_ = p;
         settings_ = p.settings;
+        if (s) adoptScene(std::move(*s), *p.scene, false);
         if (p.camera) camera_.reset(*p.camera, scene_.bounds.radius());
-        return "preset " + p.name + " loaded";
+        return "preset " + p.name + " loaded" + (s ? " with its scene " + scene_.name : "") + "; " + radiusNote();
     });
 }
 
@@ -121,6 +141,14 @@ bool AppCore::savePreset(const std::string& name) {
         p.name = name;
         p.description = "saved from the ssaolab app";
         p.settings = settings_;
+        for (const auto& row : paramTable())
+            p.keys.insert(row.key); // a saved preset is complete: it fixes every parameter
+        p.scene = sceneSpec_;
+        if (renderer_->width() > 0) {
+            // The view's full-resolution size, not the reduced one used while dragging.
+            const float s = renderedInteractive_ ? renderScale / interactiveScale : 1.0f;
+            p.size = std::make_pair(int(float(renderer_->width()) * s + 0.5f), int(float(renderer_->height()) * s + 0.5f));
+        }
         p.camera = camera_.camera(); // the camera as a bookmark
         const std::string path = store_.save(p);
         loaded_ = p;
@@ -147,7 +175,8 @@ bool AppCore::unsavedChanges() const {
     return settings_ != loaded_.settings;
 }
 
-Settings AppCore::settingsB() {
+std::optional<Settings> AppCore::settingsB() {
+    if (viewMode != ViewMode::Split) return std::nullopt;
     if (splitKind == SplitKind::AoOnOff) {
         Settings s = settings_;
         s.composite.useAo = false;
@@ -157,105 +186,23 @@ Settings AppCore::settingsB() {
     if (splitPresetB != cachedSplitPreset_) {
         cachedSplitPreset_ = splitPresetB;
         try {
-            cachedSplitSettings_ = store_.load(splitPresetB).settings;
+            cachedSplitSettings_ = store_.open(splitPresetB).settings;
         } catch (const std::exception& e) {
-            cachedSplitSettings_ = settings_;
+            cachedSplitSettings_.reset();
             setStatus(std::string("split view: ") + e.what(), true);
         }
     }
     return cachedSplitSettings_;
 }
 
-void AppCore::renderIfNeeded(int width, int height) {
-    width = std::max(int(float(width) * renderScale), 16);
-    height = std::max(int(float(height) * renderScale), 16);
-    // Cheap when nothing changed: the renderer compares keys and runs no pass.
-    auto prepare = [&](Renderer& r, const Settings& s) {
-        if (r.width() != width || r.height() != height) r.setSize(width, height);
-        r.setCamera(camera_.camera());
-        r.setSettings(s);
-    };
-    try {
-        Renderer& r = *rendererA_;
-        prepare(r, settings_);
-        FrameReport rep = r.render();
-        if (!rep.ran().empty()) {
-            lastReport_ = rep;
-            ++framesRendered_;
-            for (const auto& p : rep.passes) {
-                if (!p.ran || p.gpuMs < 0) continue;
-                auto& t = timings_[p.name].ms;
-                t.push_back(p.gpuMs);
-                if (t.size() > kTimingHistory) t.pop_front();
-            }
-        }
-        views_.update(r);
-        if (viewMode == ViewMode::Split) {
-            if (!rendererB_) {
-                rendererB_ = std::make_unique<Renderer>(opts_.shaderDir);
-                rendererB_->setScene(scene_);
-            }
-            prepare(*rendererB_, settingsB());
-            rendererB_->render();
-        }
-    } catch (const std::exception& e) {
-        // A shader that fails mid-session (e.g. a new variant after hot reload) must not kill the app.
-        shaderError_ = e.what();
-    }
-}
-
-void AppCore::noteFrameMs(float ms) {
-    frameMs_.push_back(ms);
-    if (frameMs_.size() > 120) frameMs_.pop_front();
-}
-
-void AppCore::pollShaderReload() {
-    const auto t = rendererA_->shaders().newestSourceTime();
-    if (t == shaderTime_) return;
-    shaderTime_ = t;
-    try {
-        rendererA_->shaders().reload();
-        if (rendererB_) rendererB_->shaders().reload();
-        rendererA_->invalidate();
-        if (rendererB_) rendererB_->invalidate();
-        shaderError_.clear();
-        setStatus("shaders reloaded", false);
-    } catch (const std::exception& e) {
-        shaderError_ = e.what(); // the last good programs keep running
-        poke();
-    }
-}
-
-glm::vec4 AppCore::texelOf(BufferId id, int x, int y) {
-    return rendererA_->buffer(id).readTexel(x, y);
-}
-
-const PixelInspection& AppCore::inspection() {
-    Renderer& r = *rendererA_;
-    if (cpuVersion_ != r.gbuffer().version()) {
-        cpuPos_ = readBack(r.gbuffer().position(), 4);
-        cpuNormal_ = readBack(r.gbuffer().normal(), 3);
-        cpuDepth_ = readBack(r.gbuffer().depth(), 1);
-        cpuVersion_ = r.gbuffer().version();
-        inspectionStale_ = true;
-    }
-    // Replayed only when the pixel, the settings or the G-buffer changed, not on every frame.
-    if (inspectionStale_ || hoverPixel != inspectedPixel_ || settings_ != inspectedSettings_) {
-        const gpu::FrameConstants fc = packFrameConstants(r.camera(), r.width(), r.height(), r.sceneRadius());
-        inspection_ = inspectPixel(settings_.ssao, settings_.gbuffer, fc, {&cpuPos_, &cpuNormal_, &cpuDepth_},
-                                   hoverPixel.x, hoverPixel.y);
-        inspectedPixel_ = hoverPixel;
-        inspectedSettings_ = settings_;
-        inspectionStale_ = false;
-    }
-    return inspection_;
-}
-
 void AppCore::drawUi() {
     const ImGuiIO& io = ImGui::GetIO();
-    const float panelWidth = std::min(400.0f * io.FontGlobalScale, io.DisplaySize.x * 0.45f);
+    const float panelWidth = std::min(420.0f * io.FontGlobalScale, io.DisplaySize.x * 0.4f);
+    const float infoHeight = std::min(230.0f * io.FontGlobalScale, io.DisplaySize.y * 0.35f);
     drawControlPanel(*this, ImVec2(0, 0), ImVec2(panelWidth, io.DisplaySize.y));
-    drawMainView(*this, ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y));
+    drawMainView(*this, ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - infoHeight));
+    drawInfoStrip(*this, ImVec2(panelWidth, io.DisplaySize.y - infoHeight),
+                  ImVec2(io.DisplaySize.x - panelWidth, infoHeight));
     if (busyFrames_ > 0) --busyFrames_;
 }
 

@@ -1,36 +1,37 @@
-// Everything the interactive explorer knows and does, independent of GLFW: the renderer(s),
-// settings, presets, camera, inspectors, timings, hot reload. The window (window_app.cpp) feeds
-// it input and a GL context; tests drive the same object through Dear ImGui on a headless one.
+// Everything the interactive explorer knows and does, independent of GLFW: the renderer, settings,
+// presets, camera, views, inspector, timings, hot reload. The window (window_app.cpp) feeds it
+// input and a GL context; tests drive the same object through Dear ImGui on a headless one.
 #pragma once
-#include "output/image.h"
-#include "passes/buffer_views.h"
 #include "renderer.h"
 #include "settings/preset.h"
-#include "ssao/sample_inspector.h"
+#include "settings/preset_store.h"
+#include "view/buffer_views.h"
 #include "view/camera_controller.h"
-#include "view/preset_store.h"
 
 #include <imgui.h>
 
 #include <deque>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace ssao {
 
 struct AppOptions {
-    std::string scene = "builtin:showcase";
+    std::string scene;     // empty: the preset's scene, else builtin:showcase
     std::string preset;    // name or path; empty = defaults
-    std::string shaderDir; // empty = the source tree's shaders/
+    std::string shaderDir; // empty = the installation's (or source tree's) shaders/
     std::string userPresetDir;
-    float renderScale = 1.0f; // render resolution relative to the view's pixels (0.25..1)
+    float renderScale = 1.0f;       // render resolution relative to the view's pixels (0.25..1)
+    float interactiveScale = 0.35f; // while the camera moves or a slider is dragged
 };
 
 enum class ViewMode { Grid, Single, Split };
-enum class SplitKind { Presets, AoOnOff };
+enum class SplitKind { AoOnOff, Preset };
 
 class AppCore {
   public:
@@ -44,7 +45,6 @@ class AppCore {
     bool savePreset(const std::string& name);
     bool renamePreset(const std::string& from, const std::string& to);
     bool deletePreset(const std::string& name);
-    void setSettings(const Settings& s) { settings_ = s; }
     void resetCamera();
     void selectSceneCamera(int index);
 
@@ -56,14 +56,17 @@ class AppCore {
     // True while something is still changing (input, pending render); false = the app may sleep.
     bool busy() const { return busyFrames_ > 0; }
     void poke(int frames = 3) { busyFrames_ = std::max(busyFrames_, frames); }
+    // A camera move or slider drag: render at the interactive scale until input stops.
+    void noteInteraction();
+    bool interacting() const;
 
     // ---- State (read by the UI code and tests) ----
     Settings& settings() { return settings_; }
     const Preset& loadedPreset() const { return loaded_; }
     bool unsavedChanges() const;
-    Renderer& renderer() { return *rendererA_; }
-    Renderer* rendererB() { return rendererB_.get(); }
+    Renderer& renderer() { return *renderer_; }
     const Scene& scene() const { return scene_; }
+    const std::string& sceneSpec() const { return sceneSpec_; }
     const std::string& status() const { return status_; }
     bool statusIsError() const { return statusError_; }
     const std::string& shaderError() const { return shaderError_; }
@@ -71,31 +74,42 @@ class AppCore {
     CameraController& cameraController() { return camera_; }
     const FrameReport& lastReport() const { return lastReport_; }
     int framesRendered() const { return framesRendered_; } // frames in which any pass ran
+    BufferViews& views() { return views_; }
+    std::optional<Settings> settingsB(); // chain B of the split view, or nullopt
 
     // UI state
     ViewMode viewMode = ViewMode::Grid;
-    BufferId enlarged = BufferId::Composite;
+    std::string enlarged = "composite"; // buffer shown in Single mode
     SplitKind splitKind = SplitKind::AoOnOff;
     std::string splitPresetB = "crytek-sphere";
-    float splitPosition = 0.5f;
+    std::string splitBuffer = "composite"; // what A | B compares: composite, ao.denoised or ao.raw
+    bool splitDifference = false;          // show (A - B) * diffScale instead of the two halves
+    float diffScale = 4.0f;
+    float splitPosition = 0.5f; // divider, fraction of the width (dragged in the view)
     float renderScale = 1.0f;
+    float interactiveScale = 0.35f;
+    ViewStyle style;
     bool showSamples = true;
     bool pinPixel = false;
-    glm::ivec2 hoverPixel{-1, -1};
+    glm::ivec2 hoverPixel{-1, -1}; // G-buffer pixel (y from the top) under the cursor
+    int hoverBranch = 0;           // 1 when the cursor is over the B half of the split view
     std::string newPresetName;
     // Rectangles of widgets drawn last frame, by parameter key or action name (for tests).
     std::map<std::string, ImVec4> widgetRects;
 
     // Helpers for the UI code
-    void renderIfNeeded(int width, int height);
-    const gl::Texture2D& viewTexture(BufferId id) const { return views_.view(id); }
-    const PixelInspection& inspection();
-    glm::vec4 texelOf(BufferId id, int x, int y);
-    struct PassTiming {
-        std::deque<double> ms; // last runs of the pass
-        double average() const;
+    // Renders what changed at `viewW x viewH` view pixels times the current scale.
+    void renderIfNeeded(int viewW, int viewH);
+    bool renderedInteractive() const { return renderedInteractive_; }
+    const std::optional<PixelInspection>& inspection();
+    // Decoded value(s) of a buffer at a G-buffer pixel (y from the top); `channels` of them.
+    std::vector<float> valueAt(const std::string& buffer, glm::ivec2 pixel);
+    struct Timing {
+        int width = 0, height = 0;
+        std::map<std::string, std::deque<double>> ms; // pass → its last runs
+        double average(const std::string& pass) const;
     };
-    const std::map<std::string, PassTiming>& timings() const { return timings_; }
+    const Timing& timing(bool interactive) const { return interactive ? timingInteractive_ : timingFull_; }
     const std::deque<float>& frameMs() const { return frameMs_; }
     void noteFrameMs(float ms);
     void setStatus(const std::string& s, bool error);
@@ -103,38 +117,42 @@ class AppCore {
   private:
     // Runs an action that returns its success message; on an exception shows the error instead.
     bool attempt(const char* what, const std::function<std::string()>& action);
-    void adoptScene(Scene s, bool keepCamera);
-    Settings settingsB();
+    void adoptScene(Scene s, const std::string& spec, bool keepCamera);
+    std::string radiusNote() const;
 
     AppOptions opts_;
-    std::string cachedSplitPreset_;
-    Settings cachedSplitSettings_;
     PresetStore store_;
     Scene scene_;
+    std::string sceneSpec_;
     Settings settings_;
     Preset loaded_;
     CameraController camera_;
-    std::unique_ptr<Renderer> rendererA_, rendererB_;
+    std::unique_ptr<Renderer> renderer_;
     BufferViews views_;
     FrameReport lastReport_;
-    std::map<std::string, PassTiming> timings_;
+    Timing timingFull_, timingInteractive_;
     std::deque<float> frameMs_;
     std::string status_, shaderError_;
     bool statusError_ = false;
     int busyFrames_ = 3;
     int framesRendered_ = 0;
+    double lastInteraction_ = -1e9;
+    bool renderedInteractive_ = false;
     std::filesystem::file_time_type shaderTime_{};
-    // Sample inspector cache
-    Image cpuPos_, cpuNormal_, cpuDepth_;
-    unsigned cpuVersion_ = ~0u;
-    PixelInspection inspection_;
+    std::string cachedSplitPreset_;
+    std::optional<Settings> cachedSplitSettings_;
+    // Inspector cache: replayed when the pixel, the branch or the AO changed.
+    std::optional<PixelInspection> inspection_;
     glm::ivec2 inspectedPixel_{-1, -1};
-    Settings inspectedSettings_;
-    bool inspectionStale_ = true;
+    int inspectedBranch_ = -1;
+    uint64_t inspectedVersion_ = 0;
 };
 
-// UI pieces (ui_panels.cpp, ui_views.cpp).
+// UI pieces (ui_panels.cpp, ui_params.cpp, ui_views.cpp, ui_info.cpp).
 void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size);
+void drawParameters(AppCore& app);
 void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size);
+void drawInfoStrip(AppCore& app, ImVec2 pos, ImVec2 size); // timing and inspector, always visible
+void rememberRect(AppCore& app, const std::string& key);  // the last item's rectangle, for tests
 
 } // namespace ssao

@@ -35,7 +35,6 @@ void CameraController::rotate(float dx, float dy) {
     else
         cam_.target = cam_.eye + dir * dist;
     cam_.up = {0.0f, 1.0f, 0.0f};
-    updateClip();
 }
 
 void CameraController::pan(float dx, float dy, float viewportHeight) {
@@ -57,8 +56,7 @@ void CameraController::zoom(float steps) {
         const float dist =
             std::clamp(glm::length(offset) * std::pow(0.9f, steps), radius_ * 1e-3f, radius_ * 100.0f);
         cam_.eye = cam_.target + glm::normalize(offset) * dist;
-        updateClip();
-    } else {
+        } else {
         move({0.0f, 0.0f, 1.0f}, 0.1f * steps);
     }
 }
@@ -70,17 +68,6 @@ void CameraController::move(const glm::vec3& ruf, float amount) {
     const glm::vec3 d = (ruf.x * right + ruf.y * up + ruf.z * fwd) * amount * radius_;
     cam_.eye += d;
     cam_.target += d;
-    updateClip();
-}
-
-void CameraController::updateClip() {
-    // Keep the far plane beyond the scene from wherever the camera is, and pull the near plane
-    // in when the camera comes close, so moving never clips the geometry being looked at. The
-    // near/far ratio stays below ~1e5 (float32 depth keeps ~1e-6 relative precision there).
-    const float dist = glm::length(cam_.eye - cam_.target);
-    cam_.farZ = std::max(cam_.farZ, dist + 3.0f * radius_);
-    cam_.nearZ = std::min(cam_.nearZ, std::max(0.1f * dist, 1e-3f * radius_));
-    cam_.nearZ = std::max(cam_.nearZ, cam_.farZ * 1e-5f);
 }
 
 } // namespace ssao

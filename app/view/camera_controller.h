@@ -8,8 +8,10 @@ class CameraController {
   public:
     enum class Mode { Orbit, Fly };
 
-    // Adopts `c` (e.g. the scene's camera or a bookmark); sceneRadius scales speeds and clip planes.
+    // Adopts `c` (e.g. the scene's camera or a bookmark); sceneRadius scales speeds. The clip
+    // planes are the renderer's business (fitted to the scene unless the camera's clip is Fixed).
     void reset(const Camera& c, float sceneRadius);
+    void setClip(ClipMode m) { cam_.clip = m; }
     void setMode(Mode m) { mode_ = m; }
     Mode mode() const { return mode_; }
 
@@ -25,7 +27,6 @@ class CameraController {
     const Camera& camera() const { return cam_; }
 
   private:
-    void updateClip();
     Camera cam_;
     float radius_ = 1.0f;
     Mode mode_ = Mode::Orbit;

@@ -1,6 +1,7 @@
 // The main view: a labelled grid of every buffer (click one to enlarge it), a single enlarged
-// buffer with the sample inspector drawn over it, and a split A | B comparison. Dragging orbits
-// (left) or pans (right/middle); the wheel zooms; WASD/QE fly in fly mode.
+// buffer with the sample inspector drawn over it, and a split A | B comparison (drag the divider)
+// or their signed difference. Dragging orbits (left) or pans (right/middle); the wheel zooms;
+// WASD/QE fly in fly mode.
 #include "view/app_core.h"
 
 #include <cmath>
@@ -29,10 +30,16 @@ bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
                                ImGuiButtonFlags_MouseButtonMiddle);
     const ImGuiIO& io = ImGui::GetIO();
     CameraController& cc = app.cameraController();
+    const bool split = app.viewMode == ViewMode::Split && !app.splitDifference;
+    const float divider = pos.x + size.x * app.splitPosition;
     bool moved = false;
     if (ImGui::IsItemActive()) {
-        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f) &&
-            (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
+        const bool onDivider = split && std::abs(io.MouseClickedPos[0].x - divider) <= 8.0f;
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Left) && onDivider) { // drag the divider, not the camera
+            app.splitPosition = std::clamp((io.MousePos.x - pos.x) / size.x, 0.0f, 1.0f);
+            app.poke();
+        } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f) &&
+                   (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
             cc.rotate(io.MouseDelta.x, io.MouseDelta.y);
             moved = true;
         }
@@ -49,9 +56,9 @@ bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
         }
         if (cc.mode() == CameraController::Mode::Fly) {
             glm::vec3 m(0.0f);
-            m.z += ImGui::IsKeyDown('W') - ImGui::IsKeyDown('S');
-            m.x += ImGui::IsKeyDown('D') - ImGui::IsKeyDown('A');
-            m.y += ImGui::IsKeyDown('E') - ImGui::IsKeyDown('Q');
+            m.z += float(ImGui::IsKeyDown('W') - ImGui::IsKeyDown('S'));
+            m.x += float(ImGui::IsKeyDown('D') - ImGui::IsKeyDown('A'));
+            m.y += float(ImGui::IsKeyDown('E') - ImGui::IsKeyDown('Q'));
             if (m != glm::vec3(0.0f)) {
                 cc.move(m, 0.6f * io.DeltaTime);
                 moved = true;
@@ -62,36 +69,36 @@ bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
             const ImVec2 rel((io.MousePos.x - pos.x) / size.x, (io.MousePos.y - pos.y) / size.y);
             app.hoverPixel = glm::ivec2(std::clamp(int(rel.x * float(r.width())), 0, r.width() - 1),
                                         std::clamp(int(rel.y * float(r.height())), 0, r.height() - 1));
+            app.hoverBranch = split && io.MousePos.x > divider ? 1 : 0;
         }
     }
-    if (moved) app.poke();
-    const bool click = ImGui::IsItemDeactivated() &&
-                       ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).x == 0.0f &&
+    if (moved) app.noteInteraction();
+    const bool click = ImGui::IsItemDeactivated() && ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).x == 0.0f &&
                        ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).y == 0.0f;
     return click;
 }
 
-void label(ImDrawList* dl, ImVec2 pos, const char* text) {
-    const ImVec2 ts = ImGui::CalcTextSize(text);
+void label(ImDrawList* dl, ImVec2 pos, const std::string& text) {
+    const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
     dl->AddRectFilled(pos, ImVec2(pos.x + ts.x + 8, pos.y + ts.y + 4), IM_COL32(0, 0, 0, 170));
-    dl->AddText(ImVec2(pos.x + 4, pos.y + 2), IM_COL32(255, 255, 255, 255), text);
+    dl->AddText(ImVec2(pos.x + 4, pos.y + 2), IM_COL32(255, 255, 255, 255), text.c_str());
 }
 
 void drawSamples(AppCore& app, ImDrawList* dl, ImVec2 pos, ImVec2 size) {
     if (!app.showSamples || app.hoverPixel.x < 0) return;
-    const PixelInspection& pi = app.inspection();
+    const auto& pi = app.inspection();
+    if (!pi || !pi->geometry) return;
     const Renderer& r = app.renderer();
     const ImVec2 c(pos.x + (float(app.hoverPixel.x) + 0.5f) / float(r.width()) * size.x,
                    pos.y + (float(app.hoverPixel.y) + 0.5f) / float(r.height()) * size.y);
     dl->AddCircle(c, 6.0f, IM_COL32(255, 255, 0, 255), 12, 2.0f);
-    for (const SampleTap& t : pi.taps) {
-        if (t.state == SampleTap::State::BehindEye) continue;
+    for (const InspectTap& t : pi->taps) {
+        if (t.state == TapState::BehindEye) continue;
         const ImVec2 p(pos.x + t.uv.x * size.x, pos.y + (1.0f - t.uv.y) * size.y);
-        ImU32 col = t.state == SampleTap::State::Occluded ? IM_COL32(255, 60, 60, 255)
-                    : t.state == SampleTap::State::Open   ? IM_COL32(60, 255, 90, 255)
-                    : t.state == SampleTap::State::Sky    ? IM_COL32(80, 160, 255, 255)
-                                                          : IM_COL32(160, 160, 160, 255);
-        dl->AddLine(c, p, (col & 0x00FFFFFF) | 0x40000000);
+        ImU32 col = t.state == TapState::Occluded ? IM_COL32(255, 60, 60, 255)
+                    : t.state == TapState::Open   ? IM_COL32(60, 255, 90, 255)
+                    : t.state == TapState::Sky    ? IM_COL32(80, 160, 255, 255)
+                                                  : IM_COL32(150, 150, 150, 255);
         dl->AddCircleFilled(p, 2.5f, col);
     }
 }
@@ -103,45 +110,69 @@ void toolbar(AppCore& app) {
     ImGui::RadioButton("Single", &mode, int(ViewMode::Single));
     ImGui::SameLine();
     ImGui::RadioButton("Split A|B", &mode, int(ViewMode::Split));
+    rememberRect(app, "mode#split");
     if (mode != int(app.viewMode)) app.viewMode = ViewMode(mode), app.poke();
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(110);
-    if (ImGui::SliderFloat("resolution", &app.renderScale, 0.25f, 1.0f, "%.2fx",
-                           ImGuiSliderFlags_AlwaysClamp))
+    ImGui::SetNextItemWidth(90);
+    if (ImGui::SliderFloat("resolution", &app.renderScale, 0.25f, 1.0f, "%.2fx", ImGuiSliderFlags_AlwaysClamp))
+        app.poke();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Render resolution relative to the view when input is still");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(90);
+    if (ImGui::SliderFloat("moving", &app.interactiveScale, 0.1f, 1.0f, "%.2fx", ImGuiSliderFlags_AlwaysClamp))
         app.poke();
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Render resolution relative to the view (lower is faster on slow GPUs / llvmpipe)");
+        ImGui::SetTooltip("Resolution while the camera moves or a slider is dragged; refined to full when input stops");
+    ImGui::SameLine();
+    if (ImGui::Checkbox("fit range", &app.style.fit)) app.poke();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Stretch every buffer over its 1st..99th percentile on geometry (depth and position always are)");
+    ImGui::SameLine();
+    if (ImGui::Checkbox("false colour", &app.style.falseColor)) app.poke();
     if (app.viewMode == ViewMode::Single) {
-        ImGui::SameLine();
-        ImGui::SetNextItemWidth(140);
-        if (ImGui::BeginCombo("##buffer", bufferName(app.enlarged))) {
-            for (int i = 0; i < kBufferCount; ++i)
-                if (ImGui::Selectable(bufferName(BufferId(i)), int(app.enlarged) == i))
-                    app.enlarged = BufferId(i);
+        ImGui::SetNextItemWidth(170);
+        if (ImGui::BeginCombo("buffer", app.enlarged.c_str())) {
+            for (const Resource* r : app.renderer().buffers())
+                if (ImGui::Selectable(r->desc.name.c_str(), r->desc.name == app.enlarged))
+                    app.enlarged = r->desc.name, app.poke();
             ImGui::EndCombo();
         }
     }
     if (app.viewMode == ViewMode::Split) {
-        ImGui::SameLine();
         int kind = int(app.splitKind);
         ImGui::RadioButton("AO on | off", &kind, int(SplitKind::AoOnOff));
         ImGui::SameLine();
-        ImGui::RadioButton("current | preset", &kind, int(SplitKind::Presets));
+        ImGui::RadioButton("current | preset", &kind, int(SplitKind::Preset));
         if (kind != int(app.splitKind)) app.splitKind = SplitKind(kind), app.poke();
-        if (app.splitKind == SplitKind::Presets) {
+        if (app.splitKind == SplitKind::Preset) {
             ImGui::SameLine();
-            ImGui::SetNextItemWidth(160);
+            ImGui::SetNextItemWidth(150);
             if (ImGui::BeginCombo("B", app.splitPresetB.c_str())) {
                 for (const auto& e : app.presets().entries())
-                    if (ImGui::Selectable(e.name.c_str(), e.name == app.splitPresetB))
-                        app.splitPresetB = e.name, app.poke();
+                    if (ImGui::Selectable(e.name.c_str(), e.name == app.splitPresetB)) app.splitPresetB = e.name, app.poke();
                 ImGui::EndCombo();
             }
         }
         ImGui::SameLine();
-        ImGui::SetNextItemWidth(120);
-        ImGui::SliderFloat("split", &app.splitPosition, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+        ImGui::SetNextItemWidth(130);
+        if (ImGui::BeginCombo("compare", app.splitBuffer.c_str())) {
+            for (const char* b : {"composite", "ao.denoised", "ao.raw"})
+                if (ImGui::Selectable(b, app.splitBuffer == b)) app.splitBuffer = b, app.poke();
+            ImGui::EndCombo();
+        }
+        ImGui::SameLine();
+        if (ImGui::Checkbox("A - B", &app.splitDifference)) app.poke();
+        rememberRect(app, "split#difference");
+        if (app.splitDifference) {
+            ImGui::SameLine();
+            ImGui::SetNextItemWidth(90);
+            if (ImGui::SliderFloat("x", &app.diffScale, 1.0f, 100.0f, "%.0f", ImGuiSliderFlags_Logarithmic)) app.poke();
+        }
     }
+}
+
+void image(ImDrawList* dl, const BufferViews::View* v, ImVec2 p, ImVec2 q, ImVec2 uv0 = {0, 1}, ImVec2 uv1 = {1, 0}) {
+    if (v && v->target.texture()) dl->AddImage(texId(v->target.texture()), p, q, uv0, uv1);
 }
 
 } // namespace
@@ -152,36 +183,37 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
     ImGui::Begin("view", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar |
-                     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
+                     ImGuiWindowFlags_NoScrollWithMouse);
     toolbar(app);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     // Render at the size the enlarged view shows (1:1 pixels, framebuffer scale included).
     const ImVec2 fbScale = ImGui::GetIO().DisplayFramebufferScale;
     app.renderIfNeeded(int(avail.x * fbScale.x), int(avail.y * fbScale.y));
-    const Renderer& r = app.renderer();
+    Renderer& r = app.renderer();
     const float aspect = float(r.width()) / float(r.height());
     ImDrawList* dl = ImGui::GetWindowDrawList();
+    BufferViews& views = app.views();
 
     if (app.viewMode == ViewMode::Grid) {
-        const int cols = 3, rows = 3;
-        const ImVec2 cell(avail.x / cols, avail.y / rows);
-        for (int i = 0; i < kBufferCount; ++i) {
+        const auto buffers = r.buffers();
+        const int cols = 3, rows = int((buffers.size() + 2) / 3);
+        const ImVec2 cell(avail.x / cols, avail.y / float(std::max(rows, 1)));
+        for (size_t i = 0; i < buffers.size(); ++i) {
+            const std::string& name = buffers[i]->desc.name;
             ImVec2 off, sz;
             fit(ImVec2(cell.x - 4, cell.y - 4), aspect, off, sz);
-            const ImVec2 p(origin.x + float(i % cols) * cell.x + off.x,
-                           origin.y + float(i / cols) * cell.y + off.y);
-            ImGui::PushID(i);
+            const ImVec2 p(origin.x + float(i % cols) * cell.x + off.x, origin.y + float(i / cols) * cell.y + off.y);
+            ImGui::PushID(int(i));
             const bool clicked = interact(app, "cell", p, sz);
             ImGui::PopID();
-            dl->AddImage(texId(app.viewTexture(BufferId(i))), p, ImVec2(p.x + sz.x, p.y + sz.y), ImVec2(0, 1),
-                         ImVec2(1, 0));
-            label(dl, p, bufferName(BufferId(i)));
-            app.widgetRects[std::string("view#") + bufferName(BufferId(i))] =
-                ImVec4(p.x, p.y, p.x + sz.x, p.y + sz.y);
+            const BufferViews::View* v = views.find(name);
+            image(dl, v, p, ImVec2(p.x + sz.x, p.y + sz.y));
+            label(dl, p, v ? v->label : name);
+            app.widgetRects["view#" + name] = ImVec4(p.x, p.y, p.x + sz.x, p.y + sz.y);
             if (clicked) {
-                app.enlarged = BufferId(i);
+                app.enlarged = name;
                 app.viewMode = ViewMode::Single;
                 app.poke();
             }
@@ -193,19 +225,27 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
         if (interact(app, "image", p, sz) && app.viewMode == ViewMode::Single) app.pinPixel = !app.pinPixel;
         app.widgetRects["view#main"] = ImVec4(p.x, p.y, q.x, q.y);
         if (app.viewMode == ViewMode::Single) {
-            dl->AddImage(texId(app.viewTexture(app.enlarged)), p, q, ImVec2(0, 1), ImVec2(1, 0));
-            label(dl, p, bufferName(app.enlarged));
+            const BufferViews::View* v = views.find(app.enlarged);
+            image(dl, v, p, q);
+            label(dl, p, v ? v->label : app.enlarged);
             drawSamples(app, dl, p, sz);
-        } else if (Renderer* b = app.rendererB()) {
+        } else if (app.splitDifference) {
+            if (r.graph().find("b." + app.splitBuffer)) {
+                const BufferViews::View& d = views.difference(r, app.splitBuffer, "b." + app.splitBuffer, app.diffScale);
+                image(dl, &d, p, q);
+                label(dl, p, d.label);
+            }
+        } else {
             const float s = app.splitPosition, x = p.x + sz.x * s;
-            dl->AddImage(texId(app.viewTexture(BufferId::Composite)), p, ImVec2(x, q.y), ImVec2(0, 1),
-                         ImVec2(s, 0));
-            dl->AddImage(texId(b->composite().color()), ImVec2(x, p.y), q, ImVec2(s, 1), ImVec2(1, 0));
-            dl->AddLine(ImVec2(x, p.y), ImVec2(x, q.y), IM_COL32(255, 255, 0, 255), 2.0f);
-            label(dl, p, "A: current");
-            const std::string bl =
-                app.splitKind == SplitKind::AoOnOff ? "B: AO off" : "B: " + app.splitPresetB;
-            label(dl, ImVec2(q.x - ImGui::CalcTextSize(bl.c_str()).x - 10, p.y), bl.c_str());
+            image(dl, views.find(app.splitBuffer), p, ImVec2(x, q.y), ImVec2(0, 1), ImVec2(s, 0));
+            image(dl, views.find("b." + app.splitBuffer), ImVec2(x, p.y), q, ImVec2(s, 1), ImVec2(1, 0));
+            dl->AddLine(ImVec2(x, p.y), ImVec2(x, q.y), IM_COL32(255, 255, 0, 255), 3.0f);
+            dl->AddCircleFilled(ImVec2(x, (p.y + q.y) * 0.5f), 6.0f, IM_COL32(255, 255, 0, 255));
+            app.widgetRects["split#divider"] = ImVec4(x - 4, p.y, x + 4, q.y);
+            label(dl, p, "A: current  " + app.splitBuffer);
+            const std::string bl = app.splitKind == SplitKind::AoOnOff ? "B: AO off" : "B: " + app.splitPresetB;
+            label(dl, ImVec2(q.x - ImGui::CalcTextSize(bl.c_str()).x - 10, p.y), bl);
+            drawSamples(app, dl, p, sz);
         }
     }
     ImGui::End();

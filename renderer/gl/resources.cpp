@@ -59,7 +59,11 @@ Framebuffer::Framebuffer(const std::vector<const Texture2D*>& colors, const Text
         w_ = colors[i]->width();
         h2_ = colors[i]->height();
     }
-    if (depth) glNamedFramebufferTexture(id, GL_DEPTH_ATTACHMENT, depth->id(), 0);
+    if (depth) {
+        glNamedFramebufferTexture(id, GL_DEPTH_ATTACHMENT, depth->id(), 0);
+        w_ = depth->width();
+        h2_ = depth->height();
+    }
     glNamedFramebufferDrawBuffers(id, GLsizei(bufs.size()), bufs.data());
     GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)

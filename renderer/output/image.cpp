@@ -90,21 +90,33 @@ Stats stats(const Image& img, const Image* mask) {
     double sum = 0;
     s.min = std::numeric_limits<double>::infinity();
     s.max = -s.min;
-    for (size_t p = 0; p < size_t(img.width) * img.height; ++p) {
-        for (int c = 0; c < img.channels; ++c)
-            if (!std::isfinite(img.data[p * img.channels + c])) ++s.nonFinite;
-        if (mask && !(mask->data[p * mask->channels] > 0.0f)) continue;
-        float v = img.data[p * img.channels];
-        if (!std::isfinite(v)) continue;
-        ++s.count;
-        sum += v;
-        s.min = std::min(s.min, double(v));
-        s.max = std::max(s.max, double(v));
-    }
-    if (s.count)
+    std::vector<float> values;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const size_t p = size_t(y) * size_t(img.width) + size_t(x);
+            for (int c = 0; c < img.channels; ++c)
+                if (!std::isfinite(img.data[p * img.channels + c])) ++s.nonFinite;
+            if (mask) {
+                const int mx = std::min(mask->width - 1, x * mask->width / img.width);
+                const int my = std::min(mask->height - 1, y * mask->height / img.height);
+                if (!(mask->at(mx, my) > 0.0f)) continue;
+            }
+            const float v = img.data[p * img.channels];
+            if (!std::isfinite(v)) continue;
+            ++s.count;
+            sum += v;
+            s.min = std::min(s.min, double(v));
+            s.max = std::max(s.max, double(v));
+            values.push_back(v);
+        }
+    if (s.count) {
         s.mean = sum / double(s.count);
-    else
+        const size_t k = size_t(0.05 * double(values.size() - 1) + 0.5);
+        std::nth_element(values.begin(), values.begin() + ptrdiff_t(k), values.end());
+        s.p05 = values[k];
+    } else {
         s.min = s.max = 0;
+    }
     return s;
 }
 

@@ -31,8 +31,10 @@ struct Stats {
     long nonFinite = 0; // NaN or ±inf values over all pixels and channels
     long count = 0;     // finite values over masked pixels
     double min = 0, mean = 0, max = 0;
+    double p05 = 0; // 5th percentile: the darkest 5 % of (AO) pixels are at or below it
 };
-// Statistics of channel 0 over pixels where mask (if given) has channel 0 > 0.
+// Statistics of channel 0 over pixels where mask (if given, at any resolution: sampled at the
+// nearest pixel) has channel 0 > 0.
 Stats stats(const Image& img, const Image* mask = nullptr);
 
 } // namespace ssao

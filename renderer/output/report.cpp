@@ -1,11 +1,11 @@
 #include "output/report.h"
 
+#include "display/view_painter.h"
 #include "output/image.h"
 #include "settings/params.h"
+#include "settings/preset.h"
 #include "util/error.h"
 
-#include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -13,97 +13,106 @@ namespace ssao {
 
 namespace {
 
-struct Buffers {
-    Image position, normal, albedo, depth, aoRaw, ao, composite;
-};
+const char* formatName(GLenum f) {
+    switch (f) {
+    case GL_R32F:
+        return "r32f";
+    case GL_RGBA32F:
+        return "rgba32f";
+    case GL_RGBA16F:
+        return "rgba16f";
+    case GL_RGBA8:
+        return "rgba8";
+    case GL_DEPTH_COMPONENT32F:
+        return "depth32f";
+    default:
+        return "other";
+    }
+}
 
-Buffers readAll(const Renderer& r) {
-    Buffers b;
-    b.position = readBack(r.gbuffer().position(), 4);
-    b.normal = readBack(r.gbuffer().normal(), 3);
-    if (r.settings().gbuffer.normalFormat == TargetFormat::RGBA8) // stored (n+1)/2: write decoded n
-        for (auto& v : b.normal.data)
-            v = v * 2.0f - 1.0f;
-    b.albedo = readBack(r.gbuffer().albedo(), 3);
-    b.depth = readBack(r.gbuffer().linearDepth(), 1);
-    b.aoRaw = readBack(r.ssao().aoRaw(), 1);
-    b.ao = readBack(r.blur().ao(), 1);
-    b.composite = readBack(r.composite().color(), 3);
-    return b;
+// The buffer's values as they mean (decoded), `channels` of them per pixel.
+Image decoded(const Resource& r) {
+    Image img = readBack(r.texture, std::max(1, r.desc.channels));
+    if (r.desc.decodeScale != 1.0f || r.desc.decodeOffset != 0.0f)
+        for (auto& v : img.data)
+            v = v * r.desc.decodeScale + r.desc.decodeOffset;
+    return img;
 }
 
 nlohmann::json statsJson(const Stats& s) {
-    return {{"min", s.min}, {"mean", s.mean}, {"max", s.max}, {"pixels", s.count}};
+    return {{"min", s.min}, {"mean", s.mean}, {"max", s.max}, {"p05", s.p05}, {"pixels", s.count}};
 }
 
-nlohmann::json statistics(const Buffers& b) {
-    Image mask = b.position.channel(3); // w = 1 on geometry, 0 on sky
-    nlohmann::json j;
-    j["nonfinite"] = {{"position", stats(b.position).nonFinite},
-                      {"normal", stats(b.normal).nonFinite},
-                      {"depth", stats(b.depth).nonFinite},
-                      {"ao_raw", stats(b.aoRaw).nonFinite},
-                      {"ao", stats(b.ao).nonFinite}};
-    j["ao_raw"] = statsJson(stats(b.aoRaw, &mask));
-    j["ao"] = statsJson(stats(b.ao, &mask));
-    j["geometry_pixels"] = stats(mask, &mask).count;
+nlohmann::json bufferJson(const Resource& r, const Image& img, const Image& mask) {
+    const Stats s = stats(img, &mask);
+    nlohmann::json j = {{"format", formatName(r.desc.format)},
+                        {"size", {r.width(), r.height()}},
+                        {"scale", r.desc.scale},
+                        {"channels", r.desc.channels},
+                        {"nonfinite", s.nonFinite},
+                        {"help", r.desc.help}};
+    if (r.desc.channels == 1) j["geometry"] = statsJson(s);
     return j;
 }
 
 } // namespace
 
 nlohmann::json frameStatistics(const Renderer& r) {
-    return statistics(readAll(r));
+    const Image mask = readBack(r.resource("gbuffer.depth").texture, 1);
+    nlohmann::json j;
+    for (const Resource* res : r.buffers())
+        j["buffers"][res->desc.name] = bufferJson(*res, decoded(*res), mask);
+    j["ao"] = statsJson(stats(decoded(r.resource("ao.denoised")), &mask));
+    j["ao_raw"] = statsJson(stats(decoded(r.resource("ao.raw")), &mask));
+    j["geometry_pixels"] = stats(mask, &mask).count;
+    const RadiusInfo ri = r.radiusAtCentre();
+    j["radius"] = {{"mode", findParam("ao.radius_mode")->format(findParam("ao.radius_mode")->get(r.settings()))},
+                   {"world_at_centre", ri.world},
+                   {"pixels_at_centre", ri.pixels},
+                   {"centre_depth", ri.depth},
+                   {"scene_diagonal", ri.sceneDiagonal}};
+    return j;
 }
 
-nlohmann::json writeOutputs(const Renderer& r, const std::string& dir, const RunInfo& info,
-                            const FrameReport& firstFrame, const nlohmann::json& timing) {
+nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& info, const FrameReport& firstFrame,
+                            const nlohmann::json& timing) {
+    namespace fs = std::filesystem;
     std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
+    fs::create_directories(dir, ec);
     if (ec) throw Error("cannot create output folder " + dir + ": " + ec.message());
-    const Buffers b = readAll(r);
-    auto path = [&](const char* f) { return (std::filesystem::path(dir) / f).string(); };
+    auto path = [&](const std::string& f) { return (fs::path(dir) / f).string(); };
 
-    Image pos3{b.position.width, b.position.height, 3, {}};
-    for (size_t i = 0; i < size_t(pos3.width) * pos3.height; ++i)
-        for (int c = 0; c < 3; ++c)
-            pos3.data.push_back(b.position.data[i * 4 + c]);
-    writeExr(pos3, path("position.exr"));
-    writeExr(b.normal, path("normal.exr"));
-    writeExr(b.depth, path("depth.exr"));
-    writeExr(b.aoRaw, path("ao_raw.exr"));
-    writeExr(b.ao, path("ao.exr"));
-
-    // Previews: position and depth scaled by the scene's extent seen in this frame.
-    float maxDepth = 0.0f;
-    for (float v : b.depth.data)
-        if (std::isfinite(v)) maxDepth = std::max(maxDepth, v);
-    const float posScale = maxDepth > 0 ? 0.5f / maxDepth : 1.0f;
-    writePng(pos3, path("position.png"), posScale, 0.5f);
-    writePng(b.normal, path("normal.png"), 0.5f, 0.5f);
-    writePng(b.depth, path("depth.png"), maxDepth > 0 ? 1.0f / maxDepth : 1.0f);
-    writePng(b.albedo, path("albedo.png"));
-    writePng(b.aoRaw, path("ao_raw.png"));
-    writePng(b.ao, path("ao.png"));
-    writePng(b.composite, path("composite.png"));
+    nlohmann::json m = frameStatistics(r);
+    const Resource& mask = r.resource("gbuffer.depth");
+    ViewPainter painter;
+    gl::RenderTarget view;
+    for (const Resource* res : r.buffers()) {
+        const std::string& name = res->desc.name;
+        auto& entry = m["buffers"][name];
+        if (res->desc.format != GL_RGBA8) { // float data keeps NaN/inf and full precision
+            writeExr(decoded(*res), path(name + ".exr"));
+            entry["exr"] = name + ".exr";
+        }
+        const DisplayRange range = painter.paint(*res, mask, info.style, view, r.shaders(), r.triangle());
+        const bool grey = (res->desc.display == Display::Unit || res->desc.display == Display::Scalar) &&
+                          !info.style.falseColor;
+        writePng(readBack(view.texture(), grey ? 1 : 3), path(name + ".png"));
+        entry["png"] = name + ".png";
+        entry["display_range"] = {range.lo, range.hi};
+        entry["display_range_fitted"] = range.fitted;
+    }
 
     const Camera& c = r.camera();
-    nlohmann::json m;
-    m["scene"] = {{"name", info.sceneName}, {"triangles", info.triangles}};
-    m["camera"] = {{"eye", {c.eye.x, c.eye.y, c.eye.z}},
-                   {"target", {c.target.x, c.target.y, c.target.z}},
-                   {"up", {c.up.x, c.up.y, c.up.z}},
-                   {"fov_y_deg", c.fovYDeg},
-                   {"near", c.nearZ},
-                   {"far", c.farZ},
-                   {"source", info.cameraSource}};
+    m["scene"] = {{"name", info.sceneName}, {"triangles", info.triangles}, {"diagonal", 2.0f * r.sceneRadius()}};
+    m["camera"] = cameraToJson(c);
+    m["camera"]["source"] = info.cameraSource;
     m["size"] = {r.width(), r.height()};
     m["gl_renderer"] = info.glRenderer;
     m["gl_platform"] = info.glPlatform;
     m["settings"] = toJson(r.settings());
+    m["passes"] = r.graph().passOrder();
     m["passes_run"] = firstFrame.ran();
     m["gpu_ms"] = timing;
-    m.update(statistics(b));
     std::ofstream out(path("metrics.json"));
     if (!out) throw Error("cannot write " + path("metrics.json"));
     out << m.dump(2) << "\n";

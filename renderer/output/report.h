@@ -1,5 +1,7 @@
-// Writes a rendered frame to disk: EXR float buffers, PNG previews, metrics.json.
+// Writes a rendered frame to disk: every buffer of the frame graph as EXR (float buffers) and a
+// PNG preview (the app's display mapping), and metrics.json.
 #pragma once
+#include "display/display_range.h"
 #include "renderer.h"
 
 #include <nlohmann/json.hpp>
@@ -11,18 +13,20 @@ namespace ssao {
 struct RunInfo {
     std::string sceneName;
     size_t triangles = 0;
-    std::string cameraSource; // "file", "builtin", "framed" or "--camera"
+    std::string cameraSource; // "file", "builtin", "framed", "preset" or "--camera"
     std::string glRenderer;
     std::string glPlatform;
     int timingFrames = 0;
+    ViewStyle style; // PNG previews: the same mapping as the app's views
 };
 
-// Per-buffer statistics of the current frame (non-finite counts, AO min/mean/max on geometry).
+// Statistics of the current frame: per buffer (size, non-finite count, min/mean/max/p05 over
+// geometry) and the AO summary ("ao": the denoised AO, "ao_raw"), plus the radius in use.
 nlohmann::json frameStatistics(const Renderer& r);
 
-// Writes position/normal/depth/ao_raw/ao .exr, a .png preview of each plus albedo and
-// composite, and metrics.json into `dir` (created if missing). Returns the metrics.
-nlohmann::json writeOutputs(const Renderer& r, const std::string& dir, const RunInfo& info,
-                            const FrameReport& firstFrame, const nlohmann::json& timing);
+// Writes NAME.exr for every float buffer, NAME.png for every buffer, and metrics.json into `dir`
+// (created if missing). Returns the metrics.
+nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& info, const FrameReport& firstFrame,
+                            const nlohmann::json& timing);
 
 } // namespace ssao

@@ -1,23 +1,42 @@
 #include "passes/composite_pass.h"
 
+#include "gl/shader_library.h"
+
 #include "../../shaders/include/bindings.h"
 
 namespace ssao {
 
-void CompositePass::run(const FrameInputs& in) {
-    target_.ensure(in.width, in.height, GL_RGBA8, "composite");
+void CompositePass::setup(PassBuilder& b, const Settings& s) const {
+    b.read("gbuffer.position");
+    b.read("gbuffer.normal");
+    b.read("gbuffer.albedo");
+    if (s.composite.useAo) b.read(branch().res("ao.denoised")); // AO off: the AO chain is not needed
+    ResourceDesc out;
+    out.name = branch().res("composite");
+    out.format = GL_RGBA8;
+    out.channels = 3;
+    out.display = Display::Color;
+    out.help = "the lit frame: ambient * albedo * AO + one point light, display gamma";
+    b.write(out);
+    b.settings("composite");
+    b.usesScene(); // light placement in scene radii
+}
+
+void CompositePass::execute(PassContext& ctx) {
+    const CompositeSettings& c = ctx.settings.composite;
     gl::Defines defs;
-    if (in.settings.gbuffer.normalFormat == TargetFormat::RGBA8) defs.push_back({"NORMAL_UNORM", "1"});
-    GLuint prog = in.shaders.program("passes/fullscreen.vert", "passes/composite.frag", defs);
+    if (ctx.desc("gbuffer.normal").format == GL_RGBA8) defs.push_back({"NORMAL_UNORM", "1"});
+    GLuint prog = ctx.shaders.program("passes/fullscreen.vert", "passes/composite.frag", defs);
     glUseProgram(prog);
-    glProgramUniform2f(prog, 0, in.settings.composite.ambient, in.settings.composite.light);
-    glProgramUniform1f(prog, 1, in.settings.composite.useAo ? 1.0f : 0.0f);
-    gbuffer_.position().bind(SSAO_TEX_POSITION);
-    gbuffer_.normal().bind(SSAO_TEX_NORMAL);
-    gbuffer_.albedo().bind(SSAO_TEX_ALBEDO);
-    blur_.ao().bind(SSAO_TEX_AO);
-    target_.bind();
-    in.triangle.draw();
+    glProgramUniform2f(prog, 0, c.ambient, c.light);
+    glProgramUniform1f(prog, 1, c.useAo ? 1.0f : 0.0f);
+    ctx.in("gbuffer.position").bind(SSAO_TEX_POSITION);
+    ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
+    ctx.in("gbuffer.albedo").bind(SSAO_TEX_ALBEDO);
+    if (c.useAo) ctx.in(branch().res("ao.denoised")).bind(SSAO_TEX_AO);
+    else glBindTextureUnit(SSAO_TEX_AO, 0);
+    ctx.bindOutputs({branch().res("composite")});
+    ctx.drawFullscreen();
 }
 
 } // namespace ssao

@@ -1,5 +1,6 @@
 #include "passes/gbuffer_pass.h"
 
+#include "gl/shader_library.h"
 #include "scene/gpu_scene.h"
 
 namespace ssao {
@@ -16,35 +17,66 @@ GLenum glFormat(TargetFormat f) {
     return GL_RGBA32F;
 }
 
-void GBufferPass::run(const FrameInputs& in) {
-    const GBufferSettings& g = in.settings.gbuffer;
-    if (!fbo_ || position_.width() != in.width || position_.height() != in.height ||
-        g.positionFormat != built_.positionFormat || g.normalFormat != built_.normalFormat) {
-        fbo_.reset();
-        position_ = gl::Texture2D(in.width, in.height, glFormat(g.positionFormat), "gbuffer.position");
-        normal_ = gl::Texture2D(in.width, in.height, glFormat(g.normalFormat), "gbuffer.normal");
-        albedo_ = gl::Texture2D(in.width, in.height, GL_RGBA8, "gbuffer.albedo");
-        linearDepth_ = gl::Texture2D(in.width, in.height, GL_R32F, "gbuffer.linear_depth");
-        depth_ = gl::Texture2D(in.width, in.height, GL_DEPTH_COMPONENT32F, "gbuffer.depth");
-        fbo_ = std::make_unique<gl::Framebuffer>(
-            std::vector<const gl::Texture2D*>{&position_, &normal_, &albedo_, &linearDepth_}, &depth_,
-            "gbuffer");
-        built_ = g;
-    }
-    fbo_->bind();
+void GBufferPass::setup(PassBuilder& b, const Settings& s) const {
+    const GBufferSettings& g = s.gbuffer;
+    ResourceDesc d;
+    d.name = "gbuffer.position";
+    d.format = glFormat(g.positionFormat);
+    d.channels = 3;
+    d.display = Display::Vector;
+    d.unit = "scene units";
+    d.help = "view-space position (camera at the origin, looking down -z)";
+    b.write(d);
+    d = {};
+    d.name = "gbuffer.normal";
+    d.format = glFormat(g.normalFormat);
+    d.channels = 3;
+    d.display = Display::Direction;
+    d.help = "view-space unit normal of the visible side";
+    if (g.normalFormat == TargetFormat::RGBA8) d.decodeScale = 2.0f, d.decodeOffset = -1.0f; // stored (n+1)/2
+    b.write(d);
+    d = {};
+    d.name = "gbuffer.albedo";
+    d.format = GL_RGBA8;
+    d.channels = 3;
+    d.display = Display::Color;
+    d.help = "base colour (glTF baseColorFactor)";
+    b.write(d);
+    d = {};
+    d.name = "gbuffer.depth";
+    d.format = GL_R32F;
+    d.display = Display::Scalar;
+    d.unit = "scene units";
+    d.help = "linear view distance along -z (0 = sky)";
+    b.write(d);
+    d = {};
+    d.name = "gbuffer.zbuffer";
+    d.format = GL_DEPTH_COMPONENT32F;
+    d.display = Display::Scalar;
+    d.help = "hardware depth in [0,1] (non-linear; seed 001 reconstructs positions from it)";
+    b.write(d);
+    b.settings("gbuffer");
+    b.usesScene();
+    b.usesCamera();
+}
+
+void GBufferPass::execute(PassContext& ctx) {
+    ctx.bindOutputs({"gbuffer.position", "gbuffer.normal", "gbuffer.albedo", "gbuffer.depth", "gbuffer.zbuffer"});
+    GLint fbo = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
     const float zero[4] = {0, 0, 0, 0};
     for (int i = 0; i < 4; ++i)
-        glClearNamedFramebufferfv(fbo_->id(), GL_COLOR, i, zero); // w = 0: sky
+        glClearNamedFramebufferfv(GLuint(fbo), GL_COLOR, i, zero); // w = 0: sky
     const float one = 1.0f;
-    glClearNamedFramebufferfv(fbo_->id(), GL_DEPTH, 0, &one);
+    glClearNamedFramebufferfv(GLuint(fbo), GL_DEPTH, 0, &one);
 
     gl::Defines defs;
-    if (g.normalFormat == TargetFormat::RGBA8) defs.push_back({"NORMAL_UNORM", "1"});
-    glUseProgram(in.shaders.program("passes/gbuffer.vert", "passes/gbuffer.frag", defs));
+    if (ctx.settings.gbuffer.normalFormat == TargetFormat::RGBA8) defs.push_back({"NORMAL_UNORM", "1"});
+    glUseProgram(ctx.shaders.program("passes/gbuffer.vert", "passes/gbuffer.frag", defs));
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE); // glTF doubleSided and CAD winding: shade what is visible
-    in.scene.draw(0);
+    ctx.frame.scene->draw(0);
     glDisable(GL_DEPTH_TEST);
 }
 

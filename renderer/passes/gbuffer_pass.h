@@ -1,29 +1,15 @@
-// G-buffer in view space: position, normal, albedo, linear depth, hardware depth.
+// G-buffer in view space (seeds 000/003/004): position, normal, albedo, linear depth, and the
+// hardware depth buffer — the inputs every AO technique reads.
 #pragma once
-#include "passes/pass.h"
-
-#include <memory>
+#include "graph/pass.h"
 
 namespace ssao {
 
 class GBufferPass final : public Pass {
   public:
-    const char* name() const override { return "gbuffer"; }
-    std::vector<std::string> settingGroups() const override { return {"gbuffer"}; }
-    bool readsScene() const override { return true; }
-    bool readsCamera() const override { return true; }
-    void run(const FrameInputs& in) override;
-
-    const gl::Texture2D& position() const { return position_; }
-    const gl::Texture2D& normal() const { return normal_; }
-    const gl::Texture2D& albedo() const { return albedo_; }
-    const gl::Texture2D& linearDepth() const { return linearDepth_; }
-    const gl::Texture2D& depth() const { return depth_; }
-
-  private:
-    gl::Texture2D position_, normal_, albedo_, linearDepth_, depth_;
-    std::unique_ptr<gl::Framebuffer> fbo_;
-    GBufferSettings built_{};
+    GBufferPass() : Pass("gbuffer", Branch::a()) {}
+    void setup(PassBuilder& b, const Settings& s) const override;
+    void execute(PassContext& ctx) override;
 };
 
 GLenum glFormat(TargetFormat f);

@@ -71,9 +71,10 @@ Camera parseCamera(const std::string& text, const Camera& base) {
     c.target = {v[3], v[4], v[5]};
     if (v.size() >= 9) c.up = {v[6], v[7], v[8]};
     if (v.size() >= 10) c.fovYDeg = v[9];
-    if (v.size() >= 12) {
+    if (v.size() >= 12) { // explicit planes are used as given
         c.nearZ = v[10];
         c.farZ = v[11];
+        c.clip = ClipMode::Fixed;
     }
     validateCamera(c);
     return c;

@@ -8,6 +8,10 @@ namespace ssao {
 
 struct Bounds;
 
+// Fit: near/far are fitted to the scene's bounds for the current view every frame (tight planes:
+// no z-fighting from a file's near 0.05 / far 1e6); Fixed: nearZ/farZ are used as they are.
+enum class ClipMode { Fit, Fixed };
+
 struct Camera {
     glm::vec3 eye{0.0f, 0.0f, 5.0f};
     glm::vec3 target{0.0f};
@@ -15,6 +19,7 @@ struct Camera {
     float fovYDeg = 60.0f; // vertical field of view, degrees
     float nearZ = 0.1f;    // scene units, > 0
     float farZ = 100.0f;   // scene units, > near
+    ClipMode clip = ClipMode::Fit;
 
     glm::mat4 view() const;
     glm::mat4 projection(float aspect) const;

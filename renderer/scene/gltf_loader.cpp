@@ -1,6 +1,7 @@
 // glTF 2.0 → Scene: meshes under the default scene's node hierarchy, flattened to world space.
 #include "scene/gltf_loader.h"
 
+#include "scene/view_fit.h"
 #include "util/error.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -202,7 +203,7 @@ std::optional<Camera> cameraFromNode(const tinygltf::Model& m, const tinygltf::N
     Camera cam;
     cam.eye = glm::vec3(world * glm::vec4(0, 0, 0, 1));
     glm::vec3 fwd = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
-    cam.target = cam.eye + fwd;
+    cam.target = cam.eye + fwd; // a direction only: placeOrbitTarget() puts the target in the scene
     cam.up = glm::normalize(glm::vec3(world * glm::vec4(0, 1, 0, 0)));
     cam.fovYDeg = float(glm::degrees(c.perspective.yfov));
     cam.nearZ = float(c.perspective.znear);
@@ -280,9 +281,10 @@ Scene loadGltf(const std::string& path) {
         float d = glm::length(c.eye - s.bounds.center()) + s.bounds.radius();
         c.farZ = std::max(d * 1.5f, c.nearZ * 10.0f);
     };
-    if (s.camera) fixFar(*s.camera);
+    // The file's planes are kept (clip "fixed" selects them); by default they are fitted per view.
+    if (s.camera) fixFar(*s.camera), placeOrbitTarget(*s.camera, s);
     for (auto& [name, c] : s.cameras)
-        fixFar(c);
+        fixFar(c), placeOrbitTarget(c, s);
     return s;
 }
 

@@ -1,14 +1,14 @@
 #include "settings/params.h"
 
+#include "settings/param_rows.h"
 #include "settings/preset.h"
-
+#include "techniques/technique.h"
 #include "util/error.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 
 namespace ssao {
 
@@ -16,100 +16,95 @@ namespace {
 
 using T = Param::Type;
 
-// Row builders: keep the table below one readable line-group per parameter.
-template <class Get, class Set>
-Param row(const char* key, const char* label, T type, double def, double lo, double hi, const char* unit,
-          const char* help, std::vector<std::string> choices, Get get, Set set) {
-    return Param{key, label, type, def, lo, hi, unit, help, std::move(choices), get, set};
+std::vector<Param> coreRows() {
+    std::vector<Param> rows = {
+        // ---- G-buffer -------------------------------------------------------------------------
+        ENUM_ROW("gbuffer.position_format", "Position format", gbuffer.positionFormat, TargetFormat,
+                 "Precision of the view-space position target; rgba16f shows fp16 staircase acne at distance.",
+                 ({{"rgba16f", TargetFormat::RGBA16F}, {"rgba32f", TargetFormat::RGBA32F}})),
+        ENUM_ROW("gbuffer.normal_format", "Normal format", gbuffer.normalFormat, TargetFormat,
+                 "Normal target: float, or 8-bit (n+1)/2 as in seed 003 (renormalised after decoding).",
+                 ({{"rgba16f", TargetFormat::RGBA16F},
+                   {"rgba32f", TargetFormat::RGBA32F},
+                   {"rgba8", TargetFormat::RGBA8}})),
+        // ---- AO (every technique) -------------------------------------------------------------
+        Param{}, // ao.technique, filled below from the registry
+        ENUM_ROW("ao.radius_mode", "Radius in", ao.radiusMode, RadiusMode,
+                 "Unit of the AO radius: world (scene units), scene (fraction of the scene's bounding-box "
+                 "diagonal, follows the scene) or screen (pixels at each pixel's depth).",
+                 ({{"world", RadiusMode::World}, {"scene", RadiusMode::Scene}, {"screen", RadiusMode::Screen}})),
+        FLOAT_ROW("ao.radius", "Radius", ao.radius, 1e-4, 1e4, "scene units",
+                  "World-size of the sampling kernel: how far away geometry can still occlude.")
+            .onlyWhen("ao.radius_mode", {"world"}),
+        FLOAT_ROW("ao.radius_scene", "Radius", ao.radiusScene, 1e-4, 0.5, "x diagonal",
+                  "Radius as a fraction of the scene's bounding-box diagonal (0.02 = 2 %), so it follows the "
+                  "scene's scale (metres or millimetres alike).")
+            .onlyWhen("ao.radius_mode", {"scene"}),
+        FLOAT_ROW("ao.radius_px", "Radius", ao.radiusPx, 1.0, 512.0, "pixels",
+                  "Radius in pixels at each pixel's depth: the kernel covers the same screen area near and far.")
+            .onlyWhen("ao.radius_mode", {"screen"}),
+        FLOAT_ROW("ao.power", "Power", ao.power, 0.1, 16.0, "",
+                  "Contrast: AO = visibility^power; >1 darkens occluded areas, <1 lightens (seed 001)."),
+        ENUM_ROW("ao.resolution", "Resolution", ao.resolution, AoResolution,
+                 "Resolution of the AO pass relative to the G-buffer; the denoise stage brings it back to full "
+                 "size (fewer pixels = faster, blurrier).",
+                 ({{"full", AoResolution::Full}, {"half", AoResolution::Half}, {"quarter", AoResolution::Quarter}})),
+        // ---- Denoise --------------------------------------------------------------------------
+        ENUM_ROW("denoise.kind", "Denoise", denoise.kind, DenoiseKind,
+                 "Removes the sampling noise: none, 4x4 box (seed 004) or gaussian (seed 003); both run "
+                 "separably and upsample reduced-resolution AO.",
+                 ({{"none", DenoiseKind::None}, {"box4", DenoiseKind::Box4}, {"gaussian", DenoiseKind::Gaussian}})),
+        FLOAT_ROW("denoise.sigma", "Sigma", denoise.sigma, 0.1, 32.0, "taps",
+                  "Gaussian standard deviation; weight = exp(-d^2 / (2 sigma^2)).")
+            .onlyWhen("denoise.kind", {"gaussian"}),
+        INT_ROW("denoise.half_width", "Half-width", denoise.halfWidth, 0, 32, "taps",
+                "Gaussian taps each side of the centre (2 gives the seed's 5x5).")
+            .onlyWhen("denoise.kind", {"gaussian"}),
+        FLOAT_ROW("denoise.spacing", "Tap spacing", denoise.spacing, 0.25, 16.0, "pixels",
+                  "Distance between gaussian taps (seed 003 blurRadius); >1 widens the blur without more taps.")
+            .onlyWhen("denoise.kind", {"gaussian"}),
+        // ---- Composite ------------------------------------------------------------------------
+        FLOAT_ROW("composite.ambient", "Ambient", composite.ambient, 0.0, 4.0, "",
+                  "Ambient term strength: ambient * albedo * AO (seed 004 uses 0.1 with a bright light)."),
+        FLOAT_ROW("composite.light", "Light", composite.light, 0.0, 10.0, "",
+                  "Intensity of the one point light at the camera (0 shows ambient * AO only)."),
+        BOOL_ROW("composite.ao", "Apply AO", composite.useAo,
+                 "Multiply the ambient term by AO; off shows the same frame without AO."),
+    };
+    // ao.technique: one choice per registered module, mapped by id.
+    Param& t = rows[2];
+    t.key = "ao.technique", t.label = "Technique", t.type = T::Enum;
+    t.help = "The AO estimator; each technique adds its own parameters below.";
+    for (const auto& info : techniques())
+        t.choices.push_back(info.id);
+    t.min = 0, t.max = double(t.choices.size() - 1);
+    t.get = [](const Settings& s) {
+        const auto& list = techniques();
+        for (size_t i = 0; i < list.size(); ++i)
+            if (list[i].id == s.ao.technique) return double(i);
+        return 0.0;
+    };
+    t.set = [](Settings& s, double v) { s.ao.technique = techniques().at(size_t(v)).id; };
+    return rows;
 }
 
-#define FLOAT_P(key, label, field, def, lo, hi, unit, help)                                                  \
-    row(                                                                                                     \
-        key, label, T::Float, def, lo, hi, unit, help, {},                                                   \
-        [](const Settings& s) { return double(s.field); },                                                   \
-        [](Settings& s, double v) { s.field = float(v); })
-#define INT_P(key, label, field, def, lo, hi, unit, help)                                                    \
-    row(                                                                                                     \
-        key, label, T::Int, def, lo, hi, unit, help, {}, [](const Settings& s) { return double(s.field); },  \
-        [](Settings& s, double v) { s.field = int(v); })
-#define BOOL_P(key, label, field, def, help)                                                                 \
-    row(                                                                                                     \
-        key, label, T::Bool, def, 0, 1, "", help, {}, [](const Settings& s) { return s.field ? 1.0 : 0.0; }, \
-        [](Settings& s, double v) { s.field = v != 0.0; })
-#define ENUM_P(key, label, field, E, def, help, ...)                                                         \
-    row(                                                                                                     \
-        key, label, T::Enum, def, 0, std::vector<std::string>{__VA_ARGS__}.size() - 1, "", help,             \
-        {__VA_ARGS__}, [](const Settings& s) { return double(int(s.field)); },                               \
-        [](Settings& s, double v) { s.field = E(int(v)); })
-
 std::vector<Param> buildTable() {
-    return {
-        // ---- G-buffer -------------------------------------------------------------------------
-        ENUM_P("gbuffer.position_format", "Position format", gbuffer.positionFormat, TargetFormat, 1,
-               "Precision of the view-space position target; rgba16f shows fp16 staircase acne at distance.",
-               "rgba16f", "rgba32f"),
-        ENUM_P("gbuffer.normal_format", "Normal format", gbuffer.normalFormat, TargetFormat, 0,
-               "Normal target: float, or 8-bit (n+1)/2 as in seed 003 (renormalised after decoding).",
-               "rgba16f", "rgba32f", "rgba8"),
-        // ---- SSAO -----------------------------------------------------------------------------
-        ENUM_P("ssao.kernel", "Kernel", ssao.kernel, Kernel, 0,
-               "hemisphere: samples above the surface; sphere (Crytek): half the samples start inside, "
-               "so flat surfaces read ~50% occluded.",
-               "hemisphere", "sphere"),
-        BOOL_P("ssao.separable", "Separable", ssao.separable, 0,
-               "Seed 003: two sample sets in the x-z and y-z tangent planes (N each, normalised by 2N)."),
-        INT_P("ssao.samples", "Samples", ssao.samples, 64, 1, 256, "samples",
-              "Kernel samples per pixel (per plane when separable); more = less noise, linear cost."),
-        FLOAT_P("ssao.radius", "Radius", ssao.radius, 0.5, 1e-4, 1e4, "scene units",
-                "World-size of the sampling kernel: how far away geometry can still occlude."),
-        FLOAT_P("ssao.bias", "Bias", ssao.bias, 0.025, 0.0, 1e3, "scene units",
-                "Depth margin before a sample counts as occluded; removes self-occlusion acne, too much "
-                "loses contact shadows."),
-        ENUM_P("ssao.range_check", "Range check", ssao.rangeCheck, RangeCheck, 0,
-               "Fades occluders far in depth from the pixel: smoothstep(radius/|dz|) (seed 004), hard "
-               "|dz|<radius "
-               "(seed 003) or off (dark halos behind silhouettes).",
-               "smoothstep", "hard", "off"),
-        ENUM_P("ssao.depth_test", "Depth test", ssao.depthTest, DepthTest, 0,
-               "sample: occluded if the surface is in front of the sample (seeds 000/004); fragment: if it "
-               "is behind "
-               "the pixel itself (seed 003).",
-               "sample", "fragment"),
-        FLOAT_P("ssao.power", "Power", ssao.power, 1.0, 0.1, 16.0, "",
-                "Contrast: AO = visibility^power; >1 darkens occluded areas, <1 lightens (seed 001)."),
-        ENUM_P("ssao.noise", "Rotation noise", ssao.noise, Noise, 0,
-               "Per-pixel kernel rotation: a tiled 4x4 texture (noise the blur removes) or none (banding).",
-               "tex4x4", "none"),
-        INT_P("ssao.seed", "Seed", ssao.seed, 0, 0, 1000000, "",
-              "Random seed of the kernel and noise; change it to see which artefacts are sampling luck."),
-        ENUM_P(
-            "ssao.position_source", "Position source", ssao.positionSource, PositionSource, 0,
-            "Read positions from the G-buffer target, or reconstruct them from the depth buffer (seed 001).",
-            "gbuffer", "depth"),
-        ENUM_P(
-            "ssao.offscreen", "Off-screen samples", ssao.offscreen, Offscreen, 0,
-            "Samples projecting outside the screen: skip (count as open) or clamp to the edge texel (seeds).",
-            "skip", "clamp"),
-        // ---- Blur -----------------------------------------------------------------------------
-        ENUM_P("blur.kind", "Blur", blur.kind, BlurKind, 1,
-               "Removes the 4x4 noise pattern: none, 4x4 box (seed 004) or gaussian (seed 003). Both run "
-               "separably.",
-               "none", "box4", "gaussian"),
-        FLOAT_P("blur.sigma", "Sigma", blur.sigma, 1.5, 0.1, 32.0, "taps",
-                "Gaussian standard deviation; weight = exp(-d^2 / (2 sigma^2))."),
-        INT_P("blur.radius", "Half-width", blur.radius, 2, 0, 32, "taps",
-              "Gaussian taps each side of the centre (2 gives the seed's 5x5)."),
-        FLOAT_P(
-            "blur.spacing", "Tap spacing", blur.spacing, 1.0, 0.25, 16.0, "pixels",
-            "Distance between gaussian taps (seed 003 blurRadius); >1 widens the blur without more taps."),
-        // ---- Composite ------------------------------------------------------------------------
-        FLOAT_P("composite.ambient", "Ambient", composite.ambient, 0.7, 0.0, 4.0, "",
-                "Ambient term strength: ambient * albedo * AO (seed 004 uses 0.1 with a bright light)."),
-        FLOAT_P("composite.light", "Light", composite.light, 0.6, 0.0, 10.0, "",
-                "Intensity of the one point light at the camera (0 shows ambient * AO only)."),
-        BOOL_P("composite.ao", "Apply AO", composite.useAo, 1,
-               "Multiply the ambient term by AO; off shows the same frame without SSAO."),
-    };
+    std::vector<Param> table = coreRows();
+    // Technique rows go after the ao group, each applying only while its technique is chosen.
+    auto at = table.begin();
+    while (at != table.end() && at->group() != "denoise")
+        ++at;
+    std::vector<Param> tech;
+    for (const auto& info : techniques())
+        for (Param p : info.params()) {
+            p.when.insert(p.when.begin(), Param::Condition{"ao.technique", {info.id}});
+            tech.push_back(std::move(p));
+        }
+    table.insert(at, tech.begin(), tech.end());
+    const Settings defaults{};
+    for (Param& p : table)
+        p.def = p.get(defaults); // the struct initialisers are the one source of defaults
+    return table;
 }
 
 double parseNumber(const Param& p, const std::string& text) {
@@ -171,8 +166,36 @@ std::string Param::format(double v) const {
 }
 
 bool Param::isDefault(const Settings& s) const {
-    static const Settings defaults = defaultSettings();
-    return get(s) == get(defaults);
+    return get(s) == def;
+}
+
+bool Param::applies(const Settings& s) const {
+    for (const Condition& c : when) {
+        const Param* other = findParam(c.key);
+        if (!other) return false;
+        const std::string v = other->format(other->get(s));
+        bool any = false;
+        for (const auto& allowed : c.values)
+            any |= v == allowed;
+        if (!any || !other->applies(s)) return false;
+    }
+    return true;
+}
+
+std::string Param::whenText() const {
+    std::string out;
+    for (const Condition& c : when) {
+        std::string values;
+        for (auto& v : c.values)
+            values += (values.empty() ? "" : "|") + v;
+        out += (out.empty() ? "" : " and ") + c.key + " = " + values;
+    }
+    return out;
+}
+
+Param& Param::onlyWhen(const std::string& k, std::vector<std::string> values) {
+    when.push_back({k, std::move(values)});
+    return *this;
 }
 
 const std::vector<Param>& paramTable() {
@@ -187,10 +210,7 @@ const Param* findParam(const std::string& key) {
 }
 
 Settings defaultSettings() {
-    Settings s;
-    for (const auto& p : paramTable())
-        p.set(s, p.def);
-    return s;
+    return Settings{};
 }
 
 void setParam(Settings& s, const std::string& key, const std::string& text) {
@@ -242,7 +262,7 @@ nlohmann::json toJson(const Settings& s) {
 void applyJson(Settings& s, const nlohmann::json& patch, const std::string& origin) {
     if (!patch.is_object()) throw Error(origin + ": a preset must be a JSON object");
     for (auto& [group, members] : patch.items()) {
-        if (group == "name" || group == "description" || group == "camera") continue; // preset metadata
+        if (isPresetMetadataKey(group)) continue;
         if (!members.is_object()) throw Error(origin + ": '" + group + "' must be an object of parameters");
         for (auto& [name, value] : members.items()) {
             const std::string key = group + "." + name;

@@ -1,6 +1,7 @@
-// The parameter table: one row per user-facing setting (key, default, range, unit, help).
-// It drives JSON presets, `--set key=value`, the UI and the tests; adding a parameter is one
-// row here plus its use in a pass.
+// The parameter table: one row per user-facing setting (key, range, unit, help, when it applies).
+// It drives JSON presets, `--set key=value`, the UI, `ssaolab params` and the tests. The table
+// is the core rows (gbuffer, ao, denoise, composite) plus each registered technique's rows.
+// Defaults are not written here: each row reads its default from Settings{} (settings.h).
 #pragma once
 #include "settings/settings.h"
 
@@ -14,13 +15,21 @@ namespace ssao {
 
 struct Param {
     enum class Type { Float, Int, Bool, Enum };
-    std::string key;   // "ssao.radius": group.name; the group is the pass that reads it
+    // The row applies only while parameter `key` has one of `values` (e.g. denoise.sigma only
+    // for denoise.kind = gaussian); otherwise the UI greys it out and it has no effect.
+    struct Condition {
+        std::string key;
+        std::vector<std::string> values;
+    };
+
+    std::string key;   // "group.name"; the group is what a pass declares it reads
     std::string label; // UI label
-    Type type;
-    double def, min, max; // enum/bool: index
+    Type type = Type::Float;
+    double def = 0, min = 0, max = 1; // enum/bool: index; def is filled from Settings{}
     std::string unit;
     std::string help;                 // one line: what changing it does
-    std::vector<std::string> choices; // Enum only
+    std::vector<std::string> choices; // Enum only, in display order; values map by name
+    std::vector<Condition> when;      // all must hold for the row to apply
     std::function<double(const Settings&)> get;
     std::function<void(Settings&, double)> set;
 
@@ -30,12 +39,15 @@ struct Param {
     std::string format(double v) const;
     // Whether `s` holds this parameter's default (compared at the field's own precision).
     bool isDefault(const Settings& s) const;
+    bool applies(const Settings& s) const;
+    std::string whenText() const; // "ao.radius_mode = world", "" when always
+    Param& onlyWhen(const std::string& key, std::vector<std::string> values);
 };
 
 const std::vector<Param>& paramTable();
 const Param* findParam(const std::string& key);
 
-// Settings with every table default applied.
+// Settings{} — every default, the one place they are defined.
 Settings defaultSettings();
 
 // Sets `key` from its text form; throws ssao::Error naming the key on unknown key, bad
@@ -44,11 +56,10 @@ void setParam(Settings& s, const std::string& key, const std::string& text);
 // `--set key=value`.
 void applyAssignment(Settings& s, const std::string& assignment);
 
-// JSON: {"ssao": {"radius": 0.5, ...}, ...}. Presets are patches over defaults; toJson
-// writes every key, so write → read round-trips exactly.
+// JSON: {"ao": {"radius": 0.5, ...}, ...}. Presets are patches over defaults; toJson writes
+// every key, so write → read round-trips exactly.
 nlohmann::json toJson(const Settings& s);
-// Applies a patch; "name", "description" and "camera" at top level are preset metadata (see
-// settings/preset.h) and ignored here.
+// Applies a patch; the preset metadata keys (settings/preset.h) at top level are skipped.
 void applyJson(Settings& s, const nlohmann::json& patch, const std::string& origin);
 Settings loadPreset(const std::string& path); // defaults + the file's patch
 

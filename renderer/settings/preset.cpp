@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
+namespace fs = std::filesystem;
+
 namespace ssao {
 
 namespace {
@@ -25,19 +27,43 @@ float numberFrom(const nlohmann::json& j, const char* key, float def, const std:
 }
 } // namespace
 
+bool isPresetMetadataKey(const std::string& key) {
+    return key == "name" || key == "description" || key == "camera" || key == "scene" || key == "size";
+}
+
+const std::vector<std::string>& radiusKeys() {
+    static const std::vector<std::string> keys = {"ao.radius_mode", "ao.radius", "ao.radius_scene",
+                                                  "ao.radius_px"};
+    return keys;
+}
+
+bool Preset::fixesRadius() const {
+    for (const auto& k : radiusKeys())
+        if (keys.count(k)) return true;
+    return false;
+}
+
+void resetRadius(Settings& s) {
+    const Settings d{};
+    for (const auto& k : radiusKeys())
+        if (const Param* p = findParam(k)) p->set(s, p->get(d));
+}
+
 nlohmann::json cameraToJson(const Camera& c) {
     return {{"eye", {c.eye.x, c.eye.y, c.eye.z}},
             {"target", {c.target.x, c.target.y, c.target.z}},
             {"up", {c.up.x, c.up.y, c.up.z}},
             {"fov_y_deg", c.fovYDeg},
             {"near", c.nearZ},
-            {"far", c.farZ}};
+            {"far", c.farZ},
+            {"clip", c.clip == ClipMode::Fit ? "fit" : "fixed"}};
 }
 
 Camera cameraFromJson(const nlohmann::json& j, const std::string& origin) {
     if (!j.is_object()) throw Error(origin + ": camera must be an object");
     for (auto& [k, v] : j.items())
-        if (k != "eye" && k != "target" && k != "up" && k != "fov_y_deg" && k != "near" && k != "far")
+        if (k != "eye" && k != "target" && k != "up" && k != "fov_y_deg" && k != "near" && k != "far" &&
+            k != "clip")
             throw Error(origin + ": unknown key 'camera." + k + "'");
     Camera c;
     c.eye = vec3From(j, "eye", origin);
@@ -46,6 +72,15 @@ Camera cameraFromJson(const nlohmann::json& j, const std::string& origin) {
     c.fovYDeg = numberFrom(j, "fov_y_deg", c.fovYDeg, origin);
     c.nearZ = numberFrom(j, "near", c.nearZ, origin);
     c.farZ = numberFrom(j, "far", c.farZ, origin);
+    if (j.contains("clip")) {
+        const auto& clip = j["clip"];
+        if (clip == "fit")
+            c.clip = ClipMode::Fit;
+        else if (clip == "fixed")
+            c.clip = ClipMode::Fixed;
+        else
+            throw Error(origin + ": camera.clip must be \"fit\" or \"fixed\"");
+    }
     try {
         validateCamera(c);
     } catch (const Error& e) {
@@ -58,28 +93,48 @@ nlohmann::json presetToJson(const Preset& p) {
     nlohmann::json j = nlohmann::json::object();
     if (!p.name.empty()) j["name"] = p.name;
     if (!p.description.empty()) j["description"] = p.description;
+    if (p.scene) j["scene"] = *p.scene;
+    if (p.size) j["size"] = {p.size->first, p.size->second};
     if (p.camera) j["camera"] = cameraToJson(*p.camera);
     j.update(toJson(p.settings));
     return j;
 }
 
-Preset presetFromJson(const nlohmann::json& j, const std::string& origin) {
+Preset presetFromJson(const nlohmann::json& j, const std::string& origin, const std::string& baseDir) {
     Preset p;
-    p.settings = defaultSettings();
-    applyJson(p.settings, j, origin); // skips name / description / camera, rejects anything unknown
+    applyJson(p.settings, j, origin); // skips metadata, rejects anything unknown
+    for (auto& [group, members] : j.items())
+        if (!isPresetMetadataKey(group))
+            for (auto& [name, value] : members.items())
+                p.keys.insert(group + "." + name);
     if (j.contains("name")) {
         if (!j["name"].is_string()) throw Error(origin + ": name must be a string");
         p.name = j["name"].get<std::string>();
     }
     if (j.contains("description") && j["description"].is_string())
         p.description = j["description"].get<std::string>();
+    if (j.contains("scene")) {
+        if (!j["scene"].is_string() || j["scene"].get<std::string>().empty())
+            throw Error(origin + ": scene must be a non-empty string (builtin:NAME or a glTF path)");
+        std::string spec = j["scene"].get<std::string>();
+        if (spec.rfind("builtin:", 0) != 0 && fs::path(spec).is_relative() && !baseDir.empty())
+            spec = (fs::path(baseDir) / spec).lexically_normal().string();
+        p.scene = spec;
+    }
+    if (j.contains("size")) {
+        const auto& s = j["size"];
+        if (!s.is_array() || s.size() != 2 || !s[0].is_number_integer() || !s[1].is_number_integer() ||
+            s[0].get<long>() < 1 || s[1].get<long>() < 1 || s[0].get<long>() > 16384 || s[1].get<long>() > 16384)
+            throw Error(origin + ": size must be [width, height] with each in 1..16384");
+        p.size = std::make_pair(s[0].get<int>(), s[1].get<int>());
+    }
     if (j.contains("camera")) p.camera = cameraFromJson(j["camera"], origin);
     return p;
 }
 
 Preset readPresetFile(const std::string& path) {
     std::ifstream in(path);
-    if (!in) throw Error("preset file not found: " + path);
+    if (!in || fs::is_directory(path)) throw Error("preset file not found: " + path);
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(in);
@@ -87,15 +142,15 @@ Preset readPresetFile(const std::string& path) {
         std::string what = e.what();
         throw Error("preset " + path + " is not valid JSON (" + what.substr(what.find("parse error")) + ")");
     }
-    Preset p = presetFromJson(j, "preset " + path);
-    if (p.name.empty()) p.name = std::filesystem::path(path).stem().string();
+    Preset p = presetFromJson(j, "preset " + path, fs::path(path).parent_path().string());
+    if (p.name.empty()) p.name = fs::path(path).stem().string();
     return p;
 }
 
 void writePresetFile(const Preset& p, const std::string& path) {
     std::error_code ec;
-    const auto parent = std::filesystem::path(path).parent_path();
-    if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+    const auto parent = fs::path(path).parent_path();
+    if (!parent.empty()) fs::create_directories(parent, ec);
     std::ofstream out(path);
     if (!out) throw Error("cannot write preset " + path);
     out << presetToJson(p).dump(2) << "\n";

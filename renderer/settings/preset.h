@@ -1,6 +1,8 @@
-// A preset file: a JSON patch over the defaults, plus optional metadata and a camera bookmark.
-//   {"name": "...", "description": "...", "camera": {"eye": [..], "target": [..], "up": [..],
-//    "fov_y_deg": 60, "near": 0.1, "far": 100}, "ssao": {"radius": 0.8}, ...}
+// A preset file: a JSON patch over the defaults, plus optional metadata, the scene it was made
+// for, the render size and a camera bookmark.
+//   {"name": "...", "description": "...", "scene": "builtin:showcase" | "path/to/file.gltf",
+//    "size": [1280, 720], "camera": {"eye": [..], "target": [..], "up": [..], "fov_y_deg": 60,
+//    "near": 0.1, "far": 100, "clip": "fit"}, "ao": {"radius_mode": "world", "radius": 0.8}, ...}
 // The app saves exactly this format and `ssaolab render --preset` reads it, so a preset tuned
 // in the window reproduces the same image headless.
 #pragma once
@@ -10,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <optional>
+#include <set>
 #include <string>
 
 namespace ssao {
@@ -18,15 +21,30 @@ struct Preset {
     std::string name;
     std::string description;
     Settings settings;
+    std::set<std::string> keys;       // parameter keys the file sets (the rest are defaults)
+    std::optional<std::string> scene; // scene spec; a relative path is relative to the preset file
+    std::optional<std::pair<int, int>> size;
     std::optional<Camera> camera;
+
+    // True when the preset chooses the AO radius itself; otherwise the radius follows the scene.
+    bool fixesRadius() const;
 };
+
+// Top-level keys that are preset metadata, not parameter groups.
+bool isPresetMetadataKey(const std::string& key);
 
 nlohmann::json cameraToJson(const Camera& c);
 Camera cameraFromJson(const nlohmann::json& j, const std::string& origin); // validated
 
 nlohmann::json presetToJson(const Preset& p); // every parameter written: a complete preset
-Preset presetFromJson(const nlohmann::json& j, const std::string& origin);
+// `baseDir` resolves a relative "scene" path (the folder of the preset file).
+Preset presetFromJson(const nlohmann::json& j, const std::string& origin, const std::string& baseDir = "");
 Preset readPresetFile(const std::string& path); // throws ssao::Error naming file and key
 void writePresetFile(const Preset& p, const std::string& path);
+
+// Every key the radius depends on: a preset setting any of them fixes the radius.
+const std::vector<std::string>& radiusKeys();
+// Resets those keys to their defaults, so the radius follows the scene.
+void resetRadius(Settings& s);
 
 } // namespace ssao

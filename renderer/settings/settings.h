@@ -1,56 +1,52 @@
-// What a person sets (units, meaning) — not what the GPU sees: see ssao/constants.h for the
-// packing. Defaults and ranges live in the parameter table (settings/params.cpp), the one place
-// that feeds presets, --set, the UI and the tests.
+// What a person sets (units, meaning) — not what the GPU sees: each pass packs its own constants
+// with one pure function. The member initialisers below are the one place defaults live; the
+// parameter table (settings/params.cpp plus each technique's rows) reads them from Settings{}.
 #pragma once
+#include "techniques/technique_settings.h"
+
+#include <string>
 
 namespace ssao {
 
-enum class TargetFormat { RGBA16F = 0, RGBA32F = 1, RGBA8 = 2 }; // RGBA8: normals only, (n+1)/2
-enum class Kernel { Hemisphere = 0, Sphere = 1 };                // sphere = Crytek 2007
-enum class RangeCheck { Smoothstep = 0, Hard = 1, Off = 2 };
-enum class DepthTest { Sample = 0, Fragment = 1 }; // see bindings.h
-enum class Noise { Tex4x4 = 0, None = 1 };
-enum class PositionSource { GBuffer = 0, Depth = 1 };
-enum class Offscreen { Skip = 0, Clamp = 1 };
-enum class BlurKind { None = 0, Box4 = 1, Gaussian = 2 };
+enum class TargetFormat { RGBA16F, RGBA32F, RGBA8 }; // RGBA8: normals only, stored (n+1)/2
+enum class RadiusMode { World, Scene, Screen };
+enum class AoResolution { Full, Half, Quarter };
+enum class DenoiseKind { None, Box4, Gaussian };
 
 struct GBufferSettings {
     TargetFormat positionFormat = TargetFormat::RGBA32F;
     TargetFormat normalFormat = TargetFormat::RGBA16F;
 };
 
-struct SsaoSettings {
-    Kernel kernel = Kernel::Hemisphere;
-    bool separable = false; // seed 003: two plane-sample sets, normalised by 2N
-    int samples = 64;       // per set
-    float radius = 0.5f;    // view-space units (scene units)
-    float bias = 0.025f;    // view-space units
-    RangeCheck rangeCheck = RangeCheck::Smoothstep;
-    DepthTest depthTest = DepthTest::Sample;
-    float power = 1.0f; // AO = visibility^power (>1 darkens)
-    Noise noise = Noise::Tex4x4;
-    int seed = 0; // kernel + noise RNG seed
-    PositionSource positionSource = PositionSource::GBuffer;
-    Offscreen offscreen = Offscreen::Skip;
+// What every AO technique shares: which one runs, its radius (in one of three unit systems),
+// the final contrast and the resolution the AO is computed at.
+struct AoSettings {
+    std::string technique = "kernel"; // id of a registered technique (techniques/registry.cpp)
+    RadiusMode radiusMode = RadiusMode::Scene;
+    float radius = 0.5f;       // world mode: scene units
+    float radiusScene = 0.05f; // scene mode: fraction of the scene's bounding-box diagonal
+    float radiusPx = 24.0f;    // screen mode: pixels, at the shaded pixel's depth (N8AO, three.js GTAO)
+    float power = 1.0f;        // AO = visibility^power (seed 001; XeGTAO FinalValuePower)
+    AoResolution resolution = AoResolution::Full;
 };
 
-struct BlurSettings {
-    BlurKind kind = BlurKind::Box4;
+struct DenoiseSettings {
+    DenoiseKind kind = DenoiseKind::Box4;
     float sigma = 1.5f;   // gaussian standard deviation, in taps
-    int radius = 2;       // gaussian half-width in taps (2 → 5x5)
-    float spacing = 1.0f; // pixels between taps
+    int halfWidth = 2;    // gaussian taps each side of the centre (2 → the seed's 5x5)
+    float spacing = 1.0f; // pixels between gaussian taps
 };
 
 struct CompositeSettings {
     float ambient = 0.7f; // ambient strength multiplied by albedo and AO (strong: AO is what we look at)
     float light = 0.6f;   // point-light intensity (0 = AO-only shading)
-    bool useAo = true;    // false: the same image without SSAO (N8AO-style AO on/off compare)
+    bool useAo = true;    // false: the same image without AO (N8AO-style on/off compare)
 };
 
-struct Settings {
+struct Settings : TechniqueSettings {
     GBufferSettings gbuffer;
-    SsaoSettings ssao;
-    BlurSettings blur;
+    AoSettings ao;
+    DenoiseSettings denoise;
     CompositeSettings composite;
 };
 

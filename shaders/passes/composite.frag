@@ -1,6 +1,7 @@
 #version 450 core
 // Seed 004's lighting: ambient * albedo * AO plus one Blinn–Phong point light with linear 0.7 /
 // quadratic 0.9 attenuation — distances measured in scene radii so mm and m scenes look alike.
+#include "include/bindings.h"
 #include "include/frame.glsl"
 
 layout(binding = SSAO_TEX_POSITION) uniform sampler2D gPosition;
@@ -26,7 +27,7 @@ void main() {
 #endif
     N = normalize(N);
     vec3 albedo = texture(gAlbedo, vUv).rgb;
-    float ao = mix(1.0, texture(aoIn, vUv).r, uUseAo);
+    float ao = uUseAo > 0.5 ? texture(aoIn, vUv).r : 1.0; // AO off: no AO texture is bound
 
     float R = max(frame.clip.z, 1e-6);
     vec3 lightPos = vec3(-0.6, 0.9, 0.3) * R; // view space: above-left of the camera

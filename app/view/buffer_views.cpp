@@ -1,0 +1,52 @@
+#include "view/buffer_views.h"
+
+#include <cstdio>
+
+namespace ssao {
+
+void BufferViews::update(Renderer& r, const ViewStyle& style, const std::vector<std::string>& names) {
+    const Resource& mask = r.resource("gbuffer.depth");
+    for (const auto& name : names) {
+        const Resource* res = r.graph().find(name);
+        if (!res) continue;
+        View& v = views_[name];
+        if (v.target.texture() && v.version == res->version && v.generation == res->generation && v.style == style &&
+            v.target.texture().width() == res->width())
+            continue;
+        v.range = painter_.paint(*res, mask, style, v.target, r.shaders(), r.triangle());
+        v.version = res->version;
+        v.generation = res->generation;
+        v.style = style;
+        const std::string range = rangeText(v.range, res->desc);
+        v.label = name + (range.empty() ? "" : "  " + range);
+        if (res->desc.scale != 1.0f) {
+            char buf[48];
+            std::snprintf(buf, sizeof buf, "  (%dx%d)", res->width(), res->height());
+            v.label += buf;
+        }
+    }
+}
+
+const BufferViews::View& BufferViews::difference(Renderer& r, const std::string& a, const std::string& b,
+                                                  float scale) {
+    const Resource& ra = r.resource(a);
+    const Resource& rb = r.resource(b);
+    char key[160];
+    std::snprintf(key, sizeof key, "%s@%llu/%u|%s@%llu/%u|%g", a.c_str(), (unsigned long long)ra.version,
+                  ra.generation, b.c_str(), (unsigned long long)rb.version, rb.generation, scale);
+    if (diffKey_ != key || !diff_.target.texture()) {
+        painter_.paintDifference(ra, rb, scale, r.resource("gbuffer.depth"), diff_.target, r.shaders(), r.triangle());
+        char label[96];
+        std::snprintf(label, sizeof label, "A - B (x%g): red A brighter, blue B brighter", scale);
+        diff_.label = label;
+        diffKey_ = key;
+    }
+    return diff_;
+}
+
+const BufferViews::View* BufferViews::find(const std::string& name) const {
+    auto it = views_.find(name);
+    return it == views_.end() ? nullptr : &it->second;
+}
+
+} // namespace ssao

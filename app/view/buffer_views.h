@@ -1,0 +1,36 @@
+// Display images (RGBA8) of the renderer's buffers for the app, painted by the same ViewPainter
+// as the PNG previews. A view is repainted only when its buffer or the display style changed.
+#pragma once
+#include "display/view_painter.h"
+#include "renderer.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ssao {
+
+class BufferViews {
+  public:
+    struct View {
+        gl::RenderTarget target;
+        DisplayRange range;
+        uint64_t version = 0;
+        unsigned generation = 0;
+        ViewStyle style;
+        std::string label; // "ao.raw  0 .. 1"
+    };
+    // Brings the views of `names` up to date (others are left as they are).
+    void update(Renderer& r, const ViewStyle& style, const std::vector<std::string>& names);
+    // The signed difference (a - b) * scale; repainted when either buffer or the scale changed.
+    const View& difference(Renderer& r, const std::string& a, const std::string& b, float scale);
+    const View* find(const std::string& name) const;
+
+  private:
+    std::map<std::string, View> views_;
+    View diff_;
+    std::string diffKey_;
+    ViewPainter painter_;
+};
+
+} // namespace ssao

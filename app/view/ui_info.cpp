@@ -1,0 +1,126 @@
+// The strip under the image, always in view: per-pass GPU times (at full resolution and while
+// moving, in graph order) with the frame-time plot, and the pixel / sample inspector.
+#include "view/app_core.h"
+
+#include <cfloat>
+
+namespace ssao {
+
+namespace {
+
+void timingSection(AppCore& app) {
+    const AppCore::Timing& full = app.timing(false);
+    const AppCore::Timing& moving = app.timing(true);
+    const auto& order = app.renderer().graph().passOrder();
+    if (ImGui::BeginTable("timing", 3, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
+        char h1[48], h2[48];
+        std::snprintf(h1, sizeof h1, "full %dx%d", full.width, full.height);
+        std::snprintf(h2, sizeof h2, "moving %dx%d", moving.width, moving.height);
+        ImGui::TableSetupColumn("GPU ms");
+        ImGui::TableSetupColumn(h1);
+        ImGui::TableSetupColumn(h2);
+        ImGui::TableHeadersRow();
+        double totals[2] = {0, 0};
+        for (const auto& name : order) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(name.c_str());
+            const AppCore::Timing* t[2] = {&full, &moving};
+            for (int i = 0; i < 2; ++i) {
+                ImGui::TableNextColumn();
+                const double ms = t[i]->average(name);
+                if (ms >= 0) {
+                    ImGui::Text("%.2f", ms);
+                    totals[i] += ms;
+                } else {
+                    ImGui::TextDisabled("-");
+                }
+            }
+        }
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted("all passes");
+        for (double t : totals) {
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", t);
+        }
+        ImGui::EndTable();
+    }
+    rememberRect(app, "timing");
+    std::vector<float> f(app.frameMs().begin(), app.frameMs().end());
+    if (!f.empty()) {
+        const float width = std::max(ImGui::GetContentRegionAvail().x, 50.0f); // an explicit width: -1 draws nothing
+        ImGui::PlotLines("##frame", f.data(), int(f.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(width, 40));
+        rememberRect(app, "timing#plot");
+        ImGui::TextDisabled("frame %.1f ms (CPU, UI included)%s", f.back(),
+                            app.renderedInteractive() ? ", reduced resolution while moving" : "");
+    }
+    std::string ran;
+    for (auto& n : app.lastReport().ran())
+        ran += n + " ";
+    ImGui::TextDisabled("last change re-ran: %s", ran.c_str());
+}
+
+void inspectorSection(AppCore& app) {
+    ImGui::Checkbox("samples at cursor", &app.showSamples);
+    ImGui::SameLine();
+    ImGui::Checkbox("pin pixel", &app.pinPixel);
+    rememberRect(app, "inspector");
+    const glm::ivec2 px = app.hoverPixel;
+    if (px.x < 0) {
+        ImGui::TextDisabled("hover the image to inspect a pixel");
+        return;
+    }
+    ImGui::Text("pixel %d, %d%s", px.x, px.y, app.hoverBranch ? "  (B)" : "");
+    const std::string prefix = app.hoverBranch ? "b." : "";
+    for (const Resource* r : app.renderer().buffers()) {
+        std::string name = r->desc.name;
+        if (!prefix.empty() && app.renderer().graph().find(prefix + name)) name = prefix + name;
+        const std::vector<float> v = app.valueAt(name, px);
+        std::string text;
+        for (float x : v) {
+            char buf[24];
+            std::snprintf(buf, sizeof buf, "%10.4g", x);
+            text += buf;
+        }
+        ImGui::Text("%-18s%s", name.c_str(), text.c_str()); // as many values as the buffer has channels
+    }
+    const auto& pi = app.inspection();
+    if (!pi) {
+        ImGui::TextDisabled("the technique records no taps here");
+        return;
+    }
+    if (!pi->geometry) {
+        ImGui::TextDisabled("sky: no samples");
+        return;
+    }
+    int counts[5] = {};
+    for (const auto& t : pi->taps)
+        ++counts[int(t.state)];
+    ImGui::Text("%zu taps (GPU): %d open, %d occluded, %d off screen, %d behind eye, %d sky", pi->taps.size(),
+                counts[int(TapState::Open)], counts[int(TapState::Occluded)], counts[int(TapState::Offscreen)],
+                counts[int(TapState::BehindEye)], counts[int(TapState::Sky)]);
+    ImGui::Text("occlusion %.3f / %.0f, radius %.4g units -> AO %.4f", pi->occlusion, pi->normaliser, pi->radius, pi->ao);
+}
+
+} // namespace
+
+void drawInfoStrip(AppCore& app, ImVec2 pos, ImVec2 size) {
+    ImGui::SetNextWindowPos(pos);
+    ImGui::SetNextWindowSize(size);
+    ImGui::Begin("info", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar);
+    if (ImGui::BeginTable("info", 2, ImGuiTableFlags_BordersInnerV)) {
+        ImGui::TableSetupColumn("timing", ImGuiTableColumnFlags_WidthStretch, 0.45f);
+        ImGui::TableSetupColumn("inspector", ImGuiTableColumnFlags_WidthStretch, 0.55f);
+        ImGui::TableNextColumn();
+        timingSection(app);
+        ImGui::TableNextColumn();
+        inspectorSection(app);
+        ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+} // namespace ssao

@@ -1,0 +1,126 @@
+// The parameter panel, generated from the parameter table: one widget per row, greyed out when the
+// row does not apply (e.g. sigma unless the gaussian denoiser is chosen), with the radius shown in
+// world units and pixels under the AO group.
+#include "settings/params.h"
+#include "view/app_core.h"
+
+#include <cmath>
+
+namespace ssao {
+
+namespace {
+
+std::string rangeText(const Param& p) {
+    if (p.type == Param::Type::Enum) {
+        std::string r;
+        for (auto& c : p.choices)
+            r += (r.empty() ? "" : " | ") + c;
+        return r;
+    }
+    if (p.type == Param::Type::Bool) return "on | off";
+    return "[" + p.format(p.min) + ", " + p.format(p.max) + "]" + (p.unit.empty() ? "" : " " + p.unit);
+}
+
+void tooltip(const Param& p, bool applies) {
+    if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+    ImGui::TextUnformatted(p.help.c_str());
+    ImGui::TextDisabled("%s   range %s   default %s", p.key.c_str(), rangeText(p).c_str(), p.format(p.def).c_str());
+    if (!p.when.empty())
+        ImGui::TextColored(applies ? ImVec4(0.6f, 0.6f, 0.6f, 1) : ImVec4(1, 0.75f, 0.3f, 1), "applies when %s",
+                           p.whenText().c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
+// One widget for one parameter; returns true when the value changed.
+bool paramWidget(AppCore& app, const Param& p, Settings& s) {
+    ImGui::PushID(p.key.c_str());
+    const double before = p.get(s);
+    const bool applies = p.applies(s);
+    const float resetWidth = ImGui::GetFrameHeight() * 1.6f;
+    ImGui::BeginDisabled(!applies);
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.62f - resetWidth);
+    const std::string label = p.label + (p.isDefault(s) ? "" : " *"); // * marks a changed value
+    bool slider = false;
+    switch (p.type) {
+    case Param::Type::Float: {
+        float v = float(before);
+        // Ranges spanning decades (radius, bias) get a logarithmic slider.
+        ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
+        if (p.max > 100.0 * std::max(p.min, 1e-3)) flags |= ImGuiSliderFlags_Logarithmic;
+        std::string fmt = "%.4g" + (p.unit.empty() ? std::string() : " " + p.unit);
+        if (ImGui::SliderFloat(label.c_str(), &v, float(p.min), float(p.max), fmt.c_str(), flags)) p.set(s, v);
+        slider = true;
+        break;
+    }
+    case Param::Type::Int: {
+        int v = int(before);
+        ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
+        if (p.max > 1000) flags |= ImGuiSliderFlags_Logarithmic;
+        if (ImGui::SliderInt(label.c_str(), &v, int(p.min), int(p.max), "%d", flags)) p.set(s, v);
+        slider = true;
+        break;
+    }
+    case Param::Type::Bool: {
+        bool v = before != 0.0;
+        if (ImGui::Checkbox(label.c_str(), &v)) p.set(s, v ? 1 : 0);
+        break;
+    }
+    case Param::Type::Enum: {
+        if (ImGui::BeginCombo(label.c_str(), p.choices[size_t(before)].c_str())) {
+            for (size_t i = 0; i < p.choices.size(); ++i) {
+                if (ImGui::Selectable(p.choices[i].c_str(), size_t(before) == i)) p.set(s, double(i));
+                rememberRect(app, p.key + "#" + p.choices[i]);
+            }
+            ImGui::EndCombo();
+        }
+        break;
+    }
+    }
+    // Dragging a slider renders at the interactive scale until it is released (N8AO does this).
+    if (slider && ImGui::IsItemActive()) app.noteInteraction();
+    rememberRect(app, p.key);
+    ImGui::EndDisabled();
+    tooltip(p, applies);
+    ImGui::SameLine();
+    ImGui::BeginDisabled(p.isDefault(s) || !applies);
+    if (ImGui::Button("R", ImVec2(resetWidth, 0))) p.set(s, p.def);
+    ImGui::EndDisabled();
+    rememberRect(app, p.key + "#reset");
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("reset to %s", p.format(p.def).c_str());
+    ImGui::PopID();
+    return p.get(s) != before;
+}
+
+void radiusLine(AppCore& app) {
+    const RadiusInfo ri = app.renderer().radiusAtCentre();
+    ImGui::TextDisabled("scene diagonal %.4g; radius %.4g units = %.1f px at the centre", ri.sceneDiagonal, ri.world,
+                        ri.pixels);
+    rememberRect(app, "radius#info");
+    if (ri.pixels < 2.0f)
+        ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "radius under 2 pixels here: AO will be flat grey");
+    else if (ri.world > 0.25f * ri.sceneDiagonal)
+        ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "radius over 25 %% of the scene: everything occludes everything");
+}
+
+} // namespace
+
+void drawParameters(AppCore& app) {
+    std::string group;
+    Settings& s = app.settings();
+    for (const Param& p : paramTable()) {
+        if (p.group() != group) {
+            if (group == "ao") radiusLine(app);
+            group = p.group();
+            ImGui::Spacing();
+            ImGui::TextDisabled("%s", group.c_str());
+            ImGui::Separator();
+        }
+        if (paramWidget(app, p, s)) app.poke();
+    }
+}
+
+} // namespace ssao

@@ -1,0 +1,37 @@
+// The one display mapping of ssaolab: how a buffer's values become grey levels (or colours), for
+// the app's views and the PNG previews alike. Buffers with a physical range (AO in [0,1], unit
+// normals in [-1,1], colours) use it; the others (depth, positions) — or any buffer when asked —
+// get a range fitted over geometry pixels with robust percentiles (1st and 99th), so one far
+// pixel or the sky cannot wash the view out.
+#pragma once
+#include "graph/resource.h"
+#include "output/image.h"
+
+#include <string>
+
+namespace ssao {
+
+struct ViewStyle {
+    bool fit = false;        // fit the range of every buffer, not only those without a natural one
+    bool falseColor = false; // scalar buffers through a perceptual colour map instead of grey
+    bool operator==(const ViewStyle& o) const { return fit == o.fit && falseColor == o.falseColor; }
+};
+
+struct DisplayRange {
+    float lo = 0.0f, hi = 1.0f;
+    bool fitted = false;
+};
+
+// q-quantile (0..1) of `values` (reordered); NaN when empty.
+float quantile(std::vector<float>& values, double q);
+
+// The range to show `img` (raw texel values, decoded with the desc's decodeScale/Offset) with:
+// natural when the kind has one and !style.fit, else [p1, p99] of the decoded data channels over
+// pixels where `mask` (any resolution; channel 0 > 0) marks geometry.
+DisplayRange displayRange(const Image& img, const ResourceDesc& d, const Image* mask, const ViewStyle& style);
+// Whether displayRange() needs the buffer's pixels (false: the natural range is used).
+bool needsFit(const ResourceDesc& d, const ViewStyle& style);
+// "0.25 .. 7.9 scene units (fitted)" — printed on the view.
+std::string rangeText(const DisplayRange& r, const ResourceDesc& d);
+
+} // namespace ssao

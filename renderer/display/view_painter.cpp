@@ -1,0 +1,63 @@
+#include "display/view_painter.h"
+
+#include "gl/shader_library.h"
+
+#include "../../shaders/include/bindings.h"
+
+namespace ssao {
+
+const Image& ViewPainter::maskImage(const Resource& mask) {
+    if (mask.version != maskVersion_ || mask.generation != maskGeneration_ || mask_.width != mask.width()) {
+        mask_ = readBack(mask.texture, 1);
+        maskVersion_ = mask.version;
+        maskGeneration_ = mask.generation;
+    }
+    return mask_;
+}
+
+DisplayRange ViewPainter::paint(const Resource& r, const Resource& mask, const ViewStyle& style,
+                                gl::RenderTarget& out, gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri) {
+    const ResourceDesc& d = r.desc;
+    DisplayRange range;
+    if (needsFit(d, style))
+        range = displayRange(readBack(r.texture, std::max(1, d.channels)), d, &maskImage(mask), style);
+    else
+        range = displayRange(Image{}, d, nullptr, style);
+    out.ensure(r.width(), r.height(), GL_RGBA8, "view." + d.name);
+    out.bind();
+    const GLuint prog = shaders.program("passes/fullscreen.vert", "display/view.frag");
+    glUseProgram(prog);
+    const int mode = d.display == Display::Color                                        ? SSAO_VIEW_COLOR
+                     : (d.display == Display::Vector || d.display == Display::Direction) ? SSAO_VIEW_VECTOR
+                                                                                        : SSAO_VIEW_SCALAR;
+    glProgramUniform1i(prog, 0, mode);
+    glProgramUniform2f(prog, 1, range.lo, range.hi);
+    glProgramUniform1i(prog, 2, style.falseColor ? 1 : 0);
+    glProgramUniform2f(prog, 3, d.decodeScale, d.decodeOffset);
+    glProgramUniform1f(prog, 4, 1.0f);
+    r.texture.bind(SSAO_TEX_VIEW_SOURCE);
+    mask.texture.bind(SSAO_TEX_VIEW_MASK);
+    tri.draw();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return range;
+}
+
+void ViewPainter::paintDifference(const Resource& a, const Resource& b, float scale, const Resource& mask,
+                                  gl::RenderTarget& out, gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri) {
+    out.ensure(a.width(), a.height(), GL_RGBA8, "view.diff." + a.desc.name);
+    out.bind();
+    const GLuint prog = shaders.program("passes/fullscreen.vert", "display/view.frag");
+    glUseProgram(prog);
+    glProgramUniform1i(prog, 0, SSAO_VIEW_DIFF);
+    glProgramUniform2f(prog, 1, 0.0f, 1.0f);
+    glProgramUniform1i(prog, 2, 0);
+    glProgramUniform2f(prog, 3, a.desc.decodeScale, a.desc.decodeOffset);
+    glProgramUniform1f(prog, 4, scale);
+    a.texture.bind(SSAO_TEX_VIEW_SOURCE);
+    b.texture.bind(SSAO_TEX_VIEW_SOURCE_B);
+    mask.texture.bind(SSAO_TEX_VIEW_MASK);
+    tri.draw();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+} // namespace ssao

@@ -1,0 +1,33 @@
+// Paints a buffer of the frame graph into a displayable RGBA8 image with the mapping of
+// display_range.h (shaders/display/view.frag). The app's views and the PNG previews both come
+// from here, so they can never disagree.
+#pragma once
+#include "display/display_range.h"
+#include "gl/resources.h"
+#include "graph/resource.h"
+
+namespace ssao {
+
+namespace gl {
+class ShaderLibrary;
+}
+
+class ViewPainter {
+  public:
+    // Paints `r` into `out` (resized to r's size); `mask` marks geometry (gbuffer.depth > 0).
+    // Reads `r` back first when its range must be fitted. Returns the range used.
+    DisplayRange paint(const Resource& r, const Resource& mask, const ViewStyle& style, gl::RenderTarget& out,
+                       gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri);
+    // Signed difference (a - b) * scale of two same-kind buffers, red where a is larger, blue where
+    // b is, grey where equal.
+    void paintDifference(const Resource& a, const Resource& b, float scale, const Resource& mask,
+                         gl::RenderTarget& out, gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri);
+
+  private:
+    const Image& maskImage(const Resource& mask);
+    Image mask_;
+    uint64_t maskVersion_ = 0;
+    unsigned maskGeneration_ = 0;
+};
+
+} // namespace ssao

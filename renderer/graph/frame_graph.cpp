@@ -1,0 +1,323 @@
+#include "graph/frame_graph.h"
+
+#include "scene/camera.h"
+#include "settings/params.h"
+#include "util/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+namespace ssao {
+
+int scaledSize(int base, float scale) {
+    return std::max(1, int(std::ceil(double(base) * double(scale) - 1e-9)));
+}
+
+bool isDepthFormat(GLenum f) {
+    return f == GL_DEPTH_COMPONENT32F || f == GL_DEPTH_COMPONENT24 || f == GL_DEPTH_COMPONENT16;
+}
+
+std::vector<std::string> FrameReport::ran() const {
+    std::vector<std::string> out;
+    for (const auto& p : passes)
+        if (p.ran) out.push_back(p.name);
+    return out;
+}
+
+PassDecl FrameGraph::declare(const Pass& p, const Settings& s) {
+    PassDecl d;
+    PassBuilder b(d);
+    p.setup(b, s);
+    return d;
+}
+
+std::vector<size_t> FrameGraph::order(const std::vector<std::string>& names, const std::vector<PassDecl>& decls) {
+    std::map<std::string, size_t> producer;
+    for (size_t i = 0; i < decls.size(); ++i)
+        for (const auto& w : decls[i].writes) {
+            auto [it, fresh] = producer.emplace(w.name, i);
+            if (!fresh)
+                throw Error("frame graph: resource '" + w.name + "' is written by both '" + names[it->second] +
+                            "' and '" + names[i] + "'");
+        }
+    // deps[i]: the producers node i waits for.
+    std::vector<std::set<size_t>> deps(decls.size());
+    for (size_t i = 0; i < decls.size(); ++i)
+        for (const auto& r : decls[i].reads) {
+            auto it = producer.find(r);
+            if (it == producer.end())
+                throw Error("frame graph: pass '" + names[i] + "' reads '" + r + "', which no pass writes");
+            if (it->second == i)
+                throw Error("frame graph: pass '" + names[i] + "' reads its own output '" + r + "' (a cycle)");
+            deps[i].insert(it->second);
+        }
+    // Kahn's algorithm, always taking the earliest-registered ready node: a stable, readable order.
+    std::vector<size_t> out;
+    std::vector<bool> done(decls.size(), false);
+    while (out.size() < decls.size()) {
+        size_t pick = decls.size();
+        for (size_t i = 0; i < decls.size() && pick == decls.size(); ++i) {
+            if (done[i]) continue;
+            bool ready = true;
+            for (size_t d : deps[i])
+                ready &= bool(done[d]);
+            if (ready) pick = i;
+        }
+        if (pick == decls.size()) {
+            // Every remaining node waits on another remaining one: walk the waits to name the cycle.
+            size_t at = 0;
+            while (done[at])
+                ++at;
+            std::vector<size_t> path;
+            while (std::find(path.begin(), path.end(), at) == path.end()) {
+                path.push_back(at);
+                for (size_t d : deps[at])
+                    if (!done[d]) {
+                        at = d;
+                        break;
+                    }
+            }
+            std::string text;
+            std::string via;
+            for (auto it = std::find(path.begin(), path.end(), at); it != path.end(); ++it)
+                text += "'" + names[*it] + "' <- ";
+            text += "'" + names[at] + "'";
+            for (const auto& r : decls[path.back()].reads)
+                if (producer.count(r) && producer[r] == at) via = r;
+            throw Error("frame graph: cycle " + text + " (through resource '" + via + "')");
+        }
+        done[pick] = true;
+        out.push_back(pick);
+    }
+    return out;
+}
+
+std::string FrameGraph::resolve(const std::string& name) const {
+    std::string n = name;
+    for (int hops = 0; hops < 16; ++hops) {
+        auto it = aliases_.find(n);
+        if (it == aliases_.end()) return n;
+        n = it->second;
+    }
+    throw Error("frame graph: alias loop at '" + name + "'");
+}
+
+void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::string, std::string>& aliases, int w,
+                         int h) {
+    aliases_ = aliases;
+    std::vector<std::string> names;
+    std::vector<PassDecl> decls;
+    for (const Node& n : nodes) {
+        names.push_back(n.pass->name());
+        decls.push_back(declare(*n.pass, *n.settings));
+        for (auto& r : decls.back().reads)
+            r = resolve(r);
+    }
+    const std::vector<size_t> idx = order(names, decls);
+    nodes_.clear();
+    order_.clear();
+    for (size_t i : idx) {
+        nodes_.push_back({nodes[i].pass, nodes[i].settings, decls[i]});
+        order_.push_back(names[i]);
+    }
+    // Allocate (or keep) every declared resource; free the ones no pass writes any more.
+    std::set<std::string> live;
+    for (const Compiled& n : nodes_)
+        for (const ResourceDesc& d : n.decl.writes) {
+            live.insert(d.name);
+            const int rw = scaledSize(w, d.scale), rh = scaledSize(h, d.scale);
+            Resource& r = resources_[d.name];
+            r.producer = n.pass->name();
+            if (!r.texture || r.texture.width() != rw || r.texture.height() != rh || r.texture.format() != d.format) {
+                r.texture = gl::Texture2D(rw, rh, d.format, d.name);
+                ++r.generation;
+                r.version = 0;
+            }
+            r.desc = d;
+        }
+    for (auto it = resources_.begin(); it != resources_.end();)
+        it = live.count(it->first) ? std::next(it) : resources_.erase(it);
+    for (auto it = keys_.begin(); it != keys_.end();)
+        it = std::count(order_.begin(), order_.end(), it->first) ? std::next(it) : keys_.erase(it);
+}
+
+namespace {
+std::string cameraKey(const Camera& c) {
+    char buf[400];
+    std::snprintf(buf, sizeof buf, "|cam%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a", c.eye.x, c.eye.y, c.eye.z, c.target.x,
+                  c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg, c.nearZ, c.farZ);
+    return buf;
+}
+} // namespace
+
+FrameReport FrameGraph::execute(const FrameInfo& frame, gl::ShaderLibrary& shaders,
+                                const gl::FullscreenTriangle& tri) {
+    std::map<const Settings*, nlohmann::json> json; // each branch's settings serialised once
+    FrameReport report;
+    std::vector<gl::GpuTimer*> timers;
+    for (Compiled& n : nodes_) {
+        const std::string& name = n.pass->name();
+        auto js = json.find(n.settings);
+        if (js == json.end()) js = json.emplace(n.settings, toJson(*n.settings)).first;
+        std::string key = std::to_string(frame.width) + "x" + std::to_string(frame.height);
+        for (const auto& g : n.decl.groups) {
+            if (!js->second.contains(g)) throw Error("pass '" + name + "' reads unknown settings group '" + g + "'");
+            key += "|" + g + "=" + js->second.at(g).dump();
+        }
+        if (n.decl.scene) key += "|scene" + std::to_string(frame.sceneVersion);
+        if (n.decl.camera) key += cameraKey(*frame.camera);
+        for (const auto& r : n.decl.reads)
+            key += "|" + r + "@" + std::to_string(get(r).version);
+        for (const auto& w : n.decl.writes) {
+            const Resource& res = get(w.name);
+            key += "|w:" + w.name + "#" + std::to_string(res.generation);
+        }
+        PassReport pr{name};
+        auto it = keys_.find(name);
+        if (it == keys_.end() || it->second != key) {
+            gl::GpuTimer& t = timers_[name];
+            glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name.c_str());
+            t.begin();
+            PassContext ctx(*this, *n.settings, frame, shaders, tri, name);
+            n.pass->execute(ctx);
+            t.end();
+            glPopDebugGroup();
+            for (const auto& w : n.decl.writes)
+                resources_.at(w.name).version = nextVersion_++;
+            keys_[name] = std::move(key);
+            pr.ran = true;
+            timers.push_back(&t);
+        } else {
+            timers.push_back(nullptr);
+        }
+        report.passes.push_back(pr);
+    }
+    for (size_t i = 0; i < timers.size(); ++i)
+        if (timers[i]) report.passes[i].gpuMs = timers[i]->resultMs();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return report;
+}
+
+std::vector<const Resource*> FrameGraph::resources(bool includeInternal) const {
+    std::vector<const Resource*> out;
+    for (const Compiled& n : nodes_)
+        for (const auto& w : n.decl.writes) {
+            const Resource& r = resources_.at(w.name);
+            if (includeInternal || !r.desc.internal) out.push_back(&r);
+        }
+    return out;
+}
+
+const Resource* FrameGraph::find(const std::string& name) const {
+    auto it = resources_.find(resolve(name));
+    return it == resources_.end() ? nullptr : &it->second;
+}
+
+const Resource& FrameGraph::get(const std::string& name) const {
+    const Resource* r = find(name);
+    if (!r) throw Error("frame graph: no resource named '" + name + "'");
+    return *r;
+}
+
+const PassDecl* FrameGraph::declaration(const std::string& pass) const {
+    for (const Compiled& n : nodes_)
+        if (n.pass->name() == pass) return &n.decl;
+    return nullptr;
+}
+
+Pass* FrameGraph::pass(const std::string& name) const {
+    for (const Compiled& n : nodes_)
+        if (n.pass->name() == name) return n.pass;
+    return nullptr;
+}
+
+const Settings* FrameGraph::settingsOf(const std::string& pass) const {
+    for (const Compiled& n : nodes_)
+        if (n.pass->name() == pass) return n.settings;
+    return nullptr;
+}
+
+void FrameGraph::bindOutputs(const std::string& pass, const std::vector<std::string>& names) {
+    std::string key = pass;
+    std::vector<unsigned> gens;
+    for (const auto& n : names) {
+        key += "|" + n;
+        gens.push_back(get(n).generation);
+    }
+    auto it = fbos_.find(key);
+    if (it == fbos_.end() || fboGenerations_[key] != gens) {
+        std::vector<const gl::Texture2D*> colors;
+        const gl::Texture2D* depth = nullptr;
+        for (const auto& n : names) {
+            const Resource& r = get(n);
+            if (isDepthFormat(r.desc.format))
+                depth = &r.texture;
+            else
+                colors.push_back(&r.texture);
+        }
+        fbos_[key] = gl::Framebuffer(colors, depth, key);
+        fboGenerations_[key] = gens;
+        it = fbos_.find(key);
+    }
+    it->second.bind();
+}
+
+// ---- PassContext ----------------------------------------------------------------------------
+
+namespace {
+bool declared(const PassDecl* d, const std::string& name) {
+    if (!d) return false;
+    for (const auto& r : d->reads)
+        if (r == name) return true;
+    for (const auto& w : d->writes)
+        if (w.name == name) return true;
+    return false;
+}
+} // namespace
+
+const gl::Texture2D& PassContext::in(const std::string& name) const {
+    const std::string r = graph_.resolve(name);
+    if (!declared(graph_.declaration(pass_), r))
+        throw Error("pass '" + pass_ + "' uses '" + name + "' without declaring it");
+    return graph_.get(r).texture;
+}
+
+const ResourceDesc& PassContext::desc(const std::string& name) const {
+    return graph_.get(name).desc;
+}
+
+void PassContext::bindOutputs(const std::vector<std::string>& names) const {
+    for (const auto& n : names)
+        if (!declared(graph_.declaration(pass_), n))
+            throw Error("pass '" + pass_ + "' writes '" + n + "' without declaring it");
+    graph_.bindOutputs(pass_, names);
+}
+
+glm::ivec2 PassContext::size(const std::string& name) const {
+    const Resource& r = graph_.get(name);
+    return {r.width(), r.height()};
+}
+
+void PassContext::drawFullscreen() const {
+    triangle_.draw();
+}
+
+const char* tapStateName(TapState s) {
+    switch (s) {
+    case TapState::Open:
+        return "open";
+    case TapState::Occluded:
+        return "occluded";
+    case TapState::BehindEye:
+        return "behind eye";
+    case TapState::Offscreen:
+        return "off screen";
+    case TapState::Sky:
+        return "sky";
+    }
+    return "?";
+}
+
+} // namespace ssao

@@ -1,0 +1,79 @@
+// The frame graph: passes declare what they read and write (graph/pass.h); compile() orders them
+// so producers run first and allocates every resource at its declared size; execute() runs a pass
+// only when its key changed — the settings groups it reads, the scene and camera if it uses them,
+// the base size, and the versions of the resources it reads. A missing producer, two producers of
+// one resource or a cycle is an ssao::Error naming the resource.
+#pragma once
+#include "gl/resources.h"
+#include "graph/pass.h"
+
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ssao {
+
+struct PassReport {
+    std::string name;
+    bool ran = false;
+    double gpuMs = -1.0; // GL_TIME_ELAPSED of this frame's run; -1 when skipped
+};
+
+struct FrameReport {
+    std::vector<PassReport> passes; // in execution order
+    std::vector<std::string> ran() const;
+};
+
+class FrameGraph {
+  public:
+    struct Node {
+        Pass* pass;
+        const Settings* settings; // of the pass's branch
+    };
+
+    // Declares every node (setup), resolves reads through `aliases` (name → the resource it
+    // stands for), orders the nodes and (re)allocates resources for a base size of w x h.
+    void compile(const std::vector<Node>& nodes, const std::map<std::string, std::string>& aliases, int w,
+                 int h);
+    FrameReport execute(const FrameInfo& frame, gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri);
+    // Forgets every pass key: the next execute() runs every pass.
+    void invalidate() { keys_.clear(); }
+
+    // Pure ordering (testable without GL): the node indices in execution order.
+    static std::vector<size_t> order(const std::vector<std::string>& names, const std::vector<PassDecl>& decls);
+    static PassDecl declare(const Pass& p, const Settings& s);
+
+    const std::vector<std::string>& passOrder() const { return order_; }
+    // Resources in the order their producers run; internal ones only when asked.
+    std::vector<const Resource*> resources(bool includeInternal = false) const;
+    const Resource* find(const std::string& name) const; // follows aliases; null if unknown
+    const Resource& get(const std::string& name) const;  // throws naming the resource
+    const PassDecl* declaration(const std::string& pass) const;
+    Pass* pass(const std::string& name) const;
+    const Settings* settingsOf(const std::string& pass) const;
+    std::string resolve(const std::string& name) const;
+
+    // Used by PassContext.
+    void bindOutputs(const std::string& pass, const std::vector<std::string>& names);
+
+  private:
+    struct Compiled {
+        Pass* pass;
+        const Settings* settings;
+        PassDecl decl;
+    };
+    std::vector<Compiled> nodes_; // in execution order
+    std::vector<std::string> order_;
+    std::map<std::string, std::string> aliases_;
+    std::map<std::string, Resource> resources_;
+    std::map<std::string, std::string> keys_;         // pass name → key of its last run
+    std::map<std::string, gl::GpuTimer> timers_;      // pass name → timer
+    std::map<std::string, gl::Framebuffer> fbos_;     // "pass|out1|out2" → framebuffer
+    std::map<std::string, std::vector<unsigned>> fboGenerations_;
+    uint64_t nextVersion_ = 1;
+};
+
+} // namespace ssao

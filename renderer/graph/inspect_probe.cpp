@@ -1,0 +1,78 @@
+#include "graph/inspect_probe.h"
+
+#include "../../shaders/include/bindings.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+namespace ssao {
+
+namespace {
+constexpr size_t kBytes = sizeof(gpu::InspectHeader) + SSAO_INSPECT_MAX_TAPS * sizeof(gpu::InspectTap);
+}
+
+void InspectProbe::begin(glm::ivec2 pixel, glm::ivec2 size) {
+    if (!ssbo_) {
+        GLuint id = 0;
+        glCreateBuffers(1, &id);
+        ssbo_ = gl::BufferHandle(id);
+        glNamedBufferStorage(id, GLsizeiptr(kBytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+        gl::label(GL_BUFFER, id, "inspector.record");
+    }
+    if (!fbo_ || fboSize_ != size) {
+        // No attachments (GL 4.3): the fragment shader runs for its side effects only.
+        GLuint id = 0;
+        glCreateFramebuffers(1, &id);
+        fbo_ = gl::FramebufferHandle(id);
+        glNamedFramebufferParameteri(id, GL_FRAMEBUFFER_DEFAULT_WIDTH, size.x);
+        glNamedFramebufferParameteri(id, GL_FRAMEBUFFER_DEFAULT_HEIGHT, size.y);
+        gl::label(GL_FRAMEBUFFER, id, "inspector.probe");
+        fboSize_ = size;
+    }
+    pixel_ = {pixel.x, size.y - 1 - pixel.y}; // GL window coordinates: origin bottom-left
+    size_ = size;
+    gpu::InspectHeader head{};
+    head.pixelCount = {pixel_.x, pixel_.y, 0, 0};
+    glNamedBufferSubData(ssbo_.id(), 0, sizeof head, &head);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSAO_SSBO_INSPECT, ssbo_.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, size.x, size.y);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(pixel_.x, pixel_.y, 1, 1);
+}
+
+void InspectProbe::end(PixelInspection& out) {
+    glDisable(GL_SCISSOR_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<unsigned char> bytes(kBytes);
+    glGetNamedBufferSubData(ssbo_.id(), 0, GLsizeiptr(kBytes), bytes.data());
+    gpu::InspectHeader head;
+    std::memcpy(&head, bytes.data(), sizeof head);
+    out = PixelInspection{};
+    out.pixel = {pixel_.x, size_.y - 1 - pixel_.y};
+    out.geometry = head.pixelCount.w != 0;
+    out.ao = head.result.x;
+    out.occlusion = head.result.y;
+    out.normaliser = head.result.z;
+    out.radius = head.result.w;
+    out.position = glm::vec3(head.position);
+    out.normal = glm::vec3(head.normal);
+    const int recorded = head.pixelCount.z;
+    out.truncated = recorded > SSAO_INSPECT_MAX_TAPS;
+    const gpu::InspectTap* taps = reinterpret_cast<const gpu::InspectTap*>(bytes.data() + sizeof head);
+    for (int i = 0; i < std::min(recorded, SSAO_INSPECT_MAX_TAPS); ++i) {
+        InspectTap t;
+        t.viewPos = glm::vec3(taps[i].posContribution);
+        t.contribution = taps[i].posContribution.w;
+        t.uv = glm::vec2(taps[i].uvStateSet);
+        t.state = TapState(int(taps[i].uvStateSet.z));
+        t.set = int(taps[i].uvStateSet.w);
+        out.taps.push_back(t);
+    }
+}
+
+} // namespace ssao

@@ -1,0 +1,49 @@
+// A named GPU buffer of the frame graph ("gbuffer.depth", "ao.raw", "composite"): its format,
+// its size relative to the graph's base size, and how to show it. Everything that lists buffers
+// (the app's grid and inspector, EXR/PNG output, metrics.json) enumerates these.
+#pragma once
+#include "gl/resources.h"
+
+#include <cstdint>
+#include <string>
+
+namespace ssao {
+
+// How a buffer maps to a displayable image (display/view_renderer.h).
+enum class Display {
+    Color,     // rgb shown as is (albedo, composite)
+    Unit,      // one scalar with a physical range [0,1] (AO)
+    Scalar,    // one scalar with no natural range (depth): range auto-fitted over geometry
+    Direction, // unit vectors, natural range [-1,1] per channel (normals)
+    Vector,    // vectors with no natural range (positions): one range auto-fitted over xyz
+};
+
+struct ResourceDesc {
+    std::string name;
+    GLenum format = GL_R32F;
+    int channels = 1;   // channels that carry data (readback, EXR, inspector)
+    float scale = 1.0f; // size relative to the graph's base size (AO at half resolution: 0.5)
+    Display display = Display::Unit;
+    std::string unit;      // of the values, e.g. "scene units"
+    std::string help;      // one line for tooltips and the README
+    bool internal = false; // scratch data (ping-pong): not listed, written or reported
+    // Stored value → meaning: value * decodeScale + decodeOffset ((n+1)/2 normals: 2, -1).
+    float decodeScale = 1.0f, decodeOffset = 0.0f;
+};
+
+// Size of a resource of scale `scale` in a graph of base size w x h (rounded up, at least 1).
+int scaledSize(int base, float scale);
+
+struct Resource {
+    ResourceDesc desc;
+    gl::Texture2D texture;
+    std::string producer;  // pass that writes it
+    uint64_t version = 0;  // changes every time the producer runs (never reused)
+    unsigned generation = 0; // changes when the texture is reallocated
+    int width() const { return texture.width(); }
+    int height() const { return texture.height(); }
+};
+
+bool isDepthFormat(GLenum format);
+
+} // namespace ssao

@@ -1,0 +1,55 @@
+#include "passes/denoise_pass.h"
+
+#include "gl/shader_library.h"
+#include "passes/denoise_weights.h"
+#include "techniques/ao_common.h"
+
+namespace ssao {
+
+void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
+    b.read(branch().res("ao.raw"));
+    ResourceDesc tmp;
+    tmp.name = branch().res("denoise.tmp");
+    tmp.format = GL_R32F;
+    tmp.scale = resolutionScale(s.ao.resolution);
+    tmp.internal = true;
+    b.write(tmp);
+    ResourceDesc out;
+    out.name = branch().res("ao.denoised");
+    out.format = GL_R32F;
+    out.display = Display::Unit;
+    out.help = "AO after the denoise stage, at full resolution (what the composite uses)";
+    b.write(out);
+    b.settings("denoise");
+}
+
+void DenoisePass::execute(PassContext& ctx) {
+    if (!linear_) {
+        GLuint id = 0;
+        glCreateSamplers(1, &id);
+        linear_ = gl::SamplerHandle(id);
+        glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+    const std::string raw = branch().res("ao.raw"), tmp = branch().res("denoise.tmp"),
+                      out = branch().res("ao.denoised");
+    const bool upsample = ctx.size(tmp) != ctx.size(out);
+    glUseProgram(ctx.shaders.program("passes/fullscreen.vert", "passes/denoise.frag"));
+    for (int dir = 0; dir < 2; ++dir) {
+        if (!ubo_[dir])
+            ubo_[dir] = gl::UniformBuffer(sizeof(gpu::DenoiseConstants), name() + (dir ? ".y" : ".x") + ".constants");
+        const gpu::DenoiseConstants c = packDenoiseConstants(ctx.settings.denoise, dir);
+        ubo_[dir].upload(&c, sizeof c);
+        ubo_[dir].bind(SSAO_UBO_DENOISE);
+        ctx.in(dir == 0 ? raw : tmp).bind(SSAO_TEX_AO);
+        // Reduced-resolution AO is brought to full size bilinearly by the y pass.
+        glBindSampler(SSAO_TEX_AO, dir == 1 && upsample ? linear_.id() : 0);
+        ctx.bindOutputs({dir == 0 ? tmp : out});
+        ctx.drawFullscreen();
+    }
+    glBindSampler(SSAO_TEX_AO, 0);
+}
+
+} // namespace ssao

@@ -1,0 +1,20 @@
+// The denoise stage: a separable filter of the raw AO (box 4x4 of seed 004 or gaussian of seed 003),
+// x pass at the AO's resolution, y pass at full resolution — so reduced-resolution AO is
+// upsampled (bilinearly) here. It may read depth and normals (the bilateral denoiser will).
+#pragma once
+#include "graph/pass.h"
+
+namespace ssao {
+
+class DenoisePass final : public Pass {
+  public:
+    explicit DenoisePass(const Branch& b) : Pass(b.res("denoise"), b) {}
+    void setup(PassBuilder& b, const Settings& s) const override;
+    void execute(PassContext& ctx) override;
+
+  private:
+    gl::UniformBuffer ubo_[2];
+    gl::SamplerHandle linear_;
+};
+
+} // namespace ssao

@@ -1,0 +1,31 @@
+#include "passes/denoise_weights.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ssao {
+
+gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int direction) {
+    gpu::DenoiseConstants c{};
+    int count = 0;
+    if (d.kind == DenoiseKind::Box4) {
+        for (int i = -2; i <= 1; ++i)
+            c.offsetsWeights[count++] = {float(i), 0.25f, 0.0f, 0.0f};
+    } else if (d.kind == DenoiseKind::Gaussian) {
+        const int r = std::clamp(d.halfWidth, 0, (SSAO_MAX_DENOISE_TAPS - 1) / 2);
+        float sum = 0.0f;
+        for (int i = -r; i <= r; ++i) {
+            float w = std::exp(-float(i * i) / (2.0f * d.sigma * d.sigma));
+            c.offsetsWeights[count++] = {float(i) * d.spacing, w, 0.0f, 0.0f};
+            sum += w;
+        }
+        for (int i = 0; i < count; ++i)
+            c.offsetsWeights[i].y /= sum;
+    } else {
+        c.offsetsWeights[count++] = {0.0f, 1.0f, 0.0f, 0.0f};
+    }
+    c.taps = {count, direction, 0, 0};
+    return c;
+}
+
+} // namespace ssao

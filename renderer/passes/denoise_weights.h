@@ -1,0 +1,13 @@
+// Denoise settings → the 1-D kernel of one separable pass (pure, tested without a GPU).
+#pragma once
+#include "settings/settings.h"
+
+#include "../../shaders/include/bindings.h"
+
+namespace ssao {
+
+// Direction 0 = x, 1 = y. Box4 → taps -2..1, weight 1/4 (seed 004); gaussian → taps -r..r at
+// `spacing` pixels, weights exp(-i²/(2σ²)) normalised; none → the centre tap (a copy).
+gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int direction);
+
+} // namespace ssao

@@ -1,0 +1,24 @@
+// Settings → the AoCommon block every technique's constants start with (bindings.h), and the
+// radius arithmetic the UI and reports show. Pure functions, tested without a GPU.
+#pragma once
+#include "settings/settings.h"
+
+#include "../../shaders/include/bindings.h"
+
+#include <glm/glm.hpp>
+
+namespace ssao {
+
+// Scene units covered by one pixel at unit view depth, for a G-buffer `heightPx` tall.
+float unitsPerPixelAtUnitDepth(const glm::mat4& proj, int heightPx);
+// Size factor of an AO resolution (full 1, half 0.5, quarter 0.25).
+float resolutionScale(AoResolution r);
+
+// World radius at a pixel `depth` scene units away (screen mode depends on depth; the others not).
+float worldRadius(const AoSettings& s, float sceneDiagonal, float depth, float unitsPerPixel);
+// The radius in pixels of the G-buffer at view depth `depth`.
+float radiusInPixels(const AoSettings& s, float sceneDiagonal, float depth, float unitsPerPixel);
+
+gpu::AoCommon packAoCommon(const AoSettings& s, float sceneDiagonal, float unitsPerPixel, glm::ivec2 target);
+
+} // namespace ssao

@@ -1,0 +1,15 @@
+// Kernel SSAO settings → its GPU constants (shaders/techniques/kernel/layout.h): the one pure
+// function between what a person sets and what the shader reads (XeGTAO's GTAOUpdateConstants).
+#pragma once
+#include "settings/settings.h"
+
+#include "../../../shaders/include/bindings.h"
+#include "../../../shaders/techniques/kernel/layout.h"
+
+namespace ssao {
+
+// `common` comes from packAoCommon (radius, power, target size); `normalUnorm` when the
+// normal target stores (n+1)/2.
+gpu::KernelConstants packKernelConstants(const KernelSettings& s, const gpu::AoCommon& common, bool normalUnorm);
+
+} // namespace ssao

@@ -1,0 +1,7 @@
+// Kernel SSAO (the seed articles): the module's entry for the technique registry.
+#pragma once
+#include "techniques/technique.h"
+
+namespace ssao {
+TechniqueInfo kernelTechnique();
+} // namespace ssao

@@ -1,0 +1,23 @@
+// The list of AO techniques. Adding one: its folder, one member in technique_settings.h and
+// one entry here.
+#include "techniques/kernel/technique.h"
+#include "techniques/technique.h"
+#include "util/error.h"
+
+namespace ssao {
+
+const std::vector<TechniqueInfo>& techniques() {
+    static const std::vector<TechniqueInfo> list = {kernelTechnique()};
+    return list;
+}
+
+const TechniqueInfo& findTechnique(const std::string& id) {
+    std::string known;
+    for (const auto& t : techniques()) {
+        if (t.id == id) return t;
+        known += (known.empty() ? "" : "|") + t.id;
+    }
+    throw Error("unknown AO technique '" + id + "' (known: " + known + ")");
+}
+
+} // namespace ssao

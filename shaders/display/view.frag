@@ -1,0 +1,52 @@
+#version 450 core
+// Maps one buffer to a displayable RGBA8 image (renderer/display/display_range.h decides the
+// range). NaN and inf show as magenta so a numerical bug is impossible to miss; sky is dark grey.
+#include "include/bindings.h"
+
+layout(binding = SSAO_TEX_VIEW_SOURCE) uniform sampler2D src;
+layout(binding = SSAO_TEX_VIEW_SOURCE_B) uniform sampler2D srcB;
+layout(binding = SSAO_TEX_VIEW_MASK) uniform sampler2D mask; // gbuffer.depth: > 0 on geometry
+layout(location = 0) uniform int uMode;
+layout(location = 1) uniform vec2 uRange;    // lo, hi: lo → 0, hi → 1
+layout(location = 2) uniform int uFalseColor;
+layout(location = 3) uniform vec2 uDecode;   // stored * x + y = value ((n+1)/2 normals: 2, -1)
+layout(location = 4) uniform float uDiffScale;
+
+in vec2 vUv;
+layout(location = 0) out vec4 oColor;
+
+// Viridis (van der Walt & Smith, matplotlib 2015) through its quarter-point colours: perceptually
+// uniform and readable by colour-blind users.
+vec3 viridis(float t) {
+    const vec3 c[5] = vec3[5](vec3(0.267, 0.005, 0.329), vec3(0.231, 0.322, 0.545), vec3(0.129, 0.569, 0.549),
+                              vec3(0.369, 0.788, 0.384), vec3(0.992, 0.906, 0.145));
+    float x = clamp(t, 0.0, 1.0) * 4.0;
+    int i = min(int(x), 3);
+    return mix(c[i], c[i + 1], x - float(i));
+}
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec4 v = texelFetch(src, p, 0);
+    bool geometry = texture(mask, vUv).r > 0.0; // the mask may have another resolution
+    if (uMode == SSAO_VIEW_DIFF) v = (v - texture(srcB, vUv)) * uDecode.x; // B may have another size
+    if (any(isnan(v)) || any(isinf(v))) {
+        oColor = vec4(1.0, 0.0, 1.0, 1.0);
+        return;
+    }
+    vec3 c;
+    float span = max(uRange.y - uRange.x, 1e-30);
+    if (uMode == SSAO_VIEW_COLOR) {
+        c = v.rgb;
+    } else if (uMode == SSAO_VIEW_VECTOR) {
+        c = ((v.rgb * uDecode.x + uDecode.y) - uRange.x) / span;
+    } else if (uMode == SSAO_VIEW_DIFF) {
+        float d = clamp(v.r * uDiffScale, -1.0, 1.0);
+        c = d >= 0.0 ? mix(vec3(0.5), vec3(1.0, 0.15, 0.1), d) : mix(vec3(0.5), vec3(0.1, 0.35, 1.0), -d);
+    } else {
+        float t = ((v.r * uDecode.x + uDecode.y) - uRange.x) / span;
+        c = uFalseColor != 0 ? viridis(t) : vec3(t);
+    }
+    if (!geometry && uMode != SSAO_VIEW_COLOR) c = vec3(0.12);
+    oColor = vec4(clamp(c, 0.0, 1.0), 1.0);
+}

@@ -1,0 +1,24 @@
+#version 450 core
+// One direction of the separable denoise filter (box 4x4 of seed 004 or gaussian of seed 003).
+// Both 2-D kernels are products of 1-D ones and clamp-to-edge is per axis, so two passes give
+// exactly the seeds' double loop. Offsets are in texels of the input, so the y pass can read a
+// reduced-resolution x result (bilinearly) and upsample. No NaN scrubbing here: a NaN from the AO
+// pass must stay visible.
+#include "include/bindings.h"
+
+layout(std140, binding = SSAO_UBO_DENOISE) uniform DenoiseBlock { DenoiseConstants_ denoise; };
+layout(binding = SSAO_TEX_AO) uniform sampler2D aoIn;
+
+in vec2 vUv;
+layout(location = 0) out float oAO;
+
+void main() {
+    vec2 texel = 1.0 / vec2(textureSize(aoIn, 0));
+    vec2 dir = denoise.taps.y == 0 ? vec2(texel.x, 0.0) : vec2(0.0, texel.y);
+    float sum = 0.0;
+    for (int i = 0; i < denoise.taps.x; ++i) {
+        vec4 ow = denoise.offsetsWeights[i];
+        sum += texture(aoIn, vUv + dir * ow.x).r * ow.y;
+    }
+    oAO = sum;
+}

@@ -1,0 +1,108 @@
+#version 450 core
+// Kernel SSAO as the seeds describe it (000, 001, 003, 004), with every variant selectable
+// through KernelConstants and every numerical trap guarded (research-accuracy.md §4).
+#include "include/bindings.h"
+#include "techniques/kernel/layout.h"
+#include "include/frame.glsl"
+#include "include/onb.glsl"
+#include "include/ao_common.glsl"
+#include "include/inspect.glsl"
+
+layout(std140, binding = SSAO_UBO_AO) uniform KernelBlock { KernelConstants_ ssao; };
+layout(binding = SSAO_TEX_POSITION) uniform sampler2D gPosition;
+layout(binding = SSAO_TEX_NORMAL) uniform sampler2D gNormal;
+layout(binding = SSAO_TEX_DEPTH) uniform sampler2D gDepth;
+layout(binding = KERNEL_TEX_NOISE) uniform sampler2D texNoise;
+
+in vec2 vUv;
+layout(location = 0) out float oAO;
+
+bool hasFlag(int f) { return (ssao.modes.w & f) != 0; }
+
+// View-space position at uv; w = 0 where there is no geometry (sky).
+vec4 viewPosition(vec2 uv) {
+    if (hasFlag(KERNEL_FLAG_POS_FROM_DEPTH)) {
+        float d = texture(gDepth, uv).r;
+        if (d >= 1.0) return vec4(0.0);
+        // Seed 000: z_ndc = 2d - 1, distance = 2nf / (f + n - z_ndc (f - n)).
+        float n = frame.clip.x, f = frame.clip.y;
+        float dist = 2.0 * n * f / (f + n - (d * 2.0 - 1.0) * (f - n));
+        // Seed 001: position = viewRay * depth, the ray through the pixel at unit distance.
+        vec2 ndc = uv * 2.0 - 1.0;
+        vec3 ray = vec3(ndc.x * frame.invProj[0][0], ndc.y * frame.invProj[1][1], -1.0);
+        return vec4(ray * dist, 1.0);
+    }
+    return texture(gPosition, uv);
+}
+
+// Occlusion contributed by one view-space sample point S of the pixel at P.
+float sampleOcclusion(vec3 P, vec3 S, float radius, int set) {
+    float bias = ssao.params.x * radius; // a fraction of the radius: scales with the scene
+    vec4 clip = frame.proj * vec4(S, 1.0);
+    // Behind the eye (w <= 0) the divide flips the sample across the screen: no pixel to read.
+    if (clip.w <= 1e-5 * frame.clip.x) {
+        INSPECT_TAP(S, vec2(0.0), SSAO_TAP_BEHIND_EYE, 0.0, set);
+        return 0.0;
+    }
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    bool offscreen = any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)));
+    if (offscreen && !hasFlag(KERNEL_FLAG_OFFSCREEN_CLAMP)) { // unseen: count as open
+        INSPECT_TAP(S, uv, SSAO_TAP_OFFSCREEN, 0.0, set);
+        return 0.0;
+    }
+    vec4 Q = viewPosition(uv); // texture clamp-to-edge does the seeds' clamping
+    if (Q.w == 0.0) { // sky occludes nothing
+        INSPECT_TAP(S, uv, SSAO_TAP_SKY, 0.0, set);
+        return 0.0;
+    }
+    float sceneZ = Q.z;
+    float dz = abs(P.z - sceneZ);
+
+    float range = 1.0;
+    if (ssao.modes.y == KERNEL_RANGE_SMOOTHSTEP) // seed 004, |dz| = 0 guarded
+        range = smoothstep(0.0, 1.0, radius / max(dz, ssao.params.y * radius));
+    else if (ssao.modes.y == KERNEL_RANGE_HARD)
+        range = dz < radius ? 1.0 : 0.0; // seed 003
+
+    bool occluded = ssao.modes.z == KERNEL_DEPTHTEST_SAMPLE ? sceneZ >= S.z + bias // seeds 000/004
+                                                            : P.z + bias < sceneZ; // seed 003
+    float occ = occluded ? range : 0.0;
+    INSPECT_TAP(S, uv, occ > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN, occ, set);
+    return occ;
+}
+
+float accumulate(vec3 P, mat3 TBN, float radius, int first, int count, int set) {
+    float occ = 0.0;
+    for (int i = 0; i < count; ++i) {
+        vec3 S = P + TBN * ssao.kernel[first + i].xyz * radius;
+        occ += sampleOcclusion(P, S, radius, set);
+    }
+    return occ;
+}
+
+void main() {
+    vec4 P = viewPosition(vUv);
+    if (P.w == 0.0) { // sky: unoccluded, and no work spent on it
+        oAO = 1.0;
+        INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
+        return;
+    }
+    vec3 N = texture(gNormal, vUv).xyz;
+    if (hasFlag(KERNEL_FLAG_NORMAL_UNORM)) N = N * 2.0 - 1.0;
+    float nl2 = dot(N, N);
+    N = nl2 > 1e-12 ? N * inversesqrt(nl2) : vec3(0.0, 0.0, 1.0); // renormalise after decoding
+
+    vec3 r = hasFlag(KERNEL_FLAG_NOISE) ? texture(texNoise, vUv * ssao.noiseScale.xy).xyz : vec3(1.0, 0.0, 0.0);
+    mat3 TBN = tangentFrame(N, r);
+    float radius = aoRadius(ssao.aoCommon, -P.z);
+
+    int n = ssao.modes.x;
+    float occ = accumulate(P.xyz, TBN, radius, 0, n, 0);
+    float total = float(n);
+    if (hasFlag(KERNEL_FLAG_SEPARABLE)) { // seed 003: second set in the y-z plane, N samples too
+        occ += accumulate(P.xyz, TBN, radius, KERNEL_MAX_SAMPLES, n, 1);
+        total *= 2.0;
+    }
+    oAO = aoFinish(ssao.aoCommon, 1.0 - occ / total);
+    INSPECT_RESULT(true, P.xyz, N, occ, total, radius, oAO);
+}
