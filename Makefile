@@ -34,7 +34,7 @@ GOLDEN_PRESETS = learnopengl seed000 crytek-sphere seed001 seed003 seed003-separ
 goldens: build
 	@for p in $(GOLDEN_PRESETS); do \
 	  d=$$(mktemp -d) && $(BUILD)/app/ssaolab render --preset $$p --size 320x180 --timing-frames 1 --quiet --out $$d && \
-	  cp $$d/ao.png assets/golden/showcase_$$p\_ao.png && rm -rf $$d && echo "golden: $$p"; done
+	  cp $$d/ao.denoised.png assets/golden/showcase_$$p\_ao.png && rm -rf $$d && echo "golden: $$p"; done
 
 clean:
 	@rm -rf $(BUILD) $(OUT)

@@ -17,7 +17,6 @@
 
 namespace ssao {
 
-namespace {
 gpu::FrameConstants packFrameConstants(const Camera& cam, int width, int height, float sceneRadius) {
     gpu::FrameConstants f{};
     f.view = cam.view();
@@ -27,7 +26,6 @@ gpu::FrameConstants packFrameConstants(const Camera& cam, int width, int height,
     f.clip = {cam.nearZ, cam.farZ, sceneRadius, 0.0f};
     return f;
 }
-} // namespace
 
 Renderer::Renderer(const std::string& shaderDir)
     : shaders_(shaderDir), frameUbo_(sizeof(gpu::FrameConstants), "frame.constants") {
@@ -99,7 +97,7 @@ void Renderer::buildGraph() {
     if (settingsB_) {
         // A pass of chain B whose settings groups and (resolved) inputs equal its chain-A
         // counterpart's would compute the same image: its outputs alias A's instead of running.
-        const nlohmann::json ja = toJson(settings_), jb = toJson(*settingsB_);
+        const nlohmann::json ja = toEffectiveJson(settings_), jb = toEffectiveJson(*settingsB_);
         const std::vector<Pass*> b = chain(Branch::b(), *settingsB_);
         for (size_t i = 0; i < b.size(); ++i) {
             const PassDecl da = FrameGraph::declare(*a[i], settings_), db = FrameGraph::declare(*b[i], *settingsB_);

@@ -7,6 +7,8 @@
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
 
+#include "../shaders/include/bindings.h"
+
 #include <map>
 #include <memory>
 #include <optional>
@@ -14,6 +16,9 @@
 #include <vector>
 
 namespace ssao {
+
+// Camera and size → the per-frame constant block every shader reads (pure).
+gpu::FrameConstants packFrameConstants(const Camera& cam, int width, int height, float sceneRadius);
 
 // The AO radius as it is at the centre of the view (the panel and metrics.json show it).
 struct RadiusInfo {

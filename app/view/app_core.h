@@ -86,6 +86,7 @@ class AppCore {
     bool splitDifference = false;          // show (A - B) * diffScale instead of the two halves
     float diffScale = 4.0f;
     float splitPosition = 0.5f; // divider, fraction of the width (dragged in the view)
+    bool draggingDivider = false;
     float renderScale = 1.0f;
     float interactiveScale = 0.35f;
     ViewStyle style;

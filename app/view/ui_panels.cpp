@@ -121,11 +121,12 @@ void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size) {
     ImGui::Begin("ssaolab", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_NoSavedSettings);
-    if (!app.status().empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, app.statusIsError() ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1));
-        ImGui::TextWrapped("%s", app.status().c_str());
-        ImGui::PopStyleColor();
-    }
+    // The status has a fixed height (three lines, scrolled if longer): the widgets below never move.
+    ImGui::BeginChild("status", ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * 3.0f), false);
+    ImGui::PushStyleColor(ImGuiCol_Text, app.statusIsError() ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1));
+    ImGui::TextWrapped("%s", app.status().c_str());
+    ImGui::PopStyleColor();
+    ImGui::EndChild();
     if (!app.shaderError().empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.4f, 0.4f, 1));
         ImGui::TextWrapped("shader error (last good shaders still running):\n%s", app.shaderError().c_str());

@@ -42,7 +42,9 @@ bool paramWidget(AppCore& app, const Param& p, Settings& s) {
     const float resetWidth = ImGui::GetFrameHeight() * 1.6f;
     ImGui::BeginDisabled(!applies);
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.62f - resetWidth);
-    const std::string label = p.label + (p.isDefault(s) ? "" : " *"); // * marks a changed value
+    // * marks a changed value; "###key" keeps the widget's ID stable when the * appears, or the first
+    // change of a drag would end the drag.
+    const std::string label = p.label + (p.isDefault(s) ? "" : " *") + "###" + p.key;
     bool slider = false;
     switch (p.type) {
     case Param::Type::Float: {
@@ -95,15 +97,19 @@ bool paramWidget(AppCore& app, const Param& p, Settings& s) {
     return p.get(s) != before;
 }
 
+// One line that never wraps, so the rows below keep their place whatever it says.
 void radiusLine(AppCore& app) {
-    const RadiusInfo ri = app.renderer().radiusAtCentre();
-    ImGui::TextDisabled("scene diagonal %.4g; radius %.4g units = %.1f px at the centre", ri.sceneDiagonal, ri.world,
-                        ri.pixels);
+    const Renderer& r = app.renderer();
+    if (r.width() <= 0) {
+        ImGui::TextDisabled("radius: shown after the first frame");
+    } else {
+        const RadiusInfo ri = r.radiusAtCentre();
+        const bool tiny = ri.pixels < 2.0f, huge = ri.world > 0.25f * ri.sceneDiagonal;
+        const ImVec4 colour = tiny || huge ? ImVec4(1, 0.7f, 0.3f, 1) : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
+        ImGui::TextColored(colour, "radius %.4g units = %.1f px at the centre (diagonal %.4g)%s", ri.world, ri.pixels,
+                           ri.sceneDiagonal, tiny ? ": sub-pixel, AO goes flat" : huge ? ": over 25 %% of the scene" : "");
+    }
     rememberRect(app, "radius#info");
-    if (ri.pixels < 2.0f)
-        ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "radius under 2 pixels here: AO will be flat grey");
-    else if (ri.world > 0.25f * ri.sceneDiagonal)
-        ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "radius over 25 %% of the scene: everything occludes everything");
 }
 
 } // namespace

@@ -33,9 +33,12 @@ bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
     const bool split = app.viewMode == ViewMode::Split && !app.splitDifference;
     const float divider = pos.x + size.x * app.splitPosition;
     bool moved = false;
+    if (ImGui::IsItemActivated()) // a press near the divider drags it until released
+        app.draggingDivider = split && ImGui::IsMouseClicked(ImGuiMouseButton_Left) &&
+                              std::abs(io.MousePos.x - divider) <= 8.0f;
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) app.draggingDivider = false;
     if (ImGui::IsItemActive()) {
-        const bool onDivider = split && std::abs(io.MouseClickedPos[0].x - divider) <= 8.0f;
-        if (ImGui::IsMouseDown(ImGuiMouseButton_Left) && onDivider) { // drag the divider, not the camera
+        if (app.draggingDivider) { // drag the divider, not the camera
             app.splitPosition = std::clamp((io.MousePos.x - pos.x) / size.x, 0.0f, 1.0f);
             app.poke();
         } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f) &&
@@ -129,6 +132,13 @@ void toolbar(AppCore& app) {
         ImGui::SetTooltip("Stretch every buffer over its 1st..99th percentile on geometry (depth and position always are)");
     ImGui::SameLine();
     if (ImGui::Checkbox("false colour", &app.style.falseColor)) app.poke();
+    // The second row always exists (with frame height), so switching modes never resizes the image
+    // and never re-renders everything.
+    if (app.viewMode == ViewMode::Grid) {
+        ImGui::AlignTextToFramePadding();
+        ImGui::TextDisabled("click a buffer to enlarge it; drag: orbit, right-drag: pan, wheel: zoom; "
+                            "ranges are printed on each view");
+    }
     if (app.viewMode == ViewMode::Single) {
         ImGui::SetNextItemWidth(170);
         if (ImGui::BeginCombo("buffer", app.enlarged.c_str())) {

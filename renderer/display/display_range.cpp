@@ -20,15 +20,15 @@ bool needsFit(const ResourceDesc& d, const ViewStyle& style) {
 
 DisplayRange displayRange(const Image& img, const ResourceDesc& d, const Image* mask, const ViewStyle& style) {
     DisplayRange r;
-    if (d.display == Display::Direction) r = {-1.0f, 1.0f, false};
+    if (d.display == Display::Direction) r = {glm::vec3(-1.0f), glm::vec3(1.0f), false};
     if (!needsFit(d, style)) return r;
-    const int channels = (d.display == Display::Vector || d.display == Display::Direction) ? std::min(3, img.channels) : 1;
-    // At most ~65k pixels: a strided subset keeps the fit cheap and the result the same for the
-    // app and the PNG (both call this on the same read-back image).
+    const bool vector = d.display == Display::Vector || d.display == Display::Direction;
+    const int channels = vector ? std::min(3, img.channels) : 1;
+    // At most ~65k pixels: a strided subset keeps the fit cheap, and the app and the PNG get the
+    // same result (both call this on the same read-back image).
     const size_t pixels = size_t(img.width) * size_t(img.height);
     const size_t stride = std::max<size_t>(1, pixels / 65536);
-    std::vector<float> values;
-    values.reserve(pixels / stride * size_t(channels) + 1);
+    std::vector<float> values[3];
     for (size_t p = 0; p < pixels; p += stride) {
         const int x = int(p % size_t(img.width)), y = int(p / size_t(img.width));
         if (mask) {
@@ -38,25 +38,33 @@ DisplayRange displayRange(const Image& img, const ResourceDesc& d, const Image* 
         }
         for (int c = 0; c < channels; ++c) {
             const float v = img.at(x, y, c) * d.decodeScale + d.decodeOffset;
-            if (std::isfinite(v)) values.push_back(v);
+            if (std::isfinite(v)) values[c].push_back(v);
         }
     }
-    if (values.empty()) return r;
-    r.lo = quantile(values, 0.01);
-    r.hi = quantile(values, 0.99);
-    r.fitted = true;
-    if (!(r.hi - r.lo > 1e-6f * std::max(std::abs(r.lo), std::abs(r.hi)))) { // a flat image
-        const float pad = std::max(std::abs(r.lo) * 1e-3f, 1e-6f);
-        r.lo -= pad, r.hi += pad;
+    for (int c = 0; c < channels; ++c) {
+        if (values[c].empty()) return r;
+        float lo = quantile(values[c], 0.01), hi = quantile(values[c], 0.99);
+        if (!(hi - lo > 1e-6f * std::max(std::abs(lo), std::abs(hi)))) { // a flat image
+            const float pad = std::max(std::abs(lo) * 1e-3f, 1e-6f);
+            lo -= pad, hi += pad;
+        }
+        r.lo[c] = lo, r.hi[c] = hi;
     }
+    if (!vector) r.lo = glm::vec3(r.lo.x), r.hi = glm::vec3(r.hi.x);
+    r.fitted = true;
     return r;
 }
 
 std::string rangeText(const DisplayRange& r, const ResourceDesc& d) {
     if (d.display == Display::Color) return "";
-    char buf[128];
-    std::snprintf(buf, sizeof buf, "%.4g .. %.4g%s%s%s", r.lo, r.hi, d.unit.empty() ? "" : " ", d.unit.c_str(),
-                  r.fitted ? " (fitted)" : "");
+    char buf[200];
+    const char* unit = d.unit.empty() ? "" : d.unit.c_str();
+    const char* fitted = r.fitted ? " (fitted)" : "";
+    if ((d.display == Display::Vector || d.display == Display::Direction) && r.fitted)
+        std::snprintf(buf, sizeof buf, "x %.3g..%.3g  y %.3g..%.3g  z %.3g..%.3g %s%s", r.lo.x, r.hi.x, r.lo.y, r.hi.y,
+                      r.lo.z, r.hi.z, unit, fitted);
+    else
+        std::snprintf(buf, sizeof buf, "%.4g .. %.4g %s%s", r.lo.x, r.hi.x, unit, fitted);
     return buf;
 }
 

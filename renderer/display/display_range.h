@@ -2,10 +2,12 @@
 // the app's views and the PNG previews alike. Buffers with a physical range (AO in [0,1], unit
 // normals in [-1,1], colours) use it; the others (depth, positions) — or any buffer when asked —
 // get a range fitted over geometry pixels with robust percentiles (1st and 99th), so one far
-// pixel or the sky cannot wash the view out.
+// pixel or the sky cannot wash the view out. Vectors get one range per channel.
 #pragma once
 #include "graph/resource.h"
 #include "output/image.h"
+
+#include <glm/glm.hpp>
 
 #include <string>
 
@@ -18,7 +20,7 @@ struct ViewStyle {
 };
 
 struct DisplayRange {
-    float lo = 0.0f, hi = 1.0f;
+    glm::vec3 lo{0.0f}, hi{1.0f}; // per channel; scalars use x
     bool fitted = false;
 };
 
@@ -31,7 +33,7 @@ float quantile(std::vector<float>& values, double q);
 DisplayRange displayRange(const Image& img, const ResourceDesc& d, const Image* mask, const ViewStyle& style);
 // Whether displayRange() needs the buffer's pixels (false: the natural range is used).
 bool needsFit(const ResourceDesc& d, const ViewStyle& style);
-// "0.25 .. 7.9 scene units (fitted)" — printed on the view.
+// "0.25 .. 7.9 scene units (fitted)" (vectors: one range per channel) — printed on the view.
 std::string rangeText(const DisplayRange& r, const ResourceDesc& d);
 
 } // namespace ssao

@@ -31,7 +31,8 @@ DisplayRange ViewPainter::paint(const Resource& r, const Resource& mask, const V
                      : (d.display == Display::Vector || d.display == Display::Direction) ? SSAO_VIEW_VECTOR
                                                                                         : SSAO_VIEW_SCALAR;
     glProgramUniform1i(prog, 0, mode);
-    glProgramUniform2f(prog, 1, range.lo, range.hi);
+    glProgramUniform3f(prog, 1, range.lo.x, range.lo.y, range.lo.z);
+    glProgramUniform3f(prog, 5, range.hi.x, range.hi.y, range.hi.z);
     glProgramUniform1i(prog, 2, style.falseColor ? 1 : 0);
     glProgramUniform2f(prog, 3, d.decodeScale, d.decodeOffset);
     glProgramUniform1f(prog, 4, 1.0f);
@@ -49,7 +50,8 @@ void ViewPainter::paintDifference(const Resource& a, const Resource& b, float sc
     const GLuint prog = shaders.program("passes/fullscreen.vert", "display/view.frag");
     glUseProgram(prog);
     glProgramUniform1i(prog, 0, SSAO_VIEW_DIFF);
-    glProgramUniform2f(prog, 1, 0.0f, 1.0f);
+    glProgramUniform3f(prog, 1, 0.0f, 0.0f, 0.0f);
+    glProgramUniform3f(prog, 5, 1.0f, 1.0f, 1.0f);
     glProgramUniform1i(prog, 2, 0);
     glProgramUniform2f(prog, 3, a.desc.decodeScale, a.desc.decodeOffset);
     glProgramUniform1f(prog, 4, scale);

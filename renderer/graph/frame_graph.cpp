@@ -160,7 +160,7 @@ FrameReport FrameGraph::execute(const FrameInfo& frame, gl::ShaderLibrary& shade
     for (Compiled& n : nodes_) {
         const std::string& name = n.pass->name();
         auto js = json.find(n.settings);
-        if (js == json.end()) js = json.emplace(n.settings, toJson(*n.settings)).first;
+        if (js == json.end()) js = json.emplace(n.settings, toEffectiveJson(*n.settings)).first;
         std::string key = std::to_string(frame.width) + "x" + std::to_string(frame.height);
         for (const auto& g : n.decl.groups) {
             if (!js->second.contains(g)) throw Error("pass '" + name + "' reads unknown settings group '" + g + "'");

@@ -98,7 +98,9 @@ nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& 
                           !info.style.falseColor;
         writePng(readBack(view.texture(), grey ? 1 : 3), path(name + ".png"));
         entry["png"] = name + ".png";
-        entry["display_range"] = {range.lo, range.hi};
+        entry["display_range"] = res->desc.channels == 1 ? nlohmann::json{range.lo.x, range.hi.x}
+                                                         : nlohmann::json{{range.lo.x, range.lo.y, range.lo.z},
+                                                                          {range.hi.x, range.hi.y, range.hi.z}};
         entry["display_range_fitted"] = range.fitted;
     }
 

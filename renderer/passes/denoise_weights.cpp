@@ -21,6 +21,12 @@ gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int directi
         }
         for (int i = 0; i < count; ++i)
             c.offsetsWeights[i].y /= sum;
+        // Summed in float in the shader's order the normalised weights can reach 1 + 1 ulp, and an
+        // AO of 1.0000001 is out of range: take any excess off the centre (largest) weight.
+        float total = 0.0f;
+        for (int i = 0; i < count; ++i)
+            total += c.offsetsWeights[i].y;
+        if (total > 1.0f) c.offsetsWeights[r].y -= total - 1.0f;
     } else {
         c.offsetsWeights[count++] = {0.0f, 1.0f, 0.0f, 0.0f};
     }

@@ -138,6 +138,9 @@ Scene makeBuiltinScene(const std::string& name) {
     }
     s.name = "builtin:" + name;
     s.computeBounds();
+    // A built-in scene's designed view keeps its designed clip planes (the golden images are made
+    // with them); glTF cameras and framed views get planes fitted to the bounds.
+    if (s.camera) s.camera->clip = ClipMode::Fixed;
     return s;
 }
 

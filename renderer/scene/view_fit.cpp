@@ -21,7 +21,7 @@ std::pair<float, float> fitClipPlanes(const Camera& c, const Bounds& b) {
     if (!(zmax > 0.0f)) return {size * 1e-3f, size};
     const float far = zmax * 1.02f + size * 1e-4f;
     // 1e4 keeps the depth test's resolution below ~1e-3 of far even for a camera inside the bounds.
-    const float near = std::clamp(zmin * 0.98f, far * 1e-4f, far * 0.5f);
+    const float near = std::max(zmin * 0.98f, far * 1e-4f);
     return {near, far};
 }
 

@@ -236,9 +236,14 @@ void applyAssignment(Settings& s, const std::string& assignment) {
     setParam(s, assignment.substr(0, eq), assignment.substr(eq + 1));
 }
 
-nlohmann::json toJson(const Settings& s) {
+namespace {
+nlohmann::json serialise(const Settings& s, bool effectiveOnly) {
     nlohmann::json j = nlohmann::json::object();
     for (const auto& p : paramTable()) {
+        if (effectiveOnly && !p.applies(s)) {
+            j[p.group()]; // the group exists even when none of its rows applies
+            continue;
+        }
         double v = p.get(s);
         auto& slot = j[p.group()][p.name()];
         switch (p.type) {
@@ -257,6 +262,15 @@ nlohmann::json toJson(const Settings& s) {
         }
     }
     return j;
+}
+} // namespace
+
+nlohmann::json toJson(const Settings& s) {
+    return serialise(s, false);
+}
+
+nlohmann::json toEffectiveJson(const Settings& s) {
+    return serialise(s, true);
 }
 
 void applyJson(Settings& s, const nlohmann::json& patch, const std::string& origin) {

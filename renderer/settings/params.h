@@ -59,6 +59,9 @@ void applyAssignment(Settings& s, const std::string& assignment);
 // JSON: {"ao": {"radius": 0.5, ...}, ...}. Presets are patches over defaults; toJson writes
 // every key, so write → read round-trips exactly.
 nlohmann::json toJson(const Settings& s);
+// toJson without the rows that do not apply (e.g. denoise.sigma under box4): what a pass's
+// output depends on, so changing an inactive row re-runs nothing.
+nlohmann::json toEffectiveJson(const Settings& s);
 // Applies a patch; the preset metadata keys (settings/preset.h) at top level are skipped.
 void applyJson(Settings& s, const nlohmann::json& patch, const std::string& origin);
 Settings loadPreset(const std::string& path); // defaults + the file's patch

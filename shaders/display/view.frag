@@ -7,7 +7,8 @@ layout(binding = SSAO_TEX_VIEW_SOURCE) uniform sampler2D src;
 layout(binding = SSAO_TEX_VIEW_SOURCE_B) uniform sampler2D srcB;
 layout(binding = SSAO_TEX_VIEW_MASK) uniform sampler2D mask; // gbuffer.depth: > 0 on geometry
 layout(location = 0) uniform int uMode;
-layout(location = 1) uniform vec2 uRange;    // lo, hi: lo → 0, hi → 1
+layout(location = 1) uniform vec3 uLo;       // per channel: lo → 0 ...
+layout(location = 5) uniform vec3 uHi;       // ... hi → 1 (scalars use x)
 layout(location = 2) uniform int uFalseColor;
 layout(location = 3) uniform vec2 uDecode;   // stored * x + y = value ((n+1)/2 normals: 2, -1)
 layout(location = 4) uniform float uDiffScale;
@@ -35,16 +36,16 @@ void main() {
         return;
     }
     vec3 c;
-    float span = max(uRange.y - uRange.x, 1e-30);
+    vec3 span = max(uHi - uLo, vec3(1e-30));
     if (uMode == SSAO_VIEW_COLOR) {
         c = v.rgb;
     } else if (uMode == SSAO_VIEW_VECTOR) {
-        c = ((v.rgb * uDecode.x + uDecode.y) - uRange.x) / span;
+        c = ((v.rgb * uDecode.x + uDecode.y) - uLo) / span;
     } else if (uMode == SSAO_VIEW_DIFF) {
         float d = clamp(v.r * uDiffScale, -1.0, 1.0);
         c = d >= 0.0 ? mix(vec3(0.5), vec3(1.0, 0.15, 0.1), d) : mix(vec3(0.5), vec3(0.1, 0.35, 1.0), -d);
     } else {
-        float t = ((v.r * uDecode.x + uDecode.y) - uRange.x) / span;
+        float t = ((v.r * uDecode.x + uDecode.y) - uLo.x) / span.x;
         c = uFalseColor != 0 ? viridis(t) : vec3(t);
     }
     if (!geometry && uMode != SSAO_VIEW_COLOR) c = vec3(0.12);

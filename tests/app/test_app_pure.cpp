@@ -2,7 +2,8 @@
 #include "settings/params.h"
 #include "util/error.h"
 #include "view/camera_controller.h"
-#include "view/preset_store.h"
+#include "settings/preset_store.h"
+#include "scene/view_fit.h"
 
 #include <gtest/gtest.h>
 
@@ -22,15 +23,21 @@ TEST(CameraController, OrbitKeepsDistanceAndTarget) {
     EXPECT_NO_THROW(validateCamera(c.camera()));
 }
 
-TEST(CameraController, ClipPlanesFollowTheCamera) {
+TEST(CameraController, DollyingInKeepsTheTargetInsideTheFittedClipPlanes) {
+    // The controller leaves the planes to the renderer, which fits them to the scene per view.
+    Bounds b;
+    b.add({-2, -2, -2});
+    b.add({2, 2, 2});
     CameraController c;
     c.reset(Camera{{0, 0, 50}, {0, 0, 0}, {0, 1, 0}, 60, 20.0f, 100}, 2.0f);
-    for (int i = 0; i < 40; ++i)
-        c.zoom(1); // dolly in to ~0.7 units from the target
-    const float dist = glm::length(c.camera().eye - c.camera().target);
-    EXPECT_LT(c.camera().nearZ, dist); // the target is never behind the near plane
-    EXPECT_GT(c.camera().farZ, dist + 2.0f * 2.0f);
-    EXPECT_NO_THROW(validateCamera(c.camera()));
+    for (int i = 0; i < 40; ++i) {
+        c.zoom(1); // dolly in to ~0.7 units from the target, inside the box
+        const Camera e = effectiveCamera(c.camera(), b);
+        const float dist = glm::length(e.eye - e.target);
+        EXPECT_LT(e.nearZ, dist) << "step " << i; // the target is never behind the near plane
+        EXPECT_GT(e.farZ, dist) << "step " << i;
+        EXPECT_NO_THROW(validateCamera(e));
+    }
 }
 
 TEST(CameraController, ZoomPanAndFly) {
@@ -58,13 +65,13 @@ TEST(PresetStore, SaveListRenameDeleteAndNameRules) {
     Preset p;
     p.name = "mine";
     p.settings = defaultSettings();
-    p.settings.ssao.samples = 17;
+    p.settings.kernel.samples = 17;
     p.camera = Camera{{1, 2, 3}, {0, 0, 0}, {0, 1, 0}, 50, 0.5f, 50};
     store.save(p);
     ASSERT_EQ(store.entries().size(), builtins + 1);
     EXPECT_FALSE(store.entries().back().builtin);
     Preset back = store.load("mine");
-    EXPECT_EQ(back.settings.ssao.samples, 17);
+    EXPECT_EQ(back.settings.kernel.samples, 17);
     ASSERT_TRUE(back.camera.has_value());
     EXPECT_EQ(back.camera->eye, glm::vec3(1, 2, 3));
     EXPECT_FLOAT_EQ(back.camera->fovYDeg, 50.0f);
@@ -88,8 +95,31 @@ TEST(PresetFiles, CameraBookmarkIsValidated) {
     j = {{"camera", {{"eye", {0, 0, 1}}, {"target", {0, 0, 0}}, {"zoom", 2}}}};
     EXPECT_THROW(presetFromJson(j, "t"), Error); // unknown camera key
     j = {{"camera", {{"eye", {0, 0, 1}}, {"target", {0, 0, 0}}, {"near", 0.5}, {"far", 9}}},
-         {"ssao", {{"radius", 2}}}};
+         {"ao", {{"radius", 2}}}};
     Preset p = presetFromJson(j, "t");
-    EXPECT_FLOAT_EQ(p.settings.ssao.radius, 2.0f);
+    EXPECT_FLOAT_EQ(p.settings.ao.radius, 2.0f);
     EXPECT_FLOAT_EQ(p.camera->farZ, 9.0f);
+}
+
+TEST(PresetStore, OneLookupForTheAppAndTheCommandLine) {
+    const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/store_lookup";
+    fs::remove_all(dir);
+    PresetStore store(std::string(SSAOLAB_ASSET_DIR) + "/presets", dir);
+    Preset p;
+    p.name = "from the app";
+    store.save(p);
+    // Seed presets by name, then the user's, then a path.
+    EXPECT_EQ(store.resolve("learnopengl"), std::string(SSAOLAB_ASSET_DIR) + "/presets/learnopengl.json");
+    EXPECT_EQ(store.resolve("from the app"), dir + "/from the app.json");
+    EXPECT_EQ(store.open("from the app").name, "from the app");
+    EXPECT_EQ(store.resolve(dir + "/from the app.json"), dir + "/from the app.json");
+    try {
+        store.resolve("nonesuch");
+        FAIL();
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("no preset named 'nonesuch'"), std::string::npos) << what;
+        EXPECT_NE(what.find(dir), std::string::npos) << "says where it looked: " << what;
+    }
+    EXPECT_THROW(store.resolve("/no/such/file.json"), Error);
 }

@@ -30,8 +30,8 @@ class AppUi : public GlTest {
         ui_.reset();
         GlTest::TearDown();
     }
-    Image aoRaw() { return readBack(ui_->app().renderer().ssao().aoRaw(), 1); }
-    Image composite() { return readBack(ui_->app().renderer().composite().color(), 4); }
+    Image aoRaw() { return readBack(ui_->app().renderer().texture("ao.raw"), 1); }
+    Image composite() { return readBack(ui_->app().renderer().texture("composite"), 4); }
     std::string userDir_;
     std::unique_ptr<UiDriver> ui_;
 };
@@ -40,60 +40,80 @@ class AppUi : public GlTest {
 
 TEST_F(AppUi, CheckboxChangesTheSettingAndTheAoImage) {
     Image before = aoRaw();
-    ASSERT_FALSE(ui_->app().settings().ssao.separable);
-    ui_->click("ssao.separable", 0.1f);
+    ASSERT_FALSE(ui_->app().settings().kernel.separable);
+    ui_->click("kernel.separable", 0.1f);
     ui_->frames(2);
-    EXPECT_TRUE(ui_->app().settings().ssao.separable);
+    EXPECT_TRUE(ui_->app().settings().kernel.separable);
     EXPECT_TRUE(ui_->app().unsavedChanges());
     EXPECT_NE(aoRaw().data, before.data);
 }
 
-TEST_F(AppUi, SliderClickSetsAValueInRangeAndReRendersOnlyWhatItInvalidates) {
+TEST_F(AppUi, SliderDragRendersReducedThenReRunsOnlyWhatItInvalidates) {
+    ui_->app().interactiveScale = 0.15f; // below this fixture's render scale (0.3)
+    ui_->settle();
+    const int fullW = ui_->app().renderer().width();
     Image before = aoRaw();
-    ui_->click("ssao.radius", 0.8f);
-    ui_->frame();
-    const float r = ui_->app().settings().ssao.radius;
-    EXPECT_NE(r, 0.5f);
-    EXPECT_GE(r, 1e-4f);
-    EXPECT_LE(r, 1e4f);
+    const ImVec4 r = ui_->rect("ao.radius_scene");
+    const float y = (r.y + r.w) * 0.5f;
+    ui_->frame(r.x + (r.z - r.x) * 0.3f, y, false);
+    ui_->frame(r.x + (r.z - r.x) * 0.3f, y, true);
+    std::vector<std::vector<std::string>> ran;
+    for (int i = 1; i <= 4; ++i) {
+        const int framesBefore = ui_->app().framesRendered();
+        ui_->frame(r.x + (r.z - r.x) * (0.3f + 0.05f * float(i)), y, true);
+        if (ui_->app().framesRendered() > framesBefore) ran.push_back(ui_->app().lastReport().ran());
+        // While the slider is held the frame is rendered at the interactive scale.
+        EXPECT_LT(ui_->app().renderer().width(), fullW);
+    }
+    ASSERT_GE(ran.size(), 2u);
+    // After the first reduced frame, a drag step re-runs the AO chain only, not the G-buffer.
+    EXPECT_EQ(ran.back(), (std::vector<std::string>{"ao", "denoise", "composite"}));
+    ui_->frame(r.x + (r.z - r.x) * 0.5f, y, false);
+    ui_->settle();
+    EXPECT_EQ(ui_->app().renderer().width(), fullW); // refined to full resolution once released
+    const float v = ui_->app().settings().ao.radiusScene;
+    EXPECT_NE(v, Settings{}.ao.radiusScene);
+    EXPECT_GE(v, float(findParam("ao.radius_scene")->min));
+    EXPECT_LE(v, float(findParam("ao.radius_scene")->max));
     EXPECT_NE(aoRaw().data, before.data);
-    // The last frame that rendered ran the SSAO pass and what follows, not the G-buffer.
-    EXPECT_EQ(ui_->app().lastReport().ran(), (std::vector<std::string>{"ssao", "blur", "composite"}));
 }
 
 TEST_F(AppUi, CtrlClickTextEntryIsClampedToTheRange) {
-    ui_->click("ssao.radius", 0.5f,
+    ui_->click("ao.radius_scene", 0.5f,
                /*ctrl=*/true); // Ctrl+Click turns the slider into a text field (all selected)
     ui_->type("99999");
     ui_->pressEnter();
     ui_->frames(2);
-    EXPECT_FLOAT_EQ(ui_->app().settings().ssao.radius, 1e4f); // AlwaysClamp: not 99999
+    EXPECT_FLOAT_EQ(ui_->app().settings().ao.radiusScene, 0.5f); // AlwaysClamp: not 99999
 }
 
 TEST_F(AppUi, ResetButtonRestoresTheDefault) {
-    ui_->app().settings().ssao.bias = 0.3f;
+    ui_->app().settings().kernel.bias = 0.3f;
     ui_->frames(2);
-    ui_->click("ssao.bias#reset");
+    ui_->click("kernel.bias#reset");
     ui_->frame();
-    EXPECT_FLOAT_EQ(ui_->app().settings().ssao.bias, 0.025f);
+    EXPECT_FLOAT_EQ(ui_->app().settings().kernel.bias, Settings{}.kernel.bias);
 }
 
 TEST_F(AppUi, ComboSelectsAnotherKernel) {
-    Image mask = readBack(ui_->app().renderer().gbuffer().position(), 4).channel(3);
+    Image mask = readBack(ui_->app().renderer().texture("gbuffer.position"), 4).channel(3);
     const double before = stats(aoRaw(), &mask).mean;
-    ui_->click("ssao.kernel");
+    ui_->click("kernel.shape");
     ui_->frame();
-    ASSERT_TRUE(ui_->has("ssao.kernel#sphere"));
-    ui_->click("ssao.kernel#sphere");
-    ui_->frames(2);
-    EXPECT_EQ(ui_->app().settings().ssao.kernel, Kernel::Sphere);
+    ASSERT_TRUE(ui_->has("kernel.shape#sphere"));
+    ui_->click("kernel.shape#sphere");
+    ui_->settle();
+    EXPECT_EQ(ui_->app().settings().kernel.shape, KernelShape::Sphere);
     EXPECT_LT(stats(aoRaw(), &mask).mean, before - 0.2); // the sphere kernel's false occlusion
 }
 
 TEST_F(AppUi, PresetSavedFromTheUiLoadsBackAndRendersTheSameHeadless) {
-    ui_->app().settings().ssao.radius = 0.8f;
-    ui_->app().settings().blur.kind = BlurKind::Gaussian;
-    ui_->frames(2);
+    setParam(ui_->app().settings(), "ao.radius_mode", "world");
+    ui_->app().settings().ao.radius = 0.8f;
+    ui_->app().settings().denoise.kind = DenoiseKind::Gaussian;
+    ui_->settle();
+    ui_->click("tab#Presets");
+    ui_->frame();
     ui_->click("preset#name");
     ui_->type("my tuned");
     ui_->click("preset#save");
@@ -104,30 +124,35 @@ TEST_F(AppUi, PresetSavedFromTheUiLoadsBackAndRendersTheSameHeadless) {
     Preset p = readPresetFile(path);
     EXPECT_TRUE(p.settings == ui_->app().settings());
     ASSERT_TRUE(p.camera.has_value());
-
-    // The same preset rendered headless at the app's size equals the app's frame.
+    ASSERT_TRUE(p.scene.has_value());
+    EXPECT_EQ(*p.scene, "builtin:showcase");
+    ASSERT_TRUE(p.size.has_value());
     Renderer& appR = ui_->app().renderer();
+    EXPECT_EQ(p.size->first, appR.width()); // the full-resolution view size
+    EXPECT_EQ(p.size->second, appR.height());
+
+    // The same preset rendered headless (its scene, size and camera) equals the app's frame.
     Renderer headless(SSAOLAB_SHADER_DIR);
-    headless.setSize(appR.width(), appR.height());
-    headless.setScene(ui_->app().scene());
+    headless.setSize(p.size->first, p.size->second);
+    headless.setScene(loadScene(*p.scene));
     headless.setCamera(*p.camera);
     headless.setSettings(p.settings);
     headless.render();
-    Image a = readBack(appR.blur().ao(), 1), b = readBack(headless.blur().ao(), 1);
+    Image a = readBack(appR.texture("ao.denoised"), 1), b = readBack(headless.texture("ao.denoised"), 1);
     double maxDiff = 0;
     for (size_t i = 0; i < a.data.size(); ++i)
         maxDiff = std::max(maxDiff, double(std::abs(a.data[i] - b.data[i])));
     EXPECT_LT(maxDiff, 1e-4);
-    Image ca = readBack(appR.composite().color(), 4), cb = readBack(headless.composite().color(), 4);
+    Image ca = readBack(appR.texture("composite"), 4), cb = readBack(headless.texture("composite"), 4);
     EXPECT_EQ(ca.data, cb.data);
 
     // It is listed, and loading it from the list restores the settings.
-    ui_->app().settings().ssao.radius = 0.3f;
+    ui_->app().settings().ao.radius = 0.3f;
     EXPECT_TRUE(ui_->app().unsavedChanges());
     ui_->frame();
     ui_->click("preset#my tuned");
     ui_->click("preset#load");
-    EXPECT_FLOAT_EQ(ui_->app().settings().ssao.radius, 0.8f);
+    EXPECT_FLOAT_EQ(ui_->app().settings().ao.radius, 0.8f);
 }
 
 TEST_F(AppUi, PresetRenameAndDeleteWorkOnUserPresetsOnly) {
@@ -157,7 +182,7 @@ TEST_F(AppUi, DroppingABadFileShowsTheErrorAndKeepsTheScene) {
     EXPECT_EQ(ui_->app().scene().name, name);
     ui_->app().dropFiles({std::string(SSAOLAB_ASSET_DIR) + "/presets/seed003.json"});
     EXPECT_FALSE(ui_->app().statusIsError());
-    EXPECT_EQ(ui_->app().settings().ssao.rangeCheck, RangeCheck::Hard);
+    EXPECT_EQ(ui_->app().settings().kernel.rangeCheck, RangeCheck::Hard);
     ui_->app().dropFiles({std::string(SSAOLAB_SCENES_DIR) + "/ShaderBall/shader_ball.gltf"});
     ui_->frames(2);
     EXPECT_NE(ui_->app().scene().name.find("shader_ball"), std::string::npos);
@@ -166,20 +191,23 @@ TEST_F(AppUi, DroppingABadFileShowsTheErrorAndKeepsTheScene) {
 
 TEST_F(AppUi, ClickingAGridCellEnlargesItAndTheInspectorsFollowTheCursor) {
     ASSERT_EQ(ui_->app().viewMode, ViewMode::Grid);
-    ui_->click("view#ao_raw");
+    ui_->click("view#ao.raw");
     ui_->frame();
     EXPECT_EQ(ui_->app().viewMode, ViewMode::Single);
-    EXPECT_EQ(ui_->app().enlarged, BufferId::AoRaw);
+    EXPECT_EQ(ui_->app().enlarged, "ao.raw");
     // Hover the middle of the enlarged view: the pixel inspector and sample inspector follow.
     const ImVec4 r = ui_->rect("view#main");
     ui_->frame((r.x + r.z) * 0.5f, r.y + (r.w - r.y) * 0.7f);
     ui_->frame((r.x + r.z) * 0.5f, r.y + (r.w - r.y) * 0.7f);
     const glm::ivec2 px = ui_->app().hoverPixel;
     EXPECT_NEAR(px.x, ui_->app().renderer().width() / 2, 2);
-    const PixelInspection& pi = ui_->app().inspection();
-    ASSERT_TRUE(pi.geometry);
-    EXPECT_EQ(int(pi.taps.size()), ui_->app().settings().ssao.samples);
-    EXPECT_NEAR(pi.ao, ui_->app().texelOf(BufferId::AoRaw, px.x, px.y).x, 1.01 / 64);
+    const auto& pi = ui_->app().inspection();
+    ASSERT_TRUE(pi && pi->geometry);
+    EXPECT_EQ(int(pi->taps.size()), ui_->app().settings().kernel.samples);
+    // The taps are the GPU's own record: its AO is the value in ao.raw at that pixel.
+    EXPECT_NEAR(pi->ao, ui_->app().valueAt("ao.raw", px).at(0), 1e-5);
+    EXPECT_EQ(ui_->app().valueAt("ao.raw", px).size(), 1u); // a scalar buffer shows one value
+    EXPECT_EQ(ui_->app().valueAt("gbuffer.normal", px).size(), 3u);
     ui_->save(std::string(SSAOLAB_TEST_TMP) + "/ui_single_view.png");
 }
 
@@ -198,30 +226,14 @@ TEST_F(AppUi, DraggingTheViewOrbitsTheCamera) {
     EXPECT_EQ(ui_->app().lastReport().ran().size(), 4u); // a camera move re-renders everything
 }
 
-TEST_F(AppUi, SplitViewComparesAoOnAndOff) {
-    ui_->app().viewMode = ViewMode::Split;
-    ui_->app().splitKind = SplitKind::AoOnOff;
-    ui_->frames(2);
-    ASSERT_NE(ui_->app().rendererB(), nullptr);
-    Image a = readBack(ui_->app().renderer().composite().color(), 4);
-    Image b = readBack(ui_->app().rendererB()->composite().color(), 4);
-    double sumA = 0, sumB = 0;
-    for (size_t i = 0; i < a.data.size(); ++i)
-        sumA += a.data[i], sumB += b.data[i];
-    EXPECT_LT(sumA, sumB); // with AO the frame is darker
-    ui_->app().splitKind = SplitKind::Presets;
-    ui_->app().splitPresetB = "crytek-sphere";
-    ui_->frames(2);
-    EXPECT_EQ(ui_->app().rendererB()->settings().ssao.kernel, Kernel::Sphere);
-}
-
 TEST_F(AppUi, IdleFramesRenderNothing) {
-    ui_->frames(6); // let hover/input settle
+    ui_->settle(); // let hover/input settle
+    ui_->frames(4);
     const int rendered = ui_->app().framesRendered();
     ui_->frames(10);
     EXPECT_EQ(ui_->app().framesRendered(), rendered); // no SSAO pass ran without a change
     EXPECT_FALSE(ui_->app().busy());                  // and the window loop may sleep
-    ui_->app().settings().blur.sigma = 2.5f;
+    ui_->app().settings().composite.ambient = 0.5f;
     ui_->app().poke();
     ui_->frame();
     EXPECT_EQ(ui_->app().framesRendered(), rendered + 1);
@@ -241,7 +253,7 @@ TEST_F(AppUi, BrokenShaderKeepsTheLastGoodProgramAndShowsFileAndLine) {
     ui_->frames(2);
     Image good = aoRaw();
 
-    const std::string frag = dir + "/passes/ssao.frag";
+    const std::string frag = dir + "/techniques/kernel/kernel.frag";
     std::string text;
     {
         std::ifstream in(frag);
@@ -251,7 +263,7 @@ TEST_F(AppUi, BrokenShaderKeepsTheLastGoodProgramAndShowsFileAndLine) {
     fs::last_write_time(frag, fs::last_write_time(frag) + std::chrono::seconds(2));
     ui_->app().pollShaderReload();
     ui_->frame();
-    EXPECT_NE(ui_->app().shaderError().find("passes/ssao.frag:"), std::string::npos)
+    EXPECT_NE(ui_->app().shaderError().find("techniques/kernel/kernel.frag:"), std::string::npos)
         << ui_->app().shaderError() << " / " << ui_->app().status();
     ui_->app().renderer().invalidate(); // still renders, with the last good program
     ui_->frames(2);
@@ -265,16 +277,20 @@ TEST_F(AppUi, BrokenShaderKeepsTheLastGoodProgramAndShowsFileAndLine) {
 }
 
 TEST_F(AppUi, ClosingTheAppReleasesEveryGlObject) {
-    ui_->app().viewMode = ViewMode::Split; // also create the second renderer
+    ui_->app().viewMode = ViewMode::Split; // also chain B
+    ui_->app().splitKind = SplitKind::Preset;
     ui_->frames(2);
-    std::vector<GLuint> textures;
-    for (int i = 0; i < kBufferCount; ++i)
-        textures.push_back(ui_->app().viewTexture(BufferId(i)).id());
     Renderer& r = ui_->app().renderer();
-    for (const gl::Texture2D* t :
-         {&r.gbuffer().position(), &r.gbuffer().normal(), &r.gbuffer().depth(), &r.ssao().aoRaw(),
-          &r.blur().ao(), &ui_->app().rendererB()->composite().color()})
-        textures.push_back(t->id());
+    const GLuint chainB = r.texture("b.ao.raw").id();
+    ASSERT_TRUE(glIsTexture(chainB));
+    ui_->app().viewMode = ViewMode::Grid;
+    ui_->frames(2);
+    EXPECT_FALSE(glIsTexture(chainB)) << "leaving the split view frees chain B";
+    std::vector<GLuint> textures;
+    for (const Resource* res : r.graph().resources(true))
+        textures.push_back(res->texture.id());
+    for (const Resource* res : r.buffers())
+        textures.push_back(ui_->app().views().find(res->desc.name)->target.texture().id());
     for (GLuint id : textures)
         ASSERT_TRUE(glIsTexture(id)) << id;
     ui_.reset();
@@ -292,7 +308,7 @@ TEST_F(AppUi, GltfCamerasAreSelectableAndScenesWithoutOneAreFramed) {
     const Camera framed = frameBounds(ui_->app().scene().bounds);
     EXPECT_EQ(ui_->app().cameraController().camera().eye, framed.eye);
     ui_->frames(2);
-    Image mask = readBack(ui_->app().renderer().gbuffer().position(), 4).channel(3);
+    Image mask = readBack(ui_->app().renderer().texture("gbuffer.position"), 4).channel(3);
     EXPECT_GT(stats(mask, &mask).count, mask.width * mask.height / 20) << "the framed helmet fills the view";
 }
 
@@ -316,7 +332,7 @@ TEST_F(AppUi, FlyModeMovesWithWasdWhileHoveringTheView) {
 }
 
 TEST_F(AppUi, WindowResizeAndHiDpiScaleTheRenderSize) {
-    ui_->frames(2);
+    ui_->settle();
     const int w0 = ui_->app().renderer().width(), h0 = ui_->app().renderer().height();
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = ImVec2(1200, 1800); // the window got smaller

@@ -84,6 +84,21 @@ void UiDriver::type(const std::string& text) {
     frame(mx_, my_, false);
 }
 
+void UiDriver::wheel(float x, float y, float steps) {
+    ImGuiIO& io = ImGui::GetIO();
+    frame(x, y, false);
+    io.MouseWheel = steps;
+    frame(x, y, false);
+    io.MouseWheel = 0;
+    frame(x, y, false);
+}
+
+void UiDriver::settle() {
+    for (int i = 0; i < 40 && (app_->interacting() || app_->renderedInteractive()); ++i)
+        frame(mx_, my_, false);
+    frame(mx_, my_, false);
+}
+
 void UiDriver::pressEnter() {
     ImGuiIO& io = ImGui::GetIO();
     io.KeysDown[kEnterKey] = true;

@@ -27,6 +27,9 @@ class UiDriver {
     void drag(float x0, float y0, float x1, float y1, int steps = 5);
     void type(const std::string& text);
     void pressEnter();
+    void wheel(float x, float y, float steps);
+    // Frames with no input until the app renders at full resolution again (input settled).
+    void settle();
     bool has(const std::string& key) const { return app_->widgetRects.count(key) != 0; }
     ImVec4 rect(const std::string& key) const;
     // The last UI frame as PNG (to look at what a test saw).

@@ -61,30 +61,37 @@ TEST(Cli, HelpDescribesCommands) {
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
     r = ssaolab("params");
     EXPECT_EQ(r.exitCode, 0);
-    EXPECT_NE(r.out.find("ssao.radius"), std::string::npos);
+    EXPECT_NE(r.out.find("ao.radius_scene"), std::string::npos);
+    EXPECT_NE(r.out.find("applies when denoise.kind = gaussian"), std::string::npos); // sigma's condition
 }
 
 TEST(Cli, RenderWritesEveryBufferAndMetrics) {
     const std::string out = outDir("showcase");
     std::filesystem::remove_all(out);
     CliRun r = ssaolab(
-        "render --scene builtin:showcase --preset learnopengl --set ssao.radius=0.8 --set ssao.kernel=sphere "
-        "--set blur.kind=gaussian --size 320x180 --timing-frames 1 --out " +
+        "render --scene builtin:showcase --preset learnopengl --set ao.radius=0.8 --set kernel.shape=sphere "
+        "--set denoise.kind=gaussian --size 320x180 --timing-frames 1 --out " +
         out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    for (const char* f :
-         {"position.exr", "normal.exr", "depth.exr", "ao_raw.exr", "ao.exr", "position.png", "normal.png",
-          "depth.png", "albedo.png", "ao_raw.png", "ao.png", "composite.png", "metrics.json"})
+    // One EXR per float buffer and one PNG per buffer, named after the frame graph's resources.
+    for (const char* f : {"gbuffer.position.exr", "gbuffer.normal.exr", "gbuffer.depth.exr", "gbuffer.zbuffer.exr",
+                          "ao.raw.exr", "ao.denoised.exr", "gbuffer.position.png", "gbuffer.normal.png",
+                          "gbuffer.depth.png", "gbuffer.albedo.png", "ao.raw.png", "ao.denoised.png", "composite.png",
+                          "metrics.json"})
         EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
     auto m = nlohmann::json::parse(slurp(out + "/metrics.json"));
-    EXPECT_EQ(m["settings"]["ssao"]["radius"], 0.8);
-    EXPECT_EQ(m["settings"]["ssao"]["kernel"], "sphere");
-    EXPECT_EQ(m["settings"]["blur"]["kind"], "gaussian");
+    EXPECT_EQ(m["settings"]["ao"]["radius"], 0.8);
+    EXPECT_EQ(m["settings"]["kernel"]["shape"], "sphere");
+    EXPECT_EQ(m["settings"]["denoise"]["kind"], "gaussian");
     EXPECT_EQ(m["size"], nlohmann::json({320, 180}));
-    EXPECT_EQ(m["passes_run"], nlohmann::json({"gbuffer", "ssao", "blur", "composite"}));
-    for (auto& [k, v] : m["nonfinite"].items())
-        EXPECT_EQ(v, 0) << k;
-    for (const char* p : {"gbuffer", "ssao", "blur", "composite"})
+    EXPECT_EQ(m["passes_run"], nlohmann::json({"gbuffer", "ao", "denoise", "composite"}));
+    for (auto& [name, b] : m["buffers"].items()) {
+        EXPECT_EQ(b["nonfinite"], 0) << name;
+        EXPECT_TRUE(b.contains("display_range")) << name;
+    }
+    EXPECT_EQ(m["buffers"]["ao.raw"]["size"], nlohmann::json({320, 180}));
+    EXPECT_NEAR(m["radius"]["world_at_centre"].get<double>(), 0.8, 1e-6); // the preset's world radius
+    for (const char* p : {"gbuffer", "ao", "denoise", "composite"})
         EXPECT_GE(m["gpu_ms"][p].get<double>(), 0.0) << p;
     EXPECT_FALSE(m["gl_renderer"].get<std::string>().empty());
     const double mn = m["ao"]["min"], mean = m["ao"]["mean"], mx = m["ao"]["max"];
@@ -99,7 +106,7 @@ TEST(Cli, EveryThirdPartySceneRendersWithItsOwnCamera) {
     for (const auto& f : files) {
         const std::string name = f.stem().string();
         const std::string out = outDir(name);
-        // Default settings (radius 0.5 scene units): the point here is loading, cameras and finiteness.
+        // Default settings: the radius follows the scene; the point here is loading, cameras and finiteness.
         CliRun r =
             ssaolab("render --scene '" + f.string() + "' --size 256x144 --timing-frames 1 --out " + out);
         ASSERT_EQ(r.exitCode, 0) << name << ": " << r.err;
@@ -107,8 +114,9 @@ TEST(Cli, EveryThirdPartySceneRendersWithItsOwnCamera) {
         // The file's first camera when it has one, else a view framing the bounds.
         const bool hasCamera = nlohmann::json::parse(slurp(f.string())).contains("cameras");
         EXPECT_EQ(m["camera"]["source"], hasCamera ? "file" : "framed") << name;
-        for (auto& [k, v] : m["nonfinite"].items())
-            EXPECT_EQ(v, 0) << name << " " << k;
+        for (auto& [k, b] : m["buffers"].items())
+            EXPECT_EQ(b["nonfinite"], 0) << name << " " << k;
+        EXPECT_GT(m["radius"]["pixels_at_centre"].get<double>(), 2.0) << name << ": the kernel is not sub-pixel";
         EXPECT_GT(m["geometry_pixels"].get<long>(), 256 * 144 / 100) << name << " is barely visible";
         EXPECT_GE(m["ao"]["min"].get<double>(), 0.0) << name;
         EXPECT_LE(m["ao"]["max"].get<double>(), 1.0) << name;
@@ -128,12 +136,14 @@ TEST(Cli, BadInputGivesOneClearLineAndExitCodeOne) {
                        "is not valid JSON");
     expectCleanFailure(ssaolab("render --preset /nonexistent.json" + out), "preset file not found");
     expectCleanFailure(
-        ssaolab("render --preset " + writeTemp("cli_unk.json", R"({"ssao":{"radiu":1}})") + out),
-        "unknown key 'ssao.radiu'");
-    expectCleanFailure(ssaolab("render --set ssao.bogus=1" + out), "unknown parameter 'ssao.bogus'");
-    expectCleanFailure(ssaolab("render --set ssao.radius=-0.5" + out),
-                       "ssao.radius: value -0.5 is out of range");
-    expectCleanFailure(ssaolab("render --set ssao.samples=100000" + out), "ssao.samples");
+        ssaolab("render --preset " + writeTemp("cli_unk.json", R"({"ao":{"radiu":1}})") + out),
+        "unknown key 'ao.radiu'");
+    expectCleanFailure(ssaolab("render --set ao.bogus=1" + out), "unknown parameter 'ao.bogus'");
+    expectCleanFailure(ssaolab("render --set ao.radius=-0.5" + out), "ao.radius: value -0.5 is out of range");
+    expectCleanFailure(ssaolab("render --set kernel.samples=100000" + out), "kernel.samples");
+    expectCleanFailure(ssaolab("render --set ao.technique=hbao" + out), "'hbao' is not one of kernel");
+    expectCleanFailure(ssaolab("render --preset nonesuch" + out), "no preset named 'nonesuch'");
+    expectCleanFailure(ssaolab("render --preset " + writeTemp("cli_size.json", R"({"size":[0,5]})") + out), "size");
     expectCleanFailure(ssaolab("render --size 0x0" + out), "--size '0x0'");
     expectCleanFailure(ssaolab("render --size 640" + out), "--size '640'");
     expectCleanFailure(ssaolab("render --camera 1,2,3" + out), "--camera");

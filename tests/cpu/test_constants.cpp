@@ -1,5 +1,9 @@
+// Settings → GPU constants: the pure packing functions of every pass and of the kernel technique.
+#include "passes/denoise_weights.h"
+#include "renderer.h"
 #include "settings/params.h"
-#include "ssao/constants.h"
+#include "techniques/ao_common.h"
+#include "techniques/kernel/pack.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -8,57 +12,94 @@
 
 using namespace ssao;
 
-TEST(PackSsao, ModesFlagsAndParameters) {
+namespace {
+gpu::AoCommon common(int w = 640, int h = 360) {
+    return packAoCommon(Settings{}.ao, 10.0f, 0.002f, {w, h});
+}
+} // namespace
+
+TEST(PackKernel, ModesFlagsAndParameters) {
     Settings s = defaultSettings();
-    s.ssao.samples = 17;
-    s.ssao.radius = 0.8f;
-    s.ssao.bias = 0.05f;
-    s.ssao.power = 2.0f;
-    s.ssao.rangeCheck = RangeCheck::Hard;
-    s.ssao.depthTest = DepthTest::Fragment;
-    s.ssao.positionSource = PositionSource::Depth;
-    s.ssao.noise = Noise::None;
-    s.gbuffer.normalFormat = TargetFormat::RGBA8;
-    auto c = packSsaoConstants(s.ssao, s.gbuffer, 640, 360);
+    s.kernel.samples = 17;
+    s.kernel.bias = 0.05f;
+    s.kernel.rangeCheck = RangeCheck::Hard;
+    s.kernel.depthTest = DepthTest::Fragment;
+    s.kernel.positionSource = PositionSource::Depth;
+    s.kernel.noise = Noise::None;
+    auto c = packKernelConstants(s.kernel, common(), /*normalUnorm=*/true);
     EXPECT_EQ(c.modes.x, 17);
-    EXPECT_EQ(c.modes.y, SSAO_RANGE_HARD);
-    EXPECT_EQ(c.modes.z, SSAO_DEPTHTEST_FRAGMENT);
-    EXPECT_EQ(c.modes.w, SSAO_FLAG_POS_FROM_DEPTH | SSAO_FLAG_NORMAL_UNORM);
-    EXPECT_FLOAT_EQ(c.params0.x, 0.8f);
-    EXPECT_FLOAT_EQ(c.params0.y, 0.05f);
-    EXPECT_FLOAT_EQ(c.params0.z, 2.0f);
-    EXPECT_GT(c.params0.w, 0.0f);            // range-check epsilon: |dz| = 0 never divides by zero
-    EXPECT_FLOAT_EQ(c.noiseScale.x, 160.0f); // screen / 4: one noise tile per 4x4 pixels
+    EXPECT_EQ(c.modes.y, KERNEL_RANGE_HARD);
+    EXPECT_EQ(c.modes.z, KERNEL_DEPTHTEST_FRAGMENT);
+    EXPECT_EQ(c.modes.w, KERNEL_FLAG_POS_FROM_DEPTH | KERNEL_FLAG_NORMAL_UNORM);
+    EXPECT_FLOAT_EQ(c.params.x, 0.05f);
+    EXPECT_GT(c.params.y, 0.0f);             // range-check floor: |dz| = 0 never divides by zero
+    EXPECT_FLOAT_EQ(c.noiseScale.x, 160.0f); // AO target / 4: one noise tile per 4x4 pixels
     EXPECT_FLOAT_EQ(c.noiseScale.y, 90.0f);
     for (int i = 0; i < 17; ++i)
         EXPECT_GT(glm::length(glm::vec3(c.kernel[i])), 0.0f);
-    for (int i = 17; i < 2 * SSAO_MAX_SAMPLES; ++i)
+    for (int i = 17; i < 2 * KERNEL_MAX_SAMPLES; ++i)
         EXPECT_EQ(c.kernel[i], glm::vec4(0.0f)) << i;
 }
 
-TEST(PackSsao, SeparableFillsTwoPlaneSets) {
+TEST(PackKernel, NoiseTilesFollowTheAoResolution) {
+    auto c = packKernelConstants(Settings{}.kernel, common(320, 180), false); // half of 640x360
+    EXPECT_FLOAT_EQ(c.noiseScale.x, 80.0f);
+    EXPECT_FLOAT_EQ(c.aoCommon.target.x, 320.0f);
+}
+
+TEST(PackKernel, SeparableFillsTwoPlaneSets) {
     Settings s = defaultSettings();
-    s.ssao.separable = true;
-    s.ssao.samples = 64;
-    auto c = packSsaoConstants(s.ssao, s.gbuffer, 64, 64);
-    EXPECT_TRUE(c.modes.w & SSAO_FLAG_SEPARABLE);
+    s.kernel.separable = true;
+    s.kernel.samples = 64;
+    auto c = packKernelConstants(s.kernel, common(), false);
+    EXPECT_TRUE(c.modes.w & KERNEL_FLAG_SEPARABLE);
     for (int i = 0; i < 64; ++i) {
         EXPECT_EQ(c.kernel[i].y, 0.0f);
-        EXPECT_EQ(c.kernel[SSAO_MAX_SAMPLES + i].x, 0.0f);
-        EXPECT_GT(glm::length(glm::vec3(c.kernel[SSAO_MAX_SAMPLES + i])), 0.0f); // all N, not 9
+        EXPECT_EQ(c.kernel[KERNEL_MAX_SAMPLES + i].x, 0.0f);
+        EXPECT_GT(glm::length(glm::vec3(c.kernel[KERNEL_MAX_SAMPLES + i])), 0.0f); // all N, not 9
     }
 }
 
-TEST(PackSsao, SampleCountClampedToTheArray) {
+TEST(PackKernel, SampleCountClampedToTheArray) {
     Settings s = defaultSettings();
-    s.ssao.samples = 256;
-    EXPECT_EQ(packSsaoConstants(s.ssao, s.gbuffer, 8, 8).modes.x, 256);
+    s.kernel.samples = 256;
+    EXPECT_EQ(packKernelConstants(s.kernel, common(), false).modes.x, 256);
 }
 
-TEST(PackBlur, BoxIsTheSeedsFourTapsMinusTwoToOne) {
-    BlurSettings b;
-    b.kind = BlurKind::Box4;
-    auto c = packBlurConstants(b, 1);
+TEST(AoCommon, RadiusInEachModeInWorldUnitsAndPixels) {
+    AoSettings a;
+    const float diag = 800.0f;   // a millimetre model
+    const float upp = 0.001f;    // 1 mm per pixel at unit depth
+    a.radiusMode = RadiusMode::World;
+    a.radius = 0.5f;
+    EXPECT_FLOAT_EQ(worldRadius(a, diag, 1000.0f, upp), 0.5f);
+    EXPECT_NEAR(radiusInPixels(a, diag, 1000.0f, upp), 0.5f, 1e-4f); // half a pixel: flat grey AO
+    a.radiusMode = RadiusMode::Scene;
+    a.radiusScene = 0.05f;
+    EXPECT_FLOAT_EQ(worldRadius(a, diag, 1000.0f, upp), 40.0f); // follows the scene: 5 % of 800
+    a.radiusMode = RadiusMode::Screen;
+    a.radiusPx = 24.0f;
+    EXPECT_FLOAT_EQ(worldRadius(a, diag, 1000.0f, upp), 24.0f); // 24 px of 1 mm at depth 1000
+    EXPECT_FLOAT_EQ(radiusInPixels(a, diag, 10.0f, upp), 24.0f); // the same pixels at every depth
+    const auto c = packAoCommon(a, diag, upp, {64, 32});
+    EXPECT_EQ(int(c.radius.z), SSAO_RADIUS_SCREEN);
+    EXPECT_FLOAT_EQ(c.radius.y * c.radius.w * 1000.0f, 24.0f); // what the shader computes
+    a.radiusMode = RadiusMode::Scene;
+    EXPECT_FLOAT_EQ(packAoCommon(a, diag, upp, {64, 32}).radius.x, 40.0f);
+}
+
+TEST(AoCommon, UnitsPerPixelMatchTheFieldOfView) {
+    const glm::mat4 proj = glm::perspective(glm::radians(90.0f), 2.0f, 0.1f, 10.0f);
+    // 90° vertical: the view at unit depth is 2 units tall, over 500 pixels.
+    EXPECT_NEAR(unitsPerPixelAtUnitDepth(proj, 500), 2.0f / 500.0f, 1e-6f);
+    EXPECT_FLOAT_EQ(resolutionScale(AoResolution::Half), 0.5f);
+    EXPECT_FLOAT_EQ(resolutionScale(AoResolution::Quarter), 0.25f);
+}
+
+TEST(PackDenoise, BoxIsTheSeedsFourTapsMinusTwoToOne) {
+    DenoiseSettings d;
+    d.kind = DenoiseKind::Box4;
+    auto c = packDenoiseConstants(d, 1);
     ASSERT_EQ(c.taps.x, 4);
     EXPECT_EQ(c.taps.y, 1);
     for (int i = 0; i < 4; ++i) {
@@ -67,13 +108,13 @@ TEST(PackBlur, BoxIsTheSeedsFourTapsMinusTwoToOne) {
     }
 }
 
-TEST(PackBlur, GaussianWeightsNormalisedSymmetricAndGaussian) {
-    BlurSettings b;
-    b.kind = BlurKind::Gaussian;
-    b.radius = 3;
-    b.sigma = 1.3f;
-    b.spacing = 2.0f;
-    auto c = packBlurConstants(b, 0);
+TEST(PackDenoise, GaussianWeightsNormalisedSymmetricAndGaussian) {
+    DenoiseSettings d;
+    d.kind = DenoiseKind::Gaussian;
+    d.halfWidth = 3;
+    d.sigma = 1.3f;
+    d.spacing = 2.0f;
+    auto c = packDenoiseConstants(d, 0);
     ASSERT_EQ(c.taps.x, 7);
     float sum = 0;
     for (int i = 0; i < 7; ++i)
@@ -85,10 +126,10 @@ TEST(PackBlur, GaussianWeightsNormalisedSymmetricAndGaussian) {
     EXPECT_NEAR(c.offsetsWeights[4].y / c.offsetsWeights[3].y, std::exp(-1.0f / (2 * 1.3f * 1.3f)), 1e-6f);
 }
 
-TEST(PackBlur, NoneIsAnIdentityTap) {
-    BlurSettings b;
-    b.kind = BlurKind::None;
-    auto c = packBlurConstants(b, 0);
+TEST(PackDenoise, NoneIsAnIdentityTap) {
+    DenoiseSettings d;
+    d.kind = DenoiseKind::None;
+    auto c = packDenoiseConstants(d, 0);
     ASSERT_EQ(c.taps.x, 1);
     EXPECT_EQ(c.offsetsWeights[0], glm::vec4(0, 1, 0, 0));
 }
@@ -107,4 +148,22 @@ TEST(PackFrame, MatricesAndViewport) {
     EXPECT_NEAR(t.x, 0.0f, 1e-5f);
     EXPECT_NEAR(t.y, 0.0f, 1e-5f);
     EXPECT_NEAR(t.z, -std::sqrt(14.0f), 1e-5f);
+}
+
+TEST(PackDenoise, WeightsNeverSumAboveOneInFloat) {
+    // A wide, narrow gaussian: 65 taps of which most are tiny. Summed in float (as the shader
+    // does), the weights must not exceed 1, or an open pixel's AO becomes 1.0000001.
+    for (int hw : {2, 7, 16, 32})
+        for (float sigma : {0.1f, 0.7f, 1.5f, 4.0f, 32.0f}) {
+            DenoiseSettings d;
+            d.kind = DenoiseKind::Gaussian;
+            d.halfWidth = hw;
+            d.sigma = sigma;
+            const auto c = packDenoiseConstants(d, 0);
+            float total = 0.0f;
+            for (int i = 0; i < c.taps.x; ++i)
+                total += 1.0f * c.offsetsWeights[i].y;
+            EXPECT_LE(total, 1.0f) << hw << " " << sigma;
+            EXPECT_GT(total, 0.99999f) << hw << " " << sigma;
+        }
 }

@@ -1,4 +1,4 @@
-#include "ssao/kernel.h"
+#include "techniques/kernel/sampling.h"
 
 #include <gtest/gtest.h>
 
@@ -7,18 +7,18 @@
 using namespace ssao;
 
 namespace {
-const KernelShape kShapes[] = {KernelShape::Hemisphere, KernelShape::Sphere, KernelShape::PlaneXZ,
-                               KernelShape::PlaneYZ};
+const SampleSet kShapes[] = {SampleSet::Hemisphere, SampleSet::Sphere, SampleSet::PlaneXZ,
+                               SampleSet::PlaneYZ};
 }
 
 TEST(Kernel, CountMatchesRequestForEveryShape) {
-    for (KernelShape s : kShapes)
+    for (SampleSet s : kShapes)
         for (int n : {1, 2, 9, 64, 256})
             EXPECT_EQ(makeKernel(s, n, 0).size(), size_t(n));
 }
 
 TEST(Kernel, EverySampleInsideUnitBallAndWithinItsScale) {
-    for (KernelShape s : kShapes) {
+    for (SampleSet s : kShapes) {
         const int n = 256;
         auto k = makeKernel(s, n, 3);
         for (int i = 0; i < n; ++i) {
@@ -32,18 +32,18 @@ TEST(Kernel, EverySampleInsideUnitBallAndWithinItsScale) {
 }
 
 TEST(Kernel, HemisphereAndPlaneSetsStayAboveTheSurface) {
-    for (KernelShape s : {KernelShape::Hemisphere, KernelShape::PlaneXZ, KernelShape::PlaneYZ})
+    for (SampleSet s : {SampleSet::Hemisphere, SampleSet::PlaneXZ, SampleSet::PlaneYZ})
         for (auto& v : makeKernel(s, 256, 11))
             EXPECT_GE(v.z, 0.0f);
-    for (auto& v : makeKernel(KernelShape::PlaneXZ, 64, 1))
+    for (auto& v : makeKernel(SampleSet::PlaneXZ, 64, 1))
         EXPECT_EQ(v.y, 0.0f);
-    for (auto& v : makeKernel(KernelShape::PlaneYZ, 64, 1))
+    for (auto& v : makeKernel(SampleSet::PlaneYZ, 64, 1))
         EXPECT_EQ(v.x, 0.0f);
 }
 
 TEST(Kernel, SphereKernelPutsAboutHalfTheSamplesBelowTheSurface) {
     int below = 0;
-    auto k = makeKernel(KernelShape::Sphere, 256, 5);
+    auto k = makeKernel(SampleSet::Sphere, 256, 5);
     for (auto& v : k)
         below += v.z < 0.0f;
     EXPECT_GT(below, 256 * 0.38);
@@ -53,7 +53,7 @@ TEST(Kernel, SphereKernelPutsAboutHalfTheSamplesBelowTheSurface) {
 TEST(Kernel, DensityIncreasesTowardTheCentre) {
     // The lerp(0.1,1,s^2) scale exists to cluster samples near the pixel: the first quarter of
     // the kernel must be much shorter on average than the last quarter.
-    auto k = makeKernel(KernelShape::Hemisphere, 256, 2);
+    auto k = makeKernel(SampleSet::Hemisphere, 256, 2);
     double first = 0, last = 0;
     for (int i = 0; i < 64; ++i) {
         first += glm::length(k[size_t(i)]);
@@ -68,8 +68,8 @@ TEST(Kernel, DensityIncreasesTowardTheCentre) {
 }
 
 TEST(Kernel, DeterministicPerSeed) {
-    auto a = makeKernel(KernelShape::Hemisphere, 64, 42), b = makeKernel(KernelShape::Hemisphere, 64, 42);
-    auto c = makeKernel(KernelShape::Hemisphere, 64, 43);
+    auto a = makeKernel(SampleSet::Hemisphere, 64, 42), b = makeKernel(SampleSet::Hemisphere, 64, 42);
+    auto c = makeKernel(SampleSet::Hemisphere, 64, 43);
     EXPECT_EQ(a, b);
     EXPECT_NE(a, c);
 }

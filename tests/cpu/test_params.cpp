@@ -1,4 +1,5 @@
 #include "settings/params.h"
+#include "settings/preset.h"
 #include "util/error.h"
 
 #include "test_util.h"
@@ -39,17 +40,18 @@ TEST(ParamTable, KeysUniqueDefaultsInRangeAndDocumented) {
     }
     // The issue's required knobs are all in the table.
     for (const char* k :
-         {"ssao.kernel", "ssao.separable", "ssao.samples", "ssao.radius", "ssao.bias", "ssao.range_check",
-          "ssao.power", "ssao.noise", "ssao.seed", "ssao.position_source", "blur.kind", "blur.sigma",
-          "blur.spacing", "gbuffer.position_format", "gbuffer.normal_format"})
+         {"kernel.shape", "kernel.separable", "kernel.samples", "ao.radius", "ao.radius_mode", "ao.radius_scene",
+          "ao.radius_px", "kernel.bias", "kernel.range_check", "ao.power", "kernel.noise", "kernel.seed",
+          "kernel.position_source", "denoise.kind", "denoise.sigma", "denoise.spacing", "ao.technique",
+          "ao.resolution", "gbuffer.position_format", "gbuffer.normal_format"})
         EXPECT_NE(findParam(k), nullptr) << k;
-    EXPECT_EQ(findParam("ssao.samples")->max, 256.0); // not capped at 64
+    EXPECT_EQ(findParam("kernel.samples")->max, 256.0); // not capped at 64
 }
 
 TEST(ParamTable, DefaultsRoundTripThroughJson) {
     Settings d = defaultSettings();
     Settings back = defaultSettings();
-    back.ssao.radius = 9.0f; // make sure applyJson really writes
+    back.ao.radius = 9.0f; // make sure applyJson really writes
     applyJson(back, toJson(d), "test");
     EXPECT_TRUE(back == d);
 }
@@ -76,38 +78,40 @@ TEST(ParamTable, EveryValueOfEveryParameterRoundTrips) {
 
 TEST(ParamSet, ParsesEveryType) {
     Settings s = defaultSettings();
-    applyAssignment(s, "ssao.radius=0.8");
-    applyAssignment(s, "ssao.kernel=sphere");
-    applyAssignment(s, "ssao.separable=true");
-    applyAssignment(s, "ssao.samples=200");
-    applyAssignment(s, "blur.kind=gaussian");
-    EXPECT_FLOAT_EQ(s.ssao.radius, 0.8f);
-    EXPECT_EQ(s.ssao.kernel, Kernel::Sphere);
-    EXPECT_TRUE(s.ssao.separable);
-    EXPECT_EQ(s.ssao.samples, 200);
-    EXPECT_EQ(s.blur.kind, BlurKind::Gaussian);
+    applyAssignment(s, "ao.radius=0.8");
+    applyAssignment(s, "kernel.shape=sphere");
+    applyAssignment(s, "kernel.separable=true");
+    applyAssignment(s, "kernel.samples=200");
+    applyAssignment(s, "denoise.kind=gaussian");
+    applyAssignment(s, "ao.radius_mode=screen");
+    EXPECT_FLOAT_EQ(s.ao.radius, 0.8f);
+    EXPECT_EQ(s.kernel.shape, KernelShape::Sphere);
+    EXPECT_TRUE(s.kernel.separable);
+    EXPECT_EQ(s.kernel.samples, 200);
+    EXPECT_EQ(s.denoise.kind, DenoiseKind::Gaussian);
+    EXPECT_EQ(s.ao.radiusMode, RadiusMode::Screen);
 }
 
 TEST(ParamSet, ErrorsNameTheKeyAndTheProblem) {
     Settings s = defaultSettings();
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.radiuss=1"); }).find("unknown parameter 'ssao.radiuss'"),
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "ao.radiuss=1"); }).find("unknown parameter 'ao.radiuss'"),
               std::string::npos);
     EXPECT_NE(
-        errorOf([&] { applyAssignment(s, "ssao.radius=-1"); }).find("ssao.radius: value -1 is out of range"),
+        errorOf([&] { applyAssignment(s, "ao.radius=-1"); }).find("ao.radius: value -1 is out of range"),
         std::string::npos);
     EXPECT_NE(
-        errorOf([&] { applyAssignment(s, "ssao.radius=abc"); }).find("ssao.radius: 'abc' is not a number"),
+        errorOf([&] { applyAssignment(s, "ao.radius=abc"); }).find("ao.radius: 'abc' is not a number"),
         std::string::npos);
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.radius=nan"); }).find("ssao.radius"), std::string::npos);
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.radius=inf"); }).find("ssao.radius"), std::string::npos);
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.samples=0"); }).find("ssao.samples"), std::string::npos);
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.samples=257"); }).find("out of range [1, 256]"),
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "ao.radius=nan"); }).find("ao.radius"), std::string::npos);
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "ao.radius=inf"); }).find("ao.radius"), std::string::npos);
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "kernel.samples=0"); }).find("kernel.samples"), std::string::npos);
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "kernel.samples=257"); }).find("out of range [1, 256]"),
               std::string::npos);
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.samples=2.5"); }).find("not an integer"),
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "kernel.samples=2.5"); }).find("not an integer"),
               std::string::npos);
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.kernel=cube"); }).find("hemisphere|sphere"),
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "kernel.shape=cube"); }).find("hemisphere|sphere"),
               std::string::npos);
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "ssao.separable=maybe"); }).find("not a boolean"),
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "kernel.separable=maybe"); }).find("not a boolean"),
               std::string::npos);
     EXPECT_NE(errorOf([&] { applyAssignment(s, "radius"); }).find("expected key=value"), std::string::npos);
     EXPECT_TRUE(s == defaultSettings()); // failed assignments leave settings untouched
@@ -116,17 +120,17 @@ TEST(ParamSet, ErrorsNameTheKeyAndTheProblem) {
 TEST(Presets, BadFilesGiveOneClearError) {
     EXPECT_NE(errorOf([] { loadPreset("/nonexistent/p.json"); }).find("preset file not found"),
               std::string::npos);
-    auto bad = writeTemp("bad.json", "{ \"ssao\": { \"radius\": 0.5, }");
+    auto bad = writeTemp("bad.json", "{ \"ao\": { \"radius\": 0.5, }");
     EXPECT_NE(errorOf([&] { loadPreset(bad); }).find("is not valid JSON"), std::string::npos);
-    auto unknown = writeTemp("unknown.json", R"({"ssao": {"radios": 0.5}})");
-    EXPECT_NE(errorOf([&] { loadPreset(unknown); }).find("unknown key 'ssao.radios'"), std::string::npos);
-    auto group = writeTemp("group.json", R"({"ssoa": {"radius": 0.5}})");
-    EXPECT_NE(errorOf([&] { loadPreset(group); }).find("unknown key 'ssoa.radius'"), std::string::npos);
-    auto neg = writeTemp("neg.json", R"({"ssao": {"radius": -2}})");
-    EXPECT_NE(errorOf([&] { loadPreset(neg); }).find("ssao.radius: value -2 is out of range"),
+    auto unknown = writeTemp("unknown.json", R"({"ao": {"radios": 0.5}})");
+    EXPECT_NE(errorOf([&] { loadPreset(unknown); }).find("unknown key 'ao.radios'"), std::string::npos);
+    auto group = writeTemp("group.json", R"({"oa": {"radius": 0.5}})");
+    EXPECT_NE(errorOf([&] { loadPreset(group); }).find("unknown key 'oa.radius'"), std::string::npos);
+    auto neg = writeTemp("neg.json", R"({"ao": {"radius": -2}})");
+    EXPECT_NE(errorOf([&] { loadPreset(neg); }).find("ao.radius: value -2 is out of range"),
               std::string::npos);
-    auto type = writeTemp("type.json", R"({"ssao": {"samples": "many"}})");
-    EXPECT_NE(errorOf([&] { loadPreset(type); }).find("ssao.samples: expected a number"), std::string::npos);
+    auto type = writeTemp("type.json", R"({"kernel": {"samples": "many"}})");
+    EXPECT_NE(errorOf([&] { loadPreset(type); }).find("kernel.samples: expected a number"), std::string::npos);
     auto arr = writeTemp("arr.json", R"([1,2])");
     EXPECT_NE(errorOf([&] { loadPreset(arr); }).find("must be a JSON object"), std::string::npos);
 }
@@ -134,31 +138,105 @@ TEST(Presets, BadFilesGiveOneClearError) {
 TEST(Presets, ShippedSeedPresetsReproduceTheArticles) {
     const std::string dir = std::string(SSAOLAB_ASSET_DIR) + "/presets/";
     Settings lo = loadPreset(dir + "learnopengl.json");
-    EXPECT_EQ(lo.ssao.kernel, Kernel::Hemisphere);
-    EXPECT_EQ(lo.ssao.samples, 64);
-    EXPECT_FLOAT_EQ(lo.ssao.radius, 0.5f);
-    EXPECT_FLOAT_EQ(lo.ssao.bias, 0.025f);
-    EXPECT_EQ(lo.ssao.rangeCheck, RangeCheck::Smoothstep);
-    EXPECT_EQ(lo.ssao.noise, Noise::Tex4x4);
-    EXPECT_EQ(lo.blur.kind, BlurKind::Box4);
+    EXPECT_EQ(lo.kernel.shape, KernelShape::Hemisphere);
+    EXPECT_EQ(lo.kernel.samples, 64);
+    EXPECT_EQ(lo.ao.radiusMode, RadiusMode::World); // the article's 0.5 scene units
+    EXPECT_FLOAT_EQ(lo.ao.radius, 0.5f);
+    EXPECT_FLOAT_EQ(lo.kernel.bias * lo.ao.radius, 0.025f); // its bias 0.025, as a fraction of the radius
+    EXPECT_EQ(lo.kernel.rangeCheck, RangeCheck::Smoothstep);
+    EXPECT_EQ(lo.kernel.noise, Noise::Tex4x4);
+    EXPECT_EQ(lo.denoise.kind, DenoiseKind::Box4);
 
     Settings cs = loadPreset(dir + "crytek-sphere.json");
-    EXPECT_EQ(cs.ssao.kernel, Kernel::Sphere);
+    EXPECT_EQ(cs.kernel.shape, KernelShape::Sphere);
 
     Settings s3 = loadPreset(dir + "seed003.json");
-    EXPECT_EQ(s3.ssao.rangeCheck, RangeCheck::Hard);
-    EXPECT_EQ(s3.ssao.depthTest, DepthTest::Fragment);
+    EXPECT_EQ(s3.kernel.rangeCheck, RangeCheck::Hard);
+    EXPECT_EQ(s3.kernel.depthTest, DepthTest::Fragment);
     EXPECT_EQ(s3.gbuffer.normalFormat, TargetFormat::RGBA8);
-    EXPECT_EQ(s3.blur.kind, BlurKind::Gaussian);
-    EXPECT_EQ(s3.blur.radius, 2); // 5x5
+    EXPECT_EQ(s3.denoise.kind, DenoiseKind::Gaussian);
+    EXPECT_EQ(s3.denoise.halfWidth, 2); // 5x5
 
     Settings s3s = loadPreset(dir + "seed003-separable.json");
-    EXPECT_TRUE(s3s.ssao.separable);
-    EXPECT_EQ(s3s.ssao.samples, 64); // N in both loops, not the article's 9
+    EXPECT_TRUE(s3s.kernel.separable);
+    EXPECT_EQ(s3s.kernel.samples, 64); // N in both loops, not the article's 9
 
     Settings s1 = loadPreset(dir + "seed001.json");
-    EXPECT_EQ(s1.ssao.positionSource, PositionSource::Depth);
+    EXPECT_EQ(s1.kernel.positionSource, PositionSource::Depth);
 
-    for (auto& e : std::filesystem::directory_iterator(dir))
+    for (auto& e : std::filesystem::directory_iterator(dir)) {
         EXPECT_NO_THROW(loadPreset(e.path().string())) << e.path();
+        EXPECT_TRUE(readPresetFile(e.path().string()).fixesRadius()) << e.path() << ": seed presets keep their radius";
+    }
+}
+
+TEST(ParamTable, EnumChoicesMapByNameToDistinctValues) {
+    for (const auto& p : paramTable()) {
+        if (p.type != Param::Type::Enum) continue;
+        std::set<std::string> seen;
+        for (const auto& choice : p.choices) {
+            Settings s = defaultSettings();
+            setParam(s, p.key, choice);
+            EXPECT_EQ(p.format(p.get(s)), choice) << p.key; // the name reads back as itself
+            seen.insert(toJson(s).dump());
+        }
+        EXPECT_EQ(seen.size(), p.choices.size()) << p.key << ": two names set the same value";
+    }
+}
+
+TEST(ParamTable, DefaultsComeFromTheSettingsStruct) {
+    const Settings d{};
+    for (const auto& p : paramTable()) {
+        EXPECT_EQ(p.def, p.get(d)) << p.key;
+        EXPECT_TRUE(p.isDefault(d)) << p.key;
+    }
+    // The radius follows the scene by default, at a few percent of its size.
+    EXPECT_EQ(d.ao.radiusMode, RadiusMode::Scene);
+    EXPECT_GT(d.ao.radiusScene, 0.0f);
+    EXPECT_LE(d.ao.radiusScene, 0.05f);
+}
+
+TEST(ParamTable, RowsDeclareWhenTheyApply) {
+    Settings s = defaultSettings();
+    const Param& sigma = *findParam("denoise.sigma");
+    s.denoise.kind = DenoiseKind::Box4;
+    EXPECT_FALSE(sigma.applies(s)); // sigma under box4 has no effect: greyed out
+    s.denoise.kind = DenoiseKind::Gaussian;
+    EXPECT_TRUE(sigma.applies(s));
+    EXPECT_EQ(sigma.whenText(), "denoise.kind = gaussian");
+    for (const char* mode : {"world", "scene", "screen"}) {
+        setParam(s, "ao.radius_mode", mode);
+        int applying = 0;
+        for (const char* k : {"ao.radius", "ao.radius_scene", "ao.radius_px"})
+            applying += findParam(k)->applies(s);
+        EXPECT_EQ(applying, 1) << mode; // exactly the radius of the chosen unit
+    }
+    // Every technique row applies only while its technique is chosen.
+    for (const auto& p : paramTable())
+        if (p.group() == "kernel") {
+            ASSERT_FALSE(p.when.empty()) << p.key;
+            EXPECT_EQ(p.when.front().key, "ao.technique") << p.key;
+        }
+    EXPECT_TRUE(findParam("kernel.samples")->applies(defaultSettings()));
+}
+
+TEST(Presets, SceneSizeAndKeysAreRead) {
+    auto path = writeTemp("with_scene.json",
+                          R"({"scene": "sub/model.gltf", "size": [320, 200], "ao": {"radius_mode": "world"}})");
+    Preset p = readPresetFile(path);
+    ASSERT_TRUE(p.scene.has_value());
+    EXPECT_EQ(*p.scene, (std::filesystem::path(SSAOLAB_TEST_TMP) / "sub/model.gltf").lexically_normal().string())
+        << "a relative scene is relative to the preset file";
+    ASSERT_TRUE(p.size.has_value());
+    EXPECT_EQ(p.size->first, 320);
+    EXPECT_TRUE(p.fixesRadius());
+    EXPECT_FALSE(readPresetFile(writeTemp("no_radius.json", R"({"kernel": {"samples": 8}})")).fixesRadius());
+    EXPECT_EQ(*readPresetFile(writeTemp("builtin.json", R"({"scene": "builtin:corner"})")).scene, "builtin:corner");
+    EXPECT_NE(errorOf([] { readPresetFile(writeTemp("bad_size.json", R"({"size": [0, 10]})")); }).find("size"),
+              std::string::npos);
+    EXPECT_NE(errorOf([] { readPresetFile(writeTemp("bad_scene.json", R"({"scene": 3})")); }).find("scene"),
+              std::string::npos);
+    Preset round = presetFromJson(presetToJson(p), "round trip");
+    EXPECT_EQ(round.scene, p.scene);
+    EXPECT_EQ(round.size, p.size);
 }

@@ -42,8 +42,8 @@ TEST(ShaderText, MissingFilesAndVersionAreErrors) {
 }
 
 TEST(ShaderText, DriverLogsAreMappedToFileAndLine) {
-    std::vector<std::string> files = {"passes/ssao.frag", "include/onb.glsl"};
+    std::vector<std::string> files = {"techniques/kernel/kernel.frag", "include/onb.glsl"};
     EXPECT_EQ(gl::mapLogToFiles("1:12(3): error: bad", files), "shaders/include/onb.glsl:12: error: bad\n");
     EXPECT_EQ(gl::mapLogToFiles("0(7) : error C0000: x", files),
-              "shaders/passes/ssao.frag:7 : error C0000: x\n");
+              "shaders/techniques/kernel/kernel.frag:7 : error C0000: x\n");
 }

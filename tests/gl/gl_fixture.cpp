@@ -42,11 +42,11 @@ ssao::Camera sceneCamera(const ssao::Scene& s) {
 
 Rendered readAll(ssao::Renderer& r) {
     Rendered out;
-    out.position = ssao::readBack(r.gbuffer().position(), 4);
-    out.normal = ssao::readBack(r.gbuffer().normal(), 3);
-    out.depth = ssao::readBack(r.gbuffer().linearDepth(), 1);
-    out.aoRaw = ssao::readBack(r.ssao().aoRaw(), 1);
-    out.ao = ssao::readBack(r.blur().ao(), 1);
+    out.position = ssao::readBack(r.texture("gbuffer.position"), 4);
+    out.normal = ssao::readBack(r.texture("gbuffer.normal"), 3);
+    out.depth = ssao::readBack(r.texture("gbuffer.depth"), 1);
+    out.aoRaw = ssao::readBack(r.texture("ao.raw"), 1);
+    out.ao = ssao::readBack(r.texture("ao.denoised"), 1);
     out.camera = r.camera();
     return out;
 }
@@ -68,6 +68,18 @@ Rendered render(const std::string& sceneSpec, const ssao::Settings& s, int w, in
     Rendered out = readAll(*r);
     out.report = rep;
     return out;
+}
+
+double geometryMean(const Rendered& r, const ssao::Image& img) {
+    const ssao::Image mask = r.position.channel(3);
+    return ssao::stats(img, &mask).mean;
+}
+
+double meanAbsDiff(const ssao::Image& a, const ssao::Image& b) {
+    double sum = 0;
+    for (size_t i = 0; i < a.data.size() && i < b.data.size(); ++i)
+        sum += std::abs(double(a.data[i]) - double(b.data[i]));
+    return a.data.empty() ? 0.0 : sum / double(a.data.size());
 }
 
 ::testing::AssertionResult finiteInRange(const ssao::Image& img, float lo, float hi) {

@@ -36,6 +36,9 @@ std::unique_ptr<ssao::Renderer> makeRenderer(const ssao::Scene& scene, const ssa
 Rendered render(const std::string& scene, const ssao::Settings& s, int w, int h,
                 std::optional<ssao::Camera> camera = std::nullopt);
 
+// Mean of `img` over the frame's geometry pixels (position.w = 1).
+double geometryMean(const Rendered& r, const ssao::Image& img);
+double meanAbsDiff(const ssao::Image& a, const ssao::Image& b);
 // Checks a float image: no NaN/inf anywhere and every value in [lo, hi].
 ::testing::AssertionResult finiteInRange(const ssao::Image& img, float lo, float hi);
 

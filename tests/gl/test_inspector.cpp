@@ -1,9 +1,9 @@
-// The CPU replay of the SSAO shader (sample inspector) must reproduce the GPU's AO.
+// The sample inspector shows what the GPU did: the AO shader itself, compiled with INSPECT and run
+// for one pixel, records its taps. The record must reproduce the value the pass wrote.
 #include "gl_fixture.h"
 
 #include "scene/scene.h"
-#include "ssao/constants.h"
-#include "ssao/sample_inspector.h"
+#include "techniques/technique.h"
 
 #include <cmath>
 
@@ -14,61 +14,71 @@ namespace {
 class Inspector : public GlTest {};
 } // namespace
 
-TEST_F(Inspector, CpuReplayMatchesGpuAoForEveryMode) {
+TEST_F(Inspector, GpuTapsReproduceTheWrittenAoForEveryModeAndTechnique) {
     const char* modes[] = {"",
-                           "ssao.kernel=sphere",
-                           "ssao.separable=true",
-                           "ssao.position_source=depth",
+                           "kernel.shape=sphere",
+                           "kernel.separable=true",
+                           "kernel.position_source=depth",
                            "gbuffer.normal_format=rgba8",
-                           "ssao.range_check=hard",
-                           "ssao.depth_test=fragment",
-                           "ssao.noise=none",
-                           "ssao.offscreen=clamp",
-                           "ssao.power=2.5"};
-    for (const char* mode : modes) {
-        Settings s = defaultSettings();
-        s.ssao.samples = 32;
-        if (*mode) applyAssignment(s, mode);
-        Scene scene = loadScene("builtin:showcase");
-        const int w = 96, h = 54;
-        auto rp = makeRenderer(scene, s, w, h);
-        Renderer& r = *rp;
-        r.render();
-        Image pos = readBack(r.gbuffer().position(), 4), nrm = readBack(r.gbuffer().normal(), 3);
-        Image dep = readBack(r.gbuffer().depth(), 1), ao = readBack(r.ssao().aoRaw(), 1);
-        GBufferImages gb{&pos, &nrm, &dep};
-        const gpu::FrameConstants fc = packFrameConstants(*scene.camera, w, h, scene.bounds.radius());
-        int close = 0, total = 0, geometry = 0;
-        double sumErr = 0;
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
-                PixelInspection pi = inspectPixel(s.ssao, s.gbuffer, fc, gb, x, y);
-                float gpu = ao.at(x, y);
-                float err = std::abs(pi.ao - gpu);
-                sumErr += err;
-                // One sample flipping at a threshold (float rounding) moves AO by 1/N (1/2N separable).
-                close += err <= 1.01f / float(s.ssao.samples) + 1e-4f;
-                geometry += pi.geometry;
-                ++total;
-            }
-        EXPECT_GT(geometry, total / 3) << mode;
-        EXPECT_GE(close, int(0.97 * total)) << mode << ": " << close << " of " << total;
-        EXPECT_LT(sumErr / total, 0.003) << mode;
-    }
+                           "kernel.range_check=hard",
+                           "kernel.range_check=off",
+                           "kernel.depth_test=fragment",
+                           "kernel.noise=none",
+                           "kernel.offscreen=clamp",
+                           "ao.power=2.5",
+                           "ao.radius_mode=screen",
+                           "ao.resolution=half"};
+    const Scene scene = loadScene("builtin:showcase");
+    for (const auto& t : techniques())
+        for (const char* mode : modes) {
+            Settings s = defaultSettings();
+            s.ao.technique = t.id;
+            s.kernel.samples = 24;
+            if (*mode) applyAssignment(s, mode);
+            const int w = 96, h = 54;
+            auto r = makeRenderer(scene, s, w, h);
+            r->render();
+            const Image ao = readBack(r->texture("ao.raw"), 1);
+            int geometry = 0, checked = 0;
+            for (int y = 1; y < h; y += 4)
+                for (int x = 2; x < w; x += 5) {
+                    const auto pi = r->inspect(0, {x, y});
+                    ASSERT_TRUE(pi.has_value()) << mode;
+                    const glm::ivec2 p = pi->pixel; // in the AO buffer's own resolution
+                    const float written = ao.at(p.x, p.y);
+                    // The same program but for the record writes: the same float, bit for bit or nearly.
+                    EXPECT_NEAR(pi->ao, written, 1e-5f) << t.id << " " << mode << " at " << x << "," << y;
+                    ++checked;
+                    if (!pi->geometry) {
+                        EXPECT_TRUE(pi->taps.empty());
+                        EXPECT_EQ(written, 1.0f);
+                        continue;
+                    }
+                    ++geometry;
+                    // The taps add up to what the shader accumulated.
+                    double sum = 0;
+                    for (const auto& tap : pi->taps)
+                        sum += tap.contribution;
+                    EXPECT_NEAR(sum, pi->occlusion, 1e-3) << mode;
+                    if (t.id == "kernel") {
+                        EXPECT_EQ(int(pi->taps.size()), s.kernel.samples * (s.kernel.separable ? 2 : 1)) << mode;
+                        const float vis = std::clamp(1.0f - pi->occlusion / pi->normaliser, 0.0f, 1.0f);
+                        EXPECT_NEAR(std::pow(vis, s.ao.power), pi->ao, 1e-4f) << mode;
+                    }
+                }
+            EXPECT_GT(geometry, checked / 3) << mode;
+        }
 }
 
 TEST_F(Inspector, TapsReportWhereSamplesLandAndWhy) {
     Settings s = defaultSettings();
-    s.ssao.noise = Noise::None;
-    s.ssao.radius = 1.0f;
-    Scene scene = loadScene("builtin:corner");
-    auto rp = makeRenderer(scene, s, 320, 240);
-    Renderer& r = *rp;
-    r.render();
-    Image pos = readBack(r.gbuffer().position(), 4), nrm = readBack(r.gbuffer().normal(), 3),
-          dep = readBack(r.gbuffer().depth(), 1);
-    GBufferImages gb{&pos, &nrm, &dep};
-    const gpu::FrameConstants fc = packFrameConstants(*scene.camera, 320, 240, scene.bounds.radius());
+    s.kernel.noise = Noise::None;
+    setParam(s, "ao.radius_mode", "world");
+    s.ao.radius = 1.0f;
+    const Scene scene = loadScene("builtin:corner");
+    auto r = makeRenderer(scene, s, 320, 240);
+    r->render();
+    const Image nrm = readBack(r->texture("gbuffer.normal"), 3);
     // Find the floor pixel right at the wall in the centre column: half its hemisphere is wall.
     int yWall = -1;
     for (int y = 239; y >= 0; --y)
@@ -77,16 +87,35 @@ TEST_F(Inspector, TapsReportWhereSamplesLandAndWhy) {
             break;
         }
     ASSERT_GT(yWall, 0);
-    PixelInspection pi = inspectPixel(s.ssao, s.gbuffer, fc, gb, 160, yWall);
-    ASSERT_TRUE(pi.geometry);
-    ASSERT_EQ(pi.taps.size(), 64u);
+    const auto pi = r->inspect(0, {160, yWall});
+    ASSERT_TRUE(pi && pi->geometry);
+    ASSERT_EQ(pi->taps.size(), 64u);
+    EXPECT_FLOAT_EQ(pi->radius, 1.0f);
     int occluded = 0;
-    for (auto& t : pi.taps) {
-        occluded += t.state == SampleTap::State::Occluded;
-        EXPECT_LE(glm::length(t.viewPos - pi.position), s.ssao.radius + 1e-4f); // inside the kernel radius
+    for (auto& t : pi->taps) {
+        occluded += t.state == TapState::Occluded;
+        EXPECT_LE(glm::length(t.viewPos - pi->position), s.ao.radius + 1e-4f); // inside the kernel radius
+        EXPECT_GE(t.uv.x, 0.0f);
+        EXPECT_LE(t.uv.x, 1.0f);
     }
-    std::printf("floor pixel next to the wall: %d of 64 taps occluded, AO %.3f\n", occluded, pi.ao);
+    std::printf("floor pixel next to the wall: %d of 64 taps occluded, AO %.3f\n", occluded, pi->ao);
     EXPECT_GT(occluded, 6);
-    EXPECT_LT(pi.ao, 0.9f);
-    EXPECT_NEAR(pi.ao, readBack(r.ssao().aoRaw(), 1).at(160, yWall), 1.01f / 64.0f);
+    EXPECT_LT(pi->ao, 0.9f);
+    // A sky pixel records no taps; a pixel outside the image is refused.
+    EXPECT_FALSE(r->inspect(0, {-1, 5}).has_value());
+    EXPECT_FALSE(r->inspect(0, {320, 5}).has_value());
+}
+
+TEST_F(Inspector, ChainBIsInspectedWithItsOwnSettings) {
+    const Scene scene = loadScene("builtin:showcase");
+    Settings a = defaultSettings(), b = a;
+    b.kernel.samples = 8;
+    auto r = makeRenderer(scene, a, 96, 54);
+    r->setSettingsB(b);
+    r->render();
+    const auto pa = r->inspect(0, {48, 40}), pb = r->inspect(1, {48, 40});
+    ASSERT_TRUE(pa && pb && pa->geometry);
+    EXPECT_EQ(pa->taps.size(), 64u);
+    EXPECT_EQ(pb->taps.size(), 8u);
+    EXPECT_NEAR(pb->ao, readBack(r->texture("b.ao.raw"), 1).at(48, 40), 1e-5f);
 }

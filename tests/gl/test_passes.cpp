@@ -1,7 +1,10 @@
-// The renderer re-runs only the passes whose inputs changed.
+// The frame graph on the GPU: it re-runs exactly the passes an input change invalidates, shares
+// the G-buffer (and any identical work) between chains A and B, and carries resolution scales.
 #include "gl_fixture.h"
 
 #include "scene/scene.h"
+
+#include <set>
 
 using namespace ssao;
 using namespace ssaotest;
@@ -30,9 +33,9 @@ class Passes : public GlTest {
 using V = std::vector<std::string>;
 } // namespace
 
-TEST_F(Passes, FirstFrameRunsAllThenNothingUntilSomethingChanges) {
+TEST_F(Passes, FirstFrameRunsAllInDeclaredOrderThenNothingUntilSomethingChanges) {
     FrameReport first = r_->render();
-    EXPECT_EQ(first.ran(), (V{"gbuffer", "ssao", "blur", "composite"}));
+    EXPECT_EQ(first.ran(), (V{"gbuffer", "ao", "denoise", "composite"}));
     for (auto& p : first.passes) {
         EXPECT_GE(p.gpuMs, 0.0) << p.name;     // timer queries answered...
         EXPECT_LT(p.gpuMs, 10000.0) << p.name; // ...with a real time (llvmpipe first-query guard)
@@ -40,33 +43,130 @@ TEST_F(Passes, FirstFrameRunsAllThenNothingUntilSomethingChanges) {
     EXPECT_EQ(r_->render().ran(), V{});
 }
 
-TEST_F(Passes, BlurSettingRerunsOnlyBlurAndComposite) {
+TEST_F(Passes, EveryBufferIsListedFromTheGraph) {
     r_->render();
-    Image rawBefore = readBack(r_->ssao().aoRaw(), 1), aoBefore = readBack(r_->blur().ao(), 1);
-    EXPECT_EQ(ranAfter("blur.kind=gaussian"), (V{"blur", "composite"}));
-    EXPECT_EQ(ranAfter("blur.sigma=3"), (V{"blur", "composite"}));
-    Image rawAfter = readBack(r_->ssao().aoRaw(), 1), aoAfter = readBack(r_->blur().ao(), 1);
+    V names;
+    for (const Resource* res : r_->buffers())
+        names.push_back(res->desc.name);
+    EXPECT_EQ(names, (V{"gbuffer.position", "gbuffer.normal", "gbuffer.albedo", "gbuffer.depth", "gbuffer.zbuffer",
+                        "ao.raw", "ao.denoised", "composite"}));
+    EXPECT_NE(r_->graph().find("denoise.tmp"), nullptr); // internal scratch exists but is not listed
+}
+
+TEST_F(Passes, DenoiseSettingRerunsOnlyDenoiseAndComposite) {
+    r_->render();
+    Image rawBefore = readBack(r_->texture("ao.raw"), 1), aoBefore = readBack(r_->texture("ao.denoised"), 1);
+    EXPECT_EQ(ranAfter("denoise.kind=gaussian"), (V{"denoise", "composite"}));
+    EXPECT_EQ(ranAfter("denoise.sigma=3"), (V{"denoise", "composite"}));
+    Image rawAfter = readBack(r_->texture("ao.raw"), 1), aoAfter = readBack(r_->texture("ao.denoised"), 1);
     EXPECT_EQ(rawBefore.data, rawAfter.data); // not recomputed, so bit-identical
-    EXPECT_NE(aoBefore.data, aoAfter.data);   // and the blur did change the result
+    EXPECT_NE(aoBefore.data, aoAfter.data);   // and the denoiser did change the result
 }
 
 TEST_F(Passes, EachSettingGroupInvalidatesItsPassAndWhatFollows) {
     r_->render();
-    EXPECT_EQ(ranAfter("ssao.radius=0.8"), (V{"ssao", "blur", "composite"}));
+    EXPECT_EQ(ranAfter("ao.radius_scene=0.03"), (V{"ao", "denoise", "composite"}));
+    EXPECT_EQ(ranAfter("kernel.samples=16"), (V{"ao", "denoise", "composite"}));
     EXPECT_EQ(ranAfter("composite.ambient=0.5"), (V{"composite"}));
-    EXPECT_EQ(ranAfter("gbuffer.normal_format=rgba8"), (V{"gbuffer", "ssao", "blur", "composite"}));
-    EXPECT_EQ(ranAfter("ssao.radius=0.8"), V{}); // same value: nothing changed
+    EXPECT_EQ(ranAfter("gbuffer.normal_format=rgba8"), (V{"gbuffer", "ao", "denoise", "composite"}));
+    EXPECT_EQ(ranAfter("ao.radius_scene=0.03"), V{}); // same value: nothing changed
+}
+
+TEST_F(Passes, ARowThatDoesNotApplyReRunsNothing) {
+    r_->render();
+    ASSERT_EQ(r_->settings().denoise.kind, DenoiseKind::Box4);
+    EXPECT_EQ(ranAfter("denoise.sigma=5"), V{});  // sigma has no effect under box4
+    EXPECT_EQ(ranAfter("ao.radius=3"), V{});      // the world radius, while the radius is in scene units
+    EXPECT_EQ(ranAfter("ao.radius_mode=world"), (V{"ao", "denoise", "composite"}));
+    EXPECT_EQ(ranAfter("ao.radius=2"), (V{"ao", "denoise", "composite"}));
+}
+
+TEST_F(Passes, EveryParameterInvalidatesExactlyTheDependentsOfTheGroupItBelongsTo) {
+    // Expected from the declarations: the passes reading the row's group, plus everything that
+    // reads their outputs, transitively. Checked against the passes that really ran.
+    r_->render();
+    const Settings base = r_->settings();
+    for (const Param& p : paramTable()) {
+        Settings s = base;
+        const double v = p.get(s);
+        p.set(s, v != p.max ? p.max : p.min);
+        if (!p.applies(s) || s == base) continue;
+        std::set<std::string> dirty, written;
+        for (const auto& name : r_->graph().passOrder()) {
+            const PassDecl* d = r_->graph().declaration(name);
+            bool runs = std::count(d->groups.begin(), d->groups.end(), p.group()) > 0;
+            for (const auto& in : d->reads)
+                runs = runs || written.count(in);
+            if (runs) {
+                dirty.insert(name);
+                for (const auto& w : d->writes)
+                    written.insert(w.name);
+            }
+        }
+        r_->setSettings(s);
+        const V ran = r_->render().ran();
+        EXPECT_EQ(std::set<std::string>(ran.begin(), ran.end()), dirty) << p.key;
+        r_->setSettings(base);
+        r_->render();
+    }
 }
 
 TEST_F(Passes, CameraSceneAndSizeInvalidateEverything) {
     r_->render();
-    Camera c = r_->camera();
+    Camera c = r_->userCamera();
     c.eye.x += 0.1f;
     r_->setCamera(c);
     EXPECT_EQ(r_->render().ran().size(), 4u);
     r_->setSize(100, 50);
     EXPECT_EQ(r_->render().ran().size(), 4u);
-    EXPECT_EQ(r_->ssao().aoRaw().width(), 100);
+    EXPECT_EQ(r_->texture("ao.raw").width(), 100);
     r_->setScene(scene_);
     EXPECT_EQ(r_->render().ran().size(), 4u);
+}
+
+TEST_F(Passes, ChainBSharesTheGBufferAndWhateverItsSettingsDoNotChange) {
+    r_->render();
+    // AO on | off: B differs only in the composite, so only b.composite runs.
+    Settings off = r_->settings();
+    off.composite.useAo = false;
+    r_->setSettingsB(off);
+    EXPECT_EQ(r_->render().ran(), V{"b.composite"});
+    EXPECT_EQ(r_->graph().resolve("b.ao.raw"), "ao.raw"); // B's AO is A's, not a second computation
+    // A B preset that changes only the denoiser shares the raw AO.
+    Settings gauss = r_->settings();
+    gauss.denoise.kind = DenoiseKind::Gaussian;
+    r_->setSettingsB(gauss);
+    EXPECT_EQ(r_->render().ran(), (V{"b.denoise", "b.composite"}));
+    // A different kernel needs its own AO pass, still on the shared G-buffer.
+    Settings sphere = r_->settings();
+    sphere.kernel.shape = KernelShape::Sphere;
+    r_->setSettingsB(sphere);
+    EXPECT_EQ(r_->render().ran(), (V{"b.ao", "b.denoise", "b.composite"}));
+    Image mask = readBack(r_->texture("gbuffer.position"), 4).channel(3);
+    const double a = stats(readBack(r_->texture("ao.raw"), 1), &mask).mean;
+    const double b = stats(readBack(r_->texture("b.ao.raw"), 1), &mask).mean;
+    EXPECT_LT(b, a - 0.2) << "B really renders its own settings (the sphere kernel's false occlusion)";
+    // Chain B off: its passes leave the graph.
+    r_->setSettingsB(std::nullopt);
+    EXPECT_EQ(r_->render().ran(), V{});
+    EXPECT_EQ(r_->graph().find("b.ao.raw"), nullptr);
+}
+
+TEST_F(Passes, AoAtHalfAndQuarterResolutionFlowsThroughTheGraph) {
+    Rendered full = render("builtin:showcase", defaultSettings(), 320, 180);
+    for (const char* res : {"half", "quarter"}) {
+        Settings s = defaultSettings();
+        setParam(s, "ao.resolution", res);
+        auto r = makeRenderer(scene_, s, 320, 180);
+        r->render();
+        const int div = std::string(res) == "half" ? 2 : 4;
+        EXPECT_EQ(r->texture("ao.raw").width(), 320 / div) << res;
+        EXPECT_EQ(r->resource("ao.raw").desc.scale, 1.0f / float(div)) << res;
+        EXPECT_EQ(r->texture("ao.denoised").width(), 320) << res; // the denoiser brings it back to full size
+        Rendered out = readAll(*r);
+        EXPECT_TRUE(finiteInRange(out.aoRaw, 0.0f, 1.0f)) << res;
+        EXPECT_TRUE(finiteInRange(out.ao, 0.0f, 1.0f)) << res;
+        // The same AO, only coarser: close to full resolution on average.
+        EXPECT_NEAR(geometryMean(out, out.ao), geometryMean(full, full.ao), 0.02) << res;
+    }
 }

@@ -18,7 +18,7 @@ TEST_F(Robustness, RandomVectorParallelToTheNormalGivesNoNaN) {
     // Look along the corner's wall: its normal (+z world) becomes view-space ±x, exactly the
     // fixed rotation vector (1,0,0) used with noise off, so Gram–Schmidt yields a zero tangent.
     Settings s = defaultSettings();
-    s.ssao.noise = Noise::None;
+    s.kernel.noise = Noise::None;
     Camera cam{{6.0f, 1.5f, 0.0f}, {-6.0f, 1.0f, 0.0f}, {0, 1, 0}, 60.0f, 0.1f, 50.0f};
     Rendered r = render("builtin:corner", s, 200, 120, cam);
     long degenerate = 0;
@@ -34,9 +34,10 @@ TEST_F(Robustness, TinyRadiusWithoutBiasGivesNoNaN) {
     // radius → 0 with equal depths was 0/0 in the seeds' range check.
     for (const char* range : {"smoothstep", "hard", "off"}) {
         Settings s = defaultSettings();
-        setParam(s, "ssao.radius", "0.0001");
-        setParam(s, "ssao.bias", "0");
-        setParam(s, "ssao.range_check", range);
+        setParam(s, "ao.radius_mode", "world");
+        setParam(s, "ao.radius", "0.0001");
+        setParam(s, "kernel.bias", "0");
+        setParam(s, "kernel.range_check", range);
         Rendered r = render("builtin:showcase", s, 160, 90);
         EXPECT_TRUE(finiteInRange(r.aoRaw, 0.0f, 1.0f)) << range;
         EXPECT_TRUE(finiteInRange(r.ao, 0.0f, 1.0f)) << range;
@@ -48,9 +49,10 @@ TEST_F(Robustness, SamplesBehindTheCameraAndOffScreenAreGuarded) {
     // or far off screen, for both off-screen policies.
     for (const char* off : {"skip", "clamp"}) {
         Settings s = defaultSettings();
-        setParam(s, "ssao.radius", "3");
-        setParam(s, "ssao.offscreen", off);
-        setParam(s, "ssao.kernel", "sphere");
+        setParam(s, "ao.radius_mode", "world");
+        setParam(s, "ao.radius", "3");
+        setParam(s, "kernel.offscreen", off);
+        setParam(s, "kernel.shape", "sphere");
         Camera cam{{-1.5f, 0.8f, -1.15f}, {-1.5f, 0.8f, -2.0f}, {0, 1, 0}, 90.0f, 0.01f, 60.0f};
         Rendered r = render("builtin:showcase", s, 160, 90, cam);
         EXPECT_TRUE(finiteInRange(r.aoRaw, 0.0f, 1.0f)) << off;
@@ -60,7 +62,7 @@ TEST_F(Robustness, SamplesBehindTheCameraAndOffScreenAreGuarded) {
 
 TEST_F(Robustness, EightBitNormalsAreRenormalised) {
     Settings a = defaultSettings(), b = defaultSettings();
-    a.ssao.noise = b.ssao.noise = Noise::None;
+    a.kernel.noise = b.kernel.noise = Noise::None;
     b.gbuffer.normalFormat = TargetFormat::RGBA8;
     Rendered ra = render("builtin:showcase", a, 160, 90), rb = render("builtin:showcase", b, 160, 90);
     // The decoded 8-bit normals are within quantisation of the float ones...
@@ -108,5 +110,7 @@ TEST_F(Robustness, ShaderCompileErrorsNameFileAndLine) {
     // The real shaders compile in every variant the passes use.
     gl::ShaderLibrary real(SSAOLAB_SHADER_DIR);
     EXPECT_NE(real.program("passes/gbuffer.vert", "passes/gbuffer.frag", {{"NORMAL_UNORM", "1"}}), 0u);
-    EXPECT_NE(real.program("passes/fullscreen.vert", "passes/ssao.frag"), 0u);
+    EXPECT_NE(real.program("passes/fullscreen.vert", "techniques/kernel/kernel.frag"), 0u);
+    EXPECT_NE(real.program("passes/fullscreen.vert", "techniques/kernel/kernel.frag", {{"INSPECT", "1"}}), 0u);
+    EXPECT_NE(real.program("passes/fullscreen.vert", "display/view.frag"), 0u);
 }

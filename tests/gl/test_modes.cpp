@@ -1,0 +1,98 @@
+// Every value of every parameter: finite, in [0,1], and it changes the image it claims to change
+// (a mode with no effect is a bug). The list comes from the parameter table, so a new row is
+// swept without editing this file.
+#include "gl_fixture.h"
+
+#include "scene/scene.h"
+
+using namespace ssao;
+using namespace ssaotest;
+
+namespace {
+class Modes : public GlTest {};
+
+// Makes `p` apply: each condition's key set to its first allowed value (recursively).
+void makeApply(Settings& s, const Param& p) {
+    for (const auto& c : p.when) {
+        const Param* q = findParam(c.key);
+        ASSERT_NE(q, nullptr) << c.key;
+        makeApply(s, *q);
+        setParam(s, c.key, c.values.front());
+    }
+}
+
+std::vector<double> valuesToTry(const Param& p) {
+    if (p.type == Param::Type::Enum || p.type == Param::Type::Bool) {
+        std::vector<double> v;
+        for (double i = p.min; i <= p.max; i += 1.0)
+            v.push_back(i);
+        return v;
+    }
+    return {p.min, p.max};
+}
+
+struct Images {
+    Image gbuffer, raw, ao, composite;
+};
+Images renderImages(Renderer& r, const Settings& s) {
+    r.setSettings(s);
+    r.render();
+    Image g = readBack(r.texture("gbuffer.position"), 3), n = readBack(r.texture("gbuffer.normal"), 3);
+    g.data.insert(g.data.end(), n.data.begin(), n.data.end());
+    return {g, readBack(r.texture("ao.raw"), 1), readBack(r.texture("ao.denoised"), 1),
+            readBack(r.texture("composite"), 3)};
+}
+bool differ(const Image& a, const Image& b) {
+    return a.width != b.width || a.data != b.data;
+}
+} // namespace
+
+TEST_F(Modes, EveryValueOfEveryParameterIsFiniteAndChangesTheImage) {
+    const Scene scene = loadScene("builtin:showcase");
+    auto r = makeRenderer(scene, defaultSettings(), 96, 54);
+    int tried = 0;
+    for (const Param& p : paramTable()) {
+        Settings base = defaultSettings();
+        makeApply(base, p);
+        const Images ref = renderImages(*r, base);
+        for (double v : valuesToTry(p)) {
+            Settings s = base;
+            p.set(s, v);
+            if (s == base) continue; // the default itself
+            const std::string what = p.key + "=" + p.format(v);
+            const Images out = renderImages(*r, s);
+            EXPECT_TRUE(finiteInRange(out.raw, 0.0f, 1.0f)) << what;
+            EXPECT_TRUE(finiteInRange(out.ao, 0.0f, 1.0f)) << what;
+            // The composite group shades, the G-buffer group stores (fp32 and fp16 normals can give the
+            // same AO), the denoise group filters; every other group changes the AO itself.
+            if (p.group() == "gbuffer")
+                EXPECT_TRUE(differ(out.gbuffer, ref.gbuffer)) << what << " changed nothing";
+            else if (p.group() == "composite")
+                EXPECT_TRUE(differ(out.composite, ref.composite)) << what << " changed nothing";
+            else if (p.group() == "denoise")
+                EXPECT_TRUE(differ(out.ao, ref.ao)) << what << " changed nothing";
+            else
+                EXPECT_TRUE(differ(out.raw, ref.raw)) << what << " changed nothing";
+            ++tried;
+        }
+    }
+    EXPECT_GT(tried, 40);
+}
+
+TEST_F(Modes, EveryKernelDenoiseSeparableCombinationShowsOcclusion) {
+    for (KernelShape k : {KernelShape::Hemisphere, KernelShape::Sphere})
+        for (DenoiseKind d : {DenoiseKind::None, DenoiseKind::Box4, DenoiseKind::Gaussian})
+            for (bool sep : {false, true}) {
+                Settings s = defaultSettings();
+                s.kernel.shape = k;
+                s.denoise.kind = d;
+                s.kernel.separable = sep;
+                Rendered r = render("builtin:showcase", s, 160, 90);
+                const std::string what = std::string(k == KernelShape::Sphere ? "sphere" : "hemisphere") + "/denoise" +
+                                         std::to_string(int(d)) + (sep ? "/separable" : "");
+                EXPECT_TRUE(finiteInRange(r.aoRaw, 0.0f, 1.0f)) << what << " ao.raw";
+                EXPECT_TRUE(finiteInRange(r.ao, 0.0f, 1.0f)) << what << " ao.denoised";
+                Image mask = r.position.channel(3);
+                EXPECT_LT(stats(r.aoRaw, &mask).min, 0.8) << what << ": the showcase has occluded corners";
+            }
+}
