@@ -111,9 +111,13 @@ Stats stats(const Image& img, const Image* mask) {
         }
     if (s.count) {
         s.mean = sum / double(s.count);
-        const size_t k = size_t(0.05 * double(values.size() - 1) + 0.5);
-        std::nth_element(values.begin(), values.begin() + ptrdiff_t(k), values.end());
-        s.p05 = values[k];
+        auto quantile = [&](double q) {
+            const size_t k = size_t(q * double(values.size() - 1) + 0.5);
+            std::nth_element(values.begin(), values.begin() + ptrdiff_t(k), values.end());
+            return double(values[k]);
+        };
+        s.p05 = quantile(0.05);
+        s.p50 = quantile(0.5);
     } else {
         s.min = s.max = 0;
     }

@@ -32,6 +32,7 @@ struct Stats {
     long count = 0;     // finite values over masked pixels
     double min = 0, mean = 0, max = 0;
     double p05 = 0; // 5th percentile: the darkest 5 % of (AO) pixels are at or below it
+    double p50 = 0; // median
 };
 // Statistics of channel 0 over pixels where mask (if given, at any resolution: sampled at the
 // nearest pixel) has channel 0 > 0.

@@ -40,7 +40,7 @@ Image decoded(const Resource& r) {
 }
 
 nlohmann::json statsJson(const Stats& s) {
-    return {{"min", s.min}, {"mean", s.mean}, {"max", s.max}, {"p05", s.p05}, {"pixels", s.count}};
+    return {{"min", s.min}, {"mean", s.mean}, {"max", s.max}, {"p05", s.p05}, {"median", s.p50}, {"pixels", s.count}};
 }
 
 nlohmann::json bufferJson(const Resource& r, const Image& img, const Image& mask) {
