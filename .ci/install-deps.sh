@@ -7,8 +7,8 @@ PKGS=(
   build-essential cmake pkg-config
   libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev libstb-dev
   libegl-dev libgl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri libgl1 libglx-mesa0
-  libembree-dev nlohmann-json3-dev libtinyexr-dev libcli11-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  nlohmann-json3-dev libtinyexr-dev libcli11-dev
+  libgtest-dev libgmock-dev
   xvfb xauth
 )
 

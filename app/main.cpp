@@ -28,7 +28,8 @@ void printParams() {
             range = "[" + p.format(p.min) + ", " + p.format(p.max) + "]";
         }
         std::printf("%-26s %-10s %-12s %-30s %s%s\n", p.key.c_str(), p.format(p.def).c_str(), p.unit.c_str(),
-                    range.c_str(), p.help.c_str(), p.when.empty() ? "" : (" [applies when " + p.whenText() + "]").c_str());
+                    range.c_str(), p.help.c_str(),
+                    p.when.empty() ? "" : (" [applies when " + p.whenText() + "]").c_str());
     }
 }
 
@@ -49,7 +50,8 @@ int main(int argc, char** argv) {
     ssao::WindowOptions wo;
     std::string windowSize = "1600x900";
     CLI::App* view = app.add_subcommand("view", "open the interactive explorer window (GLFW + Dear ImGui)");
-    view->add_option("--scene", wo.app.scene, "builtin:NAME or a .gltf/.glb file (default: the preset's, else showcase)");
+    view->add_option("--scene", wo.app.scene,
+                     "builtin:NAME or a .gltf/.glb file (default: the preset's, else showcase)");
     view->add_option("--preset", wo.app.preset, "preset name or JSON file");
     view->add_option("--shaders", wo.app.shaderDir, "shader folder (edits are hot-reloaded)");
     view->add_option("--preset-dir", wo.app.userPresetDir,
@@ -58,6 +60,8 @@ int main(int argc, char** argv) {
     view->add_option("--frames", wo.frames, "draw N frames then exit (for tests and screenshots)")
         ->check(CLI::Range(0, 1000000));
     view->add_option("--screenshot", wo.screenshot, "with --frames: save the last frame as PNG");
+    view->add_option("--frame-log", wo.frameLog,
+                     "write one line per drawn frame: ms, render size, moving, passes run");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -70,8 +74,8 @@ int main(int argc, char** argv) {
         }
         if (app.got_subcommand("paths")) {
             std::printf("binary   %s\ndata     %s (%s)\nshaders  %s\npresets  %s/presets, then %s\n",
-                        ssao::executablePath().c_str(), ssao::dataRoot().c_str(), ssao::dataRootSource().c_str(),
-                        ssao::shaderRoot().c_str(), ssao::assetRoot().c_str(),
+                        ssao::executablePath().c_str(), ssao::dataRoot().c_str(),
+                        ssao::dataRootSource().c_str(), ssao::shaderRoot().c_str(), ssao::assetRoot().c_str(),
                         ssao::PresetStore::defaultUserDir().c_str());
             return 0;
         }

@@ -19,20 +19,24 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--scene", o.scene,
                    "builtin:showcase|plane|corner, or a .gltf/.glb file (default: the preset's scene, else "
                    "builtin:showcase)");
-    cmd.add_option("--preset", o.preset,
-                   "preset JSON file, or a name: the seed presets (e.g. learnopengl), then the ones saved in the app");
+    cmd.add_option(
+        "--preset", o.preset,
+        "preset JSON file, or a name: the seed presets (e.g. learnopengl), then the ones saved in the app");
     cmd.add_option("--set", o.sets, "override one parameter, key=value (repeatable; see `ssaolab params`)");
     cmd.add_option("--size", o.size, "output size WIDTHxHEIGHT (default: the preset's size, else 1280x720)");
     cmd.add_option("--camera", o.camera, "eye,target[,up[,fov_deg[,near,far]]] as comma-separated numbers");
-    cmd.add_option("--clip", o.clip, "clip planes: fit (to the scene, default) or fixed (the camera's own near/far)")
+    cmd.add_option("--clip", o.clip,
+                   "clip planes: fit (to the scene, default) or fixed (the camera's own near/far)")
         ->check(CLI::IsMember({"fit", "fixed"}));
     cmd.add_option("--out", o.out, "output folder (EXR, PNG, metrics.json)")->capture_default_str();
     cmd.add_option("--timing-frames", o.timingFrames, "extra frames, every pass forced, averaged into gpu_ms")
         ->capture_default_str()
         ->check(CLI::Range(1, 1000));
-    cmd.add_flag("--fit-range", o.fitRange, "PNG previews: fit every buffer's range (as the app's 'fit range')");
+    cmd.add_flag("--fit-range", o.fitRange,
+                 "PNG previews: fit every buffer's range (as the app's 'fit range')");
     cmd.add_flag("--false-colour", o.falseColor, "PNG previews: scalar buffers in false colour");
-    cmd.add_option("--shaders", o.shaderDir, "shader folder (default: the installed or source tree's shaders/)");
+    cmd.add_option("--shaders", o.shaderDir,
+                   "shader folder (default: the installed or source tree's shaders/)");
     cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)");
     cmd.add_flag("--verbose-gl", o.verboseGl, "log every KHR_debug message");
     cmd.add_flag("--quiet", o.quiet, "print nothing on success");
@@ -127,19 +131,22 @@ int runRender(const RenderOptions& o) {
         throw Error("OpenGL reported " + std::to_string(gl::glErrorCount()) + " error(s) during the run" +
                     (glErr.empty() ? "" : " (" + glErr + ")"));
     if (!o.quiet) {
-        std::printf("%s: %dx%d on %s; AO mean %.4f (raw %.4f), darkest 5%% <= %.3f; radius %.4g units = %.1f px at "
-                    "the centre; gpu ms:",
-                    scene.name.c_str(), w, h, info.glRenderer.c_str(), m["ao"]["mean"].get<double>(),
-                    m["ao_raw"]["mean"].get<double>(), m["ao"]["p05"].get<double>(),
-                    m["radius"]["world_at_centre"].get<double>(), m["radius"]["pixels_at_centre"].get<double>());
+        std::printf(
+            "%s: %dx%d on %s; AO mean %.4f (raw %.4f), darkest 5%% <= %.3f; radius %.4g units = %.1f px at "
+            "the centre; gpu ms:",
+            scene.name.c_str(), w, h, info.glRenderer.c_str(), m["ao"]["mean"].get<double>(),
+            m["ao_raw"]["mean"].get<double>(), m["ao"]["p05"].get<double>(),
+            m["radius"]["world_at_centre"].get<double>(), m["radius"]["pixels_at_centre"].get<double>());
         for (auto& [k, v] : timing.items())
             std::printf(" %s %.3f", k.c_str(), v.get<double>());
-        std::printf("\nwrote %s/: one .exr per float buffer, one .png per buffer, metrics.json\n", o.out.c_str());
+        std::printf("\nwrote %s/: one .exr per float buffer, one .png per buffer, metrics.json\n",
+                    o.out.c_str());
     }
     long bad = 0;
     for (auto& [name, b] : m["buffers"].items())
         bad += b["nonfinite"].get<long>();
-    if (bad > 0) throw Error(std::to_string(bad) + " non-finite values in the output buffers (see metrics.json)");
+    if (bad > 0)
+        throw Error(std::to_string(bad) + " non-finite values in the output buffers (see metrics.json)");
     return 0;
 }
 

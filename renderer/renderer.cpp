@@ -100,7 +100,8 @@ void Renderer::buildGraph() {
         const nlohmann::json ja = toEffectiveJson(settings_), jb = toEffectiveJson(*settingsB_);
         const std::vector<Pass*> b = chain(Branch::b(), *settingsB_);
         for (size_t i = 0; i < b.size(); ++i) {
-            const PassDecl da = FrameGraph::declare(*a[i], settings_), db = FrameGraph::declare(*b[i], *settingsB_);
+            const PassDecl da = FrameGraph::declare(*a[i], settings_),
+                           db = FrameGraph::declare(*b[i], *settingsB_);
             bool same = da.groups == db.groups && da.reads.size() == db.reads.size() &&
                         da.writes.size() == db.writes.size() && typeid(*a[i]) == typeid(*b[i]);
             for (const auto& g : db.groups)
@@ -146,7 +147,8 @@ std::optional<PixelInspection> Renderer::inspect(int branch, glm::ivec2 pixel) {
     if (!ao || !frame_.scene) return std::nullopt;
     Pass* p = graph_.pass(ao->producer);
     const Settings* s = graph_.settingsOf(ao->producer);
-    if (!p || !s || pixel.x < 0 || pixel.y < 0 || pixel.x >= width_ || pixel.y >= height_) return std::nullopt;
+    if (!p || !s || pixel.x < 0 || pixel.y < 0 || pixel.x >= width_ || pixel.y >= height_)
+        return std::nullopt;
     const glm::ivec2 aoPixel(int(float(pixel.x) * float(ao->width()) / float(width_)),
                              int(float(pixel.y) * float(ao->height()) / float(height_)));
     frameUbo_.bind(SSAO_UBO_FRAME);

@@ -27,8 +27,7 @@ std::string absoluteSpec(const std::string& spec) {
 }
 } // namespace
 
-AppCore::AppCore(const AppOptions& o)
-    : opts_(o), store_(PresetStore::standard(o.userPresetDir)) {
+AppCore::AppCore(const AppOptions& o) : opts_(o), store_(PresetStore::standard(o.userPresetDir)) {
     if (opts_.shaderDir.empty()) opts_.shaderDir = shaderRoot();
     renderScale = std::clamp(o.renderScale, 0.25f, 1.0f);
     interactiveScale = std::clamp(o.interactiveScale, 0.1f, 1.0f);
@@ -58,10 +57,11 @@ std::string AppCore::radiusNote() const {
     char buf[200];
     const AoSettings& a = settings_.ao;
     if (a.radiusMode == RadiusMode::Scene)
-        std::snprintf(buf, sizeof buf, "AO radius follows the scene: %.3g x diagonal %.4g = %.4g units", a.radiusScene,
-                      diag, a.radiusScene * diag);
+        std::snprintf(buf, sizeof buf, "AO radius follows the scene: %.3g x diagonal %.4g = %.4g units",
+                      a.radiusScene, diag, a.radiusScene * diag);
     else if (a.radiusMode == RadiusMode::World)
-        std::snprintf(buf, sizeof buf, "AO radius %.4g scene units (set by the preset; diagonal %.4g)", a.radius, diag);
+        std::snprintf(buf, sizeof buf, "AO radius %.4g scene units (set by the preset; diagonal %.4g)",
+                      a.radius, diag);
     else
         std::snprintf(buf, sizeof buf, "AO radius %.3g pixels at every depth", a.radiusPx);
     return buf;
@@ -114,12 +114,14 @@ bool AppCore::openPreset(const std::string& nameOrPath) {
     return attempt("load preset", [&] {
         Preset p = store_.open(nameOrPath);
         std::optional<Scene> s;
-        if (p.scene && absoluteSpec(*p.scene) != sceneSpec_) s = loadScene(*p.scene); // may throw: nothing changed yet
+        if (p.scene && absoluteSpec(*p.scene) != sceneSpec_)
+            s = loadScene(*p.scene); // may throw: nothing changed yet
         loaded_ = p;
         settings_ = p.settings;
         if (s) adoptScene(std::move(*s), *p.scene, false);
         if (p.camera) camera_.reset(*p.camera, scene_.bounds.radius());
-        return "preset " + p.name + " loaded" + (s ? " with its scene " + scene_.name : "") + "; " + radiusNote();
+        return "preset " + p.name + " loaded" + (s ? " with its scene " + scene_.name : "") + "; " +
+               radiusNote();
     });
 }
 
@@ -147,7 +149,8 @@ bool AppCore::savePreset(const std::string& name) {
         if (renderer_->width() > 0) {
             // The view's full-resolution size, not the reduced one used while dragging.
             const float s = renderedInteractive_ ? renderScale / interactiveScale : 1.0f;
-            p.size = std::make_pair(int(float(renderer_->width()) * s + 0.5f), int(float(renderer_->height()) * s + 0.5f));
+            p.size = std::make_pair(int(float(renderer_->width()) * s + 0.5f),
+                                    int(float(renderer_->height()) * s + 0.5f));
         }
         p.camera = camera_.camera(); // the camera as a bookmark
         const std::string path = store_.save(p);
@@ -200,7 +203,8 @@ void AppCore::drawUi() {
     const float panelWidth = std::min(420.0f * io.FontGlobalScale, io.DisplaySize.x * 0.4f);
     const float infoHeight = std::min(230.0f * io.FontGlobalScale, io.DisplaySize.y * 0.35f);
     drawControlPanel(*this, ImVec2(0, 0), ImVec2(panelWidth, io.DisplaySize.y));
-    drawMainView(*this, ImVec2(panelWidth, 0), ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - infoHeight));
+    drawMainView(*this, ImVec2(panelWidth, 0),
+                 ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - infoHeight));
     drawInfoStrip(*this, ImVec2(panelWidth, io.DisplaySize.y - infoHeight),
                   ImVec2(io.DisplaySize.x - panelWidth, infoHeight));
     if (busyFrames_ > 0) --busyFrames_;

@@ -154,6 +154,6 @@ void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size);
 void drawParameters(AppCore& app);
 void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size);
 void drawInfoStrip(AppCore& app, ImVec2 pos, ImVec2 size); // timing and inspector, always visible
-void rememberRect(AppCore& app, const std::string& key);  // the last item's rectangle, for tests
+void rememberRect(AppCore& app, const std::string& key);   // the last item's rectangle, for tests
 
 } // namespace ssao

@@ -101,7 +101,9 @@ std::vector<float> AppCore::valueAt(const std::string& buffer, glm::ivec2 pixel)
     const glm::vec4 t = res->texture.readTexel(x, y);
     std::vector<float> out;
     for (int c = 0; c < std::max(1, res->desc.channels); ++c)
-        out.push_back(res->desc.display == Display::Color ? t[c] : t[c] * res->desc.decodeScale + res->desc.decodeOffset);
+        out.push_back(res->desc.display == Display::Color
+                          ? t[c]
+                          : t[c] * res->desc.decodeScale + res->desc.decodeOffset);
     return out;
 }
 

@@ -10,8 +10,8 @@ void BufferViews::update(Renderer& r, const ViewStyle& style, const std::vector<
         const Resource* res = r.graph().find(name);
         if (!res) continue;
         View& v = views_[name];
-        if (v.target.texture() && v.version == res->version && v.generation == res->generation && v.style == style &&
-            v.target.texture().width() == res->width())
+        if (v.target.texture() && v.version == res->version && v.generation == res->generation &&
+            v.style == style && v.target.texture().width() == res->width())
             continue;
         v.range = painter_.paint(*res, mask, style, v.target, r.shaders(), r.triangle());
         v.version = res->version;
@@ -28,14 +28,15 @@ void BufferViews::update(Renderer& r, const ViewStyle& style, const std::vector<
 }
 
 const BufferViews::View& BufferViews::difference(Renderer& r, const std::string& a, const std::string& b,
-                                                  float scale) {
+                                                 float scale) {
     const Resource& ra = r.resource(a);
     const Resource& rb = r.resource(b);
     char key[160];
     std::snprintf(key, sizeof key, "%s@%llu/%u|%s@%llu/%u|%g", a.c_str(), (unsigned long long)ra.version,
                   ra.generation, b.c_str(), (unsigned long long)rb.version, rb.generation, scale);
     if (diffKey_ != key || !diff_.target.texture()) {
-        painter_.paintDifference(ra, rb, scale, r.resource("gbuffer.depth"), diff_.target, r.shaders(), r.triangle());
+        painter_.paintDifference(ra, rb, scale, r.resource("gbuffer.depth"), diff_.target, r.shaders(),
+                                 r.triangle());
         char label[96];
         std::snprintf(label, sizeof label, "A - B (x%g): red A brighter, blue B brighter", scale);
         diff_.label = label;

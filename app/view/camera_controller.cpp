@@ -56,7 +56,7 @@ void CameraController::zoom(float steps) {
         const float dist =
             std::clamp(glm::length(offset) * std::pow(0.9f, steps), radius_ * 1e-3f, radius_ * 100.0f);
         cam_.eye = cam_.target + glm::normalize(offset) * dist;
-        } else {
+    } else {
         move({0.0f, 0.0f, 1.0f}, 0.1f * steps);
     }
 }

@@ -49,7 +49,8 @@ void timingSection(AppCore& app) {
     rememberRect(app, "timing");
     std::vector<float> f(app.frameMs().begin(), app.frameMs().end());
     if (!f.empty()) {
-        const float width = std::max(ImGui::GetContentRegionAvail().x, 50.0f); // an explicit width: -1 draws nothing
+        const float width =
+            std::max(ImGui::GetContentRegionAvail().x, 50.0f); // an explicit width: -1 draws nothing
         ImGui::PlotLines("##frame", f.data(), int(f.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(width, 40));
         rememberRect(app, "timing#plot");
         ImGui::TextDisabled("frame %.1f ms (CPU, UI included)%s", f.back(),
@@ -98,9 +99,11 @@ void inspectorSection(AppCore& app) {
     for (const auto& t : pi->taps)
         ++counts[int(t.state)];
     ImGui::Text("%zu taps (GPU): %d open, %d occluded, %d off screen, %d behind eye, %d sky", pi->taps.size(),
-                counts[int(TapState::Open)], counts[int(TapState::Occluded)], counts[int(TapState::Offscreen)],
-                counts[int(TapState::BehindEye)], counts[int(TapState::Sky)]);
-    ImGui::Text("occlusion %.3f / %.0f, radius %.4g units -> AO %.4f", pi->occlusion, pi->normaliser, pi->radius, pi->ao);
+                counts[int(TapState::Open)], counts[int(TapState::Occluded)],
+                counts[int(TapState::Offscreen)], counts[int(TapState::BehindEye)],
+                counts[int(TapState::Sky)]);
+    ImGui::Text("occlusion %.3f / %.0f, radius %.4g units -> AO %.4f", pi->occlusion, pi->normaliser,
+                pi->radius, pi->ao);
 }
 
 } // namespace

@@ -31,7 +31,8 @@ bool tab(AppCore& app, const char* name) {
 void sceneSection(AppCore& app) {
     const Scene& sc = app.scene();
     ImGui::TextWrapped("%s", sc.name.c_str());
-    ImGui::TextDisabled("%zu triangles, bounding-box diagonal %.4g units", sc.triangleCount(), 2.0f * sc.bounds.radius());
+    ImGui::TextDisabled("%zu triangles, bounding-box diagonal %.4g units", sc.triangleCount(),
+                        2.0f * sc.bounds.radius());
     static std::string path;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.7f);
     inputText("##scenepath", path);
@@ -65,8 +66,9 @@ void sceneSection(AppCore& app) {
     if (ImGui::RadioButton("camera's own", &clip, 1)) cc.setClip(ClipMode::Fixed), app.poke();
     rememberRect(app, "camera#clip_fixed");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("The planes the camera came with (a glTF file's znear/zfar); a far/near ratio of 1e7\n"
-                          "makes the depth test z-fight into false AO.");
+        ImGui::SetTooltip(
+            "The planes the camera came with (a glTF file's znear/zfar); a far/near ratio of 1e7\n"
+            "makes the depth test z-fight into false AO.");
     const Camera& c = cc.camera();
     const Camera& e = app.renderer().camera();
     ImGui::TextDisabled("eye %.4g %.4g %.4g  target %.4g %.4g %.4g", c.eye.x, c.eye.y, c.eye.z, c.target.x,
@@ -123,7 +125,8 @@ void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size) {
                      ImGuiWindowFlags_NoSavedSettings);
     // The status has a fixed height (three lines, scrolled if longer): the widgets below never move.
     ImGui::BeginChild("status", ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * 3.0f), false);
-    ImGui::PushStyleColor(ImGuiCol_Text, app.statusIsError() ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1));
+    ImGui::PushStyleColor(ImGuiCol_Text,
+                          app.statusIsError() ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1));
     ImGui::TextWrapped("%s", app.status().c_str());
     ImGui::PopStyleColor();
     ImGui::EndChild();

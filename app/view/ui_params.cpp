@@ -26,10 +26,11 @@ void tooltip(const Param& p, bool applies) {
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
     ImGui::TextUnformatted(p.help.c_str());
-    ImGui::TextDisabled("%s   range %s   default %s", p.key.c_str(), rangeText(p).c_str(), p.format(p.def).c_str());
+    ImGui::TextDisabled("%s   range %s   default %s", p.key.c_str(), rangeText(p).c_str(),
+                        p.format(p.def).c_str());
     if (!p.when.empty())
-        ImGui::TextColored(applies ? ImVec4(0.6f, 0.6f, 0.6f, 1) : ImVec4(1, 0.75f, 0.3f, 1), "applies when %s",
-                           p.whenText().c_str());
+        ImGui::TextColored(applies ? ImVec4(0.6f, 0.6f, 0.6f, 1) : ImVec4(1, 0.75f, 0.3f, 1),
+                           "applies when %s", p.whenText().c_str());
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
 }
@@ -53,7 +54,8 @@ bool paramWidget(AppCore& app, const Param& p, Settings& s) {
         ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
         if (p.max > 100.0 * std::max(p.min, 1e-3)) flags |= ImGuiSliderFlags_Logarithmic;
         std::string fmt = "%.4g" + (p.unit.empty() ? std::string() : " " + p.unit);
-        if (ImGui::SliderFloat(label.c_str(), &v, float(p.min), float(p.max), fmt.c_str(), flags)) p.set(s, v);
+        if (ImGui::SliderFloat(label.c_str(), &v, float(p.min), float(p.max), fmt.c_str(), flags))
+            p.set(s, v);
         slider = true;
         break;
     }
@@ -104,10 +106,18 @@ void radiusLine(AppCore& app) {
         ImGui::TextDisabled("radius: shown after the first frame");
     } else {
         const RadiusInfo ri = r.radiusAtCentre();
-        const bool tiny = ri.pixels < 2.0f, huge = ri.world > 0.25f * ri.sceneDiagonal;
-        const ImVec4 colour = tiny || huge ? ImVec4(1, 0.7f, 0.3f, 1) : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
-        ImGui::TextColored(colour, "radius %.4g units = %.1f px at the centre (diagonal %.4g)%s", ri.world, ri.pixels,
-                           ri.sceneDiagonal, tiny ? ": sub-pixel, AO goes flat" : huge ? ": over 25 %% of the scene" : "");
+        const bool tiny = ri.pixels<2.0f, huge = ri.world> 0.25f * ri.sceneDiagonal;
+        const ImVec4 colour =
+            tiny || huge ? ImVec4(1, 0.7f, 0.3f, 1) : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
+        ImGui::TextColored(colour, "= %.4g units, %.1f px at centre (diag %.4g)%s", ri.world, ri.pixels,
+                           ri.sceneDiagonal,
+                           tiny   ? " SUB-PIXEL: flat AO"
+                           : huge ? " >25%% OF SCENE"
+                                  : "");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "The AO radius in scene units and in pixels at the centre of the view; the scene's\n"
+                "bounding-box diagonal. Under 2 pixels the kernel sees nothing: AO goes flat grey.");
     }
     rememberRect(app, "radius#info");
 }

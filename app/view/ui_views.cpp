@@ -76,7 +76,8 @@ bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
         }
     }
     if (moved) app.noteInteraction();
-    const bool click = ImGui::IsItemDeactivated() && ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).x == 0.0f &&
+    const bool click = ImGui::IsItemDeactivated() &&
+                       ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).x == 0.0f &&
                        ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).y == 0.0f;
     return click;
 }
@@ -117,19 +118,24 @@ void toolbar(AppCore& app) {
     if (mode != int(app.viewMode)) app.viewMode = ViewMode(mode), app.poke();
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
-    if (ImGui::SliderFloat("resolution", &app.renderScale, 0.25f, 1.0f, "%.2fx", ImGuiSliderFlags_AlwaysClamp))
-        app.poke();
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Render resolution relative to the view when input is still");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(90);
-    if (ImGui::SliderFloat("moving", &app.interactiveScale, 0.1f, 1.0f, "%.2fx", ImGuiSliderFlags_AlwaysClamp))
+    if (ImGui::SliderFloat("resolution", &app.renderScale, 0.25f, 1.0f, "%.2fx",
+                           ImGuiSliderFlags_AlwaysClamp))
         app.poke();
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Resolution while the camera moves or a slider is dragged; refined to full when input stops");
+        ImGui::SetTooltip("Render resolution relative to the view when input is still");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(90);
+    if (ImGui::SliderFloat("moving", &app.interactiveScale, 0.1f, 1.0f, "%.2fx",
+                           ImGuiSliderFlags_AlwaysClamp))
+        app.poke();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Resolution while the camera moves or a slider is dragged; refined to full when input stops");
     ImGui::SameLine();
     if (ImGui::Checkbox("fit range", &app.style.fit)) app.poke();
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Stretch every buffer over its 1st..99th percentile on geometry (depth and position always are)");
+        ImGui::SetTooltip(
+            "Stretch every buffer over its 1st..99th percentile on geometry (depth and position always are)");
     ImGui::SameLine();
     if (ImGui::Checkbox("false colour", &app.style.falseColor)) app.poke();
     // The second row always exists (with frame height), so switching modes never resizes the image
@@ -159,7 +165,8 @@ void toolbar(AppCore& app) {
             ImGui::SetNextItemWidth(150);
             if (ImGui::BeginCombo("B", app.splitPresetB.c_str())) {
                 for (const auto& e : app.presets().entries())
-                    if (ImGui::Selectable(e.name.c_str(), e.name == app.splitPresetB)) app.splitPresetB = e.name, app.poke();
+                    if (ImGui::Selectable(e.name.c_str(), e.name == app.splitPresetB))
+                        app.splitPresetB = e.name, app.poke();
                 ImGui::EndCombo();
             }
         }
@@ -176,12 +183,14 @@ void toolbar(AppCore& app) {
         if (app.splitDifference) {
             ImGui::SameLine();
             ImGui::SetNextItemWidth(90);
-            if (ImGui::SliderFloat("x", &app.diffScale, 1.0f, 100.0f, "%.0f", ImGuiSliderFlags_Logarithmic)) app.poke();
+            if (ImGui::SliderFloat("x", &app.diffScale, 1.0f, 100.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
+                app.poke();
         }
     }
 }
 
-void image(ImDrawList* dl, const BufferViews::View* v, ImVec2 p, ImVec2 q, ImVec2 uv0 = {0, 1}, ImVec2 uv1 = {1, 0}) {
+void image(ImDrawList* dl, const BufferViews::View* v, ImVec2 p, ImVec2 q, ImVec2 uv0 = {0, 1},
+           ImVec2 uv1 = {1, 0}) {
     if (v && v->target.texture()) dl->AddImage(texId(v->target.texture()), p, q, uv0, uv1);
 }
 
@@ -193,8 +202,8 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
     ImGui::Begin("view", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
-                     ImGuiWindowFlags_NoScrollWithMouse);
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar |
+                     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     toolbar(app);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -214,7 +223,8 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
             const std::string& name = buffers[i]->desc.name;
             ImVec2 off, sz;
             fit(ImVec2(cell.x - 4, cell.y - 4), aspect, off, sz);
-            const ImVec2 p(origin.x + float(i % cols) * cell.x + off.x, origin.y + float(i / cols) * cell.y + off.y);
+            const ImVec2 p(origin.x + float(i % cols) * cell.x + off.x,
+                           origin.y + float(i / cols) * cell.y + off.y);
             ImGui::PushID(int(i));
             const bool clicked = interact(app, "cell", p, sz);
             ImGui::PopID();
@@ -241,7 +251,8 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
             drawSamples(app, dl, p, sz);
         } else if (app.splitDifference) {
             if (r.graph().find("b." + app.splitBuffer)) {
-                const BufferViews::View& d = views.difference(r, app.splitBuffer, "b." + app.splitBuffer, app.diffScale);
+                const BufferViews::View& d =
+                    views.difference(r, app.splitBuffer, "b." + app.splitBuffer, app.diffScale);
                 image(dl, &d, p, q);
                 label(dl, p, d.label);
             }
@@ -253,7 +264,8 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
             dl->AddCircleFilled(ImVec2(x, (p.y + q.y) * 0.5f), 6.0f, IM_COL32(255, 255, 0, 255));
             app.widgetRects["split#divider"] = ImVec4(x - 4, p.y, x + 4, q.y);
             label(dl, p, "A: current  " + app.splitBuffer);
-            const std::string bl = app.splitKind == SplitKind::AoOnOff ? "B: AO off" : "B: " + app.splitPresetB;
+            const std::string bl =
+                app.splitKind == SplitKind::AoOnOff ? "B: AO off" : "B: " + app.splitPresetB;
             label(dl, ImVec2(q.x - ImGui::CalcTextSize(bl.c_str()).x - 10, p.y), bl);
             drawSamples(app, dl, p, sz);
         }

@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <fstream>
 
 namespace ssao {
 
@@ -113,6 +114,13 @@ int runWindowApp(const WindowOptions& o) {
         glfwSetWindowUserPointer(window, &app);
         int frame = 0;
         double lastShaderCheck = glfwGetTime();
+        std::ofstream frameLog;
+        if (!o.frameLog.empty()) {
+            frameLog.open(o.frameLog);
+            if (!frameLog) throw Error("cannot write frame log " + o.frameLog);
+            frameLog << "# frame ms(CPU, UI + render + swap) render_w render_h moving rendered passes_run\n";
+        }
+        int renderedBefore = 0;
         while (!glfwWindowShouldClose(window)) {
             if (o.frames == 0 && !app.busy()) {
                 // Idle costs nothing: sleep until an event (or a periodic check for edited shaders).
@@ -156,8 +164,20 @@ int runWindowApp(const WindowOptions& o) {
                 break;
             }
             glfwSwapBuffers(window);
-            app.noteFrameMs(
-                std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count());
+            const float ms =
+                std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            app.noteFrameMs(ms);
+            if (frameLog) {
+                const bool rendered = app.framesRendered() != renderedBefore;
+                renderedBefore = app.framesRendered();
+                frameLog << frame << " " << ms << " " << app.renderer().width() << " "
+                         << app.renderer().height() << " " << (app.renderedInteractive() ? 1 : 0) << " "
+                         << (rendered ? 1 : 0) << " ";
+                if (rendered)
+                    for (const auto& p : app.lastReport().ran())
+                        frameLog << p << ",";
+                frameLog << "\n" << std::flush;
+            }
         }
         gl::pollGlErrors();
         if (gl::glErrorCount() > 0) {

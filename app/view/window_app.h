@@ -11,6 +11,7 @@ struct WindowOptions {
     int width = 1600, height = 900; // window size in screen coordinates
     int frames = 0;                 // > 0: draw this many frames, then exit (tests, screenshots)
     std::string screenshot;         // with frames: PNG of the last frame
+    std::string frameLog;           // if set: one line per drawn frame (ms, render size, moving, passes)
 };
 
 // True when a window can plausibly open (an X11 or Wayland display is set).

@@ -18,7 +18,8 @@ bool needsFit(const ResourceDesc& d, const ViewStyle& style) {
     return style.fit || d.display == Display::Scalar || d.display == Display::Vector;
 }
 
-DisplayRange displayRange(const Image& img, const ResourceDesc& d, const Image* mask, const ViewStyle& style) {
+DisplayRange displayRange(const Image& img, const ResourceDesc& d, const Image* mask,
+                          const ViewStyle& style) {
     DisplayRange r;
     if (d.display == Display::Direction) r = {glm::vec3(-1.0f), glm::vec3(1.0f), false};
     if (!needsFit(d, style)) return r;
@@ -61,8 +62,8 @@ std::string rangeText(const DisplayRange& r, const ResourceDesc& d) {
     const char* unit = d.unit.empty() ? "" : d.unit.c_str();
     const char* fitted = r.fitted ? " (fitted)" : "";
     if ((d.display == Display::Vector || d.display == Display::Direction) && r.fitted)
-        std::snprintf(buf, sizeof buf, "x %.3g..%.3g  y %.3g..%.3g  z %.3g..%.3g %s%s", r.lo.x, r.hi.x, r.lo.y, r.hi.y,
-                      r.lo.z, r.hi.z, unit, fitted);
+        std::snprintf(buf, sizeof buf, "x %.3g..%.3g  y %.3g..%.3g  z %.3g..%.3g %s%s", r.lo.x, r.hi.x,
+                      r.lo.y, r.hi.y, r.lo.z, r.hi.z, unit, fitted);
     else
         std::snprintf(buf, sizeof buf, "%.4g .. %.4g %s%s", r.lo.x, r.hi.x, unit, fitted);
     return buf;

@@ -16,7 +16,8 @@ const Image& ViewPainter::maskImage(const Resource& mask) {
 }
 
 DisplayRange ViewPainter::paint(const Resource& r, const Resource& mask, const ViewStyle& style,
-                                gl::RenderTarget& out, gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri) {
+                                gl::RenderTarget& out, gl::ShaderLibrary& shaders,
+                                const gl::FullscreenTriangle& tri) {
     const ResourceDesc& d = r.desc;
     DisplayRange range;
     if (needsFit(d, style))
@@ -27,9 +28,9 @@ DisplayRange ViewPainter::paint(const Resource& r, const Resource& mask, const V
     out.bind();
     const GLuint prog = shaders.program("passes/fullscreen.vert", "display/view.frag");
     glUseProgram(prog);
-    const int mode = d.display == Display::Color                                        ? SSAO_VIEW_COLOR
+    const int mode = d.display == Display::Color                                         ? SSAO_VIEW_COLOR
                      : (d.display == Display::Vector || d.display == Display::Direction) ? SSAO_VIEW_VECTOR
-                                                                                        : SSAO_VIEW_SCALAR;
+                                                                                         : SSAO_VIEW_SCALAR;
     glProgramUniform1i(prog, 0, mode);
     glProgramUniform3f(prog, 1, range.lo.x, range.lo.y, range.lo.z);
     glProgramUniform3f(prog, 5, range.hi.x, range.hi.y, range.hi.z);
@@ -44,7 +45,8 @@ DisplayRange ViewPainter::paint(const Resource& r, const Resource& mask, const V
 }
 
 void ViewPainter::paintDifference(const Resource& a, const Resource& b, float scale, const Resource& mask,
-                                  gl::RenderTarget& out, gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri) {
+                                  gl::RenderTarget& out, gl::ShaderLibrary& shaders,
+                                  const gl::FullscreenTriangle& tri) {
     out.ensure(a.width(), a.height(), GL_RGBA8, "view.diff." + a.desc.name);
     out.bind();
     const GLuint prog = shaders.program("passes/fullscreen.vert", "display/view.frag");

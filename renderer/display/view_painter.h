@@ -21,7 +21,8 @@ class ViewPainter {
     // Signed difference (a - b) * scale of two same-kind buffers, red where a is larger, blue where
     // b is, grey where equal.
     void paintDifference(const Resource& a, const Resource& b, float scale, const Resource& mask,
-                         gl::RenderTarget& out, gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri);
+                         gl::RenderTarget& out, gl::ShaderLibrary& shaders,
+                         const gl::FullscreenTriangle& tri);
 
   private:
     const Image& maskImage(const Resource& mask);

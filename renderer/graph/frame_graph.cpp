@@ -33,14 +33,15 @@ PassDecl FrameGraph::declare(const Pass& p, const Settings& s) {
     return d;
 }
 
-std::vector<size_t> FrameGraph::order(const std::vector<std::string>& names, const std::vector<PassDecl>& decls) {
+std::vector<size_t> FrameGraph::order(const std::vector<std::string>& names,
+                                      const std::vector<PassDecl>& decls) {
     std::map<std::string, size_t> producer;
     for (size_t i = 0; i < decls.size(); ++i)
         for (const auto& w : decls[i].writes) {
             auto [it, fresh] = producer.emplace(w.name, i);
             if (!fresh)
-                throw Error("frame graph: resource '" + w.name + "' is written by both '" + names[it->second] +
-                            "' and '" + names[i] + "'");
+                throw Error("frame graph: resource '" + w.name + "' is written by both '" +
+                            names[it->second] + "' and '" + names[i] + "'");
         }
     // deps[i]: the producers node i waits for.
     std::vector<std::set<size_t>> deps(decls.size());
@@ -50,7 +51,8 @@ std::vector<size_t> FrameGraph::order(const std::vector<std::string>& names, con
             if (it == producer.end())
                 throw Error("frame graph: pass '" + names[i] + "' reads '" + r + "', which no pass writes");
             if (it->second == i)
-                throw Error("frame graph: pass '" + names[i] + "' reads its own output '" + r + "' (a cycle)");
+                throw Error("frame graph: pass '" + names[i] + "' reads its own output '" + r +
+                            "' (a cycle)");
             deps[i].insert(it->second);
         }
     // Kahn's algorithm, always taking the earliest-registered ready node: a stable, readable order.
@@ -104,8 +106,8 @@ std::string FrameGraph::resolve(const std::string& name) const {
     throw Error("frame graph: alias loop at '" + name + "'");
 }
 
-void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::string, std::string>& aliases, int w,
-                         int h) {
+void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::string, std::string>& aliases,
+                         int w, int h) {
     aliases_ = aliases;
     std::vector<std::string> names;
     std::vector<PassDecl> decls;
@@ -130,7 +132,8 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
             const int rw = scaledSize(w, d.scale), rh = scaledSize(h, d.scale);
             Resource& r = resources_[d.name];
             r.producer = n.pass->name();
-            if (!r.texture || r.texture.width() != rw || r.texture.height() != rh || r.texture.format() != d.format) {
+            if (!r.texture || r.texture.width() != rw || r.texture.height() != rh ||
+                r.texture.format() != d.format) {
                 r.texture = gl::Texture2D(rw, rh, d.format, d.name);
                 ++r.generation;
                 r.version = 0;
@@ -146,8 +149,8 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
 namespace {
 std::string cameraKey(const Camera& c) {
     char buf[400];
-    std::snprintf(buf, sizeof buf, "|cam%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a", c.eye.x, c.eye.y, c.eye.z, c.target.x,
-                  c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg, c.nearZ, c.farZ);
+    std::snprintf(buf, sizeof buf, "|cam%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a", c.eye.x, c.eye.y, c.eye.z,
+                  c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg, c.nearZ, c.farZ);
     return buf;
 }
 } // namespace
@@ -163,7 +166,8 @@ FrameReport FrameGraph::execute(const FrameInfo& frame, gl::ShaderLibrary& shade
         if (js == json.end()) js = json.emplace(n.settings, toEffectiveJson(*n.settings)).first;
         std::string key = std::to_string(frame.width) + "x" + std::to_string(frame.height);
         for (const auto& g : n.decl.groups) {
-            if (!js->second.contains(g)) throw Error("pass '" + name + "' reads unknown settings group '" + g + "'");
+            if (!js->second.contains(g))
+                throw Error("pass '" + name + "' reads unknown settings group '" + g + "'");
             key += "|" + g + "=" + js->second.at(g).dump();
         }
         if (n.decl.scene) key += "|scene" + std::to_string(frame.sceneVersion);

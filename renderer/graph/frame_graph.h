@@ -38,12 +38,14 @@ class FrameGraph {
     // stands for), orders the nodes and (re)allocates resources for a base size of w x h.
     void compile(const std::vector<Node>& nodes, const std::map<std::string, std::string>& aliases, int w,
                  int h);
-    FrameReport execute(const FrameInfo& frame, gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri);
+    FrameReport execute(const FrameInfo& frame, gl::ShaderLibrary& shaders,
+                        const gl::FullscreenTriangle& tri);
     // Forgets every pass key: the next execute() runs every pass.
     void invalidate() { keys_.clear(); }
 
     // Pure ordering (testable without GL): the node indices in execution order.
-    static std::vector<size_t> order(const std::vector<std::string>& names, const std::vector<PassDecl>& decls);
+    static std::vector<size_t> order(const std::vector<std::string>& names,
+                                     const std::vector<PassDecl>& decls);
     static PassDecl declare(const Pass& p, const Settings& s);
 
     const std::vector<std::string>& passOrder() const { return order_; }
@@ -69,9 +71,9 @@ class FrameGraph {
     std::vector<std::string> order_;
     std::map<std::string, std::string> aliases_;
     std::map<std::string, Resource> resources_;
-    std::map<std::string, std::string> keys_;         // pass name → key of its last run
-    std::map<std::string, gl::GpuTimer> timers_;      // pass name → timer
-    std::map<std::string, gl::Framebuffer> fbos_;     // "pass|out1|out2" → framebuffer
+    std::map<std::string, std::string> keys_;     // pass name → key of its last run
+    std::map<std::string, gl::GpuTimer> timers_;  // pass name → timer
+    std::map<std::string, gl::Framebuffer> fbos_; // "pass|out1|out2" → framebuffer
     std::map<std::string, std::vector<unsigned>> fboGenerations_;
     uint64_t nextVersion_ = 1;
 };

@@ -11,8 +11,8 @@ enum class TapState { Open, Occluded, BehindEye, Offscreen, Sky };
 const char* tapStateName(TapState s);
 
 struct InspectTap {
-    glm::vec3 viewPos{0.0f};  // sample point, view space
-    glm::vec2 uv{0.0f};       // where it projects (GL uv: origin bottom-left), resolution independent
+    glm::vec3 viewPos{0.0f};   // sample point, view space
+    glm::vec2 uv{0.0f};        // where it projects (GL uv: origin bottom-left), resolution independent
     float contribution = 0.0f; // occlusion it added (range-check weight included)
     TapState state = TapState::Open;
     int set = 0; // technique-defined group (separable kernel: 0 = x-plane set, 1 = y-plane set)
@@ -20,15 +20,15 @@ struct InspectTap {
 
 struct PixelInspection {
     bool geometry = false;
-    glm::ivec2 pixel{-1};      // in the AO buffer's own resolution
-    glm::vec3 position{0.0f};  // view space
+    glm::ivec2 pixel{-1};     // in the AO buffer's own resolution
+    glm::vec3 position{0.0f}; // view space
     glm::vec3 normal{0.0f};
     std::vector<InspectTap> taps;
-    bool truncated = false;   // more taps than the debug buffer holds
-    float occlusion = 0.0f;   // sum of contributions
-    float normaliser = 1.0f;  // what the sum is divided by (N, or 2N when separable)
-    float radius = 0.0f;      // world radius used at this pixel
-    float ao = 1.0f;          // the value the pass wrote for this pixel
+    bool truncated = false;  // more taps than the debug buffer holds
+    float occlusion = 0.0f;  // sum of contributions
+    float normaliser = 1.0f; // what the sum is divided by (N, or 2N when separable)
+    float radius = 0.0f;     // world radius used at this pixel
+    float ao = 1.0f;         // the value the pass wrote for this pixel
 };
 
 } // namespace ssao

@@ -37,8 +37,8 @@ int scaledSize(int base, float scale);
 struct Resource {
     ResourceDesc desc;
     gl::Texture2D texture;
-    std::string producer;  // pass that writes it
-    uint64_t version = 0;  // changes every time the producer runs (never reused)
+    std::string producer;    // pass that writes it
+    uint64_t version = 0;    // changes every time the producer runs (never reused)
     unsigned generation = 0; // changes when the texture is reallocated
     int width() const { return texture.width(); }
     int height() const { return texture.height(); }

@@ -40,17 +40,15 @@ Image decoded(const Resource& r) {
 }
 
 nlohmann::json statsJson(const Stats& s) {
-    return {{"min", s.min}, {"mean", s.mean}, {"max", s.max}, {"p05", s.p05}, {"median", s.p50}, {"pixels", s.count}};
+    return {{"min", s.min}, {"mean", s.mean},  {"max", s.max},
+            {"p05", s.p05}, {"median", s.p50}, {"pixels", s.count}};
 }
 
 nlohmann::json bufferJson(const Resource& r, const Image& img, const Image& mask) {
     const Stats s = stats(img, &mask);
-    nlohmann::json j = {{"format", formatName(r.desc.format)},
-                        {"size", {r.width(), r.height()}},
-                        {"scale", r.desc.scale},
-                        {"channels", r.desc.channels},
-                        {"nonfinite", s.nonFinite},
-                        {"help", r.desc.help}};
+    nlohmann::json j = {
+        {"format", formatName(r.desc.format)}, {"size", {r.width(), r.height()}}, {"scale", r.desc.scale},
+        {"channels", r.desc.channels},         {"nonfinite", s.nonFinite},        {"help", r.desc.help}};
     if (r.desc.channels == 1) j["geometry"] = statsJson(s);
     return j;
 }
@@ -66,16 +64,17 @@ nlohmann::json frameStatistics(const Renderer& r) {
     j["ao_raw"] = statsJson(stats(decoded(r.resource("ao.raw")), &mask));
     j["geometry_pixels"] = stats(mask, &mask).count;
     const RadiusInfo ri = r.radiusAtCentre();
-    j["radius"] = {{"mode", findParam("ao.radius_mode")->format(findParam("ao.radius_mode")->get(r.settings()))},
-                   {"world_at_centre", ri.world},
-                   {"pixels_at_centre", ri.pixels},
-                   {"centre_depth", ri.depth},
-                   {"scene_diagonal", ri.sceneDiagonal}};
+    j["radius"] = {
+        {"mode", findParam("ao.radius_mode")->format(findParam("ao.radius_mode")->get(r.settings()))},
+        {"world_at_centre", ri.world},
+        {"pixels_at_centre", ri.pixels},
+        {"centre_depth", ri.depth},
+        {"scene_diagonal", ri.sceneDiagonal}};
     return j;
 }
 
-nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& info, const FrameReport& firstFrame,
-                            const nlohmann::json& timing) {
+nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& info,
+                            const FrameReport& firstFrame, const nlohmann::json& timing) {
     namespace fs = std::filesystem;
     std::error_code ec;
     fs::create_directories(dir, ec);
@@ -98,14 +97,16 @@ nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& 
                           !info.style.falseColor;
         writePng(readBack(view.texture(), grey ? 1 : 3), path(name + ".png"));
         entry["png"] = name + ".png";
-        entry["display_range"] = res->desc.channels == 1 ? nlohmann::json{range.lo.x, range.hi.x}
-                                                         : nlohmann::json{{range.lo.x, range.lo.y, range.lo.z},
-                                                                          {range.hi.x, range.hi.y, range.hi.z}};
+        entry["display_range"] =
+            res->desc.channels == 1
+                ? nlohmann::json{range.lo.x, range.hi.x}
+                : nlohmann::json{{range.lo.x, range.lo.y, range.lo.z}, {range.hi.x, range.hi.y, range.hi.z}};
         entry["display_range_fitted"] = range.fitted;
     }
 
     const Camera& c = r.camera();
-    m["scene"] = {{"name", info.sceneName}, {"triangles", info.triangles}, {"diagonal", 2.0f * r.sceneRadius()}};
+    m["scene"] = {
+        {"name", info.sceneName}, {"triangles", info.triangles}, {"diagonal", 2.0f * r.sceneRadius()}};
     m["camera"] = cameraToJson(c);
     m["camera"]["source"] = info.cameraSource;
     m["size"] = {r.width(), r.height()};

@@ -26,7 +26,7 @@ nlohmann::json frameStatistics(const Renderer& r);
 
 // Writes NAME.exr for every float buffer, NAME.png for every buffer, and metrics.json into `dir`
 // (created if missing). Returns the metrics.
-nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& info, const FrameReport& firstFrame,
-                            const nlohmann::json& timing);
+nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& info,
+                            const FrameReport& firstFrame, const nlohmann::json& timing);
 
 } // namespace ssao

@@ -33,8 +33,10 @@ void CompositePass::execute(PassContext& ctx) {
     ctx.in("gbuffer.position").bind(SSAO_TEX_POSITION);
     ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
     ctx.in("gbuffer.albedo").bind(SSAO_TEX_ALBEDO);
-    if (c.useAo) ctx.in(branch().res("ao.denoised")).bind(SSAO_TEX_AO);
-    else glBindTextureUnit(SSAO_TEX_AO, 0);
+    if (c.useAo)
+        ctx.in(branch().res("ao.denoised")).bind(SSAO_TEX_AO);
+    else
+        glBindTextureUnit(SSAO_TEX_AO, 0);
     ctx.bindOutputs({branch().res("composite")});
     ctx.drawFullscreen();
 }

@@ -39,7 +39,8 @@ void DenoisePass::execute(PassContext& ctx) {
     glUseProgram(ctx.shaders.program("passes/fullscreen.vert", "passes/denoise.frag"));
     for (int dir = 0; dir < 2; ++dir) {
         if (!ubo_[dir])
-            ubo_[dir] = gl::UniformBuffer(sizeof(gpu::DenoiseConstants), name() + (dir ? ".y" : ".x") + ".constants");
+            ubo_[dir] =
+                gl::UniformBuffer(sizeof(gpu::DenoiseConstants), name() + (dir ? ".y" : ".x") + ".constants");
         const gpu::DenoiseConstants c = packDenoiseConstants(ctx.settings.denoise, dir);
         ubo_[dir].upload(&c, sizeof c);
         ubo_[dir].bind(SSAO_UBO_DENOISE);

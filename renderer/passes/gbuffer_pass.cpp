@@ -61,7 +61,8 @@ void GBufferPass::setup(PassBuilder& b, const Settings& s) const {
 }
 
 void GBufferPass::execute(PassContext& ctx) {
-    ctx.bindOutputs({"gbuffer.position", "gbuffer.normal", "gbuffer.albedo", "gbuffer.depth", "gbuffer.zbuffer"});
+    ctx.bindOutputs(
+        {"gbuffer.position", "gbuffer.normal", "gbuffer.albedo", "gbuffer.depth", "gbuffer.zbuffer"});
     GLint fbo = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
     const float zero[4] = {0, 0, 0, 0};

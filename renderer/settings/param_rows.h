@@ -50,7 +50,10 @@ Param choice(const char* key, const char* label, const char* help, std::vector<s
 } // namespace ssao::rows
 
 // `field` is a member path inside Settings, e.g. ao.radius or kernel.samples.
-#define SSAO_REF(field) [](Settings & s) -> auto& { return s.field; }
+#define SSAO_REF(field)                                                                                      \
+    [](Settings & s) -> auto& {                                                                              \
+        return s.field;                                                                                      \
+    }
 #define FLOAT_ROW(key, label, field, lo, hi, unit, help)                                                     \
     ::ssao::rows::number(::ssao::Param::Type::Float, key, label, lo, hi, unit, help, SSAO_REF(field))
 #define INT_ROW(key, label, field, lo, hi, unit, help)                                                       \

@@ -19,9 +19,10 @@ using T = Param::Type;
 std::vector<Param> coreRows() {
     std::vector<Param> rows = {
         // ---- G-buffer -------------------------------------------------------------------------
-        ENUM_ROW("gbuffer.position_format", "Position format", gbuffer.positionFormat, TargetFormat,
-                 "Precision of the view-space position target; rgba16f shows fp16 staircase acne at distance.",
-                 ({{"rgba16f", TargetFormat::RGBA16F}, {"rgba32f", TargetFormat::RGBA32F}})),
+        ENUM_ROW(
+            "gbuffer.position_format", "Position format", gbuffer.positionFormat, TargetFormat,
+            "Precision of the view-space position target; rgba16f shows fp16 staircase acne at distance.",
+            ({{"rgba16f", TargetFormat::RGBA16F}, {"rgba32f", TargetFormat::RGBA32F}})),
         ENUM_ROW("gbuffer.normal_format", "Normal format", gbuffer.normalFormat, TargetFormat,
                  "Normal target: float, or 8-bit (n+1)/2 as in seed 003 (renormalised after decoding).",
                  ({{"rgba16f", TargetFormat::RGBA16F},
@@ -29,39 +30,47 @@ std::vector<Param> coreRows() {
                    {"rgba8", TargetFormat::RGBA8}})),
         // ---- AO (every technique) -------------------------------------------------------------
         Param{}, // ao.technique, filled below from the registry
-        ENUM_ROW("ao.radius_mode", "Radius in", ao.radiusMode, RadiusMode,
-                 "Unit of the AO radius: world (scene units), scene (fraction of the scene's bounding-box "
-                 "diagonal, follows the scene) or screen (pixels at each pixel's depth).",
-                 ({{"world", RadiusMode::World}, {"scene", RadiusMode::Scene}, {"screen", RadiusMode::Screen}})),
+        ENUM_ROW(
+            "ao.radius_mode", "Radius in", ao.radiusMode, RadiusMode,
+            "Unit of the AO radius: world (scene units), scene (fraction of the scene's bounding-box "
+            "diagonal, follows the scene) or screen (pixels at each pixel's depth).",
+            ({{"world", RadiusMode::World}, {"scene", RadiusMode::Scene}, {"screen", RadiusMode::Screen}})),
         FLOAT_ROW("ao.radius", "Radius", ao.radius, 1e-4, 1e4, "scene units",
                   "World-size of the sampling kernel: how far away geometry can still occlude.")
             .onlyWhen("ao.radius_mode", {"world"}),
         FLOAT_ROW("ao.radius_scene", "Radius", ao.radiusScene, 1e-4, 0.5, "x diagonal",
-                  "Radius as a fraction of the scene's bounding-box diagonal (0.02 = 2 %), so it follows the "
+                  "Radius as a fraction of the scene's bounding-box diagonal (0.05 = 5 %), so it follows the "
                   "scene's scale (metres or millimetres alike).")
             .onlyWhen("ao.radius_mode", {"scene"}),
-        FLOAT_ROW("ao.radius_px", "Radius", ao.radiusPx, 1.0, 512.0, "pixels",
-                  "Radius in pixels at each pixel's depth: the kernel covers the same screen area near and far.")
+        FLOAT_ROW(
+            "ao.radius_px", "Radius", ao.radiusPx, 1.0, 512.0, "pixels",
+            "Radius in pixels at each pixel's depth: the kernel covers the same screen area near and far.")
             .onlyWhen("ao.radius_mode", {"screen"}),
         FLOAT_ROW("ao.power", "Power", ao.power, 0.1, 16.0, "",
                   "Contrast: AO = visibility^power; >1 darkens occluded areas, <1 lightens (seed 001)."),
-        ENUM_ROW("ao.resolution", "Resolution", ao.resolution, AoResolution,
-                 "Resolution of the AO pass relative to the G-buffer; the denoise stage brings it back to full "
-                 "size (fewer pixels = faster, blurrier).",
-                 ({{"full", AoResolution::Full}, {"half", AoResolution::Half}, {"quarter", AoResolution::Quarter}})),
+        ENUM_ROW(
+            "ao.resolution", "Resolution", ao.resolution, AoResolution,
+            "Resolution of the AO pass relative to the G-buffer; the denoise stage brings it back to full "
+            "size (fewer pixels = faster, blurrier).",
+            ({{"full", AoResolution::Full},
+              {"half", AoResolution::Half},
+              {"quarter", AoResolution::Quarter}})),
         // ---- Denoise --------------------------------------------------------------------------
         ENUM_ROW("denoise.kind", "Denoise", denoise.kind, DenoiseKind,
                  "Removes the sampling noise: none, 4x4 box (seed 004) or gaussian (seed 003); both run "
                  "separably and upsample reduced-resolution AO.",
-                 ({{"none", DenoiseKind::None}, {"box4", DenoiseKind::Box4}, {"gaussian", DenoiseKind::Gaussian}})),
+                 ({{"none", DenoiseKind::None},
+                   {"box4", DenoiseKind::Box4},
+                   {"gaussian", DenoiseKind::Gaussian}})),
         FLOAT_ROW("denoise.sigma", "Sigma", denoise.sigma, 0.1, 32.0, "taps",
                   "Gaussian standard deviation; weight = exp(-d^2 / (2 sigma^2)).")
             .onlyWhen("denoise.kind", {"gaussian"}),
         INT_ROW("denoise.half_width", "Half-width", denoise.halfWidth, 0, 32, "taps",
                 "Gaussian taps each side of the centre (2 gives the seed's 5x5).")
             .onlyWhen("denoise.kind", {"gaussian"}),
-        FLOAT_ROW("denoise.spacing", "Tap spacing", denoise.spacing, 0.25, 16.0, "pixels",
-                  "Distance between gaussian taps (seed 003 blurRadius); >1 widens the blur without more taps.")
+        FLOAT_ROW(
+            "denoise.spacing", "Tap spacing", denoise.spacing, 0.25, 16.0, "pixels",
+            "Distance between gaussian taps (seed 003 blurRadius); >1 widens the blur without more taps.")
             .onlyWhen("denoise.kind", {"gaussian"}),
         // ---- Composite ------------------------------------------------------------------------
         FLOAT_ROW("composite.ambient", "Ambient", composite.ambient, 0.0, 4.0, "",

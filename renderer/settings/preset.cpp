@@ -124,7 +124,8 @@ Preset presetFromJson(const nlohmann::json& j, const std::string& origin, const 
     if (j.contains("size")) {
         const auto& s = j["size"];
         if (!s.is_array() || s.size() != 2 || !s[0].is_number_integer() || !s[1].is_number_integer() ||
-            s[0].get<long>() < 1 || s[1].get<long>() < 1 || s[0].get<long>() > 16384 || s[1].get<long>() > 16384)
+            s[0].get<long>() < 1 || s[1].get<long>() < 1 || s[0].get<long>() > 16384 ||
+            s[1].get<long>() > 16384)
             throw Error(origin + ": size must be [width, height] with each in 1..16384");
         p.size = std::make_pair(s[0].get<int>(), s[1].get<int>());
     }

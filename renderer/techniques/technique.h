@@ -18,7 +18,7 @@ struct TechniqueInfo {
     std::string id;      // value of ao.technique, and the group of the technique's rows
     std::string label;   // for the UI
     std::string summary; // one line: what it estimates and where it comes from
-    std::function<std::vector<Param>()> params;                     // rows "id.*"
+    std::function<std::vector<Param>()> params;                   // rows "id.*"
     std::function<std::unique_ptr<Pass>(const Branch&)> makePass; // reads gbuffer.*, writes ao.raw
 };
 

@@ -63,8 +63,8 @@ TEST_F(AppUse, TheRadiusFollowsEachSceneUnlessAPresetFixesIt) {
     EXPECT_GT(ri.pixels, 3.0f) << "not a sub-pixel kernel";
     EXPECT_NEAR(ri.world, 0.05f * ri.sceneDiagonal, 1e-3f * ri.sceneDiagonal);
     const Stats engine = aoStats();
-    std::printf("AO mean: CornellBox %.3f, engine %.3f (p05 %.3f / %.3f)\n", cornell.mean, engine.mean, cornell.p05,
-                engine.p05);
+    std::printf("AO mean: CornellBox %.3f, engine %.3f (p05 %.3f / %.3f)\n", cornell.mean, engine.mean,
+                cornell.p05, engine.p05);
     EXPECT_LT(cornell.mean, 0.99);
     EXPECT_LT(engine.mean, 0.985);
     EXPECT_LT(engine.p05, 0.9);
@@ -142,8 +142,8 @@ TEST_F(AppUse, DraggingRendersAtTheInteractiveScaleAndTimingKeepsBothApart) {
     EXPECT_LT(moving.width, full.width);
     EXPECT_GT(moving.average("ao"), 0.0);
     EXPECT_GT(full.average("ao"), moving.average("ao")) << "fewer pixels, less time";
-    std::printf("ao pass: %.1f ms at %dx%d, %.1f ms at %dx%d while dragging\n", full.average("ao"), full.width,
-                full.height, moving.average("ao"), moving.width, moving.height);
+    std::printf("ao pass: %.1f ms at %dx%d, %.1f ms at %dx%d while dragging\n", full.average("ao"),
+                full.width, full.height, moving.average("ao"), moving.width, moving.height);
     // A new scene starts new timings: nothing is averaged across scenes or sizes.
     ASSERT_TRUE(ui_->app().openScene("builtin:corner"));
     EXPECT_EQ(ui_->app().timing(false).average("ao"), -1.0);
@@ -203,6 +203,7 @@ TEST_F(AppUse, ViewsAndPngPreviewsUseOneMapping) {
         ASSERT_EQ(app.width, png.width) << name;
         for (int y = 0; y < app.height; y += 7)
             for (int x = 0; x < app.width; x += 7)
-                ASSERT_NEAR(app.at(x, y, 0), png.at(x, y, 0), 1.0f / 255.0f) << name << " at " << x << "," << y;
+                ASSERT_NEAR(app.at(x, y, 0), png.at(x, y, 0), 1.0f / 255.0f)
+                    << name << " at " << x << "," << y;
     }
 }

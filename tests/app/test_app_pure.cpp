@@ -1,9 +1,9 @@
 // Camera controller and preset store: pure logic, no GL.
+#include "scene/view_fit.h"
 #include "settings/params.h"
+#include "settings/preset_store.h"
 #include "util/error.h"
 #include "view/camera_controller.h"
-#include "settings/preset_store.h"
-#include "scene/view_fit.h"
 
 #include <gtest/gtest.h>
 

@@ -75,7 +75,8 @@ TEST_F(AppSplit, PresetBRendersItsOwnAoOnTheSharedGBuffer) {
     EXPECT_EQ(ui_->app().hoverBranch, 1);
     const auto& pi = ui_->app().inspection();
     ASSERT_TRUE(pi.has_value());
-    if (pi->geometry) EXPECT_EQ(int(pi->taps.size()), r.settingsB()->kernel.samples);
+    ASSERT_TRUE(pi->geometry) << "the floor is under the cursor";
+    EXPECT_EQ(int(pi->taps.size()), r.settingsB()->kernel.samples);
 }
 
 TEST_F(AppSplit, DifferenceViewIsGreyWhereAEqualsBAndColouredWhereItDiffers) {

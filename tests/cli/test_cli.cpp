@@ -74,10 +74,10 @@ TEST(Cli, RenderWritesEveryBufferAndMetrics) {
         out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     // One EXR per float buffer and one PNG per buffer, named after the frame graph's resources.
-    for (const char* f : {"gbuffer.position.exr", "gbuffer.normal.exr", "gbuffer.depth.exr", "gbuffer.zbuffer.exr",
-                          "ao.raw.exr", "ao.denoised.exr", "gbuffer.position.png", "gbuffer.normal.png",
-                          "gbuffer.depth.png", "gbuffer.albedo.png", "ao.raw.png", "ao.denoised.png", "composite.png",
-                          "metrics.json"})
+    for (const char* f :
+         {"gbuffer.position.exr", "gbuffer.normal.exr", "gbuffer.depth.exr", "gbuffer.zbuffer.exr",
+          "ao.raw.exr", "ao.denoised.exr", "gbuffer.position.png", "gbuffer.normal.png", "gbuffer.depth.png",
+          "gbuffer.albedo.png", "ao.raw.png", "ao.denoised.png", "composite.png", "metrics.json"})
         EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
     auto m = nlohmann::json::parse(slurp(out + "/metrics.json"));
     EXPECT_EQ(m["settings"]["ao"]["radius"], 0.8);
@@ -116,7 +116,8 @@ TEST(Cli, EveryThirdPartySceneRendersWithItsOwnCamera) {
         EXPECT_EQ(m["camera"]["source"], hasCamera ? "file" : "framed") << name;
         for (auto& [k, b] : m["buffers"].items())
             EXPECT_EQ(b["nonfinite"], 0) << name << " " << k;
-        EXPECT_GT(m["radius"]["pixels_at_centre"].get<double>(), 2.0) << name << ": the kernel is not sub-pixel";
+        EXPECT_GT(m["radius"]["pixels_at_centre"].get<double>(), 2.0)
+            << name << ": the kernel is not sub-pixel";
         EXPECT_GT(m["geometry_pixels"].get<long>(), 256 * 144 / 100) << name << " is barely visible";
         EXPECT_GE(m["ao"]["min"].get<double>(), 0.0) << name;
         EXPECT_LE(m["ao"]["max"].get<double>(), 1.0) << name;
@@ -135,15 +136,15 @@ TEST(Cli, BadInputGivesOneClearLineAndExitCodeOne) {
     expectCleanFailure(ssaolab("render --preset " + writeTemp("cli_bad.json", "{ not json") + out),
                        "is not valid JSON");
     expectCleanFailure(ssaolab("render --preset /nonexistent.json" + out), "preset file not found");
-    expectCleanFailure(
-        ssaolab("render --preset " + writeTemp("cli_unk.json", R"({"ao":{"radiu":1}})") + out),
-        "unknown key 'ao.radiu'");
+    expectCleanFailure(ssaolab("render --preset " + writeTemp("cli_unk.json", R"({"ao":{"radiu":1}})") + out),
+                       "unknown key 'ao.radiu'");
     expectCleanFailure(ssaolab("render --set ao.bogus=1" + out), "unknown parameter 'ao.bogus'");
     expectCleanFailure(ssaolab("render --set ao.radius=-0.5" + out), "ao.radius: value -0.5 is out of range");
     expectCleanFailure(ssaolab("render --set kernel.samples=100000" + out), "kernel.samples");
     expectCleanFailure(ssaolab("render --set ao.technique=hbao" + out), "'hbao' is not one of kernel");
     expectCleanFailure(ssaolab("render --preset nonesuch" + out), "no preset named 'nonesuch'");
-    expectCleanFailure(ssaolab("render --preset " + writeTemp("cli_size.json", R"({"size":[0,5]})") + out), "size");
+    expectCleanFailure(ssaolab("render --preset " + writeTemp("cli_size.json", R"({"size":[0,5]})") + out),
+                       "size");
     expectCleanFailure(ssaolab("render --size 0x0" + out), "--size '0x0'");
     expectCleanFailure(ssaolab("render --size 640" + out), "--size '640'");
     expectCleanFailure(ssaolab("render --camera 1,2,3" + out), "--camera");

@@ -31,11 +31,13 @@ nlohmann::json metrics(const std::string& dir) {
 
 TEST(CliPresets, APresetCarriesItsSceneAndSizeUnlessOverridden) {
     const std::string cornell = std::string(SSAOLAB_SCENES_DIR) + "/CornellBox/cornellBox.gltf";
-    const std::string preset = writeTemp("with_scene_size.json", R"({"scene": ")" + cornell +
-                                                                     R"(", "size": [200, 120], "kernel": {"samples": 16}})");
+    const std::string preset =
+        writeTemp("with_scene_size.json",
+                  R"({"scene": ")" + cornell + R"(", "size": [200, 120], "kernel": {"samples": 16}})");
     const std::string out = std::string(SSAOLAB_TEST_TMP) + "/preset_scene";
     std::string log;
-    ASSERT_EQ(run(bin() + " render --timing-frames 1 --preset '" + preset + "' --out " + out, &log), 0) << log;
+    ASSERT_EQ(run(bin() + " render --timing-frames 1 --preset '" + preset + "' --out " + out, &log), 0)
+        << log;
     auto m = metrics(out);
     EXPECT_EQ(m["scene"]["name"], cornell) << "not showcase as a speck";
     EXPECT_EQ(m["size"], nlohmann::json({200, 120}));
@@ -52,8 +54,11 @@ TEST(CliPresets, APresetCarriesItsSceneAndSizeUnlessOverridden) {
     // A relative scene path is relative to the preset file.
     fs::create_directories(std::string(SSAOLAB_TEST_TMP) + "/rel");
     const std::string rel = fs::relative(cornell, std::string(SSAOLAB_TEST_TMP) + "/rel").string();
-    const std::string relPreset = writeTemp("rel/relative.json", R"({"scene": ")" + rel + R"(", "size": [64, 40]})");
-    ASSERT_EQ(run("cd / && " + bin() + " render --timing-frames 1 --preset '" + relPreset + "' --out " + out, &log), 0)
+    const std::string relPreset =
+        writeTemp("rel/relative.json", R"({"scene": ")" + rel + R"(", "size": [64, 40]})");
+    ASSERT_EQ(
+        run("cd / && " + bin() + " render --timing-frames 1 --preset '" + relPreset + "' --out " + out, &log),
+        0)
         << log;
     EXPECT_EQ(metrics(out)["scene"]["name"], fs::path(cornell).lexically_normal().string());
 }
@@ -63,21 +68,27 @@ TEST(CliPresets, RenderFindsPresetsSavedInTheAppByName) {
     fs::remove_all(dir);
     fs::create_directories(dir);
     {
-        std::ofstream(dir + "/my look.json") << R"({"name": "my look", "size": [96, 54], "ao": {"power": 2}})";
+        std::ofstream(dir + "/my look.json")
+            << R"({"name": "my look", "size": [96, 54], "ao": {"power": 2}})";
     }
     const std::string out = std::string(SSAOLAB_TEST_TMP) + "/preset_named";
     std::string log;
-    ASSERT_EQ(run("SSAOLAB_PRESET_DIR='" + dir + "' " + bin() + " render --timing-frames 1 --preset 'my look' --out " +
-                      out,
+    ASSERT_EQ(run("SSAOLAB_PRESET_DIR='" + dir + "' " + bin() +
+                      " render --timing-frames 1 --preset 'my look' --out " + out,
                   &log),
               0)
         << log;
     EXPECT_EQ(metrics(out)["settings"]["ao"]["power"], 2.0);
     EXPECT_EQ(metrics(out)["size"], nlohmann::json({96, 54}));
     // --preset-dir does the same; a seed preset name still wins over a user file of that name.
-    ASSERT_EQ(run(bin() + " render --timing-frames 1 --preset-dir '" + dir + "' --preset 'my look' --out " + out, &log), 0)
+    ASSERT_EQ(
+        run(bin() + " render --timing-frames 1 --preset-dir '" + dir + "' --preset 'my look' --out " + out,
+            &log),
+        0)
         << log;
-    ASSERT_EQ(run(bin() + " render --timing-frames 1 --size 64x36 --preset learnopengl --out " + out, &log), 0) << log;
+    ASSERT_EQ(run(bin() + " render --timing-frames 1 --size 64x36 --preset learnopengl --out " + out, &log),
+              0)
+        << log;
     EXPECT_EQ(metrics(out)["settings"]["ao"]["radius_mode"], "world");
 }
 
@@ -85,8 +96,8 @@ TEST(CliInstall, TheInstalledTreeRunsFromAnywhereWithoutTheSources) {
     const std::string base = std::string(SSAOLAB_TEST_TMP) + "/install";
     fs::remove_all(base);
     std::string log;
-    ASSERT_EQ(run(std::string("'") + SSAOLAB_CMAKE + "' --install '" + SSAOLAB_BUILD_DIR + "' --prefix '" + base +
-                      "/prefix'",
+    ASSERT_EQ(run(std::string("'") + SSAOLAB_CMAKE + "' --install '" + SSAOLAB_BUILD_DIR + "' --prefix '" +
+                      base + "/prefix'",
                   &log),
               0)
         << log;
@@ -97,9 +108,12 @@ TEST(CliInstall, TheInstalledTreeRunsFromAnywhereWithoutTheSources) {
     ASSERT_EQ(run("cd / && '" + exe + "' paths", &log), 0) << log;
     EXPECT_NE(log.find("(installed)"), std::string::npos) << log;
     const std::string data = fs::weakly_canonical(base + "/moved/share/ssaolab").string();
-    EXPECT_NE(log.find("shaders  " + data + "/shaders"), std::string::npos) << "not the source tree's: " << log;
+    EXPECT_NE(log.find("shaders  " + data + "/shaders"), std::string::npos)
+        << "not the source tree's: " << log;
     const std::string out = base + "/out";
-    ASSERT_EQ(run("cd / && '" + exe + "' render --preset seed003 --size 64x36 --timing-frames 1 --out " + out, &log), 0)
+    ASSERT_EQ(run("cd / && '" + exe + "' render --preset seed003 --size 64x36 --timing-frames 1 --out " + out,
+                  &log),
+              0)
         << log;
     EXPECT_TRUE(fs::exists(out + "/ao.denoised.png"));
 }

@@ -68,8 +68,8 @@ TEST(PackKernel, SampleCountClampedToTheArray) {
 
 TEST(AoCommon, RadiusInEachModeInWorldUnitsAndPixels) {
     AoSettings a;
-    const float diag = 800.0f;   // a millimetre model
-    const float upp = 0.001f;    // 1 mm per pixel at unit depth
+    const float diag = 800.0f; // a millimetre model
+    const float upp = 0.001f;  // 1 mm per pixel at unit depth
     a.radiusMode = RadiusMode::World;
     a.radius = 0.5f;
     EXPECT_FLOAT_EQ(worldRadius(a, diag, 1000.0f, upp), 0.5f);
@@ -79,7 +79,7 @@ TEST(AoCommon, RadiusInEachModeInWorldUnitsAndPixels) {
     EXPECT_FLOAT_EQ(worldRadius(a, diag, 1000.0f, upp), 40.0f); // follows the scene: 5 % of 800
     a.radiusMode = RadiusMode::Screen;
     a.radiusPx = 24.0f;
-    EXPECT_FLOAT_EQ(worldRadius(a, diag, 1000.0f, upp), 24.0f); // 24 px of 1 mm at depth 1000
+    EXPECT_FLOAT_EQ(worldRadius(a, diag, 1000.0f, upp), 24.0f);  // 24 px of 1 mm at depth 1000
     EXPECT_FLOAT_EQ(radiusInPixels(a, diag, 10.0f, upp), 24.0f); // the same pixels at every depth
     const auto c = packAoCommon(a, diag, upp, {64, 32});
     EXPECT_EQ(int(c.radius.z), SSAO_RADIUS_SCREEN);

@@ -38,10 +38,9 @@ using V = std::vector<std::string>;
 TEST(GraphOrder, ProducersRunBeforeConsumersWhateverTheRegistrationOrder) {
     // Registered backwards: composite, denoise, ao, gbuffer.
     const V names = {"composite", "denoise", "ao", "gbuffer"};
-    const std::vector<PassDecl> decls = {decl({"gbuffer.albedo", "ao.denoised"}, {"composite"}),
-                                         decl({"ao.raw"}, {"ao.denoised"}),
-                                         decl({"gbuffer.depth"}, {"ao.raw"}),
-                                         decl({}, {"gbuffer.depth", "gbuffer.albedo"})};
+    const std::vector<PassDecl> decls = {
+        decl({"gbuffer.albedo", "ao.denoised"}, {"composite"}), decl({"ao.raw"}, {"ao.denoised"}),
+        decl({"gbuffer.depth"}, {"ao.raw"}), decl({}, {"gbuffer.depth", "gbuffer.albedo"})};
     EXPECT_EQ(ordered(names, decls), (V{"gbuffer", "ao", "denoise", "composite"}));
 }
 
@@ -53,7 +52,8 @@ TEST(GraphOrder, IndependentPassesKeepTheirRegistrationOrder) {
 }
 
 TEST(GraphOrder, AMissingProducerNamesTheResourceAndTheReader) {
-    const std::string e = errorOf({"gbuffer", "ao"}, {decl({}, {"gbuffer.depth"}), decl({"gbuffer.normals"}, {"ao.raw"})});
+    const std::string e =
+        errorOf({"gbuffer", "ao"}, {decl({}, {"gbuffer.depth"}), decl({"gbuffer.normals"}, {"ao.raw"})});
     EXPECT_NE(e.find("'ao' reads 'gbuffer.normals', which no pass writes"), std::string::npos) << e;
 }
 

@@ -8,7 +8,7 @@ using namespace ssao;
 
 namespace {
 const SampleSet kShapes[] = {SampleSet::Hemisphere, SampleSet::Sphere, SampleSet::PlaneXZ,
-                               SampleSet::PlaneYZ};
+                             SampleSet::PlaneYZ};
 }
 
 TEST(Kernel, CountMatchesRequestForEveryShape) {

@@ -39,11 +39,26 @@ TEST(ParamTable, KeysUniqueDefaultsInRangeAndDocumented) {
         }
     }
     // The issue's required knobs are all in the table.
-    for (const char* k :
-         {"kernel.shape", "kernel.separable", "kernel.samples", "ao.radius", "ao.radius_mode", "ao.radius_scene",
-          "ao.radius_px", "kernel.bias", "kernel.range_check", "ao.power", "kernel.noise", "kernel.seed",
-          "kernel.position_source", "denoise.kind", "denoise.sigma", "denoise.spacing", "ao.technique",
-          "ao.resolution", "gbuffer.position_format", "gbuffer.normal_format"})
+    for (const char* k : {"kernel.shape",
+                          "kernel.separable",
+                          "kernel.samples",
+                          "ao.radius",
+                          "ao.radius_mode",
+                          "ao.radius_scene",
+                          "ao.radius_px",
+                          "kernel.bias",
+                          "kernel.range_check",
+                          "ao.power",
+                          "kernel.noise",
+                          "kernel.seed",
+                          "kernel.position_source",
+                          "denoise.kind",
+                          "denoise.sigma",
+                          "denoise.spacing",
+                          "ao.technique",
+                          "ao.resolution",
+                          "gbuffer.position_format",
+                          "gbuffer.normal_format"})
         EXPECT_NE(findParam(k), nullptr) << k;
     EXPECT_EQ(findParam("kernel.samples")->max, 256.0); // not capped at 64
 }
@@ -99,12 +114,12 @@ TEST(ParamSet, ErrorsNameTheKeyAndTheProblem) {
     EXPECT_NE(
         errorOf([&] { applyAssignment(s, "ao.radius=-1"); }).find("ao.radius: value -1 is out of range"),
         std::string::npos);
-    EXPECT_NE(
-        errorOf([&] { applyAssignment(s, "ao.radius=abc"); }).find("ao.radius: 'abc' is not a number"),
-        std::string::npos);
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "ao.radius=abc"); }).find("ao.radius: 'abc' is not a number"),
+              std::string::npos);
     EXPECT_NE(errorOf([&] { applyAssignment(s, "ao.radius=nan"); }).find("ao.radius"), std::string::npos);
     EXPECT_NE(errorOf([&] { applyAssignment(s, "ao.radius=inf"); }).find("ao.radius"), std::string::npos);
-    EXPECT_NE(errorOf([&] { applyAssignment(s, "kernel.samples=0"); }).find("kernel.samples"), std::string::npos);
+    EXPECT_NE(errorOf([&] { applyAssignment(s, "kernel.samples=0"); }).find("kernel.samples"),
+              std::string::npos);
     EXPECT_NE(errorOf([&] { applyAssignment(s, "kernel.samples=257"); }).find("out of range [1, 256]"),
               std::string::npos);
     EXPECT_NE(errorOf([&] { applyAssignment(s, "kernel.samples=2.5"); }).find("not an integer"),
@@ -130,7 +145,8 @@ TEST(Presets, BadFilesGiveOneClearError) {
     EXPECT_NE(errorOf([&] { loadPreset(neg); }).find("ao.radius: value -2 is out of range"),
               std::string::npos);
     auto type = writeTemp("type.json", R"({"kernel": {"samples": "many"}})");
-    EXPECT_NE(errorOf([&] { loadPreset(type); }).find("kernel.samples: expected a number"), std::string::npos);
+    EXPECT_NE(errorOf([&] { loadPreset(type); }).find("kernel.samples: expected a number"),
+              std::string::npos);
     auto arr = writeTemp("arr.json", R"([1,2])");
     EXPECT_NE(errorOf([&] { loadPreset(arr); }).find("must be a JSON object"), std::string::npos);
 }
@@ -166,7 +182,8 @@ TEST(Presets, ShippedSeedPresetsReproduceTheArticles) {
 
     for (auto& e : std::filesystem::directory_iterator(dir)) {
         EXPECT_NO_THROW(loadPreset(e.path().string())) << e.path();
-        EXPECT_TRUE(readPresetFile(e.path().string()).fixesRadius()) << e.path() << ": seed presets keep their radius";
+        EXPECT_TRUE(readPresetFile(e.path().string()).fixesRadius())
+            << e.path() << ": seed presets keep their radius";
     }
 }
 
@@ -221,19 +238,23 @@ TEST(ParamTable, RowsDeclareWhenTheyApply) {
 }
 
 TEST(Presets, SceneSizeAndKeysAreRead) {
-    auto path = writeTemp("with_scene.json",
-                          R"({"scene": "sub/model.gltf", "size": [320, 200], "ao": {"radius_mode": "world"}})");
+    auto path =
+        writeTemp("with_scene.json",
+                  R"({"scene": "sub/model.gltf", "size": [320, 200], "ao": {"radius_mode": "world"}})");
     Preset p = readPresetFile(path);
     ASSERT_TRUE(p.scene.has_value());
-    EXPECT_EQ(*p.scene, (std::filesystem::path(SSAOLAB_TEST_TMP) / "sub/model.gltf").lexically_normal().string())
+    EXPECT_EQ(*p.scene,
+              (std::filesystem::path(SSAOLAB_TEST_TMP) / "sub/model.gltf").lexically_normal().string())
         << "a relative scene is relative to the preset file";
     ASSERT_TRUE(p.size.has_value());
     EXPECT_EQ(p.size->first, 320);
     EXPECT_TRUE(p.fixesRadius());
     EXPECT_FALSE(readPresetFile(writeTemp("no_radius.json", R"({"kernel": {"samples": 8}})")).fixesRadius());
-    EXPECT_EQ(*readPresetFile(writeTemp("builtin.json", R"({"scene": "builtin:corner"})")).scene, "builtin:corner");
-    EXPECT_NE(errorOf([] { readPresetFile(writeTemp("bad_size.json", R"({"size": [0, 10]})")); }).find("size"),
-              std::string::npos);
+    EXPECT_EQ(*readPresetFile(writeTemp("builtin.json", R"({"scene": "builtin:corner"})")).scene,
+              "builtin:corner");
+    EXPECT_NE(
+        errorOf([] { readPresetFile(writeTemp("bad_size.json", R"({"size": [0, 10]})")); }).find("size"),
+        std::string::npos);
     EXPECT_NE(errorOf([] { readPresetFile(writeTemp("bad_scene.json", R"({"scene": 3})")); }).find("scene"),
               std::string::npos);
     Preset round = presetFromJson(presetToJson(p), "round trip");

@@ -45,22 +45,22 @@ TEST_F(Views, DepthAndPositionViewsAreReadableOnRealScenes) {
         gl::RenderTarget view;
         const Image mask = readBack(r->texture("gbuffer.depth"), 1);
         for (const char* buffer : {"gbuffer.depth", "gbuffer.position", "gbuffer.zbuffer"}) {
-            const DisplayRange range =
-                painter.paint(r->resource(buffer), r->resource("gbuffer.depth"), {}, view, r->shaders(), r->triangle());
+            const DisplayRange range = painter.paint(r->resource(buffer), r->resource("gbuffer.depth"), {},
+                                                     view, r->shaders(), r->triangle());
             EXPECT_TRUE(range.fitted) << rel << " " << buffer;
             const Image img = readBack(view.texture(), 3);
             const int channels = std::string(buffer) == "gbuffer.position" ? 3 : 1;
             for (int c = 0; c < channels; ++c) {
                 const Spread g = spread(img, mask, c);
-                std::printf("%-38s %-16s ch%d range %.4g..%.4g: %3d grey levels, sd %.2f\n", rel, buffer, c, range.lo[c],
-                            range.hi[c], g.levels, g.stddev);
+                std::printf("%-38s %-16s ch%d range %.4g..%.4g: %3d grey levels, sd %.2f\n", rel, buffer, c,
+                            range.lo[c], range.hi[c], g.levels, g.stddev);
                 EXPECT_GE(g.levels, 40) << rel << " " << buffer << " channel " << c << ": not washed out";
                 EXPECT_GT(g.stddev, 0.1) << rel << " " << buffer << " channel " << c << ": not flat grey";
             }
         }
         // AO keeps its physical range unless asked to fit.
-        const DisplayRange ao =
-            painter.paint(r->resource("ao.raw"), r->resource("gbuffer.depth"), {}, view, r->shaders(), r->triangle());
+        const DisplayRange ao = painter.paint(r->resource("ao.raw"), r->resource("gbuffer.depth"), {}, view,
+                                              r->shaders(), r->triangle());
         EXPECT_FALSE(ao.fitted);
         EXPECT_EQ(ao.lo.x, 0.0f);
         EXPECT_EQ(ao.hi.x, 1.0f);

@@ -61,7 +61,8 @@ TEST_F(Inspector, GpuTapsReproduceTheWrittenAoForEveryModeAndTechnique) {
                         sum += tap.contribution;
                     EXPECT_NEAR(sum, pi->occlusion, 1e-3) << mode;
                     if (t.id == "kernel") {
-                        EXPECT_EQ(int(pi->taps.size()), s.kernel.samples * (s.kernel.separable ? 2 : 1)) << mode;
+                        EXPECT_EQ(int(pi->taps.size()), s.kernel.samples * (s.kernel.separable ? 2 : 1))
+                            << mode;
                         const float vis = std::clamp(1.0f - pi->occlusion / pi->normaliser, 0.0f, 1.0f);
                         EXPECT_NEAR(std::pow(vis, s.ao.power), pi->ao, 1e-4f) << mode;
                     }

@@ -88,8 +88,8 @@ TEST_F(Modes, EveryKernelDenoiseSeparableCombinationShowsOcclusion) {
                 s.denoise.kind = d;
                 s.kernel.separable = sep;
                 Rendered r = render("builtin:showcase", s, 160, 90);
-                const std::string what = std::string(k == KernelShape::Sphere ? "sphere" : "hemisphere") + "/denoise" +
-                                         std::to_string(int(d)) + (sep ? "/separable" : "");
+                const std::string what = std::string(k == KernelShape::Sphere ? "sphere" : "hemisphere") +
+                                         "/denoise" + std::to_string(int(d)) + (sep ? "/separable" : "");
                 EXPECT_TRUE(finiteInRange(r.aoRaw, 0.0f, 1.0f)) << what << " ao.raw";
                 EXPECT_TRUE(finiteInRange(r.ao, 0.0f, 1.0f)) << what << " ao.denoised";
                 Image mask = r.position.channel(3);

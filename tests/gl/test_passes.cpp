@@ -48,8 +48,8 @@ TEST_F(Passes, EveryBufferIsListedFromTheGraph) {
     V names;
     for (const Resource* res : r_->buffers())
         names.push_back(res->desc.name);
-    EXPECT_EQ(names, (V{"gbuffer.position", "gbuffer.normal", "gbuffer.albedo", "gbuffer.depth", "gbuffer.zbuffer",
-                        "ao.raw", "ao.denoised", "composite"}));
+    EXPECT_EQ(names, (V{"gbuffer.position", "gbuffer.normal", "gbuffer.albedo", "gbuffer.depth",
+                        "gbuffer.zbuffer", "ao.raw", "ao.denoised", "composite"}));
     EXPECT_NE(r_->graph().find("denoise.tmp"), nullptr); // internal scratch exists but is not listed
 }
 
@@ -75,8 +75,8 @@ TEST_F(Passes, EachSettingGroupInvalidatesItsPassAndWhatFollows) {
 TEST_F(Passes, ARowThatDoesNotApplyReRunsNothing) {
     r_->render();
     ASSERT_EQ(r_->settings().denoise.kind, DenoiseKind::Box4);
-    EXPECT_EQ(ranAfter("denoise.sigma=5"), V{});  // sigma has no effect under box4
-    EXPECT_EQ(ranAfter("ao.radius=3"), V{});      // the world radius, while the radius is in scene units
+    EXPECT_EQ(ranAfter("denoise.sigma=5"), V{}); // sigma has no effect under box4
+    EXPECT_EQ(ranAfter("ao.radius=3"), V{});     // the world radius, while the radius is in scene units
     EXPECT_EQ(ranAfter("ao.radius_mode=world"), (V{"ao", "denoise", "composite"}));
     EXPECT_EQ(ranAfter("ao.radius=2"), (V{"ao", "denoise", "composite"}));
 }

@@ -111,6 +111,7 @@ TEST_F(Robustness, ShaderCompileErrorsNameFileAndLine) {
     gl::ShaderLibrary real(SSAOLAB_SHADER_DIR);
     EXPECT_NE(real.program("passes/gbuffer.vert", "passes/gbuffer.frag", {{"NORMAL_UNORM", "1"}}), 0u);
     EXPECT_NE(real.program("passes/fullscreen.vert", "techniques/kernel/kernel.frag"), 0u);
-    EXPECT_NE(real.program("passes/fullscreen.vert", "techniques/kernel/kernel.frag", {{"INSPECT", "1"}}), 0u);
+    EXPECT_NE(real.program("passes/fullscreen.vert", "techniques/kernel/kernel.frag", {{"INSPECT", "1"}}),
+              0u);
     EXPECT_NE(real.program("passes/fullscreen.vert", "display/view.frag"), 0u);
 }

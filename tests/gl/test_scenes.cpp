@@ -28,8 +28,8 @@ TEST_F(Scenes, EverySharedSceneShowsAoWithTheDefaults) {
         const Image mask = out.position.channel(3);
         const Stats s = stats(out.ao, &mask);
         const RadiusInfo ri = r->radiusAtCentre();
-        std::printf("%-18s AO mean %.3f, median %.3f, darkest 5%% <= %.3f; radius %.4g units = %.1f px\n", name.c_str(),
-                    s.mean, s.p50, s.p05, ri.world, ri.pixels);
+        std::printf("%-18s AO mean %.3f, median %.3f, darkest 5%% <= %.3f; radius %.4g units = %.1f px\n",
+                    name.c_str(), s.mean, s.p50, s.p05, ri.world, ri.pixels);
         EXPECT_GT(s.count, 640 * 360 / 50) << name << " is barely visible";
         EXPECT_GT(ri.pixels, 4.0f) << name << ": a kernel of a few pixels or less gives flat grey";
         EXPECT_GT(s.p50, 0.93) << name << ": most surfaces are open, not flat grey";
@@ -62,8 +62,10 @@ TEST_F(Scenes, FittedClipPlanesRemoveTheEnginesZFighting) {
         return n;
     };
     const long fit = speckles(rFit), fileSpeckles = speckles(rFile);
-    std::printf("engine: %ld pixels differ from the near-10 reference with fitted planes, %ld with the file's\n", fit,
-                fileSpeckles);
+    std::printf(
+        "engine: %ld pixels differ from the near-10 reference with fitted planes, %ld with the file's\n", fit,
+        fileSpeckles);
     EXPECT_LT(fit, 20);
-    EXPECT_GT(fileSpeckles, 10 * std::max(fit, 5L)) << "the file's planes do z-fight (else this test proves nothing)";
+    EXPECT_GT(fileSpeckles, 10 * std::max(fit, 5L))
+        << "the file's planes do z-fight (else this test proves nothing)";
 }

@@ -55,8 +55,10 @@ void KernelPass::draw(PassContext& ctx, bool inspect) {
     ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
     noise_.bind(KERNEL_TEX_NOISE);
     gl::Defines defs;
-    if (inspect) defs.push_back({"INSPECT", "1"});
-    else ctx.bindOutputs({out});
+    if (inspect)
+        defs.push_back({"INSPECT", "1"});
+    else
+        ctx.bindOutputs({out});
     glUseProgram(ctx.shaders.program("passes/fullscreen.vert", "techniques/kernel/kernel.frag", defs));
     ctx.drawFullscreen();
 }

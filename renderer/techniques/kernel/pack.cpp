@@ -6,7 +6,8 @@
 
 namespace ssao {
 
-gpu::KernelConstants packKernelConstants(const KernelSettings& s, const gpu::AoCommon& common, bool normalUnorm) {
+gpu::KernelConstants packKernelConstants(const KernelSettings& s, const gpu::AoCommon& common,
+                                         bool normalUnorm) {
     gpu::KernelConstants c{};
     c.aoCommon = common;
     const int n = std::clamp(s.samples, 1, KERNEL_MAX_SAMPLES);
@@ -22,7 +23,8 @@ gpu::KernelConstants packKernelConstants(const KernelSettings& s, const gpu::AoC
     const int range = s.rangeCheck == RangeCheck::Smoothstep ? KERNEL_RANGE_SMOOTHSTEP
                       : s.rangeCheck == RangeCheck::Hard     ? KERNEL_RANGE_HARD
                                                              : KERNEL_RANGE_OFF;
-    const int depthTest = s.depthTest == DepthTest::Sample ? KERNEL_DEPTHTEST_SAMPLE : KERNEL_DEPTHTEST_FRAGMENT;
+    const int depthTest =
+        s.depthTest == DepthTest::Sample ? KERNEL_DEPTHTEST_SAMPLE : KERNEL_DEPTHTEST_FRAGMENT;
     c.modes = {n, range, depthTest, flags};
 
     const uint32_t seed = uint32_t(s.seed);

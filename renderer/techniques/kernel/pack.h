@@ -10,6 +10,7 @@ namespace ssao {
 
 // `common` comes from packAoCommon (radius, power, target size); `normalUnorm` when the
 // normal target stores (n+1)/2.
-gpu::KernelConstants packKernelConstants(const KernelSettings& s, const gpu::AoCommon& common, bool normalUnorm);
+gpu::KernelConstants packKernelConstants(const KernelSettings& s, const gpu::AoCommon& common,
+                                         bool normalUnorm);
 
 } // namespace ssao

@@ -17,29 +17,34 @@ std::vector<Param> kernelParams() {
                  "Seed 003: two sample sets in the x-z and y-z tangent planes (N each, normalised by 2N)."),
         INT_ROW("kernel.samples", "Samples", kernel.samples, 1, 256, "samples",
                 "Kernel samples per pixel (per plane when separable); more = less noise, linear cost."),
-        FLOAT_ROW("kernel.bias", "Bias", kernel.bias, 0.0, 1.0, "x radius",
-                  "Depth margin before a sample counts as occluded, as a fraction of the radius (LearnOpenGL's "
-                  "0.025 at radius 0.5 is 0.05), so it scales with the scene; removes self-occlusion acne, too "
-                  "much loses contact shadows."),
-        ENUM_ROW("kernel.range_check", "Range check", kernel.rangeCheck, RangeCheck,
-                 "Fades occluders far in depth from the pixel: smoothstep(radius/|dz|) (seed 004), hard "
-                 "|dz|<radius (seed 003) or off (dark halos behind silhouettes).",
-                 ({{"smoothstep", RangeCheck::Smoothstep}, {"hard", RangeCheck::Hard}, {"off", RangeCheck::Off}})),
+        FLOAT_ROW(
+            "kernel.bias", "Bias", kernel.bias, 0.0, 1.0, "x radius",
+            "Depth margin before a sample counts as occluded, as a fraction of the radius (LearnOpenGL's "
+            "0.025 at radius 0.5 is 0.05), so it scales with the scene; removes self-occlusion acne, too "
+            "much loses contact shadows."),
+        ENUM_ROW(
+            "kernel.range_check", "Range check", kernel.rangeCheck, RangeCheck,
+            "Fades occluders far in depth from the pixel: smoothstep(radius/|dz|) (seed 004), hard "
+            "|dz|<radius (seed 003) or off (dark halos behind silhouettes).",
+            ({{"smoothstep", RangeCheck::Smoothstep}, {"hard", RangeCheck::Hard}, {"off", RangeCheck::Off}})),
         ENUM_ROW("kernel.depth_test", "Depth test", kernel.depthTest, DepthTest,
                  "sample: occluded if the surface is in front of the sample (seeds 000/004); fragment: if it "
                  "is behind the pixel itself (seed 003).",
                  ({{"sample", DepthTest::Sample}, {"fragment", DepthTest::Fragment}})),
-        ENUM_ROW("kernel.noise", "Rotation noise", kernel.noise, Noise,
-                 "Per-pixel kernel rotation: a tiled 4x4 texture (noise the denoiser removes) or none (banding).",
-                 ({{"tex4x4", Noise::Tex4x4}, {"none", Noise::None}})),
+        ENUM_ROW(
+            "kernel.noise", "Rotation noise", kernel.noise, Noise,
+            "Per-pixel kernel rotation: a tiled 4x4 texture (noise the denoiser removes) or none (banding).",
+            ({{"tex4x4", Noise::Tex4x4}, {"none", Noise::None}})),
         INT_ROW("kernel.seed", "Seed", kernel.seed, 0, 1000000, "",
                 "Random seed of the kernel and noise; change it to see which artefacts are sampling luck."),
-        ENUM_ROW("kernel.position_source", "Position source", kernel.positionSource, PositionSource,
-                 "Read positions from the G-buffer target, or reconstruct them from the depth buffer (seed 001).",
-                 ({{"gbuffer", PositionSource::GBuffer}, {"depth", PositionSource::Depth}})),
-        ENUM_ROW("kernel.offscreen", "Off-screen samples", kernel.offscreen, Offscreen,
-                 "Samples projecting outside the screen: skip (count as open) or clamp to the edge texel (seeds).",
-                 ({{"skip", Offscreen::Skip}, {"clamp", Offscreen::Clamp}})),
+        ENUM_ROW(
+            "kernel.position_source", "Position source", kernel.positionSource, PositionSource,
+            "Read positions from the G-buffer target, or reconstruct them from the depth buffer (seed 001).",
+            ({{"gbuffer", PositionSource::GBuffer}, {"depth", PositionSource::Depth}})),
+        ENUM_ROW(
+            "kernel.offscreen", "Off-screen samples", kernel.offscreen, Offscreen,
+            "Samples projecting outside the screen: skip (count as open) or clamp to the edge texel (seeds).",
+            ({{"skip", Offscreen::Skip}, {"clamp", Offscreen::Clamp}})),
     };
 }
 } // namespace
