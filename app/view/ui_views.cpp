@@ -173,8 +173,13 @@ void toolbar(AppCore& app) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(130);
         if (ImGui::BeginCombo("compare", app.splitBuffer.c_str())) {
-            for (const char* b : {"composite", "ao.denoised", "ao.raw"})
-                if (ImGui::Selectable(b, app.splitBuffer == b)) app.splitBuffer = b, app.poke();
+            // Every buffer chain B has too (its own or shared with A), from the graph.
+            for (const Resource* r : app.renderer().buffers()) {
+                const std::string& b = r->desc.name;
+                if (app.renderer().graph().find("b." + b) &&
+                    ImGui::Selectable(b.c_str(), app.splitBuffer == b))
+                    app.splitBuffer = b, app.poke();
+            }
             ImGui::EndCombo();
         }
         ImGui::SameLine();
