@@ -1,6 +1,7 @@
 #include "renderer.h"
 
 #include "gl/shader_library.h"
+#include "output/image.h"
 #include "passes/composite_pass.h"
 #include "passes/denoise_pass.h"
 #include "passes/gbuffer_pass.h"
@@ -13,6 +14,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <typeinfo>
 
 namespace ssao {
@@ -49,6 +51,7 @@ void Renderer::setScene(const Scene& scene) {
     scene_ = std::make_unique<GpuScene>(scene);
     bounds_ = scene.bounds;
     ++sceneVersion_;
+    frame_.scene = nullptr; // until the next render(): the inspector must not draw the old scene
 }
 
 void Renderer::setCamera(const Camera& camera) {
@@ -58,20 +61,31 @@ void Renderer::setCamera(const Camera& camera) {
 
 void Renderer::setSettings(const Settings& settings) {
     findTechnique(settings.ao.technique); // an unknown id fails here, naming the known ones
+    if (settings == settings_) return;
     settings_ = settings;
+    graphStale_ = true;
 }
 
 void Renderer::setSettingsB(std::optional<Settings> settings) {
     if (settings) findTechnique(settings->ao.technique);
+    if (settings.has_value() == settingsB_.has_value() && (!settings || *settings == *settingsB_)) return;
     settingsB_ = std::move(settings);
+    graphStale_ = true;
 }
 
 void Renderer::setSize(int width, int height) {
     if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
         throw Error("size " + std::to_string(width) + "x" + std::to_string(height) +
                     " is outside 1x1..16384x16384");
+    if (width == width_ && height == height_) return;
     width_ = width;
     height_ = height;
+    graphStale_ = true;
+}
+
+void Renderer::setDisplayScale(float scale) {
+    if (!(scale > 0.0f) || !std::isfinite(scale)) throw Error("display scale must be positive");
+    displayScale_ = scale;
 }
 
 Pass& Renderer::passFor(const std::string& key, const std::function<std::unique_ptr<Pass>()>& make) {
@@ -80,16 +94,25 @@ Pass& Renderer::passFor(const std::string& key, const std::function<std::unique_
     return *slot;
 }
 
+std::vector<Pass*> Renderer::techniquePasses(const Branch& b, const Settings& s) {
+    const TechniqueInfo& t = findTechnique(s.ao.technique);
+    auto& owned = techniquePasses_[b.prefix + t.id];
+    if (owned.empty()) owned = t.makePasses(b);
+    std::vector<Pass*> out;
+    for (auto& p : owned)
+        out.push_back(p.get());
+    return out;
+}
+
 void Renderer::buildGraph() {
     std::vector<FrameGraph::Node> nodes;
     std::map<std::string, std::string> aliases;
     nodes.push_back({&passFor("gbuffer", [] { return std::make_unique<GBufferPass>(); }), &settings_});
     auto chain = [&](const Branch& b, const Settings& s) {
-        const TechniqueInfo& t = findTechnique(s.ao.technique);
-        return std::vector<Pass*>{
-            &passFor(b.prefix + "technique:" + t.id, [&] { return t.makePass(b); }),
-            &passFor(b.prefix + "denoise", [&] { return std::make_unique<DenoisePass>(b); }),
-            &passFor(b.prefix + "composite", [&] { return std::make_unique<CompositePass>(b); })};
+        std::vector<Pass*> passes = techniquePasses(b, s);
+        passes.push_back(&passFor(b.prefix + "denoise", [&] { return std::make_unique<DenoisePass>(b); }));
+        passes.push_back(&passFor(b.prefix + "composite", [&] { return std::make_unique<CompositePass>(b); }));
+        return passes;
     };
     const std::vector<Pass*> a = chain(Branch::a(), settings_);
     for (Pass* p : a)
@@ -99,13 +122,15 @@ void Renderer::buildGraph() {
         // counterpart's would compute the same image: its outputs alias A's instead of running.
         const nlohmann::json ja = toEffectiveJson(settings_), jb = toEffectiveJson(*settingsB_);
         const std::vector<Pass*> b = chain(Branch::b(), *settingsB_);
+        const bool sameShape = a.size() == b.size(); // another technique may have another number of passes
         for (size_t i = 0; i < b.size(); ++i) {
-            const PassDecl da = FrameGraph::declare(*a[i], settings_),
-                           db = FrameGraph::declare(*b[i], *settingsB_);
-            bool same = da.groups == db.groups && da.reads.size() == db.reads.size() &&
-                        da.writes.size() == db.writes.size() && typeid(*a[i]) == typeid(*b[i]);
-            for (const auto& g : db.groups)
-                same = same && ja.at(g) == jb.at(g);
+            bool same = sameShape && typeid(*a[i]) == typeid(*b[i]);
+            PassDecl da, db;
+            if (same) da = FrameGraph::declare(*a[i], settings_), db = FrameGraph::declare(*b[i], *settingsB_);
+            same = same && da.groups == db.groups && da.reads.size() == db.reads.size() &&
+                   da.writes.size() == db.writes.size();
+            for (size_t g = 0; same && g < db.groups.size(); ++g)
+                same = ja.at(db.groups[g]) == jb.at(db.groups[g]);
             for (size_t r = 0; same && r < db.reads.size(); ++r) {
                 auto it = aliases.find(db.reads[r]);
                 same = (it != aliases.end() ? it->second : db.reads[r]) == da.reads[r];
@@ -119,6 +144,7 @@ void Renderer::buildGraph() {
         }
     }
     graph_.compile(nodes, aliases, width_, height_);
+    graphStale_ = false;
 }
 
 FrameReport Renderer::render() {
@@ -128,8 +154,8 @@ FrameReport Renderer::render() {
     const gpu::FrameConstants fc = packFrameConstants(effective_, width_, height_, sceneRadius());
     frameUbo_.upload(&fc, sizeof fc);
     frameUbo_.bind(SSAO_UBO_FRAME);
-    buildGraph();
-    frame_ = FrameInfo{scene_.get(), sceneVersion_, sceneRadius(), &effective_, width_, height_};
+    if (graphStale_) buildGraph(); // only when settings, chain B or the size changed
+    frame_ = FrameInfo{scene_.get(), sceneVersion_, sceneRadius(), &effective_, width_, height_, displayScale_};
     return graph_.execute(frame_, shaders_, triangle_);
 }
 
@@ -144,13 +170,12 @@ std::optional<PixelInspection> Renderer::inspect(int branch, glm::ivec2 pixel) {
     const Branch b = branch == 1 ? Branch::b() : Branch::a();
     // Chain B's AO may be an alias of A's: inspect the pass that really produced it.
     const Resource* ao = graph_.find(b.res("ao.raw"));
-    if (!ao || !frame_.scene) return std::nullopt;
+    if (!ao || !frame_.scene || graphStale_) return std::nullopt; // render() first
     Pass* p = graph_.pass(ao->producer);
     const Settings* s = graph_.settingsOf(ao->producer);
     if (!p || !s || pixel.x < 0 || pixel.y < 0 || pixel.x >= width_ || pixel.y >= height_)
         return std::nullopt;
-    const glm::ivec2 aoPixel(int(float(pixel.x) * float(ao->width()) / float(width_)),
-                             int(float(pixel.y) * float(ao->height()) / float(height_)));
+    const glm::ivec2 aoPixel(mapPixel(pixel.x, width_, ao->width()), mapPixel(pixel.y, height_, ao->height()));
     frameUbo_.bind(SSAO_UBO_FRAME);
     PassContext ctx(graph_, *s, frame_, shaders_, triangle_, ao->producer);
     PixelInspection out;
@@ -166,7 +191,8 @@ RadiusInfo Renderer::radiusAtCentre() const {
         ri.depth = d->texture.readTexel(d->width() / 2, d->height() / 2).x;
     if (!(ri.depth > 0.0f)) ri.depth = glm::length(camera_.target - camera_.eye); // sky at the centre
     const int h = height_ > 0 ? height_ : 1;
-    const float upp = unitsPerPixelAtUnitDepth(c.projection(float(std::max(width_, 1)) / float(h)), h);
+    // Displayed pixels: a render at 0.35 of the view has pixels 1/0.35 times as large.
+    const float upp = unitsPerPixelAtUnitDepth(c.projection(float(std::max(width_, 1)) / float(h)), h) * displayScale_;
     ri.world = worldRadius(settings_.ao, ri.sceneDiagonal, ri.depth, upp);
     ri.pixels = radiusInPixels(settings_.ao, ri.sceneDiagonal, ri.depth, upp);
     return ri;

@@ -38,6 +38,9 @@ class Renderer {
     void setSettings(const Settings& settings);
     void setSettingsB(std::optional<Settings> settings); // chain B on (the split view) or off
     void setSize(int width, int height);
+    // Render pixels per displayed pixel (the app renders reduced while the camera moves): a radius
+    // in pixels is a radius in displayed pixels. 1 headless.
+    void setDisplayScale(float scale);
     // Forces every pass to run on the next frame (e.g. for timing all passes).
     void invalidate() { graph_.invalidate(); }
 
@@ -63,6 +66,7 @@ class Renderer {
     // (y from the top); nullopt when the technique records no taps or the pixel is outside.
     std::optional<PixelInspection> inspect(int branch, glm::ivec2 pixel);
 
+    // Radius in displayed pixels (see setDisplayScale); reads one texel of gbuffer.depth.
     RadiusInfo radiusAtCentre() const;
 
     gl::ShaderLibrary& shaders() { return shaders_; }
@@ -71,6 +75,7 @@ class Renderer {
 
   private:
     void buildGraph();
+    std::vector<Pass*> techniquePasses(const Branch& b, const Settings& s);
     Pass& passFor(const std::string& key, const std::function<std::unique_ptr<Pass>()>& make);
 
     gl::ShaderLibrary shaders_;
@@ -83,9 +88,12 @@ class Renderer {
     Settings settings_;
     std::optional<Settings> settingsB_;
     int width_ = 0, height_ = 0;
+    float displayScale_ = 1.0f;
     FrameGraph graph_;
+    bool graphStale_ = true; // settings, chain B or size changed since the graph was compiled
     FrameInfo frame_;
     std::map<std::string, std::unique_ptr<Pass>> passes_; // kept across rebuilds (they own GL state)
+    std::map<std::string, std::vector<std::unique_ptr<Pass>>> techniquePasses_; // by chain + technique
 };
 
 } // namespace ssao

@@ -37,7 +37,7 @@ AppCore::AppCore(const AppOptions& o) : opts_(o), store_(PresetStore::standard(o
     renderer_ = std::make_unique<Renderer>(opts_.shaderDir);
     const std::string spec = !o.scene.empty() ? o.scene : loaded_.scene.value_or("builtin:showcase");
     adoptScene(loadScene(spec), spec, false);
-    if (loaded_.camera) camera_.reset(*loaded_.camera, scene_.bounds.radius());
+    if (loaded_.camera) camera_.reset(*loaded_.camera, scene_.bounds.radius(), scene_.bounds.center());
     shaderTime_ = renderer_->shaders().newestSourceTime();
     setStatus("loaded " + scene_.name + (o.preset.empty() ? "" : " with preset " + loaded_.name) + "; " +
                   radiusNote(),
@@ -81,13 +81,13 @@ void AppCore::adoptScene(Scene s, const std::string& spec, bool keepCamera) {
 }
 
 void AppCore::resetCamera() {
-    camera_.reset(scene_.camera.value_or(frameBounds(scene_.bounds)), scene_.bounds.radius());
+    camera_.reset(scene_.camera.value_or(frameBounds(scene_.bounds)), scene_.bounds.radius(), scene_.bounds.center());
     poke();
 }
 
 void AppCore::selectSceneCamera(int index) {
     if (index >= 0 && index < int(scene_.cameras.size()))
-        camera_.reset(scene_.cameras[size_t(index)].second, scene_.bounds.radius());
+        camera_.reset(scene_.cameras[size_t(index)].second, scene_.bounds.radius(), scene_.bounds.center());
     poke();
 }
 
@@ -119,7 +119,7 @@ bool AppCore::openPreset(const std::string& nameOrPath) {
         loaded_ = p;
         settings_ = p.settings;
         if (s) adoptScene(std::move(*s), *p.scene, false);
-        if (p.camera) camera_.reset(*p.camera, scene_.bounds.radius());
+        if (p.camera) camera_.reset(*p.camera, scene_.bounds.radius(), scene_.bounds.center());
         return "preset " + p.name + " loaded" + (s ? " with its scene " + scene_.name : "") + "; " +
                radiusNote();
     });
@@ -146,12 +146,7 @@ bool AppCore::savePreset(const std::string& name) {
         for (const auto& row : paramTable())
             p.keys.insert(row.key); // a saved preset is complete: it fixes every parameter
         p.scene = sceneSpec_;
-        if (renderer_->width() > 0) {
-            // The view's full-resolution size, not the reduced one used while dragging.
-            const float s = renderedInteractive_ ? renderScale / interactiveScale : 1.0f;
-            p.size = std::make_pair(int(float(renderer_->width()) * s + 0.5f),
-                                    int(float(renderer_->height()) * s + 0.5f));
-        }
+        if (fullSize_.first > 0) p.size = fullSize_; // the size when still, not the reduced one while moving
         p.camera = camera_.camera(); // the camera as a bookmark
         const std::string path = store_.save(p);
         loaded_ = p;

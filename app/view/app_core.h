@@ -92,7 +92,10 @@ class AppCore {
     ViewStyle style;
     bool showSamples = true;
     bool pinPixel = false;
-    glm::ivec2 hoverPixel{-1, -1}; // G-buffer pixel (y from the top) under the cursor
+    // Where the cursor is (or the pinned point), as uv of the view (y from the top; -1: nowhere):
+    // resolution independent, so it stays put when the render size changes while moving.
+    glm::vec2 hoverUv{-1.0f, -1.0f};
+    glm::ivec2 hoverPixel() const; // the G-buffer pixel under hoverUv at the current render size
     int hoverBranch = 0;           // 1 when the cursor is over the B half of the split view
     std::string newPresetName;
     // Rectangles of widgets drawn last frame, by parameter key or action name (for tests).
@@ -102,8 +105,12 @@ class AppCore {
     // Renders what changed at `viewW x viewH` view pixels times the current scale.
     void renderIfNeeded(int viewW, int viewH);
     bool renderedInteractive() const { return renderedInteractive_; }
+    // The GPU taps at hoverPixel(); not re-run while the view moves (the last one is kept).
     const std::optional<PixelInspection>& inspection();
-    // Decoded value(s) of a buffer at a G-buffer pixel (y from the top); `channels` of them.
+    // The radius at the centre of the view, recomputed when the depth or the settings change.
+    const RadiusInfo& radiusInfo();
+    // Decoded value(s) of a buffer at a G-buffer pixel (y from the top); `channels` of them. Cached
+    // per buffer version and pixel: hovering does not read the GPU back every frame.
     std::vector<float> valueAt(const std::string& buffer, glm::ivec2 pixel);
     struct Timing {
         int width = 0, height = 0;
@@ -147,6 +154,16 @@ class AppCore {
     glm::ivec2 inspectedPixel_{-1, -1};
     int inspectedBranch_ = -1;
     uint64_t inspectedVersion_ = 0;
+    struct CachedValue {
+        glm::ivec2 pixel{-1};
+        uint64_t version = 0;
+        unsigned generation = 0;
+        std::vector<float> values;
+    };
+    std::map<std::string, CachedValue> values_;
+    RadiusInfo radius_;
+    std::string radiusKey_;
+    std::pair<int, int> fullSize_{0, 0}; // the render size when input is still
 };
 
 // UI pieces (ui_panels.cpp, ui_params.cpp, ui_views.cpp, ui_info.cpp).

@@ -2,7 +2,10 @@
 // timings, shader hot reload.
 #include "view/app_core.h"
 
+#include "settings/params.h"
+
 #include <cmath>
+#include <cstdio>
 
 namespace ssao {
 
@@ -29,14 +32,24 @@ bool AppCore::interacting() const {
     return ImGui::GetTime() - lastInteraction_ < kSettleSeconds;
 }
 
+glm::ivec2 AppCore::hoverPixel() const {
+    const Renderer& r = *renderer_;
+    if (hoverUv.x < 0.0f || r.width() <= 0) return {-1, -1};
+    return {std::clamp(int(hoverUv.x * float(r.width())), 0, r.width() - 1),
+            std::clamp(int(hoverUv.y * float(r.height())), 0, r.height() - 1)};
+}
+
 void AppCore::renderIfNeeded(int viewW, int viewH) {
     const bool inter = interacting();
     const float scale = inter ? std::min(interactiveScale, renderScale) : renderScale;
     const int w = std::max(int(std::lround(float(viewW) * scale)), 16);
     const int h = std::max(int(std::lround(float(viewH) * scale)), 16);
+    fullSize_ = {std::max(int(std::lround(float(viewW) * renderScale)), 16),
+                 std::max(int(std::lround(float(viewH) * renderScale)), 16)};
     try {
         Renderer& r = *renderer_;
         if (r.width() != w || r.height() != h) r.setSize(w, h);
+        r.setDisplayScale(scale); // a radius in pixels stays in displayed pixels while moving
         r.setCamera(camera_.camera());
         r.setSettings(settings_);
         r.setSettingsB(settingsB());
@@ -78,32 +91,51 @@ void AppCore::renderIfNeeded(int viewW, int viewH) {
 const std::optional<PixelInspection>& AppCore::inspection() {
     const Resource* ao = renderer_->graph().find(hoverBranch ? "b.ao.raw" : "ao.raw");
     const uint64_t v = ao ? ao->version : 0;
-    if (hoverPixel != inspectedPixel_ || hoverBranch != inspectedBranch_ || v != inspectedVersion_) {
+    const glm::ivec2 px = hoverPixel();
+    // While the view moves the AO changes every frame: keep the last record instead of running the
+    // probe (a full-shader draw and a read-back) each time.
+    const bool moved = px != inspectedPixel_ || hoverBranch != inspectedBranch_;
+    if (moved || (v != inspectedVersion_ && !interacting())) {
         try {
-            inspection_ = renderer_->inspect(hoverBranch, hoverPixel);
+            inspection_ = renderer_->inspect(hoverBranch, px);
         } catch (const std::exception& e) {
             inspection_.reset();
             shaderError_ = e.what();
         }
-        inspectedPixel_ = hoverPixel;
+        inspectedPixel_ = px;
         inspectedBranch_ = hoverBranch;
         inspectedVersion_ = v;
     }
     return inspection_;
 }
 
+const RadiusInfo& AppCore::radiusInfo() {
+    const Resource* depth = renderer_->graph().find("gbuffer.depth");
+    char key[96];
+    std::snprintf(key, sizeof key, "%llu/%u/%d", depth ? (unsigned long long)depth->version : 0ull,
+                  depth ? depth->generation : 0u, renderer_->width());
+    const std::string k = key + toJson(settings_)["ao"].dump();
+    if (k != radiusKey_) {
+        radius_ = renderer_->radiusAtCentre();
+        radiusKey_ = k;
+    }
+    return radius_;
+}
+
 std::vector<float> AppCore::valueAt(const std::string& buffer, glm::ivec2 pixel) {
     const Resource* res = renderer_->graph().find(buffer);
     if (!res || pixel.x < 0 || pixel.y < 0) return {};
+    CachedValue& c = values_[buffer];
+    if (c.pixel == pixel && c.version == res->version && c.generation == res->generation) return c.values;
     const Renderer& r = *renderer_;
-    const int x = std::min(res->width() - 1, pixel.x * res->width() / std::max(r.width(), 1));
-    const int y = std::min(res->height() - 1, pixel.y * res->height() / std::max(r.height(), 1));
+    const int x = mapPixel(pixel.x, std::max(r.width(), 1), res->width());
+    const int y = mapPixel(pixel.y, std::max(r.height(), 1), res->height());
     const glm::vec4 t = res->texture.readTexel(x, y);
     std::vector<float> out;
-    for (int c = 0; c < std::max(1, res->desc.channels); ++c)
-        out.push_back(res->desc.display == Display::Color
-                          ? t[c]
-                          : t[c] * res->desc.decodeScale + res->desc.decodeOffset);
+    for (int ch = 0; ch < std::max(1, res->desc.channels); ++ch)
+        out.push_back(res->desc.display == Display::Color ? t[ch]
+                                                          : t[ch] * res->desc.decodeScale + res->desc.decodeOffset);
+    c = {pixel, res->version, res->generation, out};
     return out;
 }
 

@@ -12,9 +12,10 @@ constexpr float kRadiansPerPixel = 0.005f;
 constexpr float kMaxPitch = 1.55f; // just short of straight up/down, where lookAt degenerates
 } // namespace
 
-void CameraController::reset(const Camera& c, float sceneRadius) {
+void CameraController::reset(const Camera& c, float sceneRadius, glm::vec3 sceneCenter) {
     cam_ = c;
     radius_ = std::max(sceneRadius, 1e-6f);
+    center_ = sceneCenter;
     // Orbiting keeps world +y (or the camera's up) as the axis; normalise up to avoid drift.
     cam_.up = glm::normalize(cam_.up);
 }
@@ -35,6 +36,7 @@ void CameraController::rotate(float dx, float dy) {
     else
         cam_.target = cam_.eye + dir * dist;
     cam_.up = {0.0f, 1.0f, 0.0f};
+    widenFixedClip();
 }
 
 void CameraController::pan(float dx, float dy, float viewportHeight) {
@@ -48,6 +50,7 @@ void CameraController::pan(float dx, float dy, float viewportHeight) {
     const glm::vec3 d = (-dx * right + dy * up) * perPixel;
     cam_.eye += d;
     cam_.target += d;
+    widenFixedClip();
 }
 
 void CameraController::zoom(float steps) {
@@ -56,6 +59,7 @@ void CameraController::zoom(float steps) {
         const float dist =
             std::clamp(glm::length(offset) * std::pow(0.9f, steps), radius_ * 1e-3f, radius_ * 100.0f);
         cam_.eye = cam_.target + glm::normalize(offset) * dist;
+        widenFixedClip();
     } else {
         move({0.0f, 0.0f, 1.0f}, 0.1f * steps);
     }
@@ -68,6 +72,17 @@ void CameraController::move(const glm::vec3& ruf, float amount) {
     const glm::vec3 d = (ruf.x * right + ruf.y * up + ruf.z * fwd) * amount * radius_;
     cam_.eye += d;
     cam_.target += d;
+    widenFixedClip();
+}
+
+void CameraController::widenFixedClip() {
+    if (cam_.clip != ClipMode::Fixed) return;
+    // Far stays beyond the whole scene, near in front of the target (ratio kept under 1e5: float
+    // depth keeps ~1e-6 relative precision there).
+    const float toCenter = glm::length(center_ - cam_.eye), toTarget = glm::length(cam_.target - cam_.eye);
+    cam_.farZ = std::max(cam_.farZ, toCenter + 1.5f * radius_);
+    cam_.nearZ = std::min(cam_.nearZ, 0.5f * toTarget);
+    cam_.nearZ = std::max(cam_.nearZ, cam_.farZ * 1e-5f);
 }
 
 } // namespace ssao

@@ -8,9 +8,11 @@ class CameraController {
   public:
     enum class Mode { Orbit, Fly };
 
-    // Adopts `c` (e.g. the scene's camera or a bookmark); sceneRadius scales speeds. The clip
-    // planes are the renderer's business (fitted to the scene unless the camera's clip is Fixed).
-    void reset(const Camera& c, float sceneRadius);
+    // Adopts `c` (e.g. the scene's camera or a bookmark); the scene's size scales speeds. Fitted
+    // clip planes are the renderer's business; a camera with its own (Fixed) planes gets them
+    // widened as it moves, so orbiting or zooming out never clips the scene it was made for.
+    void reset(const Camera& c, float sceneRadius, glm::vec3 sceneCenter);
+    void reset(const Camera& c, float sceneRadius) { reset(c, sceneRadius, c.target); }
     void setClip(ClipMode m) { cam_.clip = m; }
     void setMode(Mode m) { mode_ = m; }
     Mode mode() const { return mode_; }
@@ -27,7 +29,9 @@ class CameraController {
     const Camera& camera() const { return cam_; }
 
   private:
+    void widenFixedClip();
     Camera cam_;
+    glm::vec3 center_{0.0f};
     float radius_ = 1.0f;
     Mode mode_ = Mode::Orbit;
 };

@@ -67,7 +67,7 @@ void inspectorSection(AppCore& app) {
     ImGui::SameLine();
     ImGui::Checkbox("pin pixel", &app.pinPixel);
     rememberRect(app, "inspector");
-    const glm::ivec2 px = app.hoverPixel;
+    const glm::ivec2 px = app.hoverPixel();
     if (px.x < 0) {
         ImGui::TextDisabled("hover the image to inspect a pixel");
         return;

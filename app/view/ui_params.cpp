@@ -105,7 +105,7 @@ void radiusLine(AppCore& app) {
     if (r.width() <= 0) {
         ImGui::TextDisabled("radius: shown after the first frame");
     } else {
-        const RadiusInfo ri = r.radiusAtCentre();
+        const RadiusInfo& ri = app.radiusInfo();
         const bool tiny = ri.pixels<2.0f, huge = ri.world> 0.25f * ri.sceneDiagonal;
         const ImVec4 colour =
             tiny || huge ? ImVec4(1, 0.7f, 0.3f, 1) : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];

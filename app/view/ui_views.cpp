@@ -68,10 +68,8 @@ bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
             }
         }
         if (!app.pinPixel) {
-            const Renderer& r = app.renderer();
             const ImVec2 rel((io.MousePos.x - pos.x) / size.x, (io.MousePos.y - pos.y) / size.y);
-            app.hoverPixel = glm::ivec2(std::clamp(int(rel.x * float(r.width())), 0, r.width() - 1),
-                                        std::clamp(int(rel.y * float(r.height())), 0, r.height() - 1));
+            app.hoverUv = glm::vec2(std::clamp(rel.x, 0.0f, 0.99999f), std::clamp(rel.y, 0.0f, 0.99999f));
             app.hoverBranch = split && io.MousePos.x > divider ? 1 : 0;
         }
     }
@@ -89,12 +87,13 @@ void label(ImDrawList* dl, ImVec2 pos, const std::string& text) {
 }
 
 void drawSamples(AppCore& app, ImDrawList* dl, ImVec2 pos, ImVec2 size) {
-    if (!app.showSamples || app.hoverPixel.x < 0) return;
+    const glm::ivec2 px = app.hoverPixel();
+    if (!app.showSamples || px.x < 0) return;
     const auto& pi = app.inspection();
     if (!pi || !pi->geometry) return;
     const Renderer& r = app.renderer();
-    const ImVec2 c(pos.x + (float(app.hoverPixel.x) + 0.5f) / float(r.width()) * size.x,
-                   pos.y + (float(app.hoverPixel.y) + 0.5f) / float(r.height()) * size.y);
+    const ImVec2 c(pos.x + (float(px.x) + 0.5f) / float(r.width()) * size.x,
+                   pos.y + (float(px.y) + 0.5f) / float(r.height()) * size.y);
     dl->AddCircle(c, 6.0f, IM_COL32(255, 255, 0, 255), 12, 2.0f);
     for (const InspectTap& t : pi->taps) {
         if (t.state == TapState::BehindEye) continue;

@@ -6,13 +6,6 @@
 
 namespace ssao {
 
-float quantile(std::vector<float>& v, double q) {
-    if (v.empty()) return NAN;
-    const size_t k = size_t(std::clamp(q, 0.0, 1.0) * double(v.size() - 1) + 0.5);
-    std::nth_element(v.begin(), v.begin() + ptrdiff_t(k), v.end());
-    return v[k];
-}
-
 bool needsFit(const ResourceDesc& d, const ViewStyle& style) {
     if (d.display == Display::Color) return false; // colours are shown as they are
     return style.fit || d.display == Display::Scalar || d.display == Display::Vector;
@@ -32,11 +25,8 @@ DisplayRange displayRange(const Image& img, const ResourceDesc& d, const Image* 
     std::vector<float> values[3];
     for (size_t p = 0; p < pixels; p += stride) {
         const int x = int(p % size_t(img.width)), y = int(p / size_t(img.width));
-        if (mask) {
-            const int mx = std::min(mask->width - 1, x * mask->width / img.width);
-            const int my = std::min(mask->height - 1, y * mask->height / img.height);
-            if (!(mask->at(mx, my) > 0.0f)) continue;
-        }
+        if (mask && !(mask->at(mapPixel(x, img.width, mask->width), mapPixel(y, img.height, mask->height)) > 0.0f))
+            continue;
         for (int c = 0; c < channels; ++c) {
             const float v = img.at(x, y, c) * d.decodeScale + d.decodeOffset;
             if (std::isfinite(v)) values[c].push_back(v);

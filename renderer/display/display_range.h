@@ -24,9 +24,6 @@ struct DisplayRange {
     bool fitted = false;
 };
 
-// q-quantile (0..1) of `values` (reordered); NaN when empty.
-float quantile(std::vector<float>& values, double q);
-
 // The range to show `img` (raw texel values, decoded with the desc's decodeScale/Offset) with:
 // natural when the kind has one and !style.fit, else [p1, p99] of the decoded data channels over
 // pixels where `mask` (any resolution; channel 0 > 0) marks geometry.

@@ -16,14 +16,18 @@ const Image& ViewPainter::maskImage(const Resource& mask) {
 }
 
 DisplayRange ViewPainter::paint(const Resource& r, const Resource& mask, const ViewStyle& style,
-                                gl::RenderTarget& out, gl::ShaderLibrary& shaders,
-                                const gl::FullscreenTriangle& tri) {
+                                gl::RenderTarget& out, gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri,
+                                const Image* raw) {
     const ResourceDesc& d = r.desc;
     DisplayRange range;
-    if (needsFit(d, style))
-        range = displayRange(readBack(r.texture, std::max(1, d.channels)), d, &maskImage(mask), style);
-    else
+    if (needsFit(d, style)) {
+        if (raw)
+            range = displayRange(*raw, d, &maskImage(mask), style);
+        else
+            range = displayRange(readBack(r.texture, std::max(1, d.channels)), d, &maskImage(mask), style);
+    } else {
         range = displayRange(Image{}, d, nullptr, style);
+    }
     out.ensure(r.width(), r.height(), GL_RGBA8, "view." + d.name);
     out.bind();
     const GLuint prog = shaders.program("passes/fullscreen.vert", "display/view.frag");
@@ -37,6 +41,7 @@ DisplayRange ViewPainter::paint(const Resource& r, const Resource& mask, const V
     glProgramUniform1i(prog, 2, style.falseColor ? 1 : 0);
     glProgramUniform2f(prog, 3, d.decodeScale, d.decodeOffset);
     glProgramUniform1f(prog, 4, 1.0f);
+    glProgramUniform1i(prog, 6, d.channels);
     r.texture.bind(SSAO_TEX_VIEW_SOURCE);
     mask.texture.bind(SSAO_TEX_VIEW_MASK);
     tri.draw();
@@ -57,6 +62,7 @@ void ViewPainter::paintDifference(const Resource& a, const Resource& b, float sc
     glProgramUniform1i(prog, 2, 0);
     glProgramUniform2f(prog, 3, a.desc.decodeScale, a.desc.decodeOffset);
     glProgramUniform1f(prog, 4, scale);
+    glProgramUniform1i(prog, 6, a.desc.channels);
     a.texture.bind(SSAO_TEX_VIEW_SOURCE);
     b.texture.bind(SSAO_TEX_VIEW_SOURCE_B);
     mask.texture.bind(SSAO_TEX_VIEW_MASK);

@@ -96,6 +96,17 @@ void UniformBuffer::upload(const void* data, std::size_t bytes) {
     glNamedBufferSubData(h_.id(), 0, GLsizeiptr(bytes), data);
 }
 
+Sampler::Sampler(GLenum minMag, GLenum wrap, const std::string& name) {
+    GLuint id = 0;
+    glCreateSamplers(1, &id);
+    h_ = SamplerHandle(id);
+    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GLint(minMag));
+    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GLint(minMag));
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GLint(wrap));
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GLint(wrap));
+    label(GL_SAMPLER, id, name);
+}
+
 GpuTimer::GpuTimer() {
     GLuint id = 0;
     glCreateQueries(GL_TIME_ELAPSED, 1, &id);

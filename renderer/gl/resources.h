@@ -73,6 +73,19 @@ class UniformBuffer {
     std::size_t size_ = 0;
 };
 
+// A sampler object (filtering and wrap for one texture unit, whatever the texture's own state).
+class Sampler {
+  public:
+    Sampler() = default;
+    Sampler(GLenum minMag, GLenum wrap, const std::string& name);
+    void bind(GLuint unit) const { glBindSampler(unit, h_.id()); }
+    static void unbind(GLuint unit) { glBindSampler(unit, 0); }
+    explicit operator bool() const { return bool(h_); }
+
+  private:
+    SamplerHandle h_;
+};
+
 // GL_TIME_ELAPSED query around one pass; result read when the frame is done.
 class GpuTimer {
   public:

@@ -118,10 +118,21 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
             r = resolve(r);
     }
     const std::vector<size_t> idx = order(names, decls);
+    // Each distinct settings block serialised once, rows that do not apply left out: a pass's key
+    // holds exactly what its output depends on.
+    std::map<const Settings*, nlohmann::json> json;
     nodes_.clear();
     order_.clear();
     for (size_t i : idx) {
-        nodes_.push_back({nodes[i].pass, nodes[i].settings, decls[i]});
+        auto js = json.find(nodes[i].settings);
+        if (js == json.end()) js = json.emplace(nodes[i].settings, toEffectiveJson(*nodes[i].settings)).first;
+        std::string settingsKey;
+        for (const auto& g : decls[i].groups) {
+            if (!js->second.contains(g))
+                throw Error("pass '" + names[i] + "' reads unknown settings group '" + g + "'");
+            settingsKey += "|" + g + "=" + js->second.at(g).dump();
+        }
+        nodes_.push_back({nodes[i].pass, nodes[i].settings, decls[i], settingsKey});
         order_.push_back(names[i]);
     }
     // Allocate (or keep) every declared resource; free the ones no pass writes any more.
@@ -132,18 +143,37 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
             const int rw = scaledSize(w, d.scale), rh = scaledSize(h, d.scale);
             Resource& r = resources_[d.name];
             r.producer = n.pass->name();
-            if (!r.texture || r.texture.width() != rw || r.texture.height() != rh ||
-                r.texture.format() != d.format) {
+            if (!r.texture || r.texture.width() != rw || r.texture.height() != rh || r.texture.format() != d.format) {
                 r.texture = gl::Texture2D(rw, rh, d.format, d.name);
-                ++r.generation;
+                r.generation = nextGeneration_++;
                 r.version = 0;
             }
             r.desc = d;
         }
     for (auto it = resources_.begin(); it != resources_.end();)
         it = live.count(it->first) ? std::next(it) : resources_.erase(it);
+    // Framebuffers of outputs that went away (they would keep the textures alive), and the keys
+    // and timers of passes that left the graph.
+    for (auto it = fbos_.begin(); it != fbos_.end();) {
+        bool alive = true;
+        size_t at = it->first.find('|');
+        while (at != std::string::npos && alive) {
+            const size_t next = it->first.find('|', at + 1);
+            alive = live.count(it->first.substr(at + 1, next == std::string::npos ? std::string::npos : next - at - 1));
+            at = next;
+        }
+        if (alive) {
+            ++it;
+        } else {
+            fboGenerations_.erase(it->first);
+            it = fbos_.erase(it);
+        }
+    }
+    auto inGraph = [&](const std::string& pass) { return std::count(order_.begin(), order_.end(), pass) > 0; };
     for (auto it = keys_.begin(); it != keys_.end();)
-        it = std::count(order_.begin(), order_.end(), it->first) ? std::next(it) : keys_.erase(it);
+        it = inGraph(it->first) ? std::next(it) : keys_.erase(it);
+    for (auto it = timers_.begin(); it != timers_.end();)
+        it = inGraph(it->first) ? std::next(it) : timers_.erase(it);
 }
 
 namespace {
@@ -155,39 +185,50 @@ std::string cameraKey(const Camera& c) {
 }
 } // namespace
 
+namespace {
+// Ends the timer query and the debug group even when a pass throws (e.g. a shader variant that
+// does not compile after a hot reload), so the next frame starts from a clean GL state.
+struct PassScope {
+    gl::GpuTimer& timer;
+    PassScope(gl::GpuTimer& t, const std::string& name) : timer(t) {
+        glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name.c_str());
+        timer.begin();
+    }
+    ~PassScope() {
+        timer.end();
+        glPopDebugGroup();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+    PassScope(const PassScope&) = delete;
+    PassScope& operator=(const PassScope&) = delete;
+};
+} // namespace
+
 FrameReport FrameGraph::execute(const FrameInfo& frame, gl::ShaderLibrary& shaders,
                                 const gl::FullscreenTriangle& tri) {
-    std::map<const Settings*, nlohmann::json> json; // each branch's settings serialised once
     FrameReport report;
     std::vector<gl::GpuTimer*> timers;
+    const std::string base = std::to_string(frame.width) + "x" + std::to_string(frame.height) + "@" +
+                             std::to_string(frame.displayScale);
     for (Compiled& n : nodes_) {
         const std::string& name = n.pass->name();
-        auto js = json.find(n.settings);
-        if (js == json.end()) js = json.emplace(n.settings, toEffectiveJson(*n.settings)).first;
-        std::string key = std::to_string(frame.width) + "x" + std::to_string(frame.height);
-        for (const auto& g : n.decl.groups) {
-            if (!js->second.contains(g))
-                throw Error("pass '" + name + "' reads unknown settings group '" + g + "'");
-            key += "|" + g + "=" + js->second.at(g).dump();
-        }
+        std::string key = base + n.settingsKey;
         if (n.decl.scene) key += "|scene" + std::to_string(frame.sceneVersion);
         if (n.decl.camera) key += cameraKey(*frame.camera);
         for (const auto& r : n.decl.reads)
             key += "|" + r + "@" + std::to_string(get(r).version);
-        for (const auto& w : n.decl.writes) {
-            const Resource& res = get(w.name);
-            key += "|w:" + w.name + "#" + std::to_string(res.generation);
-        }
+        for (const auto& w : n.decl.writes)
+            key += "|w:" + w.name + "#" + std::to_string(get(w.name).generation);
         PassReport pr{name};
         auto it = keys_.find(name);
         if (it == keys_.end() || it->second != key) {
             gl::GpuTimer& t = timers_[name];
-            glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name.c_str());
-            t.begin();
-            PassContext ctx(*this, *n.settings, frame, shaders, tri, name);
-            n.pass->execute(ctx);
-            t.end();
-            glPopDebugGroup();
+            keys_.erase(name); // a pass that throws half-way has no valid output: run it again next time
+            {
+                PassScope scope(t, name);
+                PassContext ctx(*this, *n.settings, frame, shaders, tri, name);
+                n.pass->execute(ctx);
+            }
             for (const auto& w : n.decl.writes)
                 resources_.at(w.name).version = nextVersion_++;
             keys_[name] = std::move(key);
@@ -200,7 +241,6 @@ FrameReport FrameGraph::execute(const FrameInfo& frame, gl::ShaderLibrary& shade
     }
     for (size_t i = 0; i < timers.size(); ++i)
         if (timers[i]) report.passes[i].gpuMs = timers[i]->resultMs();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return report;
 }
 

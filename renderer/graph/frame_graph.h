@@ -36,6 +36,7 @@ class FrameGraph {
 
     // Declares every node (setup), resolves reads through `aliases` (name → the resource it
     // stands for), orders the nodes and (re)allocates resources for a base size of w x h.
+    // The settings must stay alive and unchanged until the next compile().
     void compile(const std::vector<Node>& nodes, const std::map<std::string, std::string>& aliases, int w,
                  int h);
     FrameReport execute(const FrameInfo& frame, gl::ShaderLibrary& shaders,
@@ -66,6 +67,7 @@ class FrameGraph {
         Pass* pass;
         const Settings* settings;
         PassDecl decl;
+        std::string settingsKey; // the groups it reads, serialised at compile time
     };
     std::vector<Compiled> nodes_; // in execution order
     std::vector<std::string> order_;
@@ -76,6 +78,7 @@ class FrameGraph {
     std::map<std::string, gl::Framebuffer> fbos_; // "pass|out1|out2" → framebuffer
     std::map<std::string, std::vector<unsigned>> fboGenerations_;
     uint64_t nextVersion_ = 1;
+    unsigned nextGeneration_ = 1; // graph-wide: a re-created resource never reuses a generation
 };
 
 } // namespace ssao

@@ -14,7 +14,16 @@ namespace {
 constexpr size_t kBytes = sizeof(gpu::InspectHeader) + SSAO_INSPECT_MAX_TAPS * sizeof(gpu::InspectTap);
 }
 
-void InspectProbe::begin(glm::ivec2 pixel, glm::ivec2 size) {
+namespace {
+struct ProbeState { // restores what run() changes, whatever happens in between
+    ~ProbeState() {
+        glDisable(GL_SCISSOR_TEST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+};
+} // namespace
+
+void InspectProbe::run(glm::ivec2 pixel, glm::ivec2 size, const std::function<void()>& draw, PixelInspection& out) {
     if (!ssbo_) {
         GLuint id = 0;
         glCreateBuffers(1, &id);
@@ -32,28 +41,25 @@ void InspectProbe::begin(glm::ivec2 pixel, glm::ivec2 size) {
         gl::label(GL_FRAMEBUFFER, id, "inspector.probe");
         fboSize_ = size;
     }
-    pixel_ = {pixel.x, size.y - 1 - pixel.y}; // GL window coordinates: origin bottom-left
-    size_ = size;
+    const glm::ivec2 glPixel(pixel.x, size.y - 1 - pixel.y); // GL window coordinates: origin bottom-left
     gpu::InspectHeader head{};
-    head.pixelCount = {pixel_.x, pixel_.y, 0, 0};
+    head.pixelCount = {glPixel.x, glPixel.y, 0, 0};
     glNamedBufferSubData(ssbo_.id(), 0, sizeof head, &head);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSAO_SSBO_INSPECT, ssbo_.id());
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, size.x, size.y);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(pixel_.x, pixel_.y, 1, 1);
-}
-
-void InspectProbe::end(PixelInspection& out) {
-    glDisable(GL_SCISSOR_TEST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    {
+        ProbeState restore;
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+        glViewport(0, 0, size.x, size.y);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(glPixel.x, glPixel.y, 1, 1);
+        draw();
+    }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<unsigned char> bytes(kBytes);
     glGetNamedBufferSubData(ssbo_.id(), 0, GLsizeiptr(kBytes), bytes.data());
-    gpu::InspectHeader head;
     std::memcpy(&head, bytes.data(), sizeof head);
     out = PixelInspection{};
-    out.pixel = {pixel_.x, size_.y - 1 - pixel_.y};
+    out.pixel = pixel;
     out.geometry = head.pixelCount.w != 0;
     out.ao = head.result.x;
     out.occlusion = head.result.y;

@@ -6,20 +6,22 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
+
 namespace ssao {
 
 class InspectProbe {
   public:
-    // Prepares the record for `pixel` (x, y from the top) of a `size` target and binds a
-    // framebuffer with no attachments scissored to that pixel; then draw the INSPECT program.
-    void begin(glm::ivec2 pixel, glm::ivec2 size);
-    // Reads the record back into `out` (pixel, position, normal, taps, result).
-    void end(PixelInspection& out);
+    // Runs `draw` — which binds the pass's inputs and draws its INSPECT program — for pixel
+    // (x, y from the top) of a `size` target only, through a framebuffer with no attachments, and
+    // reads what the shader recorded into `out`. The scissor and framebuffer are restored even when
+    // `draw` throws (e.g. the INSPECT variant fails to compile after a bad hot reload).
+    void run(glm::ivec2 pixel, glm::ivec2 size, const std::function<void()>& draw, PixelInspection& out);
 
   private:
     gl::BufferHandle ssbo_;
     gl::FramebufferHandle fbo_;
-    glm::ivec2 fboSize_{0}, pixel_{0}, size_{0};
+    glm::ivec2 fboSize_{0};
 };
 
 } // namespace ssao

@@ -60,6 +60,9 @@ struct FrameInfo {
     float sceneRadius = 1.0f; // half the bounding-box diagonal, scene units
     const Camera* camera = nullptr;
     int width = 0, height = 0; // base size: the G-buffer's
+    // Render pixels per displayed pixel (below 1 while the app renders reduced as the camera
+    // moves): a radius in pixels means displayed pixels.
+    float displayScale = 1.0f;
 };
 
 // Handed to execute(): the pass's settings, inputs and outputs by the names it declared.

@@ -85,6 +85,13 @@ Image readPng(const std::string& path) {
     return img;
 }
 
+float quantile(std::vector<float>& v, double q) {
+    if (v.empty()) return NAN;
+    const size_t k = size_t(std::clamp(q, 0.0, 1.0) * double(v.size() - 1) + 0.5);
+    std::nth_element(v.begin(), v.begin() + ptrdiff_t(k), v.end());
+    return v[k];
+}
+
 Stats stats(const Image& img, const Image* mask) {
     Stats s;
     double sum = 0;
@@ -96,11 +103,8 @@ Stats stats(const Image& img, const Image* mask) {
             const size_t p = size_t(y) * size_t(img.width) + size_t(x);
             for (int c = 0; c < img.channels; ++c)
                 if (!std::isfinite(img.data[p * img.channels + c])) ++s.nonFinite;
-            if (mask) {
-                const int mx = std::min(mask->width - 1, x * mask->width / img.width);
-                const int my = std::min(mask->height - 1, y * mask->height / img.height);
-                if (!(mask->at(mx, my) > 0.0f)) continue;
-            }
+            if (mask && !(mask->at(mapPixel(x, img.width, mask->width), mapPixel(y, img.height, mask->height)) > 0.0f))
+                continue;
             const float v = img.data[p * img.channels];
             if (!std::isfinite(v)) continue;
             ++s.count;
@@ -111,13 +115,8 @@ Stats stats(const Image& img, const Image* mask) {
         }
     if (s.count) {
         s.mean = sum / double(s.count);
-        auto quantile = [&](double q) {
-            const size_t k = size_t(q * double(values.size() - 1) + 0.5);
-            std::nth_element(values.begin(), values.begin() + ptrdiff_t(k), values.end());
-            return double(values[k]);
-        };
-        s.p05 = quantile(0.05);
-        s.p50 = quantile(0.5);
+        s.p05 = quantile(values, 0.05);
+        s.p50 = quantile(values, 0.5);
     } else {
         s.min = s.max = 0;
     }

@@ -17,6 +17,16 @@ struct Image {
     Image channel(int c) const;
 };
 
+// The pixel of a `to`-wide image whose area holds the centre of pixel `p` of a `from`-wide one
+// (same extent, e.g. a G-buffer pixel → its texel in half-resolution AO; odd sizes included).
+inline int mapPixel(int p, int from, int to) {
+    const long t = ((2L * p + 1) * to) / (2L * from);
+    return int(t < 0 ? 0 : t >= to ? to - 1 : t);
+}
+
+// q-quantile (0..1) of `values` (reordered in place); NaN when empty.
+float quantile(std::vector<float>& values, double q);
+
 // Reads `channels` channels of a texture (flipping GL's bottom-up rows).
 Image readBack(const gl::Texture2D& tex, int channels);
 

@@ -30,13 +30,33 @@ const char* formatName(GLenum f) {
     }
 }
 
-// The buffer's values as they mean (decoded), `channels` of them per pixel.
-Image decoded(const Resource& r) {
-    Image img = readBack(r.texture, std::max(1, r.desc.channels));
+// One buffer read back once: the raw texels (what the display mapping fits) and the values as
+// they mean (decoded: normals as n, not (n+1)/2), which statistics and EXR files use.
+struct Buffer {
+    const Resource* res = nullptr;
+    Image raw, values;
+};
+
+Buffer readBuffer(const Resource& r) {
+    Buffer b{&r, readBack(r.texture, std::max(1, r.desc.channels)), {}};
+    b.values = b.raw;
     if (r.desc.decodeScale != 1.0f || r.desc.decodeOffset != 0.0f)
-        for (auto& v : img.data)
+        for (auto& v : b.values.data)
             v = v * r.desc.decodeScale + r.desc.decodeOffset;
-    return img;
+    return b;
+}
+
+std::vector<Buffer> readBuffers(const Renderer& r) {
+    std::vector<Buffer> out;
+    for (const Resource* res : r.buffers())
+        out.push_back(readBuffer(*res));
+    return out;
+}
+
+const Buffer& find(const std::vector<Buffer>& all, const std::string& name) {
+    for (const Buffer& b : all)
+        if (b.res->desc.name == name) return b;
+    throw Error("no buffer named '" + name + "' in the frame");
 }
 
 nlohmann::json statsJson(const Stats& s) {
@@ -53,24 +73,28 @@ nlohmann::json bufferJson(const Resource& r, const Image& img, const Image& mask
     return j;
 }
 
+nlohmann::json statistics(const Renderer& r, const std::vector<Buffer>& all) {
+    const Image& mask = find(all, "gbuffer.depth").values; // linear depth: > 0 on geometry
+    nlohmann::json j;
+    for (const Buffer& b : all)
+        j["buffers"][b.res->desc.name] = bufferJson(*b.res, b.values, mask);
+    j["ao"] = statsJson(stats(find(all, "ao.denoised").values, &mask));
+    j["ao_raw"] = statsJson(stats(find(all, "ao.raw").values, &mask));
+    j["geometry_pixels"] = stats(mask, &mask).count;
+    const RadiusInfo ri = r.radiusAtCentre();
+    const Param* mode = findParam("ao.radius_mode");
+    j["radius"] = {{"mode", mode->format(mode->get(r.settings()))},
+                   {"world_at_centre", ri.world},
+                   {"pixels_at_centre", ri.pixels},
+                   {"centre_depth", ri.depth},
+                   {"scene_diagonal", ri.sceneDiagonal}};
+    return j;
+}
+
 } // namespace
 
 nlohmann::json frameStatistics(const Renderer& r) {
-    const Image mask = readBack(r.resource("gbuffer.depth").texture, 1);
-    nlohmann::json j;
-    for (const Resource* res : r.buffers())
-        j["buffers"][res->desc.name] = bufferJson(*res, decoded(*res), mask);
-    j["ao"] = statsJson(stats(decoded(r.resource("ao.denoised")), &mask));
-    j["ao_raw"] = statsJson(stats(decoded(r.resource("ao.raw")), &mask));
-    j["geometry_pixels"] = stats(mask, &mask).count;
-    const RadiusInfo ri = r.radiusAtCentre();
-    j["radius"] = {
-        {"mode", findParam("ao.radius_mode")->format(findParam("ao.radius_mode")->get(r.settings()))},
-        {"world_at_centre", ri.world},
-        {"pixels_at_centre", ri.pixels},
-        {"centre_depth", ri.depth},
-        {"scene_diagonal", ri.sceneDiagonal}};
-    return j;
+    return statistics(r, readBuffers(r));
 }
 
 nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& info,
@@ -81,26 +105,27 @@ nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& 
     if (ec) throw Error("cannot create output folder " + dir + ": " + ec.message());
     auto path = [&](const std::string& f) { return (fs::path(dir) / f).string(); };
 
-    nlohmann::json m = frameStatistics(r);
+    const std::vector<Buffer> all = readBuffers(r); // each buffer read back once
+    nlohmann::json m = statistics(r, all);
     const Resource& mask = r.resource("gbuffer.depth");
     ViewPainter painter;
     gl::RenderTarget view;
-    for (const Resource* res : r.buffers()) {
-        const std::string& name = res->desc.name;
+    for (const Buffer& b : all) {
+        const Resource& res = *b.res;
+        const std::string& name = res.desc.name;
         auto& entry = m["buffers"][name];
-        if (res->desc.format != GL_RGBA8) { // float data keeps NaN/inf and full precision
-            writeExr(decoded(*res), path(name + ".exr"));
+        if (res.desc.format != GL_RGBA8) { // float data keeps NaN/inf and full precision
+            writeExr(b.values, path(name + ".exr"));
             entry["exr"] = name + ".exr";
         }
-        const DisplayRange range = painter.paint(*res, mask, info.style, view, r.shaders(), r.triangle());
-        const bool grey = (res->desc.display == Display::Unit || res->desc.display == Display::Scalar) &&
-                          !info.style.falseColor;
+        const DisplayRange range = painter.paint(res, mask, info.style, view, r.shaders(), r.triangle(), &b.raw);
+        const bool grey =
+            (res.desc.display == Display::Unit || res.desc.display == Display::Scalar) && !info.style.falseColor;
         writePng(readBack(view.texture(), grey ? 1 : 3), path(name + ".png"));
         entry["png"] = name + ".png";
-        entry["display_range"] =
-            res->desc.channels == 1
-                ? nlohmann::json{range.lo.x, range.hi.x}
-                : nlohmann::json{{range.lo.x, range.lo.y, range.lo.z}, {range.hi.x, range.hi.y, range.hi.z}};
+        entry["display_range"] = res.desc.channels == 1 ? nlohmann::json{range.lo.x, range.hi.x}
+                                                        : nlohmann::json{{range.lo.x, range.lo.y, range.lo.z},
+                                                                         {range.hi.x, range.hi.y, range.hi.z}};
         entry["display_range_fitted"] = range.fitted;
     }
 

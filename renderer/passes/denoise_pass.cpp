@@ -24,15 +24,7 @@ void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
 }
 
 void DenoisePass::execute(PassContext& ctx) {
-    if (!linear_) {
-        GLuint id = 0;
-        glCreateSamplers(1, &id);
-        linear_ = gl::SamplerHandle(id);
-        glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    }
+    if (!linear_) linear_ = gl::Sampler(GL_LINEAR, GL_CLAMP_TO_EDGE, name() + ".upsample");
     const std::string raw = branch().res("ao.raw"), tmp = branch().res("denoise.tmp"),
                       out = branch().res("ao.denoised");
     const bool upsample = ctx.size(tmp) != ctx.size(out);
@@ -46,11 +38,14 @@ void DenoisePass::execute(PassContext& ctx) {
         ubo_[dir].bind(SSAO_UBO_DENOISE);
         ctx.in(dir == 0 ? raw : tmp).bind(SSAO_TEX_AO);
         // Reduced-resolution AO is brought to full size bilinearly by the y pass.
-        glBindSampler(SSAO_TEX_AO, dir == 1 && upsample ? linear_.id() : 0);
+        if (dir == 1 && upsample)
+            linear_.bind(SSAO_TEX_AO);
+        else
+            gl::Sampler::unbind(SSAO_TEX_AO);
         ctx.bindOutputs({dir == 0 ? tmp : out});
         ctx.drawFullscreen();
     }
-    glBindSampler(SSAO_TEX_AO, 0);
+    gl::Sampler::unbind(SSAO_TEX_AO);
 }
 
 } // namespace ssao

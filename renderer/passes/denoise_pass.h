@@ -14,7 +14,7 @@ class DenoisePass final : public Pass {
 
   private:
     gl::UniformBuffer ubo_[2];
-    gl::SamplerHandle linear_;
+    gl::Sampler linear_;
 };
 
 } // namespace ssao

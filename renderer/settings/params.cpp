@@ -9,12 +9,31 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 namespace ssao {
 
 namespace {
 
 using T = Param::Type;
+
+// ao.technique: one choice per registered module, mapped by id.
+Param techniqueRow() {
+    Param t;
+    t.key = "ao.technique", t.label = "Technique", t.type = T::Enum;
+    t.help = "The AO estimator; each technique adds its own parameters below.";
+    for (const auto& info : techniques())
+        t.choices.push_back(info.id);
+    t.min = 0, t.max = double(t.choices.size() - 1);
+    t.get = [](const Settings& s) {
+        const auto& list = techniques();
+        for (size_t i = 0; i < list.size(); ++i)
+            if (list[i].id == s.ao.technique) return double(i);
+        return 0.0;
+    };
+    t.set = [](Settings& s, double v) { s.ao.technique = techniques().at(size_t(v)).id; };
+    return t;
+}
 
 std::vector<Param> coreRows() {
     std::vector<Param> rows = {
@@ -29,7 +48,7 @@ std::vector<Param> coreRows() {
                    {"rgba32f", TargetFormat::RGBA32F},
                    {"rgba8", TargetFormat::RGBA8}})),
         // ---- AO (every technique) -------------------------------------------------------------
-        Param{}, // ao.technique, filled below from the registry
+        techniqueRow(),
         ENUM_ROW(
             "ao.radius_mode", "Radius in", ao.radiusMode, RadiusMode,
             "Unit of the AO radius: world (scene units), scene (fraction of the scene's bounding-box "
@@ -80,20 +99,6 @@ std::vector<Param> coreRows() {
         BOOL_ROW("composite.ao", "Apply AO", composite.useAo,
                  "Multiply the ambient term by AO; off shows the same frame without AO."),
     };
-    // ao.technique: one choice per registered module, mapped by id.
-    Param& t = rows[2];
-    t.key = "ao.technique", t.label = "Technique", t.type = T::Enum;
-    t.help = "The AO estimator; each technique adds its own parameters below.";
-    for (const auto& info : techniques())
-        t.choices.push_back(info.id);
-    t.min = 0, t.max = double(t.choices.size() - 1);
-    t.get = [](const Settings& s) {
-        const auto& list = techniques();
-        for (size_t i = 0; i < list.size(); ++i)
-            if (list[i].id == s.ao.technique) return double(i);
-        return 0.0;
-    };
-    t.set = [](Settings& s, double v) { s.ao.technique = techniques().at(size_t(v)).id; };
     return rows;
 }
 
@@ -213,9 +218,14 @@ const std::vector<Param>& paramTable() {
 }
 
 const Param* findParam(const std::string& key) {
-    for (const auto& p : paramTable())
-        if (p.key == key) return &p;
-    return nullptr;
+    static const std::map<std::string, const Param*> index = [] {
+        std::map<std::string, const Param*> m;
+        for (const auto& p : paramTable())
+            m.emplace(p.key, &p);
+        return m;
+    }();
+    auto it = index.find(key);
+    return it == index.end() ? nullptr : it->second;
 }
 
 Settings defaultSettings() {

@@ -18,8 +18,10 @@ struct TechniqueInfo {
     std::string id;      // value of ao.technique, and the group of the technique's rows
     std::string label;   // for the UI
     std::string summary; // one line: what it estimates and where it comes from
-    std::function<std::vector<Param>()> params;                   // rows "id.*"
-    std::function<std::unique_ptr<Pass>(const Branch&)> makePass; // reads gbuffer.*, writes ao.raw
+    std::function<std::vector<Param>()> params; // rows "id.*"
+    // Its passes for one chain: together they read gbuffer.* and write the chain's ao.raw
+    // (prefilters, mip chains or deinterleaving are passes of their own, wired by declarations).
+    std::function<std::vector<std::unique_ptr<Pass>>(const Branch&)> makePasses;
 };
 
 const std::vector<TechniqueInfo>& techniques();

@@ -12,6 +12,7 @@ layout(location = 5) uniform vec3 uHi;       // ... hi → 1 (scalars use x)
 layout(location = 2) uniform int uFalseColor;
 layout(location = 3) uniform vec2 uDecode;   // stored * x + y = value ((n+1)/2 normals: 2, -1)
 layout(location = 4) uniform float uDiffScale;
+layout(location = 6) uniform int uChannels;  // of the buffer: a colour difference uses all three
 
 in vec2 vUv;
 layout(location = 0) out vec4 oColor;
@@ -42,7 +43,12 @@ void main() {
     } else if (uMode == SSAO_VIEW_VECTOR) {
         c = ((v.rgb * uDecode.x + uDecode.y) - uLo) / span;
     } else if (uMode == SSAO_VIEW_DIFF) {
-        float d = clamp(v.r * uDiffScale, -1.0, 1.0);
+        float d = v.r; // the signed largest difference over the channels the buffer has
+        if (uChannels >= 3) {
+            d = abs(v.g) > abs(d) ? v.g : d;
+            d = abs(v.b) > abs(d) ? v.b : d;
+        }
+        d = clamp(d * uDiffScale, -1.0, 1.0);
         c = d >= 0.0 ? mix(vec3(0.5), vec3(1.0, 0.15, 0.1), d) : mix(vec3(0.5), vec3(0.1, 0.35, 1.0), -d);
     } else {
         float t = ((v.r * uDecode.x + uDecode.y) - uLo.x) / span.x;

@@ -123,3 +123,20 @@ TEST(PresetStore, OneLookupForTheAppAndTheCommandLine) {
     }
     EXPECT_THROW(store.resolve("/no/such/file.json"), Error);
 }
+
+TEST(CameraController, ZoomingOutAFixedClipCameraNeverClipsItsScene) {
+    // Built-in scenes keep their designed planes (far 60 for the showcase); zooming out 100x the
+    // scene radius must widen them, not clip the scene away.
+    CameraController c;
+    Camera designed{{3, 2, 4}, {0, 0, 0}, {0, 1, 0}, 60, 0.1f, 60.0f};
+    designed.clip = ClipMode::Fixed;
+    c.reset(designed, 8.0f, glm::vec3(0.0f));
+    for (int i = 0; i < 60; ++i)
+        c.zoom(-1);
+    const Camera& z = c.camera();
+    const float dist = glm::length(z.eye);
+    EXPECT_GT(dist, 300.0f);
+    EXPECT_GT(z.farZ, dist + 8.0f); // the whole scene (radius 8 around the origin) is inside far
+    EXPECT_EQ(z.clip, ClipMode::Fixed);
+    EXPECT_NO_THROW(validateCamera(z));
+}

@@ -199,7 +199,7 @@ TEST_F(AppUi, ClickingAGridCellEnlargesItAndTheInspectorsFollowTheCursor) {
     const ImVec4 r = ui_->rect("view#main");
     ui_->frame((r.x + r.z) * 0.5f, r.y + (r.w - r.y) * 0.7f);
     ui_->frame((r.x + r.z) * 0.5f, r.y + (r.w - r.y) * 0.7f);
-    const glm::ivec2 px = ui_->app().hoverPixel;
+    const glm::ivec2 px = ui_->app().hoverPixel();
     EXPECT_NEAR(px.x, ui_->app().renderer().width() / 2, 2);
     const auto& pi = ui_->app().inspection();
     ASSERT_TRUE(pi && pi->geometry);

@@ -4,8 +4,11 @@
 
 #include "scene/scene.h"
 #include "techniques/technique.h"
+#include "util/error.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 using namespace ssao;
 using namespace ssaotest;
@@ -119,4 +122,65 @@ TEST_F(Inspector, ChainBIsInspectedWithItsOwnSettings) {
     EXPECT_EQ(pa->taps.size(), 64u);
     EXPECT_EQ(pb->taps.size(), 8u);
     EXPECT_NEAR(pb->ao, readBack(r->texture("b.ao.raw"), 1).at(48, 40), 1e-5f);
+}
+
+TEST_F(Inspector, OddSizesAtHalfResolutionMapPixelCentres) {
+    // 97x55 at half resolution: 49x28 AO texels. Each G-buffer pixel maps to the texel holding its
+    // centre, and the record is that texel's value.
+    Settings s = defaultSettings();
+    setParam(s, "ao.resolution", "half");
+    s.kernel.samples = 8;
+    auto r = makeRenderer(loadScene("builtin:showcase"), s, 97, 55);
+    r->render();
+    const Image ao = readBack(r->texture("ao.raw"), 1);
+    ASSERT_EQ(ao.width, 49);
+    for (int x : {0, 1, 2, 3, 48, 95, 96}) {
+        const auto pi = r->inspect(0, {x, 40});
+        ASSERT_TRUE(pi.has_value());
+        EXPECT_EQ(pi->pixel.x, int((x + 0.5) * 49 / 97)) << x;
+        EXPECT_NEAR(pi->ao, ao.at(pi->pixel.x, pi->pixel.y), 1e-5f) << x;
+    }
+}
+
+TEST_F(Inspector, AFailingInspectVariantLeavesNoScissorBehind) {
+    // The INSPECT variant of a broken shader folder does not compile: the inspector throws, and the
+    // next frame must still cover every pixel (no 1x1 scissor left enabled).
+    const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/inspect_shaders";
+    std::filesystem::remove_all(dir);
+    std::filesystem::copy(SSAOLAB_SHADER_DIR, dir, std::filesystem::copy_options::recursive);
+    {
+        std::ofstream(dir + "/include/inspect.glsl", std::ios::app) << "\n#ifdef INSPECT\nbroken;\n#endif\n";
+    }
+    const Scene scene = loadScene("builtin:showcase");
+    auto r = std::make_unique<Renderer>(dir);
+    r->setSize(64, 36);
+    r->setScene(scene);
+    r->setCamera(*scene.camera);
+    r->render();
+    EXPECT_THROW(r->inspect(0, {32, 30}), Error);
+    EXPECT_FALSE(glIsEnabled(GL_SCISSOR_TEST));
+    Settings s = r->settings();
+    s.kernel.samples = 16;
+    r->setSettings(s);
+    r->render();
+    const Image ao = readBack(r->texture("ao.raw"), 1);
+    const Image mask = readBack(r->texture("gbuffer.depth"), 1);
+    EXPECT_LT(stats(ao, &mask).min, 0.95) << "the AO pass drew the whole frame, not one pixel";
+}
+
+TEST_F(Inspector, ScreenRadiusIsInDisplayedPixelsWhateverTheRenderScale) {
+    // While the app renders at 0.5 of the view, a 20-pixel radius is still 20 displayed pixels:
+    // the same world radius as at full size.
+    Settings s = defaultSettings();
+    setParam(s, "ao.radius_mode", "screen");
+    setParam(s, "ao.radius_px", "20");
+    const Scene scene = loadScene("builtin:plane");
+    auto full = makeRenderer(scene, s, 320, 180), half = makeRenderer(scene, s, 160, 90);
+    half->setDisplayScale(0.5f);
+    full->render();
+    half->render();
+    const auto a = full->inspect(0, {160, 120}), b = half->inspect(0, {80, 60});
+    ASSERT_TRUE(a && b && a->geometry && b->geometry);
+    EXPECT_NEAR(b->radius / -b->position.z, a->radius / -a->position.z, 0.02f * a->radius / -a->position.z);
+    EXPECT_NEAR(half->radiusAtCentre().pixels, full->radiusAtCentre().pixels, 0.5f);
 }

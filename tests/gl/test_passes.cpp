@@ -3,6 +3,10 @@
 #include "gl_fixture.h"
 
 #include "scene/scene.h"
+#include "util/error.h"
+
+#include <filesystem>
+#include <fstream>
 
 #include <set>
 
@@ -169,4 +173,50 @@ TEST_F(Passes, AoAtHalfAndQuarterResolutionFlowsThroughTheGraph) {
         // The same AO, only coarser: close to full resolution on average.
         EXPECT_NEAR(geometryMean(out, out.ao), geometryMean(full, full.ao), 0.02) << res;
     }
+}
+
+TEST_F(Passes, ChainBOffAndOnAgainRendersIntoItsNewBuffers) {
+    // Turning B off frees its buffers; turning it on again must render into the new ones (a stale
+    // framebuffer of the freed texture would leave b.ao.raw unwritten).
+    Settings sphere = r_->settings();
+    sphere.kernel.shape = KernelShape::Sphere;
+    for (int round = 0; round < 3; ++round) {
+        r_->setSettingsB(sphere);
+        r_->render();
+        Image mask = readBack(r_->texture("gbuffer.position"), 4).channel(3);
+        const double a = stats(readBack(r_->texture("ao.raw"), 1), &mask).mean;
+        const double b = stats(readBack(r_->texture("b.ao.raw"), 1), &mask).mean;
+        EXPECT_LT(b, a - 0.2) << "round " << round;
+        r_->setSettingsB(std::nullopt);
+        r_->render();
+        EXPECT_EQ(r_->graph().find("b.ao.raw"), nullptr);
+    }
+}
+
+TEST_F(Passes, APassThatThrowsLeavesNoGlStateBehind) {
+    // A shader folder whose G-buffer shader breaks only in the 8-bit-normal variant: switching to
+    // it throws from inside the pass. The next frames (back on rgba16f) must render cleanly: no
+    // open timer query or debug group, no GL error, everything re-run.
+    const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/variant_shaders";
+    std::filesystem::remove_all(dir);
+    std::filesystem::copy(SSAOLAB_SHADER_DIR, dir, std::filesystem::copy_options::recursive);
+    {
+        std::ofstream(dir + "/passes/gbuffer.frag", std::ios::app) << "\n#ifdef NORMAL_UNORM\nbroken;\n#endif\n";
+    }
+    auto r = std::make_unique<Renderer>(dir);
+    r->setSize(64, 36);
+    r->setScene(scene_);
+    r->setCamera(*scene_.camera);
+    r->render();
+    Settings s = r->settings();
+    s.gbuffer.normalFormat = TargetFormat::RGBA8;
+    r->setSettings(s);
+    EXPECT_THROW(r->render(), Error);
+    s.gbuffer.normalFormat = TargetFormat::RGBA16F;
+    r->setSettings(s);
+    const FrameReport rep = r->render();
+    EXPECT_EQ(rep.ran().size(), 4u);
+    for (const auto& p : rep.passes)
+        EXPECT_GE(p.gpuMs, 0.0) << p.name;
+    EXPECT_TRUE(finiteInRange(readBack(r->texture("ao.raw"), 1), 0.0f, 1.0f));
 }

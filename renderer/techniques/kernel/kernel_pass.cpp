@@ -41,8 +41,9 @@ void KernelPass::draw(PassContext& ctx, bool inspect) {
     const glm::ivec2 size = ctx.size(out);
     const FrameInfo& f = ctx.frame;
     const glm::mat4 proj = f.camera->projection(float(f.width) / float(f.height));
-    const gpu::AoCommon common =
-        packAoCommon(s.ao, 2.0f * f.sceneRadius, unitsPerPixelAtUnitDepth(proj, f.height), size);
+    // A radius in pixels means displayed pixels, also while the app renders reduced.
+    const float upp = unitsPerPixelAtUnitDepth(proj, f.height) * f.displayScale;
+    const gpu::AoCommon common = packAoCommon(s.ao, 2.0f * f.sceneRadius, upp, size);
     const bool unorm = ctx.desc("gbuffer.normal").format == GL_RGBA8;
     const gpu::KernelConstants c = packKernelConstants(s.kernel, common, unorm);
     ubo_.upload(&c, sizeof c);
@@ -70,9 +71,7 @@ void KernelPass::execute(PassContext& ctx) {
 bool KernelPass::inspect(PassContext& ctx, glm::ivec2 pixel, PixelInspection& out) {
     const glm::ivec2 size = ctx.size(branch().res("ao.raw"));
     if (pixel.x < 0 || pixel.y < 0 || pixel.x >= size.x || pixel.y >= size.y) return false;
-    probe_.begin(pixel, size);
-    draw(ctx, true);
-    probe_.end(out);
+    probe_.run(pixel, size, [&] { draw(ctx, true); }, out);
     return true;
 }
 
