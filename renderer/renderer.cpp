@@ -111,7 +111,8 @@ void Renderer::buildGraph() {
     auto chain = [&](const Branch& b, const Settings& s) {
         std::vector<Pass*> passes = techniquePasses(b, s);
         passes.push_back(&passFor(b.prefix + "denoise", [&] { return std::make_unique<DenoisePass>(b); }));
-        passes.push_back(&passFor(b.prefix + "composite", [&] { return std::make_unique<CompositePass>(b); }));
+        passes.push_back(
+            &passFor(b.prefix + "composite", [&] { return std::make_unique<CompositePass>(b); }));
         return passes;
     };
     const std::vector<Pass*> a = chain(Branch::a(), settings_);
@@ -126,7 +127,8 @@ void Renderer::buildGraph() {
         for (size_t i = 0; i < b.size(); ++i) {
             bool same = sameShape && typeid(*a[i]) == typeid(*b[i]);
             PassDecl da, db;
-            if (same) da = FrameGraph::declare(*a[i], settings_), db = FrameGraph::declare(*b[i], *settingsB_);
+            if (same)
+                da = FrameGraph::declare(*a[i], settings_), db = FrameGraph::declare(*b[i], *settingsB_);
             same = same && da.groups == db.groups && da.reads.size() == db.reads.size() &&
                    da.writes.size() == db.writes.size();
             for (size_t g = 0; same && g < db.groups.size(); ++g)
@@ -155,7 +157,8 @@ FrameReport Renderer::render() {
     frameUbo_.upload(&fc, sizeof fc);
     frameUbo_.bind(SSAO_UBO_FRAME);
     if (graphStale_) buildGraph(); // only when settings, chain B or the size changed
-    frame_ = FrameInfo{scene_.get(), sceneVersion_, sceneRadius(), &effective_, width_, height_, displayScale_};
+    frame_ =
+        FrameInfo{scene_.get(), sceneVersion_, sceneRadius(), &effective_, width_, height_, displayScale_};
     return graph_.execute(frame_, shaders_, triangle_);
 }
 
@@ -175,7 +178,8 @@ std::optional<PixelInspection> Renderer::inspect(int branch, glm::ivec2 pixel) {
     const Settings* s = graph_.settingsOf(ao->producer);
     if (!p || !s || pixel.x < 0 || pixel.y < 0 || pixel.x >= width_ || pixel.y >= height_)
         return std::nullopt;
-    const glm::ivec2 aoPixel(mapPixel(pixel.x, width_, ao->width()), mapPixel(pixel.y, height_, ao->height()));
+    const glm::ivec2 aoPixel(mapPixel(pixel.x, width_, ao->width()),
+                             mapPixel(pixel.y, height_, ao->height()));
     frameUbo_.bind(SSAO_UBO_FRAME);
     PassContext ctx(graph_, *s, frame_, shaders_, triangle_, ao->producer);
     PixelInspection out;
@@ -192,7 +196,8 @@ RadiusInfo Renderer::radiusAtCentre() const {
     if (!(ri.depth > 0.0f)) ri.depth = glm::length(camera_.target - camera_.eye); // sky at the centre
     const int h = height_ > 0 ? height_ : 1;
     // Displayed pixels: a render at 0.35 of the view has pixels 1/0.35 times as large.
-    const float upp = unitsPerPixelAtUnitDepth(c.projection(float(std::max(width_, 1)) / float(h)), h) * displayScale_;
+    const float upp =
+        unitsPerPixelAtUnitDepth(c.projection(float(std::max(width_, 1)) / float(h)), h) * displayScale_;
     ri.world = worldRadius(settings_.ao, ri.sceneDiagonal, ri.depth, upp);
     ri.pixels = radiusInPixels(settings_.ao, ri.sceneDiagonal, ri.depth, upp);
     return ri;

@@ -81,7 +81,8 @@ void AppCore::adoptScene(Scene s, const std::string& spec, bool keepCamera) {
 }
 
 void AppCore::resetCamera() {
-    camera_.reset(scene_.camera.value_or(frameBounds(scene_.bounds)), scene_.bounds.radius(), scene_.bounds.center());
+    camera_.reset(scene_.camera.value_or(frameBounds(scene_.bounds)), scene_.bounds.radius(),
+                  scene_.bounds.center());
     poke();
 }
 
@@ -147,7 +148,7 @@ bool AppCore::savePreset(const std::string& name) {
             p.keys.insert(row.key); // a saved preset is complete: it fixes every parameter
         p.scene = sceneSpec_;
         if (fullSize_.first > 0) p.size = fullSize_; // the size when still, not the reduced one while moving
-        p.camera = camera_.camera(); // the camera as a bookmark
+        p.camera = camera_.camera();                 // the camera as a bookmark
         const std::string path = store_.save(p);
         loaded_ = p;
         return "saved preset " + name + " to " + path;

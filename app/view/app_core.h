@@ -172,5 +172,6 @@ void drawParameters(AppCore& app);
 void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size);
 void drawInfoStrip(AppCore& app, ImVec2 pos, ImVec2 size); // timing and inspector, always visible
 void rememberRect(AppCore& app, const std::string& key);   // the last item's rectangle, for tests
+void beginFixedWindow(const char* name, ImVec2 pos, ImVec2 size, ImGuiWindowFlags extra = 0);
 
 } // namespace ssao

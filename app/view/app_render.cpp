@@ -133,8 +133,9 @@ std::vector<float> AppCore::valueAt(const std::string& buffer, glm::ivec2 pixel)
     const glm::vec4 t = res->texture.readTexel(x, y);
     std::vector<float> out;
     for (int ch = 0; ch < std::max(1, res->desc.channels); ++ch)
-        out.push_back(res->desc.display == Display::Color ? t[ch]
-                                                          : t[ch] * res->desc.decodeScale + res->desc.decodeOffset);
+        out.push_back(res->desc.display == Display::Color
+                          ? t[ch]
+                          : t[ch] * res->desc.decodeScale + res->desc.decodeOffset);
     c = {pixel, res->version, res->generation, out};
     return out;
 }

@@ -109,11 +109,7 @@ void inspectorSection(AppCore& app) {
 } // namespace
 
 void drawInfoStrip(AppCore& app, ImVec2 pos, ImVec2 size) {
-    ImGui::SetNextWindowPos(pos);
-    ImGui::SetNextWindowSize(size);
-    ImGui::Begin("info", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar);
+    beginFixedWindow("info", pos, size, ImGuiWindowFlags_NoTitleBar);
     if (ImGui::BeginTable("info", 2, ImGuiTableFlags_BordersInnerV)) {
         ImGui::TableSetupColumn("timing", ImGuiTableColumnFlags_WidthStretch, 0.45f);
         ImGui::TableSetupColumn("inspector", ImGuiTableColumnFlags_WidthStretch, 0.55f);

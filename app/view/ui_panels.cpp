@@ -117,12 +117,17 @@ void presetSection(AppCore& app) {
 
 } // namespace
 
-void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size) {
+void beginFixedWindow(const char* name, ImVec2 pos, ImVec2 size, ImGuiWindowFlags extra) {
+    // The layout is computed from the window size each frame: nothing to move, resize or persist.
     ImGui::SetNextWindowPos(pos);
     ImGui::SetNextWindowSize(size);
-    ImGui::Begin("ssaolab", nullptr,
+    ImGui::Begin(name, nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                     ImGuiWindowFlags_NoSavedSettings);
+                     ImGuiWindowFlags_NoSavedSettings | extra);
+}
+
+void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size) {
+    beginFixedWindow("ssaolab", pos, size);
     // The status has a fixed height (three lines, scrolled if longer): the widgets below never move.
     ImGui::BeginChild("status", ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * 3.0f), false);
     ImGui::PushStyleColor(ImGuiCol_Text,

@@ -25,7 +25,8 @@ DisplayRange displayRange(const Image& img, const ResourceDesc& d, const Image* 
     std::vector<float> values[3];
     for (size_t p = 0; p < pixels; p += stride) {
         const int x = int(p % size_t(img.width)), y = int(p / size_t(img.width));
-        if (mask && !(mask->at(mapPixel(x, img.width, mask->width), mapPixel(y, img.height, mask->height)) > 0.0f))
+        if (mask &&
+            !(mask->at(mapPixel(x, img.width, mask->width), mapPixel(y, img.height, mask->height)) > 0.0f))
             continue;
         for (int c = 0; c < channels; ++c) {
             const float v = img.at(x, y, c) * d.decodeScale + d.decodeOffset;

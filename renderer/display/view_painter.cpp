@@ -16,8 +16,8 @@ const Image& ViewPainter::maskImage(const Resource& mask) {
 }
 
 DisplayRange ViewPainter::paint(const Resource& r, const Resource& mask, const ViewStyle& style,
-                                gl::RenderTarget& out, gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri,
-                                const Image* raw) {
+                                gl::RenderTarget& out, gl::ShaderLibrary& shaders,
+                                const gl::FullscreenTriangle& tri, const Image* raw) {
     const ResourceDesc& d = r.desc;
     DisplayRange range;
     if (needsFit(d, style)) {

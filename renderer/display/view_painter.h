@@ -18,7 +18,8 @@ class ViewPainter {
     // When its range must be fitted, uses `raw` (r read back, undecoded) or reads r back itself.
     // Returns the range used.
     DisplayRange paint(const Resource& r, const Resource& mask, const ViewStyle& style, gl::RenderTarget& out,
-                       gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri, const Image* raw = nullptr);
+                       gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri,
+                       const Image* raw = nullptr);
     // Signed difference (a - b) * scale of two same-kind buffers, red where a is larger, blue where
     // b is, grey where equal.
     void paintDifference(const Resource& a, const Resource& b, float scale, const Resource& mask,

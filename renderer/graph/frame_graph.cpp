@@ -143,7 +143,8 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
             const int rw = scaledSize(w, d.scale), rh = scaledSize(h, d.scale);
             Resource& r = resources_[d.name];
             r.producer = n.pass->name();
-            if (!r.texture || r.texture.width() != rw || r.texture.height() != rh || r.texture.format() != d.format) {
+            if (!r.texture || r.texture.width() != rw || r.texture.height() != rh ||
+                r.texture.format() != d.format) {
                 r.texture = gl::Texture2D(rw, rh, d.format, d.name);
                 r.generation = nextGeneration_++;
                 r.version = 0;
@@ -159,7 +160,8 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
         size_t at = it->first.find('|');
         while (at != std::string::npos && alive) {
             const size_t next = it->first.find('|', at + 1);
-            alive = live.count(it->first.substr(at + 1, next == std::string::npos ? std::string::npos : next - at - 1));
+            alive = live.count(
+                it->first.substr(at + 1, next == std::string::npos ? std::string::npos : next - at - 1));
             at = next;
         }
         if (alive) {
@@ -169,7 +171,9 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
             it = fbos_.erase(it);
         }
     }
-    auto inGraph = [&](const std::string& pass) { return std::count(order_.begin(), order_.end(), pass) > 0; };
+    auto inGraph = [&](const std::string& pass) {
+        return std::count(order_.begin(), order_.end(), pass) > 0;
+    };
     for (auto it = keys_.begin(); it != keys_.end();)
         it = inGraph(it->first) ? std::next(it) : keys_.erase(it);
     for (auto it = timers_.begin(); it != timers_.end();)

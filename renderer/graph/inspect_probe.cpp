@@ -23,7 +23,8 @@ struct ProbeState { // restores what run() changes, whatever happens in between
 };
 } // namespace
 
-void InspectProbe::run(glm::ivec2 pixel, glm::ivec2 size, const std::function<void()>& draw, PixelInspection& out) {
+void InspectProbe::run(glm::ivec2 pixel, glm::ivec2 size, const std::function<void()>& draw,
+                       PixelInspection& out) {
     if (!ssbo_) {
         GLuint id = 0;
         glCreateBuffers(1, &id);

@@ -31,6 +31,15 @@ struct ResourceDesc {
     float decodeScale = 1.0f, decodeOffset = 0.0f;
 };
 
+// A description in one line: name, format, data channels, display kind, unit and help.
+inline ResourceDesc describe(std::string name, GLenum format, int channels, Display display, std::string help,
+                             std::string unit = "") {
+    ResourceDesc d;
+    d.name = std::move(name), d.format = format, d.channels = channels, d.display = display;
+    d.help = std::move(help), d.unit = std::move(unit);
+    return d;
+}
+
 // Size of a resource of scale `scale` in a graph of base size w x h (rounded up, at least 1).
 int scaledSize(int base, float scale);
 

@@ -103,7 +103,8 @@ Stats stats(const Image& img, const Image* mask) {
             const size_t p = size_t(y) * size_t(img.width) + size_t(x);
             for (int c = 0; c < img.channels; ++c)
                 if (!std::isfinite(img.data[p * img.channels + c])) ++s.nonFinite;
-            if (mask && !(mask->at(mapPixel(x, img.width, mask->width), mapPixel(y, img.height, mask->height)) > 0.0f))
+            if (mask && !(mask->at(mapPixel(x, img.width, mask->width),
+                                   mapPixel(y, img.height, mask->height)) > 0.0f))
                 continue;
             const float v = img.data[p * img.channels];
             if (!std::isfinite(v)) continue;

@@ -118,14 +118,16 @@ nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& 
             writeExr(b.values, path(name + ".exr"));
             entry["exr"] = name + ".exr";
         }
-        const DisplayRange range = painter.paint(res, mask, info.style, view, r.shaders(), r.triangle(), &b.raw);
-        const bool grey =
-            (res.desc.display == Display::Unit || res.desc.display == Display::Scalar) && !info.style.falseColor;
+        const DisplayRange range =
+            painter.paint(res, mask, info.style, view, r.shaders(), r.triangle(), &b.raw);
+        const bool grey = (res.desc.display == Display::Unit || res.desc.display == Display::Scalar) &&
+                          !info.style.falseColor;
         writePng(readBack(view.texture(), grey ? 1 : 3), path(name + ".png"));
         entry["png"] = name + ".png";
-        entry["display_range"] = res.desc.channels == 1 ? nlohmann::json{range.lo.x, range.hi.x}
-                                                        : nlohmann::json{{range.lo.x, range.lo.y, range.lo.z},
-                                                                         {range.hi.x, range.hi.y, range.hi.z}};
+        entry["display_range"] =
+            res.desc.channels == 1
+                ? nlohmann::json{range.lo.x, range.hi.x}
+                : nlohmann::json{{range.lo.x, range.lo.y, range.lo.z}, {range.hi.x, range.hi.y, range.hi.z}};
         entry["display_range_fitted"] = range.fitted;
     }
 

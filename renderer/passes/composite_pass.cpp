@@ -11,13 +11,8 @@ void CompositePass::setup(PassBuilder& b, const Settings& s) const {
     b.read("gbuffer.normal");
     b.read("gbuffer.albedo");
     if (s.composite.useAo) b.read(branch().res("ao.denoised")); // AO off: the AO chain is not needed
-    ResourceDesc out;
-    out.name = branch().res("composite");
-    out.format = GL_RGBA8;
-    out.channels = 3;
-    out.display = Display::Color;
-    out.help = "the lit frame: ambient * albedo * AO + one point light, display gamma";
-    b.write(out);
+    b.write(describe(branch().res("composite"), GL_RGBA8, 3, Display::Color,
+                     "the lit frame: ambient * albedo * AO + one point light, display gamma"));
     b.settings("composite");
     b.usesScene(); // light placement in scene radii
 }

@@ -8,18 +8,13 @@ namespace ssao {
 
 void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
     b.read(branch().res("ao.raw"));
-    ResourceDesc tmp;
-    tmp.name = branch().res("denoise.tmp");
-    tmp.format = GL_R32F;
+    ResourceDesc tmp =
+        describe(branch().res("denoise.tmp"), GL_R32F, 1, Display::Unit, "x pass of the denoiser");
     tmp.scale = resolutionScale(s.ao.resolution);
     tmp.internal = true;
     b.write(tmp);
-    ResourceDesc out;
-    out.name = branch().res("ao.denoised");
-    out.format = GL_R32F;
-    out.display = Display::Unit;
-    out.help = "AO after the denoise stage, at full resolution (what the composite uses)";
-    b.write(out);
+    b.write(describe(branch().res("ao.denoised"), GL_R32F, 1, Display::Unit,
+                     "AO after the denoise stage, at full resolution (what the composite uses)"));
     b.settings("denoise");
 }
 

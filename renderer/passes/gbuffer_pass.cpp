@@ -19,42 +19,18 @@ GLenum glFormat(TargetFormat f) {
 
 void GBufferPass::setup(PassBuilder& b, const Settings& s) const {
     const GBufferSettings& g = s.gbuffer;
-    ResourceDesc d;
-    d.name = "gbuffer.position";
-    d.format = glFormat(g.positionFormat);
-    d.channels = 3;
-    d.display = Display::Vector;
-    d.unit = "scene units";
-    d.help = "view-space position (camera at the origin, looking down -z)";
-    b.write(d);
-    d = {};
-    d.name = "gbuffer.normal";
-    d.format = glFormat(g.normalFormat);
-    d.channels = 3;
-    d.display = Display::Direction;
-    d.help = "view-space unit normal of the visible side";
-    if (g.normalFormat == TargetFormat::RGBA8) d.decodeScale = 2.0f, d.decodeOffset = -1.0f; // stored (n+1)/2
-    b.write(d);
-    d = {};
-    d.name = "gbuffer.albedo";
-    d.format = GL_RGBA8;
-    d.channels = 3;
-    d.display = Display::Color;
-    d.help = "base colour (glTF baseColorFactor)";
-    b.write(d);
-    d = {};
-    d.name = "gbuffer.depth";
-    d.format = GL_R32F;
-    d.display = Display::Scalar;
-    d.unit = "scene units";
-    d.help = "linear view distance along -z (0 = sky)";
-    b.write(d);
-    d = {};
-    d.name = "gbuffer.zbuffer";
-    d.format = GL_DEPTH_COMPONENT32F;
-    d.display = Display::Scalar;
-    d.help = "hardware depth in [0,1] (non-linear; seed 001 reconstructs positions from it)";
-    b.write(d);
+    b.write(describe("gbuffer.position", glFormat(g.positionFormat), 3, Display::Vector,
+                     "view-space position (camera at the origin, looking down -z)", "scene units"));
+    ResourceDesc normal = describe("gbuffer.normal", glFormat(g.normalFormat), 3, Display::Direction,
+                                   "view-space unit normal of the visible side");
+    if (g.normalFormat == TargetFormat::RGBA8)
+        normal.decodeScale = 2.0f, normal.decodeOffset = -1.0f; // (n+1)/2
+    b.write(normal);
+    b.write(describe("gbuffer.albedo", GL_RGBA8, 3, Display::Color, "base colour (glTF baseColorFactor)"));
+    b.write(describe("gbuffer.depth", GL_R32F, 1, Display::Scalar, "linear view distance along -z (0 = sky)",
+                     "scene units"));
+    b.write(describe("gbuffer.zbuffer", GL_DEPTH_COMPONENT32F, 1, Display::Scalar,
+                     "hardware depth in [0,1] (non-linear; seed 001 reconstructs positions from it)"));
     b.settings("gbuffer");
     b.usesScene();
     b.usesCamera();

@@ -96,9 +96,10 @@ TEST_F(AppUse, OrbitAndZoomWorkAroundAGltfCamera) {
     EXPECT_TRUE(inFrame(c1));
     const Image mask1 = readBack(ui_->app().renderer().texture("gbuffer.depth"), 1);
     const long covered1 = stats(mask1, &mask1).count;
-    std::printf("CornellBox orbit: target %.2f units ahead; a 100 px drag moved the eye %.2f units, geometry covers "
-                "%ld -> %ld pixels\n",
-                dist0, glm::length(c1.eye - c0.eye), covered0, covered1);
+    std::printf(
+        "CornellBox orbit: target %.2f units ahead; a 100 px drag moved the eye %.2f units, geometry covers "
+        "%ld -> %ld pixels\n",
+        dist0, glm::length(c1.eye - c0.eye), covered0, covered1);
     EXPECT_GT(covered1, covered0 / 2) << "the box swung out of frame";
     // Five wheel clicks dolly a real distance towards it.
     ui_->wheel(cx, cy, 5);
@@ -116,8 +117,8 @@ TEST_F(AppUse, ZoomOnTheMillimetreEngineMovesMillimetresByTheHundred) {
     const ImVec4 v = ui_->rect("view#main");
     ui_->wheel((v.x + v.z) * 0.5f, (v.y + v.w) * 0.5f, 5);
     const Camera c1 = ui_->app().cameraController().camera();
-    std::printf("engine: five wheel clicks moved the eye %.1f mm (target %.1f mm ahead)\n", glm::length(c1.eye - c0.eye),
-                glm::length(c0.target - c0.eye));
+    std::printf("engine: five wheel clicks moved the eye %.1f mm (target %.1f mm ahead)\n",
+                glm::length(c1.eye - c0.eye), glm::length(c0.target - c0.eye));
     EXPECT_GT(glm::length(c1.eye - c0.eye), 100.0f); // was 0.26 mm
     ui_->settle();
     EXPECT_TRUE(finiteInRange(readBack(ui_->app().renderer().texture("ao.raw"), 1), 0.0f, 1.0f));

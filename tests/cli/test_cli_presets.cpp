@@ -60,7 +60,8 @@ TEST(CliPresets, APresetCarriesItsSceneAndSizeUnlessOverridden) {
         run("cd / && " + bin() + " render --timing-frames 1 --preset '" + relPreset + "' --out " + out, &log),
         0)
         << log;
-    EXPECT_TRUE(fs::equivalent(metrics(out)["scene"]["name"].get<std::string>(), cornell)) << metrics(out)["scene"];
+    EXPECT_TRUE(fs::equivalent(metrics(out)["scene"]["name"].get<std::string>(), cornell))
+        << metrics(out)["scene"];
 }
 
 TEST(CliPresets, RenderFindsPresetsSavedInTheAppByName) {

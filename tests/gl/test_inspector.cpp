@@ -148,9 +148,7 @@ TEST_F(Inspector, AFailingInspectVariantLeavesNoScissorBehind) {
     const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/inspect_shaders";
     std::filesystem::remove_all(dir);
     std::filesystem::copy(SSAOLAB_SHADER_DIR, dir, std::filesystem::copy_options::recursive);
-    {
-        std::ofstream(dir + "/include/inspect.glsl", std::ios::app) << "\n#ifdef INSPECT\nbroken;\n#endif\n";
-    }
+    { std::ofstream(dir + "/include/inspect.glsl", std::ios::app) << "\n#ifdef INSPECT\nbroken;\n#endif\n"; }
     const Scene scene = loadScene("builtin:showcase");
     auto r = std::make_unique<Renderer>(dir);
     r->setSize(64, 36);

@@ -201,7 +201,8 @@ TEST_F(Passes, APassThatThrowsLeavesNoGlStateBehind) {
     std::filesystem::remove_all(dir);
     std::filesystem::copy(SSAOLAB_SHADER_DIR, dir, std::filesystem::copy_options::recursive);
     {
-        std::ofstream(dir + "/passes/gbuffer.frag", std::ios::app) << "\n#ifdef NORMAL_UNORM\nbroken;\n#endif\n";
+        std::ofstream(dir + "/passes/gbuffer.frag", std::ios::app)
+            << "\n#ifdef NORMAL_UNORM\nbroken;\n#endif\n";
     }
     auto r = std::make_unique<Renderer>(dir);
     r->setSize(64, 36);

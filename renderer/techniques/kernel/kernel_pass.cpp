@@ -11,12 +11,9 @@ namespace ssao {
 void KernelPass::setup(PassBuilder& b, const Settings& s) const {
     b.read(s.kernel.positionSource == PositionSource::Depth ? "gbuffer.zbuffer" : "gbuffer.position");
     b.read("gbuffer.normal");
-    ResourceDesc out;
-    out.name = branch().res("ao.raw");
-    out.format = GL_R32F;
+    ResourceDesc out = describe(branch().res("ao.raw"), GL_R32F, 1, Display::Unit,
+                                "AO of the technique before denoising (1 = open, 0 = fully occluded)");
     out.scale = resolutionScale(s.ao.resolution);
-    out.display = Display::Unit;
-    out.help = "AO of the technique before denoising (1 = open, 0 = fully occluded)";
     b.write(out);
     b.settings("ao");
     b.settings("kernel");
@@ -71,7 +68,8 @@ void KernelPass::execute(PassContext& ctx) {
 bool KernelPass::inspect(PassContext& ctx, glm::ivec2 pixel, PixelInspection& out) {
     const glm::ivec2 size = ctx.size(branch().res("ao.raw"));
     if (pixel.x < 0 || pixel.y < 0 || pixel.x >= size.x || pixel.y >= size.y) return false;
-    probe_.run(pixel, size, [&] { draw(ctx, true); }, out);
+    probe_.run(
+        pixel, size, [&] { draw(ctx, true); }, out);
     return true;
 }
 
