@@ -65,7 +65,10 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        if (e.get_exit_code() == 0) return app.exit(e); // --help
+        // Like every other bad input: one line, exit code 1.
+        std::fprintf(stderr, "ssaolab: error: %s (see ssaolab --help)\n", e.what());
+        return 1;
     }
     try {
         if (app.got_subcommand("params")) {
@@ -80,9 +83,14 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (app.got_subcommand("view") || (!app.got_subcommand("render") && ssao::haveDisplay())) {
-            if (std::sscanf(windowSize.c_str(), "%dx%d", &wo.width, &wo.height) != 2 || wo.width <= 0 ||
-                wo.height <= 0)
-                throw ssao::Error("--size '" + windowSize + "': expected WIDTHxHEIGHT");
+            int used = 0;
+            if (std::sscanf(windowSize.c_str(), "%dx%d%n", &wo.width, &wo.height, &used) != 2 ||
+                used != int(windowSize.size()) || wo.width < 200 || wo.height < 150 || wo.width > 16384 ||
+                wo.height > 16384)
+                throw ssao::Error("--size '" + windowSize +
+                                  "': expected WIDTHxHEIGHT, from 200x150 to 16384x16384");
+            if (!wo.screenshot.empty() && wo.frames <= 0)
+                throw ssao::Error("--screenshot needs --frames N (the frame to save)");
             return ssao::runWindowApp(wo);
         }
         if (!app.got_subcommand("render"))

@@ -48,8 +48,11 @@ void parseSize(const std::string& s, int& w, int& h) {
     int n = 0;
     if (std::sscanf(s.c_str(), "%dx%d%n", &w, &h, &n) != 2 || n != int(s.size()))
         throw Error("--size '" + s + "': expected WIDTHxHEIGHT, e.g. 1280x720");
-    if (w <= 0 || h <= 0) throw Error("--size '" + s + "': width and height must be positive");
-    if (w > 16384 || h > 16384) throw Error("--size '" + s + "': at most 16384x16384");
+    try {
+        checkRenderSize(w, h);
+    } catch (const Error& e) {
+        throw Error("--size '" + s + "': " + e.what());
+    }
 }
 
 } // namespace
@@ -130,6 +133,12 @@ int runRender(const RenderOptions& o) {
     if (gl::glErrorCount() > 0)
         throw Error("OpenGL reported " + std::to_string(gl::glErrorCount()) + " error(s) during the run" +
                     (glErr.empty() ? "" : " (" + glErr + ")"));
+    if (!o.quiet && m["geometry_pixels"].get<long>() == 0)
+        std::printf("note: no geometry in view (check --camera): the AO statistics are empty\n");
+    else if (!o.quiet && m["radius"]["pixels_at_centre"].get<double>() < 2.0)
+        std::printf("note: the AO radius is %.2f px at the centre of the view: the AO goes flat grey "
+                    "(ao.radius_mode=scene makes the radius follow the scene)\n",
+                    m["radius"]["pixels_at_centre"].get<double>());
     if (!o.quiet) {
         std::printf(
             "%s: %dx%d on %s; AO mean %.4f (raw %.4f), darkest 5%% <= %.3f; radius %.4g units = %.1f px at "
@@ -137,8 +146,9 @@ int runRender(const RenderOptions& o) {
             scene.name.c_str(), w, h, info.glRenderer.c_str(), m["ao"]["mean"].get<double>(),
             m["ao_raw"]["mean"].get<double>(), m["ao"]["p05"].get<double>(),
             m["radius"]["world_at_centre"].get<double>(), m["radius"]["pixels_at_centre"].get<double>());
-        for (auto& [k, v] : timing.items())
-            std::printf(" %s %.3f", k.c_str(), v.get<double>());
+        for (const auto& p : first.passes) // in graph order, not by name
+            std::printf(" %s %.3f", p.name.c_str(), timing[p.name].get<double>());
+        std::printf(" total %.3f", timing["total"].get<double>());
         std::printf("\nwrote %s/: one .exr per float buffer, one .png per buffer, metrics.json\n",
                     o.out.c_str());
     }

@@ -19,6 +19,15 @@
 
 namespace ssao {
 
+void checkRenderSize(int width, int height) {
+    const std::string size = std::to_string(width) + "x" + std::to_string(height);
+    if (width <= 0 || height <= 0) throw Error("size " + size + ": width and height must be positive");
+    if (width > kMaxRenderSide || height > kMaxRenderSide || long(width) * long(height) > kMaxRenderPixels)
+        throw Error("size " + size + " is too large: at most " + std::to_string(kMaxRenderSide) +
+                    " a side and " + std::to_string(kMaxRenderPixels / 1000000) +
+                    " million pixels (e.g. 4096x4096)");
+}
+
 gpu::FrameConstants packFrameConstants(const Camera& cam, int width, int height, float sceneRadius) {
     gpu::FrameConstants f{};
     f.view = cam.view();
@@ -74,9 +83,7 @@ void Renderer::setSettingsB(std::optional<Settings> settings) {
 }
 
 void Renderer::setSize(int width, int height) {
-    if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
-        throw Error("size " + std::to_string(width) + "x" + std::to_string(height) +
-                    " is outside 1x1..16384x16384");
+    checkRenderSize(width, height);
     if (width == width_ && height == height_) return;
     width_ = width;
     height_ = height;

@@ -17,6 +17,12 @@
 
 namespace ssao {
 
+// Render sizes: the G-buffer alone takes ~60 bytes a pixel, so 16.7 million pixels is ~1 GB.
+constexpr int kMaxRenderSide = 16384;
+constexpr long kMaxRenderPixels = 4096L * 4096L;
+// Throws ssao::Error naming the size and the limits when it is not renderable.
+void checkRenderSize(int width, int height);
+
 // Camera and size → the per-frame constant block every shader reads (pure).
 gpu::FrameConstants packFrameConstants(const Camera& cam, int width, int height, float sceneRadius);
 

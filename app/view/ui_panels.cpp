@@ -14,12 +14,14 @@ void rememberRect(AppCore& app, const std::string& key) {
 
 namespace {
 
-bool inputText(const char* label, std::string& s) {
+// Returns true when the text changed, or, with `enter`, when Enter was pressed.
+bool inputText(const char* label, std::string& s, bool enter = false) {
     char buf[512];
     std::snprintf(buf, sizeof buf, "%s", s.c_str());
-    bool changed = ImGui::InputText(label, buf, sizeof buf);
-    if (changed) s = buf;
-    return changed;
+    const bool hit =
+        ImGui::InputText(label, buf, sizeof buf, enter ? ImGuiInputTextFlags_EnterReturnsTrue : 0);
+    s = buf;
+    return hit;
 }
 
 bool tab(AppCore& app, const char* name) {
@@ -35,9 +37,10 @@ void sceneSection(AppCore& app) {
                         2.0f * sc.bounds.radius());
     static std::string path;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.7f);
-    inputText("##scenepath", path);
+    const bool enter = inputText("##scenepath", path, true);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("a .gltf/.glb path; Enter or Open loads it");
     ImGui::SameLine();
-    if (ImGui::Button("Open")) app.openScene(path);
+    if (ImGui::Button("Open") || enter) app.openScene(path);
     rememberRect(app, "scene#open");
     for (const auto& name : builtinSceneNames()) {
         if (ImGui::SmallButton(name.c_str())) app.openScene("builtin:" + name);

@@ -80,10 +80,13 @@ bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
     return click;
 }
 
-void label(ImDrawList* dl, ImVec2 pos, const std::string& text) {
+// A label in the image's top-left corner, clipped to the image (long ranges never spill over).
+void label(ImDrawList* dl, ImVec2 pos, const std::string& text, float maxWidth = 1e9f) {
     const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
+    dl->PushClipRect(pos, ImVec2(pos.x + maxWidth, pos.y + ts.y + 4), true);
     dl->AddRectFilled(pos, ImVec2(pos.x + ts.x + 8, pos.y + ts.y + 4), IM_COL32(0, 0, 0, 170));
     dl->AddText(ImVec2(pos.x + 4, pos.y + 2), IM_COL32(255, 255, 255, 255), text.c_str());
+    dl->PopClipRect();
 }
 
 void drawSamples(AppCore& app, ImDrawList* dl, ImVec2 pos, ImVec2 size) {
@@ -231,7 +234,7 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
             ImGui::PopID();
             const BufferViews::View* v = views.find(name);
             image(dl, v, p, ImVec2(p.x + sz.x, p.y + sz.y));
-            label(dl, p, v ? v->label : name);
+            label(dl, p, v ? v->label : name, sz.x);
             app.widgetRects["view#" + name] = ImVec4(p.x, p.y, p.x + sz.x, p.y + sz.y);
             if (clicked) {
                 app.enlarged = name;

@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 
 namespace ssao {
@@ -150,8 +151,12 @@ int runWindowApp(const WindowOptions& o) {
             ++frame;
             if (g_screenshotRequested) { // F12: the window as the user sees it, into the current folder
                 g_screenshotRequested = false;
+                // The next free name: screenshots of earlier sessions are never overwritten.
                 static int shots = 0;
-                const std::string name = "ssaolab-screenshot-" + std::to_string(++shots) + ".png";
+                std::string name;
+                do
+                    name = "ssaolab-screenshot-" + std::to_string(++shots) + ".png";
+                while (std::filesystem::exists(name));
                 try {
                     screenshot(fw, fh, name);
                     app.setStatus("saved " + name, false);
@@ -159,11 +164,9 @@ int runWindowApp(const WindowOptions& o) {
                     app.setStatus(e.what(), true);
                 }
             }
-            if (o.frames > 0 && frame >= o.frames) {
-                if (!o.screenshot.empty()) screenshot(fw, fh, o.screenshot);
-                break;
-            }
-            glfwSwapBuffers(window);
+            const bool last = o.frames > 0 && frame >= o.frames;
+            if (last && !o.screenshot.empty()) screenshot(fw, fh, o.screenshot);
+            if (!last) glfwSwapBuffers(window);
             const float ms =
                 std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count();
             app.noteFrameMs(ms);
@@ -178,6 +181,7 @@ int runWindowApp(const WindowOptions& o) {
                         frameLog << p << ",";
                 frameLog << "\n" << std::flush;
             }
+            if (last) break;
         }
         gl::pollGlErrors();
         if (gl::glErrorCount() > 0) {

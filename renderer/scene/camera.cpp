@@ -26,7 +26,7 @@ Camera frameBounds(const Bounds& b) {
     c.fovYDeg = 45.0f;
     const glm::vec3 dir = glm::normalize(glm::vec3(0.55f, 0.45f, 1.0f));
     // Distance at which a sphere of radius r fits the vertical field of view, plus a margin.
-    const float dist = r / std::sin(glm::radians(c.fovYDeg * 0.5f)) * 1.05f;
+    const float dist = r / std::sin(glm::radians(c.fovYDeg * 0.5f)) * 1.12f;
     c.eye = c.target + dir * dist;
     c.up = {0.0f, 1.0f, 0.0f};
     c.nearZ = std::max(dist - 1.5f * r, dist * 0.01f);
@@ -44,7 +44,9 @@ void validateCamera(const Camera& c) {
     if (glm::length(glm::cross(fwd, c.up)) < 1e-9f * glm::length(fwd))
         throw Error("camera: up is parallel to the view direction");
     if (!(c.fovYDeg > 0.5f && c.fovYDeg < 179.0f)) throw Error("camera: fov must be in (0.5, 179) degrees");
-    if (!(c.nearZ > 0.0f) || !std::isfinite(c.nearZ)) throw Error("camera: near must be > 0");
+    if (!std::isfinite(c.nearZ) || !std::isfinite(c.farZ) || !std::isfinite(c.fovYDeg))
+        throw Error("camera: fov, near and far must be finite numbers");
+    if (!(c.nearZ > 0.0f)) throw Error("camera: near must be > 0");
     if (!(c.farZ > c.nearZ) || !std::isfinite(c.farZ)) throw Error("camera: far must be > near");
 }
 
@@ -53,14 +55,10 @@ Camera parseCamera(const std::string& text, const Camera& base) {
     std::stringstream ss(text);
     std::string tok;
     while (std::getline(ss, tok, ',')) {
-        try {
-            size_t used = 0;
-            float f = std::stof(tok, &used);
-            if (used != tok.size() && tok.find_first_not_of(" ", used) != std::string::npos) throw 0;
-            v.push_back(f);
-        } catch (...) {
-            throw Error("--camera: '" + tok + "' is not a number");
-        }
+        double d = 0;
+        if (!parseDecimal(tok, d)) throw Error("--camera: '" + tok + "' is not a number");
+        if (!std::isfinite(float(d))) throw Error("--camera: '" + tok + "' is not a finite number");
+        v.push_back(float(d));
     }
     if (!(v.size() == 6 || v.size() == 9 || v.size() == 10 || v.size() == 12))
         throw Error(

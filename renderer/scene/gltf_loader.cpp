@@ -11,12 +11,74 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 
 namespace ssao {
 
 namespace {
+
+// Files a glTF may read: regular files under its own folder, at most 2 GiB. A buffer uri like
+// "../../etc/passwd", an absolute path, a folder or a FIFO (which would block forever) is refused
+// with a message naming it, instead of being read or hanging.
+struct SceneFolder {
+    std::filesystem::path root; // canonical
+};
+
+std::optional<std::filesystem::path> insideFolder(const std::string& file, const SceneFolder& f) {
+    std::error_code ec;
+    const auto p = std::filesystem::weakly_canonical(std::filesystem::absolute(file, ec), ec);
+    if (ec) return std::nullopt;
+    auto r = f.root.begin();
+    auto q = p.begin();
+    for (; r != f.root.end(); ++r, ++q)
+        if (q == p.end() || *q != *r) return std::nullopt;
+    return p;
+}
+
+// Says yes for any existing path, so that the read below refuses it with a precise reason.
+bool fileExistsInFolder(const std::string& file, void*) {
+    std::error_code ec;
+    return std::filesystem::exists(file, ec);
+}
+
+std::string keepPath(const std::string& file, void*) {
+    return file; // no ~ or $VAR expansion of paths that come from a file
+}
+
+bool readFileInFolder(std::vector<unsigned char>* out, std::string* err, const std::string& file,
+                      void* user) {
+    const auto* folder = static_cast<SceneFolder*>(user);
+    const auto p = insideFolder(file, *folder);
+    std::error_code ec;
+    if (!p) {
+        if (err) *err += "'" + file + "' is outside the scene's folder " + folder->root.string() + "\n";
+        return false;
+    }
+    if (!std::filesystem::is_regular_file(*p, ec)) {
+        if (err) *err += "'" + file + "' is not a regular file\n";
+        return false;
+    }
+    const auto size = std::filesystem::file_size(*p, ec);
+    if (ec || size > (size_t(2) << 30)) {
+        if (err) *err += "'" + file + "' is larger than 2 GiB\n";
+        return false;
+    }
+    std::ifstream in(*p, std::ios::binary);
+    out->resize(size_t(size));
+    if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) {
+        if (err) *err += "cannot read '" + file + "'\n";
+        return false;
+    }
+    return true;
+}
+
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "ssaolab never writes glTF files\n";
+    return false;
+}
 
 const char* kUnsupportedExtensions[] = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
                                         "KHR_mesh_quantization", "KHR_texture_basisu"};
@@ -42,11 +104,18 @@ const unsigned char* accessorData(const tinygltf::Model& m, const tinygltf::Acce
     if (bv.buffer < 0 || bv.buffer >= int(m.buffers.size())) throw Error(what + ": bufferView has no buffer");
     const auto& buf = m.buffers[bv.buffer];
     stride = bv.byteStride ? bv.byteStride : elemSize;
-    size_t begin = bv.byteOffset + a.byteOffset;
-    size_t need = a.count ? begin + (a.count - 1) * stride + elemSize : begin;
-    if (need > buf.data.size() ||
-        a.byteOffset + (a.count ? (a.count - 1) * stride + elemSize : 0) > bv.byteLength)
+    // Every size here comes from the file: check in a form that cannot wrap around (offsets near
+    // 2^64 or counts near 2^62 would otherwise pass a naive `offset + size <= length`).
+    const size_t bufLen = buf.data.size();
+    if (bv.byteOffset > bufLen || bv.byteLength > bufLen - bv.byteOffset)
+        throw Error(what + ": bufferView lies outside its buffer");
+    if (bv.byteStride && (bv.byteStride < elemSize || bv.byteStride > 252)) // glTF: [4, 252]
+        throw Error(what + ": byteStride " + std::to_string(bv.byteStride) + " is invalid");
+    if (a.byteOffset > bv.byteLength) throw Error(what + ": accessor starts past the end of its bufferView");
+    const size_t room = bv.byteLength - a.byteOffset; // bytes the accessor may read
+    if (a.count > 0 && (elemSize > room || a.count - 1 > (room - elemSize) / stride))
         throw Error(what + ": accessor reads past the end of its buffer");
+    const size_t begin = bv.byteOffset + a.byteOffset;
     return buf.data.data() + begin;
 }
 
@@ -160,6 +229,8 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
         if (nrm.count != pos.count) throw Error(what + ": NORMAL count differs from POSITION count");
         for (size_t i = 0; i < pos.count; ++i) {
             glm::vec3 wp = glm::vec3(world * glm::vec4(pos[i], 1.0f));
+            if (!std::isfinite(wp.x) || !std::isfinite(wp.y) || !std::isfinite(wp.z))
+                throw Error(what + ": POSITION " + std::to_string(i) + " is not finite");
             glm::vec3 n = normalMat * nrm[i];
             float len = glm::length(n);
             n = (len > 1e-20f && std::isfinite(len)) ? n / len : glm::vec3(0, 1, 0);
@@ -177,6 +248,9 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
             glm::vec3 p0 = glm::vec3(world * glm::vec4(pos[idx[t]], 1.0f));
             glm::vec3 p1 = glm::vec3(world * glm::vec4(pos[idx[t + 1]], 1.0f));
             glm::vec3 p2 = glm::vec3(world * glm::vec4(pos[idx[t + 2]], 1.0f));
+            for (const glm::vec3& q : {p0, p1, p2})
+                if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
+                    throw Error(what + ": a POSITION is not finite");
             if (mirrored) std::swap(p1, p2);
             glm::vec3 n = glm::cross(p1 - p0, p2 - p0);
             float len = glm::length(n);
@@ -215,10 +289,14 @@ std::optional<Camera> cameraFromNode(const tinygltf::Model& m, const tinygltf::N
 
 Scene loadGltf(const std::string& path) {
     {
-        std::ifstream probe(path, std::ios::binary);
-        if (!probe) throw Error("scene file not found: " + path);
+        std::error_code ec;
+        if (!std::filesystem::exists(path, ec)) throw Error("scene file not found: " + path);
+        if (!std::filesystem::is_regular_file(path, ec)) // a folder, a FIFO (opening it would hang), ...
+            throw Error("scene " + path + " is not a regular .gltf/.glb file");
     }
     tinygltf::TinyGLTF loader;
+    SceneFolder folder{std::filesystem::weakly_canonical(std::filesystem::absolute(path)).parent_path()};
+    loader.SetFsCallbacks({fileExistsInFolder, keepPath, readFileInFolder, refuseWrite, &folder});
     tinygltf::Model model;
     std::string err, warn;
     const bool binary = path.size() > 4 && path.substr(path.size() - 4) == ".glb";
@@ -246,9 +324,20 @@ Scene loadGltf(const std::string& path) {
         for (int i = 0; i < int(model.nodes.size()); ++i)
             roots.push_back(i);
 
+    // Nodes may be shared (instancing) but not be their own ancestors; a hostile file can also
+    // multiply instances through shared children, so the walk and the triangle count are bounded.
+    std::vector<char> onPath(model.nodes.size(), 0);
+    size_t visits = 0;
+    constexpr size_t kMaxVisits = 1000000, kMaxIndices = 3 * 50000000ull;
     std::function<void(int, const glm::mat4&, int)> visit = [&](int ni, const glm::mat4& parent, int depth) {
-        if (ni < 0 || ni >= int(model.nodes.size()) || depth > 64)
-            throw Error("glTF " + path + ": bad node hierarchy");
+        if (ni < 0 || ni >= int(model.nodes.size()))
+            throw Error("glTF " + path + ": node index " + std::to_string(ni) + " does not exist");
+        if (onPath[size_t(ni)])
+            throw Error("glTF " + path + ": node " + std::to_string(ni) + " is its own ancestor");
+        if (depth > 1000) throw Error("glTF " + path + ": node hierarchy deeper than 1000 levels");
+        if (++visits > kMaxVisits)
+            throw Error("glTF " + path + ": more than 1 million node instances (shared nodes multiply)");
+        onPath[size_t(ni)] = 1;
         const auto& n = model.nodes[ni];
         glm::mat4 world = parent * localMatrix(n);
         if (n.mesh >= 0) {
@@ -257,6 +346,8 @@ Scene loadGltf(const std::string& path) {
             const auto& mesh = model.meshes[n.mesh];
             for (const auto& p : mesh.primitives)
                 appendPrimitive(model, p, world, s, "glTF mesh '" + mesh.name + "'");
+            if (s.indices.size() > kMaxIndices)
+                throw Error("glTF " + path + ": more than 50 million triangles to draw");
         }
         if (n.camera >= 0 && n.camera < int(model.cameras.size())) {
             if (auto cam = cameraFromNode(model, n, world)) {
@@ -268,6 +359,7 @@ Scene loadGltf(const std::string& path) {
         }
         for (int c : n.children)
             visit(c, world, depth + 1);
+        onPath[size_t(ni)] = 0;
     };
     for (int r : roots)
         visit(r, glm::mat4(1.0f), 0);
@@ -275,6 +367,8 @@ Scene loadGltf(const std::string& path) {
     s.computeBounds();
     if (!s.bounds.valid() || !std::isfinite(s.bounds.radius()))
         throw Error("glTF " + path + " has non-finite positions");
+    if (!(s.bounds.radius() > 0.0f))
+        throw Error("glTF " + path + " has no extent: every vertex is at one point");
     // Infinite projections (no zfar): put the far plane safely behind the whole scene.
     auto fixFar = [&](Camera& c) {
         if (c.farZ > c.nearZ) return;

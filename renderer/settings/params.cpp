@@ -54,15 +54,15 @@ std::vector<Param> coreRows() {
             "Unit of the AO radius: world (scene units), scene (fraction of the scene's bounding-box "
             "diagonal, follows the scene) or screen (pixels at each pixel's depth).",
             ({{"world", RadiusMode::World}, {"scene", RadiusMode::Scene}, {"screen", RadiusMode::Screen}})),
-        FLOAT_ROW("ao.radius", "Radius", ao.radius, 1e-4, 1e4, "scene units",
+        FLOAT_ROW("ao.radius", "World radius", ao.radius, 1e-4, 1e4, "scene units",
                   "World-size of the sampling kernel: how far away geometry can still occlude.")
             .onlyWhen("ao.radius_mode", {"world"}),
-        FLOAT_ROW("ao.radius_scene", "Radius", ao.radiusScene, 1e-4, 0.5, "x diagonal",
+        FLOAT_ROW("ao.radius_scene", "Scene radius", ao.radiusScene, 1e-4, 0.5, "x diagonal",
                   "Radius as a fraction of the scene's bounding-box diagonal (0.05 = 5 %), so it follows the "
                   "scene's scale (metres or millimetres alike).")
             .onlyWhen("ao.radius_mode", {"scene"}),
         FLOAT_ROW(
-            "ao.radius_px", "Radius", ao.radiusPx, 1.0, 512.0, "pixels",
+            "ao.radius_px", "Screen radius", ao.radiusPx, 1.0, 512.0, "pixels",
             "Radius in pixels at each pixel's depth: the kernel covers the same screen area near and far.")
             .onlyWhen("ao.radius_mode", {"screen"}),
         FLOAT_ROW("ao.power", "Power", ao.power, 0.1, 16.0, "",
@@ -122,14 +122,8 @@ std::vector<Param> buildTable() {
 }
 
 double parseNumber(const Param& p, const std::string& text) {
-    size_t used = 0;
     double v = 0;
-    try {
-        v = std::stod(text, &used);
-    } catch (...) {
-        used = 0;
-    }
-    if (used == 0 || used != text.size()) throw Error(p.key + ": '" + text + "' is not a number");
+    if (!parseDecimal(text, v)) throw Error(p.key + ": '" + text + "' is not a number");
     return v;
 }
 

@@ -139,9 +139,11 @@ Preset readPresetFile(const std::string& path) {
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::parse_error& e) {
+    } catch (const nlohmann::json::exception& e) { // syntax, or a number that overflows a double
         std::string what = e.what();
-        throw Error("preset " + path + " is not valid JSON (" + what.substr(what.find("parse error")) + ")");
+        const size_t bracket = what.find("] ");
+        if (bracket != std::string::npos) what = what.substr(bracket + 2); // drop "[json.exception...]"
+        throw Error("preset " + path + " is not valid JSON (" + what + ")");
     }
     Preset p = presetFromJson(j, "preset " + path, fs::path(path).parent_path().string());
     if (p.name.empty()) p.name = fs::path(path).stem().string();

@@ -10,6 +10,10 @@ struct Error : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// Parses a decimal number ("0.5", "-2e-3", "inf", "nan") that fills the whole text; no hex, no
+// spaces. Returns false when the text is not one. Non-finite values parse (callers report them).
+bool parseDecimal(const std::string& text, double& out);
+
 inline std::string hex(unsigned v) {
     char buf[16];
     std::snprintf(buf, sizeof buf, "%x", v);

@@ -146,9 +146,38 @@ TEST(Cli, BadInputGivesOneClearLineAndExitCodeOne) {
     expectCleanFailure(ssaolab("render --preset " + writeTemp("cli_size.json", R"({"size":[0,5]})") + out),
                        "size");
     expectCleanFailure(ssaolab("render --size 0x0" + out), "--size '0x0'");
+    expectCleanFailure(ssaolab("render --size 16384x16384" + out),
+                       "too large"); // refused before 9 GB of buffers
+    expectCleanFailure(ssaolab("render --set ao.power=0x10" + out), "'0x10' is not a number");
+    expectCleanFailure(ssaolab("render --set 'ao.power= 2'" + out), "is not a number");
+    expectCleanFailure(ssaolab("render --camera 0,0,5,0,0,0,0,1,0,60,0.1,inf" + out), "not a finite number");
+    expectCleanFailure(
+        ssaolab("render --preset " + writeTemp("cli_overflow.json", R"({"ao":{"power":1e999}})") + out),
+        "is not valid JSON");
+    expectCleanFailure(ssaolab("render --scene " + std::string(SSAOLAB_TEST_TMP) + out), "not a regular");
+    // Option errors of the command line itself: the same one line and exit code 1.
+    expectCleanFailure(ssaolab("render --timing-frames 0" + out), "--timing-frames");
+    expectCleanFailure(ssaolab("render --clip weird" + out), "--clip");
+    expectCleanFailure(ssaolab("render --bogus" + out), "--bogus");
+    expectCleanFailure(ssaolab("bogus"), "bogus");
+    expectCleanFailure(ssaolab("view --screenshot x.png"), "--screenshot needs --frames");
+    expectCleanFailure(ssaolab("view --size 100000x100"), "--size '100000x100'");
     expectCleanFailure(ssaolab("render --size 640" + out), "--size '640'");
     expectCleanFailure(ssaolab("render --camera 1,2,3" + out), "--camera");
     expectCleanFailure(ssaolab("render --camera 0,0,0,0,0,0" + out), "eye and target coincide");
+}
+
+TEST(Cli, WarnsWhenNothingIsInViewOrTheRadiusIsSubPixel) {
+    CliRun r =
+        ssaolab("render --size 64x36 --timing-frames 1 --camera 0,0,-500,0,0,-1000 --out " + outDir("empty"));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("no geometry in view"), std::string::npos) << r.out;
+    // The article's 0.5 world units on the millimetre engine: under a pixel.
+    r = ssaolab("render --size 320x180 --timing-frames 1 --preset learnopengl --scene '" +
+                std::string(SSAOLAB_SCENES_DIR) + "/2CylinderEngine/2CylinderEngine.gltf' --out " +
+                outDir("subpixel"));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("flat grey"), std::string::npos) << r.out;
 }
 
 TEST(Cli, NoGlIsAClearError) {

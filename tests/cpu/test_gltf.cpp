@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <sys/stat.h>
+
 using namespace ssao;
 using ssaotest::writeTemp;
 
@@ -122,4 +124,86 @@ TEST(BuiltinScenes, AllBuildAndUnknownNamesAreListed) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("showcase, plane, corner"), std::string::npos);
     }
+}
+
+namespace {
+// The triangle above with one JSON value replaced: `from` must occur exactly once.
+std::string patched(const std::string& from, const std::string& to, const std::string& extra = "") {
+    std::string g = triangleGltf(extra);
+    const size_t at = g.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return g.replace(at, from.size(), to);
+}
+} // namespace
+
+TEST(GltfHostile, OffsetsAndCountsThatWrapAroundAreRefused) {
+    // Values near 2^64 made the naive `offset + size <= length` check wrap and pass: a read far
+    // outside the buffer (a crash, or garbage geometry).
+    const std::pair<const char*, const char*> cases[] = {
+        {R"("byteOffset":0,"byteLength":36)", R"("byteOffset":18446744073708765184,"byteLength":36)"},
+        {R"("byteOffset":0,"byteLength":36)", R"("byteOffset":0,"byteLength":18446744073709551615)"},
+        {R"("componentType":5126,"count":3)", R"("componentType":5126,"count":4611686018427387908)"},
+        {R"("componentType":5126,"count":3)",
+         R"("componentType":5126,"byteOffset":18446744073709551608,"count":3)"},
+    };
+    int i = 0;
+    for (const auto& [from, to] : cases) {
+        const std::string e = errorOf(writeTemp("wrap" + std::to_string(i++) + ".gltf", patched(from, to)));
+        EXPECT_TRUE(e.find("outside its buffer") != std::string::npos ||
+                    e.find("past the end") != std::string::npos ||
+                    e.find("cannot load glTF") != std::string::npos)
+            << to << ": " << e;
+    }
+}
+
+TEST(GltfHostile, BufferUrisStayInsideTheScenesFolder) {
+    const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/uri_jail/scene";
+    std::filesystem::create_directories(dir + "/sub");
+    std::ofstream(dir + "/../secret.bin") << std::string(40, 'x');
+    {
+        std::ofstream bin(dir + "/sub/ok.bin", std::ios::binary);
+        const float pos[9] = {0, 0, 0, 1, 0, 0, 0, 0, -1};
+        bin.write(reinterpret_cast<const char*>(pos), sizeof pos);
+        const unsigned char idx[4] = {0, 1, 2, 0};
+        bin.write(reinterpret_cast<const char*>(idx), sizeof idx);
+    }
+    const std::string data = R"("uri":"data:application/octet-stream;base64,)";
+    auto withUri = [&](const std::string& name, const std::string& uri) {
+        std::string g = triangleGltf();
+        const size_t a = g.find(data), b = g.find('"', a + data.size());
+        g.replace(a, b + 1 - a, "\"uri\":\"" + uri + "\"");
+        std::ofstream(dir + "/" + name) << g;
+        return errorOf(dir + "/" + name);
+    };
+    EXPECT_NE(withUri("up.gltf", "../secret.bin").find("outside the scene's folder"), std::string::npos);
+    const std::string abs = withUri("abs.gltf", "/etc/passwd");
+    EXPECT_TRUE(abs.find("outside the scene's folder") != std::string::npos ||
+                abs.find("File not found") != std::string::npos)
+        << abs;
+    EXPECT_NE(withUri("dir.gltf", "sub").find("not a regular file"), std::string::npos);
+    EXPECT_EQ(withUri("inside.gltf", "sub/../sub/ok.bin"), ""); // inside, however it is spelled
+    ::mkfifo((dir + "/pipe.bin").c_str(), 0600);                // reading it would block forever
+    EXPECT_NE(withUri("fifo.gltf", "pipe.bin").find("not a regular file"), std::string::npos);
+    ::mkfifo((dir + "/pipe.gltf").c_str(), 0600);
+    EXPECT_NE(errorOf(dir + "/pipe.gltf").find("not a regular"), std::string::npos);
+    EXPECT_NE(errorOf(dir).find("not a regular"), std::string::npos); // a folder given as the scene
+}
+
+TEST(GltfHostile, CyclesDepthSharedNodesAndDegenerateGeometry) {
+    EXPECT_NE(errorOf(writeTemp("cycle.gltf",
+                                patched(R"("mesh":0,"translation":[0,2,0])", R"("mesh":0,"children":[0])")))
+                  .find("node 0 is its own ancestor"),
+              std::string::npos);
+    // Two nodes sharing a child is legal instancing; 30 levels of it is 2^30 instances.
+    std::string nodes = R"("nodes":[)";
+    for (int i = 0; i < 30; ++i)
+        nodes += R"({"children":[)" + std::to_string(i + 1) + "," + std::to_string(i + 1) + "]},";
+    nodes += R"({"mesh":0}],)";
+    const std::string blowup =
+        errorOf(writeTemp("blowup.gltf", patched(R"("nodes":[{"mesh":0,"translation":[0,2,0]}],)", nodes)));
+    EXPECT_NE(blowup.find("node instances"), std::string::npos) << blowup;
+    // Every vertex at one point: no extent to scale a radius by.
+    EXPECT_NE(errorOf(writeTemp("point.gltf", patched(R"("translation":[0,2,0])", R"("scale":[0,0,0])")))
+                  .find("no extent"),
+              std::string::npos);
 }

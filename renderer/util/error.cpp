@@ -1,0 +1,40 @@
+#include "util/error.h"
+
+#include <cctype>
+#include <cstdlib>
+
+namespace ssao {
+
+bool parseDecimal(const std::string& text, double& out) {
+    if (text.empty()) return false;
+    std::string lower;
+    for (char c : text)
+        lower += char(std::tolower((unsigned char)c));
+    const std::string unsigned_ = lower[0] == '+' || lower[0] == '-' ? lower.substr(1) : lower;
+    if (unsigned_ == "inf" || unsigned_ == "infinity" || unsigned_ == "nan") {
+        out = std::strtod(text.c_str(), nullptr);
+        return true;
+    }
+    // Digits, one optional point, an optional exponent: what strtod accepts minus hex and spaces.
+    bool digits = false;
+    size_t i = (text[0] == '+' || text[0] == '-') ? 1 : 0;
+    for (; i < text.size() && std::isdigit((unsigned char)text[i]); ++i)
+        digits = true;
+    if (i < text.size() && text[i] == '.')
+        for (++i; i < text.size() && std::isdigit((unsigned char)text[i]); ++i)
+            digits = true;
+    if (!digits) return false;
+    if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+        ++i;
+        if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+        bool expDigits = false;
+        for (; i < text.size() && std::isdigit((unsigned char)text[i]); ++i)
+            expDigits = true;
+        if (!expDigits) return false;
+    }
+    if (i != text.size()) return false;
+    out = std::strtod(text.c_str(), nullptr); // overflow gives ±inf, underflow 0: both reported by callers
+    return true;
+}
+
+} // namespace ssao
