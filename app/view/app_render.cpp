@@ -2,8 +2,6 @@
 // timings, shader hot reload.
 #include "view/app_core.h"
 
-#include "settings/params.h"
-
 #include <cmath>
 #include <cstdio>
 
@@ -110,14 +108,17 @@ const std::optional<PixelInspection>& AppCore::inspection() {
 }
 
 const RadiusInfo& AppCore::radiusInfo() {
+    // Keyed by what the radius depends on, so a UI frame neither reads the GPU back nor serialises
+    // the settings when nothing changed.
     const Resource* depth = renderer_->graph().find("gbuffer.depth");
-    char key[96];
-    std::snprintf(key, sizeof key, "%llu/%u/%d", depth ? (unsigned long long)depth->version : 0ull,
-                  depth ? depth->generation : 0u, renderer_->width());
-    const std::string k = key + toJson(settings_)["ao"].dump();
-    if (k != radiusKey_) {
+    const AoSettings& a = renderer_->settings().ao;
+    char key[200];
+    std::snprintf(key, sizeof key, "%llu/%u/%dx%d/%d/%a/%a/%a", depth ? (unsigned long long)depth->version : 0ull,
+                  depth ? depth->generation : 0u, renderer_->width(), renderer_->height(), int(a.radiusMode),
+                  a.radius, a.radiusScene, a.radiusPx);
+    if (radiusKey_ != key) {
         radius_ = renderer_->radiusAtCentre();
-        radiusKey_ = k;
+        radiusKey_ = key;
     }
     return radius_;
 }
