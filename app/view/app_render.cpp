@@ -113,9 +113,10 @@ const RadiusInfo& AppCore::radiusInfo() {
     const Resource* depth = renderer_->graph().find("gbuffer.depth");
     const AoSettings& a = renderer_->settings().ao;
     char key[200];
-    std::snprintf(key, sizeof key, "%llu/%u/%dx%d/%d/%a/%a/%a", depth ? (unsigned long long)depth->version : 0ull,
-                  depth ? depth->generation : 0u, renderer_->width(), renderer_->height(), int(a.radiusMode),
-                  a.radius, a.radiusScene, a.radiusPx);
+    std::snprintf(key, sizeof key, "%llu/%u/%dx%d/%d/%a/%a/%a",
+                  depth ? (unsigned long long)depth->version : 0ull, depth ? depth->generation : 0u,
+                  renderer_->width(), renderer_->height(), int(a.radiusMode), a.radius, a.radiusScene,
+                  a.radiusPx);
     if (radiusKey_ != key) {
         radius_ = renderer_->radiusAtCentre();
         radiusKey_ = key;
