@@ -9,6 +9,8 @@ PKGS=(
   libegl-dev libgl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri libgl1 libglx-mesa0
   nlohmann-json3-dev libtinyexr-dev libcli11-dev
   libgtest-dev libgmock-dev
+  libembree-dev libtbb-dev libbenchmark-dev
+  python3 python3-matplotlib
   xvfb xauth
 )
 

@@ -1,0 +1,33 @@
+// The scene's triangles in an Embree 3 BVH (RAII over the device and scene handles), for the
+// reference tracer. Built once per scene; queries are thread-safe.
+#pragma once
+#include "scene/scene.h"
+
+#include <embree3/rtcore.h>
+
+#include <memory>
+#include <string>
+
+namespace ssao {
+
+class EmbreeScene {
+  public:
+    // Throws ssao::Error naming the problem (Embree device or build failure).
+    explicit EmbreeScene(const Scene& scene);
+    ~EmbreeScene();
+    EmbreeScene(const EmbreeScene&) = delete;
+    EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+    RTCScene handle() const { return scene_; }
+    const Scene& scene() const { return *source_; }
+    double buildMs() const { return buildMs_; }
+
+  private:
+    RTCDevice device_ = nullptr;
+    RTCScene scene_ = nullptr;
+    const Scene* source_;
+    double buildMs_ = 0;
+    std::string error_; // the first message Embree reported
+};
+
+} // namespace ssao

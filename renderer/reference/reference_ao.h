@@ -1,0 +1,87 @@
+// Ray-traced reference AO on the CPU (Embree), defined as Intel XeGTAO's ground truth so errors
+// are comparable with its published figures:
+//   AO(p) = (1/pi) * integral over the hemisphere of V_R(p, w) (n . w) dw
+// one primary ray through each pixel centre with the rasteriser's camera (near/far included); n =
+// the renormalised interpolated vertex normal, face-forwarded like the G-buffer's; V_R = 1 when a
+// ray leaves p in direction w and hits nothing within the world radius R. Cosine-weighted samples
+// (pdf = cos/pi) make the estimator the fraction of unoccluded rays. No falloff, no bounces, sky
+// pixels = 1, every triangle of the scene occludes (in view or not, either side).
+// The "obscurance" variant weights an occluded ray by its hit distance, W = max(0, 1 - t/R)
+// (unoccluded = 1), for analysis against techniques that model a falloff.
+#pragma once
+#include "reference/embree_scene.h"
+#include "scene/camera.h"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace ssao {
+
+enum class ReferenceVariant { Visibility, Obscurance };
+const char* variantName(ReferenceVariant v);               // "visibility" | "obscurance"
+ReferenceVariant parseVariant(const std::string& name);    // throws ssao::Error naming the choices
+
+struct ReferenceSettings {
+    float radius = 0.5f; // R, scene units: the same world radius the SSAO technique is given
+    int samples = 512;   // rays per pixel (XeGTAO accumulates 512)
+    ReferenceVariant variant = ReferenceVariant::Visibility;
+    int threads = 0;     // 0 = every hardware thread; the result does not depend on it
+};
+
+// A reference frame: single-channel images, row-major, top row first.
+struct ReferenceImage {
+    int width = 0, height = 0;
+    int samples = 0;               // rays per pixel accumulated
+    std::vector<float> ao;         // estimate, 1 = unoccluded; sky = 1
+    std::vector<float> stdErr;     // per-pixel standard error of the estimate (sky = 0)
+    std::vector<float> depth;      // primary hit's linear view depth (scene units), sky = 0
+    std::vector<float> geometry;   // 1 where the primary ray hit, else 0
+    double seconds = 0;            // tracing wall time (AO rays)
+    long long aoRays = 0;          // AO rays traced
+    double raysPerSecond() const { return seconds > 0 ? double(aoRays) / seconds : 0.0; }
+};
+
+// Traces a view progressively: primary hits once, then batches of samples per pixel. Sample i of a
+// pixel is seeded by (pixel, i) alone, so the result is bit-identical for any thread count and any
+// split into batches.
+class ReferenceTracer {
+  public:
+    using Progress = std::function<void(double fraction)>;
+
+    ReferenceTracer(const EmbreeScene& scene, const Camera& camera, int width, int height,
+                    const ReferenceSettings& settings);
+
+    // Adds `count` samples to every pixel. Returns false when `cancel` was raised; the tracer is
+    // then unusable (rows hold different sample counts).
+    bool addSamples(int count, const std::atomic<bool>* cancel = nullptr, const Progress& progress = {});
+    int samplesDone() const { return done_; }
+    ReferenceImage image() const;
+
+  private:
+    struct Hit {
+        float px, py, pz; // offset ray origin
+        float nx, ny, nz; // shading normal (unit, facing the viewer's side)
+    };
+
+    const EmbreeScene& scene_;
+    int width_, height_;
+    ReferenceSettings settings_;
+    std::vector<Hit> hits_;
+    std::vector<float> depth_, geometry_;
+    std::vector<uint32_t> unoccluded_; // visibility: rays that escaped
+    std::vector<double> sumW_, sumW2_; // obscurance: sum of weights and of squares
+    int done_ = 0;
+    bool broken_ = false;
+    double seconds_ = 0;
+    long long rays_ = 0;
+};
+
+// The whole reference in one call (what the CLI and benchmarks use without a cache).
+ReferenceImage traceReference(const EmbreeScene& scene, const Camera& camera, int width, int height,
+                              const ReferenceSettings& settings, const ReferenceTracer::Progress& progress = {},
+                              const std::atomic<bool>* cancel = nullptr);
+
+} // namespace ssao

@@ -1,0 +1,156 @@
+#include "reference/reference_cache.h"
+
+#include "output/image.h"
+#include "util/error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace ssao {
+
+namespace {
+constexpr uint64_t kFnvOffset = 1469598103934665603ull, kFnvPrime = 1099511628211ull;
+
+uint64_t fnv(uint64_t h, const void* data, size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < bytes; ++i)
+        h = (h ^ p[i]) * kFnvPrime;
+    return h;
+}
+
+std::string bits(float f) {
+    uint32_t u;
+    std::memcpy(&u, &f, 4);
+    return hex(u);
+}
+
+std::string vec(const glm::vec3& v) { return bits(v.x) + "," + bits(v.y) + "," + bits(v.z); }
+} // namespace
+
+uint64_t sceneContentHash(const Scene& scene) {
+    uint64_t h = kFnvOffset;
+    h = fnv(h, scene.vertices.data(), scene.vertices.size() * sizeof(Vertex));
+    h = fnv(h, scene.indices.data(), scene.indices.size() * sizeof(uint32_t));
+    return h;
+}
+
+std::string ReferenceKey::text() const {
+    std::ostringstream s;
+    s << kReferenceDefinition << " scene=" << std::hex << sceneHash << std::dec << " eye=" << vec(camera.eye)
+      << " target=" << vec(camera.target) << " up=" << vec(camera.up) << " fov=" << bits(camera.fovYDeg)
+      << " near=" << bits(camera.nearZ) << " far=" << bits(camera.farZ) << " size=" << width << "x" << height
+      << " R=" << bits(settings.radius) << " variant=" << variantName(settings.variant)
+      << " rays=" << settings.samples;
+    return s.str();
+}
+
+std::string ReferenceKey::fileStem() const {
+    const std::string t = text();
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "ref-%016llx", (unsigned long long)fnv(kFnvOffset, t.data(), t.size()));
+    return buf;
+}
+
+std::string referenceCacheDir() {
+    std::string base;
+    if (const char* d = std::getenv("SSAOLAB_CACHE_DIR")) base = d;
+    else if (const char* x = std::getenv("XDG_CACHE_HOME")) base = std::string(x) + "/ssaolab";
+    else if (const char* h = std::getenv("HOME")) base = std::string(h) + "/.cache/ssaolab";
+    else base = ".ssaolab-cache";
+    return base + "/reference";
+}
+
+std::optional<ReferenceImage> loadCachedReference(const ReferenceKey& key, const std::string& dir) {
+    const fs::path stem = fs::path(dir) / key.fileStem();
+    std::error_code ec;
+    if (!fs::is_regular_file(stem.string() + ".json", ec) || !fs::is_regular_file(stem.string() + ".exr", ec))
+        return std::nullopt;
+    try {
+        nlohmann::json meta;
+        std::ifstream(stem.string() + ".json") >> meta;
+        if (meta.value("key", std::string()) != key.text()) return std::nullopt; // a hash collision
+        const Image px = readExr(stem.string() + ".exr");
+        if (px.width != key.width || px.height != key.height || px.channels != 4) return std::nullopt;
+        ReferenceImage img;
+        img.width = px.width;
+        img.height = px.height;
+        img.samples = meta.at("samples").get<int>();
+        img.seconds = meta.at("seconds").get<double>();
+        img.aoRays = meta.at("ao_rays").get<long long>();
+        const size_t n = size_t(px.width) * px.height;
+        for (auto* v : {&img.ao, &img.stdErr, &img.depth, &img.geometry})
+            v->resize(n);
+        for (size_t i = 0; i < n; ++i) {
+            img.ao[i] = px.data[4 * i];
+            img.stdErr[i] = px.data[4 * i + 1];
+            img.depth[i] = px.data[4 * i + 2];
+            img.geometry[i] = px.data[4 * i + 3];
+        }
+        return img;
+    } catch (const std::exception&) {
+        return std::nullopt; // a corrupt entry is a miss; the trace overwrites it
+    }
+}
+
+bool storeCachedReference(const ReferenceKey& key, const ReferenceImage& img, const std::string& dir) {
+    try {
+        fs::create_directories(dir);
+        const fs::path stem = fs::path(dir) / key.fileStem();
+        Image px{img.width, img.height, 4, std::vector<float>(size_t(img.width) * img.height * 4)};
+        for (size_t i = 0; i < img.ao.size(); ++i) {
+            px.data[4 * i] = img.ao[i];
+            px.data[4 * i + 1] = img.stdErr[i];
+            px.data[4 * i + 2] = img.depth[i];
+            px.data[4 * i + 3] = img.geometry[i];
+        }
+        const std::string tmp = stem.string() + ".tmp" + std::to_string(::getpid()); // per process
+        writeExr(px, tmp + ".exr");
+        {
+            nlohmann::json meta = {{"key", key.text()},        {"samples", img.samples},
+                                   {"seconds", img.seconds},    {"ao_rays", img.aoRays},
+                                   {"channels", "R=ao G=stderr B=depth A=geometry"}};
+            std::ofstream(tmp + ".json") << meta.dump(2) << "\n";
+        }
+        fs::rename(tmp + ".exr", stem.string() + ".exr");
+        fs::rename(tmp + ".json", stem.string() + ".json");
+        return true;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+ReferenceProvider::ReferenceProvider(const Scene& scene, std::string cacheDir)
+    : scene_(scene), hash_(sceneContentHash(scene)), dir_(std::move(cacheDir)) {}
+
+ReferenceProvider::~ReferenceProvider() = default;
+
+const EmbreeScene& ReferenceProvider::embree() {
+    if (!embree_) embree_ = std::make_unique<EmbreeScene>(scene_);
+    return *embree_;
+}
+
+ReferenceImage ReferenceProvider::get(const Camera& camera, int width, int height,
+                                      const ReferenceSettings& settings, const ReferenceTracer::Progress& progress,
+                                      bool* cached) {
+    const ReferenceKey key{hash_, camera, width, height, settings};
+    if (!dir_.empty())
+        if (auto hit = loadCachedReference(key, dir_)) {
+            if (cached) *cached = true;
+            return *hit;
+        }
+    if (cached) *cached = false;
+    ReferenceImage img = traceReference(embree(), camera, width, height, settings, progress);
+    if (!dir_.empty()) storeCachedReference(key, img, dir_);
+    return img;
+}
+
+} // namespace ssao

@@ -1,0 +1,237 @@
+// The ray-traced reference against closed forms (XeGTAO's definition: cosine-weighted binary
+// visibility within R), its determinism across threads and batches, and its disk cache.
+#include "reference/reference_cache.h"
+#include "reference/sampling.h"
+#include "util/error.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+using namespace ssao;
+
+namespace {
+
+void quad(Scene& s, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p3) {
+    const glm::vec3 n = glm::normalize(glm::cross(p1 - p0, p3 - p0));
+    const uint32_t b = uint32_t(s.vertices.size());
+    for (auto& p : {p0, p1, p2, p3})
+        s.vertices.push_back({p, n});
+    s.indices.insert(s.indices.end(), {b, b + 1, b + 2, b, b + 2, b + 3});
+}
+
+// Floor y = 0 over [-L, L]^2, optionally a wall x = 0 (facing +x) of height H.
+Scene floorScene(bool wall, float L = 50.0f, float H = 50.0f) {
+    Scene s;
+    s.name = "floor";
+    quad(s, {-L, 0, -L}, {-L, 0, L}, {L, 0, L}, {L, 0, -L});
+    if (wall) quad(s, {0, 0, -L}, {0, H, -L}, {0, H, L}, {0, 0, L});
+    s.draws.push_back({0, uint32_t(s.indices.size()), glm::vec4(1)});
+    s.computeBounds();
+    return s;
+}
+
+Camera lookDown(glm::vec3 at, float height, float fov = 60.0f) {
+    Camera c;
+    c.eye = at + glm::vec3(0, height, 0);
+    c.target = at;
+    c.up = {0, 0, -1};
+    c.fovYDeg = fov;
+    c.nearZ = 0.01f;
+    c.farZ = 1000.0f;
+    c.clip = ClipMode::Fixed;
+    return c;
+}
+
+// World position of a pixel's primary hit, from the reference's own depth.
+glm::vec3 hitPosition(const Camera& c, int w, int h, int x, int y, float depth) {
+    const glm::vec3 fwd = glm::normalize(c.target - c.eye);
+    const glm::vec3 right = glm::normalize(glm::cross(fwd, c.up));
+    const glm::vec3 up = glm::cross(right, fwd);
+    const float t = std::tan(glm::radians(c.fovYDeg) * 0.5f);
+    const float nx = 2.0f * (x + 0.5f) / w - 1.0f, ny = 1.0f - 2.0f * (y + 0.5f) / h;
+    const glm::vec3 viewDir = fwd + right * (nx * t * float(w) / h) + up * (ny * t); // unit depth
+    return c.eye + viewDir * depth;
+}
+
+// AO of a floor point at distance d from an infinite wall (cosine-weighted, within R).
+double wallClosedForm(double d, double R) {
+    const double a = std::min(d / R, 1.0);
+    return 1.0 - (std::acos(a) - a * std::sqrt(1.0 - a * a)) / M_PI;
+}
+
+} // namespace
+
+TEST(Reference, SobolPointsAreStratifiedAndSeedDependent) {
+    // The first 2^k points of a (0,2)-sequence put exactly one point in each 1/2^k column and row.
+    std::vector<int> col(16, 0), row(16, 0);
+    for (uint32_t i = 0; i < 16; ++i) {
+        const auto s = sampling::sobol2D(i, 12345u);
+        ASSERT_GE(s.u, 0.0f);
+        ASSERT_LT(s.u, 1.0f);
+        ++col[int(s.u * 16)];
+        ++row[int(s.v * 16)];
+    }
+    for (int k = 0; k < 16; ++k) {
+        EXPECT_EQ(col[k], 1) << k;
+        EXPECT_EQ(row[k], 1) << k;
+    }
+    EXPECT_NE(sampling::sobol2D(3, 1).u, sampling::sobol2D(3, 2).u);
+    // Cosine-weighted directions: E[cos] = 2/3 for pdf cos/pi.
+    double sum = 0;
+    for (uint32_t i = 0; i < 4096; ++i) {
+        float x, y, z;
+        sampling::cosineHemisphere(sampling::sobol2D(i, 7u), x, y, z);
+        ASSERT_NEAR(x * x + y * y + z * z, 1.0f, 1e-5f);
+        sum += z;
+    }
+    EXPECT_NEAR(sum / 4096, 2.0 / 3.0, 1e-3);
+}
+
+TEST(Reference, OpenPlaneIsUnoccluded) {
+    const Scene s = floorScene(false);
+    EmbreeScene rt(s);
+    const Camera cam = lookDown({3, 0, -2}, 5.0f);
+    const ReferenceImage img = traceReference(rt, cam, 48, 32, {1.0f, 256});
+    long geo = 0;
+    for (size_t i = 0; i < img.ao.size(); ++i) {
+        ASSERT_EQ(img.geometry[i], 1.0f); // the floor fills the view
+        EXPECT_EQ(img.ao[i], 1.0f) << i;
+        EXPECT_EQ(img.stdErr[i], 0.0f);
+        ++geo;
+    }
+    EXPECT_EQ(geo, 48 * 32);
+    EXPECT_EQ(img.aoRays, 48L * 32 * 256);
+    // The primary hit's view depth is the camera height on a plane facing the camera.
+    EXPECT_NEAR(img.depth[16 * 48 + 24], 5.0f, 1e-4f);
+}
+
+TEST(Reference, FloorBesideAWallMatchesTheClosedForm) {
+    const Scene s = floorScene(true);
+    EmbreeScene rt(s);
+    const float R = 1.0f;
+    const Camera cam = lookDown({0.6f, 0, 0}, 2.0f, 40.0f); // x in ~[-0.13, 1.33] at the floor
+    const int w = 64, h = 48;
+    for (auto variant : {ReferenceVariant::Visibility, ReferenceVariant::Obscurance}) {
+        const ReferenceImage img = traceReference(rt, cam, w, h, {R, 1024, variant});
+        double se = 0;
+        long n = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const size_t i = size_t(y) * w + x;
+                ASSERT_EQ(img.geometry[i], 1.0f);
+                const glm::vec3 p = hitPosition(cam, w, h, x, y, img.depth[i]);
+                if (std::abs(p.y) > 1e-3f || p.x < 1e-3f) continue; // the wall or behind it
+                const double ao = img.ao[i];
+                ASSERT_TRUE(std::isfinite(ao));
+                if (variant == ReferenceVariant::Visibility) {
+                    se += (ao - wallClosedForm(p.x, R)) * (ao - wallClosedForm(p.x, R));
+                } else {
+                    // Falloff only forgives occluders: never darker than binary visibility.
+                    EXPECT_GE(ao + 0.03, wallClosedForm(p.x, R)) << p.x;
+                }
+                ++n;
+            }
+        ASSERT_GT(n, w * h / 2);
+        if (variant == ReferenceVariant::Visibility) {
+            const double rmse = std::sqrt(se / n);
+            EXPECT_LT(rmse, 0.01) << "floor pixels " << n;
+            std::printf("floor beside a wall: RMSE %.5f over %ld pixels (1024 rays)\n", rmse, n);
+        }
+    }
+}
+
+TEST(Reference, InsideAClosedBoxSmallerThanRIsFullyOccluded) {
+    Scene s;
+    const float a = 0.5f; // box [-a, a]^3, diagonal 1.73 < R = 2
+    const glm::vec3 c[8] = {{-a, -a, -a}, {a, -a, -a}, {-a, a, -a}, {a, a, -a},
+                            {-a, -a, a},  {a, -a, a},  {-a, a, a},  {a, a, a}};
+    quad(s, c[0], c[4], c[6], c[2]);
+    quad(s, c[1], c[3], c[7], c[5]);
+    quad(s, c[0], c[1], c[5], c[4]);
+    quad(s, c[2], c[6], c[7], c[3]);
+    quad(s, c[0], c[2], c[3], c[1]);
+    quad(s, c[4], c[5], c[7], c[6]);
+    s.computeBounds();
+    EmbreeScene rt(s);
+    Camera cam;
+    cam.eye = {0.1f, 0.05f, 0.3f};
+    cam.target = {-0.2f, -0.1f, -1.0f};
+    cam.nearZ = 0.01f;
+    cam.farZ = 10.0f;
+    cam.fovYDeg = 90.0f;
+    const ReferenceImage img = traceReference(rt, cam, 40, 30, {2.0f, 128});
+    double sum = 0;
+    for (size_t i = 0; i < img.ao.size(); ++i) {
+        ASSERT_EQ(img.geometry[i], 1.0f);
+        sum += img.ao[i] * img.ao[i];
+    }
+    EXPECT_LT(std::sqrt(sum / img.ao.size()), 0.01); // no ray leaks through edges or corners
+}
+
+TEST(Reference, BitIdenticalAcrossThreadCountsAndBatches) {
+    const Scene s = floorScene(true);
+    EmbreeScene rt(s);
+    const Camera cam = lookDown({0.5f, 0, 0}, 1.5f);
+    ReferenceSettings one{0.8f, 96, ReferenceVariant::Visibility, 1};
+    ReferenceSettings two = one;
+    two.threads = 2;
+    const ReferenceImage a = traceReference(rt, cam, 40, 24, one);
+    ReferenceTracer progressive(rt, cam, 40, 24, two);
+    ASSERT_TRUE(progressive.addSamples(32));
+    ASSERT_TRUE(progressive.addSamples(64));
+    const ReferenceImage b = progressive.image();
+    EXPECT_EQ(b.samples, 96);
+    EXPECT_EQ(a.ao, b.ao);
+    EXPECT_EQ(a.depth, b.depth);
+    // And a different sample count is a different (but close) estimate.
+    const ReferenceImage c = traceReference(rt, cam, 40, 24, {0.8f, 64});
+    EXPECT_NE(a.ao, c.ao);
+}
+
+TEST(Reference, CancelStopsTheTracer) {
+    const Scene s = floorScene(true);
+    EmbreeScene rt(s);
+    std::atomic<bool> cancel{true};
+    ReferenceTracer t(rt, lookDown({0.5f, 0, 0}, 1.5f), 32, 32, {1.0f, 64});
+    EXPECT_FALSE(t.addSamples(64, &cancel));
+    EXPECT_THROW(t.addSamples(1), Error);
+}
+
+TEST(Reference, BadSettingsAreRefused) {
+    const Scene s = floorScene(false);
+    EmbreeScene rt(s);
+    const Camera cam = lookDown({0, 0, 0}, 1.0f);
+    EXPECT_THROW(ReferenceTracer(rt, cam, 8, 8, {0.0f, 8}), Error);
+    EXPECT_THROW(ReferenceTracer(rt, cam, 8, 8, {NAN, 8}), Error);
+    EXPECT_THROW(ReferenceTracer(rt, cam, 8, 8, {1.0f, 0}), Error);
+    EXPECT_THROW(ReferenceTracer(rt, cam, 0, 8, {1.0f, 8}), Error);
+    EXPECT_THROW(parseVariant("bent"), Error);
+}
+
+TEST(Reference, CacheReturnsTheSameFrameWithoutTracing) {
+    const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/refcache";
+    std::filesystem::remove_all(dir);
+    const Scene s = floorScene(true);
+    const Camera cam = lookDown({0.5f, 0, 0}, 1.5f);
+    ReferenceProvider provider(s, dir);
+    bool cached = true;
+    const ReferenceImage first = provider.get(cam, 24, 16, {0.8f, 64}, {}, &cached);
+    EXPECT_FALSE(cached);
+    ReferenceProvider again(s, dir); // a new run: no BVH unless it misses
+    const ReferenceImage second = again.get(cam, 24, 16, {0.8f, 64}, {}, &cached);
+    EXPECT_TRUE(cached);
+    EXPECT_EQ(first.ao, second.ao);
+    EXPECT_EQ(first.stdErr, second.stdErr);
+    EXPECT_EQ(first.depth, second.depth);
+    EXPECT_EQ(second.samples, 64);
+    // Any key change misses: radius, rays, variant, size, camera, scene content.
+    again.get(cam, 24, 16, {0.81f, 64}, {}, &cached);
+    EXPECT_FALSE(cached);
+    again.get(cam, 24, 16, {0.8f, 64, ReferenceVariant::Obscurance}, {}, &cached);
+    EXPECT_FALSE(cached);
+    Scene moved = s;
+    moved.vertices[0].position.x += 1e-3f;
+    EXPECT_NE(sceneContentHash(moved), sceneContentHash(s));
+}
