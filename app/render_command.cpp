@@ -1,7 +1,10 @@
 #include "render_command.h"
 
 #include "gl/context.h"
+#include "output/reference_report.h"
 #include "output/report.h"
+#include "progress_bar.h"
+#include "reference/reference_cache.h"
 #include "settings/params.h"
 #include "settings/preset.h"
 #include "settings/preset_store.h"
@@ -12,6 +15,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 namespace ssao {
 
@@ -35,6 +39,17 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_flag("--fit-range", o.fitRange,
                  "PNG previews: fit every buffer's range (as the app's 'fit range')");
     cmd.add_flag("--false-colour", o.falseColor, "PNG previews: scalar buffers in false colour");
+    cmd.add_flag("--reference", o.reference,
+                 "also ray trace the reference AO (Embree, cached) and write ao_reference, error.exr/png and "
+                 "the error metrics");
+    cmd.add_option("--reference-rays", o.referenceRays, "reference rays per pixel")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1 << 16));
+    cmd.add_option("--reference-variant", o.referenceVariant,
+                   "visibility (XeGTAO's: binary within R) or obscurance (linear falloff 1 - t/R)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"visibility", "obscurance"}));
+    cmd.add_flag("--no-cache", o.noCache, "trace the reference even if the cache holds it");
     cmd.add_option("--shaders", o.shaderDir,
                    "shader folder (default: the installed or source tree's shaders/)");
     cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)");
@@ -129,6 +144,37 @@ int runRender(const RenderOptions& o) {
     timing["total"] = total;
 
     nlohmann::json m = writeOutputs(r, o.out, info, first, timing);
+    char line[512] = "";
+    if (o.reference) {
+        const ReferenceSettings rs = referenceSettingsFor(r, o.referenceRays, parseVariant(o.referenceVariant));
+        ReferenceProvider provider(scene, o.noCache ? std::string() : referenceCacheDir());
+        bool cached = false;
+        ReferenceImage ref;
+        {
+            ProgressBar bar("reference " + std::to_string(w) + "x" + std::to_string(h) + " x " +
+                                std::to_string(rs.samples) + " rays",
+                            !o.quiet);
+            ref = provider.get(r.camera(), w, h, rs, [&](double f) { bar.update(f); }, &cached);
+        }
+        nlohmann::json e = writeReferenceOutputs(r, ref, rs, o.out);
+        e["error"]["reference"]["cached"] = cached;
+        m["error"] = e["error"];
+        m["error_raw"] = e["error_raw"];
+        std::ofstream(std::filesystem::path(o.out) / "metrics.json") << m.dump(2) << "\n";
+        {
+            const auto& j = m["error"];
+            std::snprintf(line, sizeof line, "reference (%s, R %.4g, %d rays%s): RMSE %.4f, MAE %.4f, bias %+.4f, PSNR %.2f dB "
+                        "(geometry, sRGB), %.2f dB full frame, SSIM %.4f; reference noise %.4f\n",
+                        rs.variant == ReferenceVariant::Visibility ? "visibility" : "obscurance", rs.radius,
+                        rs.samples,
+                        cached ? ", cached"
+                               : (", " + std::to_string(int(ref.raysPerSecond() * 1e-6 + 0.5)) + " Mrays/s")
+                                     .c_str(),
+                        j["rmse"].get<double>(), j["mae"].get<double>(), j["bias"].get<double>(),
+                        j["psnr_geometry_srgb"].get<double>(), j["psnr_full_srgb"].get<double>(),
+                        j["ssim"].get<double>(), j["reference"]["noise_rms"].get<double>());
+        }
+    }
     const std::string glErr = gl::pollGlErrors();
     if (gl::glErrorCount() > 0)
         throw Error("OpenGL reported " + std::to_string(gl::glErrorCount()) + " error(s) during the run" +
@@ -151,6 +197,7 @@ int runRender(const RenderOptions& o) {
         std::printf(" total %.3f", timing["total"].get<double>());
         std::printf("\nwrote %s/: one .exr per float buffer, one .png per buffer, metrics.json\n",
                     o.out.c_str());
+        if (o.reference) std::printf("%s", line);
     }
     long bad = 0;
     for (auto& [name, b] : m["buffers"].items())

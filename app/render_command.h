@@ -21,6 +21,10 @@ struct RenderOptions {
     std::string presetDir; // user presets (default: as the app)
     int timingFrames = 3;  // extra frames, all passes forced, averaged for gpu_ms
     bool fitRange = false, falseColor = false;
+    bool reference = false;        // also trace the reference AO and write the error
+    int referenceRays = 512;       // rays per pixel
+    std::string referenceVariant = "visibility";
+    bool noCache = false;          // trace even when the reference cache has this view
     bool verboseGl = false;
     bool quiet = false;
 };

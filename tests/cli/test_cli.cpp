@@ -237,3 +237,39 @@ TEST(Cli, NoDisplayFallsBackToHeadlessWithAHint) {
     EXPECT_NE(err.find("no display"), std::string::npos) << err;
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
 }
+
+TEST(Cli, RenderWithReferenceWritesTheErrorAndCachesTheTrace) {
+    const std::string out = outDir("reference"), cache = std::string(SSAOLAB_TEST_TMP) + "/cli_refcache";
+    std::filesystem::remove_all(out);
+    std::filesystem::remove_all(cache);
+    const std::string args = "render --scene " + std::string(SSAOLAB_SCENES_DIR) +
+                             "/CornellBox/cornellBox.gltf --size 160x90 --timing-frames 1 --reference "
+                             "--reference-rays 64 --out " + out;
+    // The cache goes to a folder of the test's own (ssaolab() has no environment hook).
+    const std::string cmd = "SSAOLAB_CACHE_DIR=" + cache + " '" + SSAOLAB_BINARY + "' " + args + " >" +
+                            out + ".log 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(out + ".log");
+    for (const char* f : {"ao_reference.exr", "ao_reference.png", "ao_reference_stderr.exr", "error.exr",
+                          "error.png", "metrics.json"})
+        EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
+    auto m = nlohmann::json::parse(slurp(out + "/metrics.json"));
+    const auto& e = m["error"];
+    EXPECT_GT(e["rmse"].get<double>(), 0.0);
+    EXPECT_LT(e["rmse"].get<double>(), 0.5);
+    EXPECT_GE(e["max_abs"].get<double>(), e["p99_abs"].get<double>());
+    EXPECT_GT(e["psnr_full_srgb"].get<double>(), e["psnr_geometry_srgb"].get<double>()); // sky flatters
+    EXPECT_EQ(e["nonfinite"], 0);
+    EXPECT_EQ(e["reference"]["variant"], "visibility");
+    EXPECT_EQ(e["reference"]["rays_per_pixel"], 64);
+    EXPECT_FALSE(e["reference"]["cached"].get<bool>());
+    EXPECT_GT(e["reference"]["noise_rms"].get<double>(), 0.0);
+    EXPECT_TRUE(m.contains("error_raw"));
+    EXPECT_NE(slurp(out + ".log").find("RMSE"), std::string::npos);
+    // Second run: the same view comes from the cache, with the same numbers.
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(out + ".log");
+    auto m2 = nlohmann::json::parse(slurp(out + "/metrics.json"));
+    EXPECT_TRUE(m2["error"]["reference"]["cached"].get<bool>());
+    EXPECT_EQ(m2["error"]["rmse"], e["rmse"]);
+    // A bad variant is one clear line.
+    expectCleanFailure(ssaolab("render --reference --reference-variant bent --out " + out), "bent");
+}

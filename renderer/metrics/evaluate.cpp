@@ -1,0 +1,85 @@
+#include "metrics/evaluate.h"
+
+#include "reference/reference_cache.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ssao {
+
+Evaluation evaluate(const Image& ao, const ReferenceImage& ref, const MetricsOptions& opt) {
+    Evaluation e;
+    const int w = ref.width, h = ref.height;
+    e.test = Image{w, h, 1, std::vector<float>(size_t(w) * h)};
+    e.error = Image{w, h, 1, std::vector<float>(size_t(w) * h, 0.0f)};
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * w + x;
+            const float v = ao.at(mapPixel(x, w, ao.width), mapPixel(y, h, ao.height));
+            e.test.data[i] = v;
+            if (ref.geometry[i] > 0.0f) e.error.data[i] = v - ref.ao[i];
+        }
+    MetricsInput in;
+    in.width = w;
+    in.height = h;
+    in.test = e.test.data.data();
+    in.reference = ref.ao.data();
+    in.geometry = ref.geometry.data();
+    in.depth = ref.depth.data();
+    in.referenceStdErr = ref.stdErr.data();
+    e.metrics = computeErrorMetrics(in, opt);
+    return e;
+}
+
+Image errorHeatmap(const Image& error, const std::vector<float>& geometry, float range) {
+    Image out{error.width, error.height, 3, std::vector<float>(size_t(error.width) * error.height * 3)};
+    for (size_t i = 0; i < size_t(error.width) * error.height; ++i) {
+        float r = 0.5f, g = 0.5f, b = 0.5f;
+        if (geometry[i] > 0.0f) {
+            const float e = error.data[i];
+            if (!std::isfinite(e)) {
+                r = 1.0f, g = 0.0f, b = 1.0f; // magenta: the AO itself was NaN/inf
+            } else {
+                const float t = std::clamp(e / range, -1.0f, 1.0f);
+                // white → red for t > 0, white → blue for t < 0
+                r = t < 0.0f ? 1.0f + t : 1.0f;
+                b = t > 0.0f ? 1.0f - t : 1.0f;
+                g = 1.0f - std::abs(t);
+            }
+        }
+        out.data[3 * i] = r, out.data[3 * i + 1] = g, out.data[3 * i + 2] = b;
+    }
+    return out;
+}
+
+namespace {
+nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+} // namespace
+
+nlohmann::json metricsJson(const ErrorMetrics& m, const ReferenceImage& ref, const ReferenceSettings& s) {
+    return {{"rmse", num(m.rmse)},
+            {"mae", num(m.mae)},
+            {"bias", num(m.bias)},
+            {"p99_abs", num(m.p99Abs)},
+            {"max_abs", num(m.maxAbs)},
+            {"psnr_geometry_srgb", num(m.psnrGeometrySrgb)},
+            {"psnr_full_srgb", num(m.psnrFullSrgb)},
+            {"rmse_edge", num(m.rmseEdge)},
+            {"rmse_interior", num(m.rmseInterior)},
+            {"ssim", num(m.ssim)},
+            {"nonfinite", m.nonFinite},
+            {"pixels", {{"all", m.pixels}, {"geometry", m.geometryPixels}, {"edge", m.edgePixels},
+                        {"interior", m.interiorPixels}}},
+            {"reference",
+             {{"definition", kReferenceDefinition},
+              {"variant", variantName(s.variant)},
+              {"radius", s.radius},
+              {"rays_per_pixel", ref.samples},
+              {"noise_rms", num(m.referenceNoise)},
+              {"trace_seconds", ref.seconds},
+              {"mrays_per_second", ref.raysPerSecond() * 1e-6}}},
+            {"notes", "geometry pixels are the reference's primary hits; bias = mean(test - reference), + = "
+                      "too bright; edge = within 3 px of a depth discontinuity; PSNR and SSIM on sRGB-encoded AO"}};
+}
+
+} // namespace ssao

@@ -1,0 +1,38 @@
+#include "output/reference_report.h"
+
+#include <filesystem>
+
+namespace ssao {
+
+ReferenceSettings referenceSettingsFor(const Renderer& r, int rays, ReferenceVariant variant) {
+    ReferenceSettings s;
+    s.radius = r.radiusAtCentre().world;
+    s.samples = rays;
+    s.variant = variant;
+    return s;
+}
+
+nlohmann::json writeReferenceOutputs(const Renderer& r, const ReferenceImage& ref, const ReferenceSettings& s,
+                                     const std::string& dir) {
+    auto path = [&](const std::string& f) { return (std::filesystem::path(dir) / f).string(); };
+    const Image ao = readBack(r.texture("ao.denoised"), 1);
+    const Image raw = readBack(r.texture("ao.raw"), 1);
+    const Evaluation e = evaluate(ao, ref);
+    const Evaluation eRaw = evaluate(raw, ref);
+
+    const Image refImg{ref.width, ref.height, 1, ref.ao};
+    writeExr(refImg, path("ao_reference.exr"));
+    writePng(refImg, path("ao_reference.png"));
+    writeExr(Image{ref.width, ref.height, 1, ref.stdErr}, path("ao_reference_stderr.exr"));
+    writeExr(e.error, path("error.exr"));
+    writePng(errorHeatmap(e.error, ref.geometry), path("error.png"));
+    nlohmann::json j;
+    j["error"] = metricsJson(e.metrics, ref, s);
+    j["error"]["files"] = {"ao_reference.exr", "ao_reference.png", "ao_reference_stderr.exr", "error.exr",
+                           "error.png"};
+    j["error"]["heatmap"] = "error.png: blue = too dark, red = too bright, white = 0, saturates at 0.25";
+    j["error_raw"] = metricsJson(eRaw.metrics, ref, s);
+    return j;
+}
+
+} // namespace ssao

@@ -1,0 +1,22 @@
+// Writes a frame's judgement against the reference: ao_reference.exr/.png, the reference's
+// per-pixel standard error, the signed error (error.exr, heat map error.png) and the metrics.
+#pragma once
+#include "metrics/evaluate.h"
+#include "renderer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace ssao {
+
+// The reference settings a frame is judged with: R = the AO's world radius (for
+// ao.radius_mode=screen, the world radius at the centre of the view).
+ReferenceSettings referenceSettingsFor(const Renderer& r, int rays, ReferenceVariant variant);
+
+// Evaluates ao.denoised (and ao.raw) of the current frame; writes the files into `dir`; returns
+// {"error": metrics of ao.denoised, "error_raw": metrics of ao.raw}.
+nlohmann::json writeReferenceOutputs(const Renderer& r, const ReferenceImage& ref, const ReferenceSettings& s,
+                                     const std::string& dir);
+
+} // namespace ssao
