@@ -134,8 +134,8 @@ double ssim(const float* a, const float* b, int width, int height) {
             const double ua = q[0], ub = q[1];
             // Population moments: E[x^2] - E[x]^2 (skimage's use_sample_covariance=False).
             const double va = q[2] - ua * ua, vb = q[3] - ub * ub, cab = q[4] - ua * ub;
-            total += ((2.0 * ua * ub + kC1) * (2.0 * cab + kC2)) /
-                     ((ua * ua + ub * ub + kC1) * (va + vb + kC2));
+            total +=
+                ((2.0 * ua * ub + kC1) * (2.0 * cab + kC2)) / ((ua * ua + ub * ub + kC1) * (va + vb + kC2));
         }
     }
     return total / double(nx * ty.size());
@@ -173,7 +173,8 @@ std::vector<unsigned char> edgeMask(const float* geometry, const float* depth, i
 }
 
 ErrorMetrics computeErrorMetrics(const MetricsInput& in, const MetricsOptions& opt) {
-    if (in.width < 0 || in.height < 0) throw std::invalid_argument("computeErrorMetrics: negative image size");
+    if (in.width < 0 || in.height < 0)
+        throw std::invalid_argument("computeErrorMetrics: negative image size");
     const size_t n = size_t(in.width) * size_t(in.height);
     if (n > 0 && (in.test == nullptr || in.reference == nullptr))
         throw std::invalid_argument("computeErrorMetrics: test and reference images are required");

@@ -31,16 +31,18 @@ struct ErrorMetrics {
     // Test pixels (over the whole frame) that are NaN or ±inf. Every metric treats such a value as
     // 1.0 (unoccluded: what an R8 target would show, white), so the other numbers stay finite.
     long nonFinite = 0;
-    // Over geometry pixels, linear AO (all 0 when there is no geometry):
-    double rmse = 0, mae = 0, bias = 0; // bias = mean(test - reference): + means under-occlusion (too bright)
-    double p99Abs = 0, maxAbs = 0;      // 99th percentile (linear interpolation, as numpy) and max of |test-ref|
-    double psnrGeometrySrgb = 0;        // PSNR (peak 1) of sRGB-encoded AO over geometry pixels (cap if none)
-    double psnrFullSrgb = 0;            // XeGTAO's headline: sRGB-encoded, whole frame including sky
+    // Over geometry pixels, linear AO (all 0 when there is no geometry).
+    // bias = mean(test - reference): + means under-occlusion (too bright).
+    double rmse = 0, mae = 0, bias = 0;
+    double p99Abs = 0, maxAbs = 0; // 99th percentile (linear interpolation, as numpy), max of |test-ref|
+    double psnrGeometrySrgb = 0;   // PSNR (peak 1) of sRGB-encoded AO over geometry pixels (cap if none)
+    double psnrFullSrgb = 0;       // XeGTAO's headline: sRGB-encoded, whole frame including sky
     // RMSE (linear) over geometry pixels within edgeRadiusPx of a discontinuity / over the rest.
     // NaN when that set is empty (or depth is null): there is no meaningful value, and 0 would lie.
     double rmseEdge = 0, rmseInterior = 0;
-    double ssim = 0;           // mean SSIM (Wang et al. 2004) of the sRGB-encoded AO, whole frame
-    double referenceNoise = 0; // RMS of referenceStdErr over geometry pixels (the reference's own noise floor)
+    double ssim = 0; // mean SSIM (Wang et al. 2004) of the sRGB-encoded AO, whole frame
+    // RMS of referenceStdErr over geometry pixels: the reference's own noise floor.
+    double referenceNoise = 0;
 };
 
 // IEC 61966-2-1 sRGB encoding (piecewise: 12.92 v below 0.0031308, else 1.055 v^(1/2.4) - 0.055),
