@@ -1,5 +1,7 @@
 // ssaolab command line: `view` (window), `render` (headless), `params` (the parameter table).
 // Without a subcommand: the window when there is a display, else a headless render into out/.
+#include "bench/bench_command.h"
+#include "bench/tune_command.h"
 #include "render_command.h"
 #include "scene/builtin_scenes.h"
 #include "settings/params.h"
@@ -45,6 +47,14 @@ int main(int argc, char** argv) {
     CLI::App* render =
         app.add_subcommand("render", "render a scene headless (EGL) into EXR/PNG buffers and metrics.json");
     ssao::addRenderOptions(*render, ro);
+    ssao::BenchOptions bo;
+    CLI::App* bench = app.add_subcommand(
+        "bench", "run time against error: every configuration of a sweep against the ray-traced reference");
+    ssao::addBenchOptions(*bench, bo);
+    ssao::TuneOptions to;
+    CLI::App* tune = app.add_subcommand(
+        "tune", "fit one technique's parameters to the ray-traced reference; report held-out views; save JSON");
+    ssao::addTuneOptions(*tune, to);
     app.add_subcommand("params", "list every parameter: key, default, unit, range, help");
     app.add_subcommand("paths", "where this binary finds its shaders, assets and presets");
     ssao::WindowOptions wo;
@@ -82,6 +92,8 @@ int main(int argc, char** argv) {
                         ssao::PresetStore::defaultUserDir().c_str());
             return 0;
         }
+        if (app.got_subcommand("bench")) return ssao::runBench(bo);
+        if (app.got_subcommand("tune")) return ssao::runTune(to);
         if (app.got_subcommand("view") || (!app.got_subcommand("render") && ssao::haveDisplay())) {
             int used = 0;
             if (std::sscanf(windowSize.c_str(), "%dx%d%n", &wo.width, &wo.height, &used) != 2 ||

@@ -24,6 +24,8 @@ struct CliRun {
 
 CliRun ssaolab(const std::string& args) {
     std::filesystem::create_directories(SSAOLAB_TEST_TMP);
+    // Reference traces are cached inside the build tree, not in the user's ~/.cache.
+    ::setenv("SSAOLAB_CACHE_DIR", (std::string(SSAOLAB_TEST_TMP) + "/cache").c_str(), 0);
     const std::string base = std::string(SSAOLAB_TEST_TMP) + "/cli_" + std::to_string(::getpid());
     const std::string cmd =
         std::string("'") + SSAOLAB_BINARY + "' " + args + " >" + base + ".out 2>" + base + ".err </dev/null";
@@ -272,4 +274,81 @@ TEST(Cli, RenderWithReferenceWritesTheErrorAndCachesTheTrace) {
     EXPECT_EQ(m2["error"]["rmse"], e["rmse"]);
     // A bad variant is one clear line.
     expectCleanFailure(ssaolab("render --reference --reference-variant bent --out " + out), "bent");
+}
+
+TEST(Cli, BenchWritesResultsTheFrontAndRatiosToTheBaseline) {
+    const std::string out = outDir("bench");
+    std::filesystem::remove_all(out);
+    const std::string sweep = writeTemp("small_sweep.json", R"({
+      "name": "small", "base": {"set": {"kernel.noise": "tex4x4"}},
+      "groups": [{"name": "samples", "vary": {"kernel.samples": [4, 32]}},
+                 {"name": "blur", "set": {"kernel.samples": 8}, "vary": {"denoise.kind": ["none", "gaussian"]}}]})");
+    CliRun r = ssaolab("bench --scene " + std::string(SSAOLAB_SCENES_DIR) +
+                       "/CornellBox/cornellBox.gltf --sweep " + sweep +
+                       " --size 160x90 --views 2 --frames 2 --warmup 0 --reference-rays 16 --quiet --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    for (const char* f : {"results.csv", "summary.csv", "results.json", "report.md", "pareto.png", "pareto.svg"})
+        EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
+    auto j = nlohmann::json::parse(slurp(out + "/results.json"));
+    // baseline + 2 + 2 (+ every technique at its defaults, 64 samples: not a duplicate here).
+    const auto& cfgs = j["configurations"];
+    ASSERT_GE(cfgs.size(), 5u);
+    EXPECT_EQ(cfgs[0]["label"], "learnopengl (baseline)");
+    EXPECT_EQ(cfgs[0]["time_ratio"], 1.0);
+    EXPECT_EQ(cfgs[0]["rmse_ratio"], 1.0);
+    EXPECT_EQ(j["results"].size(), cfgs.size() * 2); // two views each
+    int front = 0;
+    for (const auto& c : cfgs) {
+        EXPECT_GT(c["gpu_ms"].get<double>(), 0.0) << c["label"];
+        EXPECT_LE(c["gpu_ms_min"].get<double>(), c["gpu_ms"].get<double>());
+        EXPECT_GE(c["gpu_ms_max"].get<double>(), c["gpu_ms"].get<double>());
+        EXPECT_GT(c["rmse"].get<double>(), 0.0);
+        EXPECT_LT(c["rmse"].get<double>(), 0.6);
+        EXPECT_EQ(c["nonfinite"], 0);
+        front += c["pareto"].get<bool>();
+    }
+    EXPECT_GE(front, 1);
+    // The front is consistent: no configuration is both faster and more accurate than a front member.
+    for (const auto& a : cfgs) {
+        if (!a["pareto"].get<bool>()) continue;
+        for (const auto& b : cfgs) {
+            EXPECT_FALSE(b["gpu_ms"].get<double>() < a["gpu_ms"].get<double>() &&
+                         b["rmse"].get<double>() < a["rmse"].get<double>())
+                << a["label"] << " is dominated by " << b["label"];
+        }
+    }
+    for (const char* k : {"cpu", "gl_renderer", "build_type", "date", "git_revision"})
+        EXPECT_TRUE(j.contains(k)) << k;
+    const std::string md = slurp(out + "/report.md");
+    EXPECT_NE(md.find("Pareto front"), std::string::npos);
+    EXPECT_NE(md.find("learnopengl (baseline)"), std::string::npos);
+    EXPECT_NE(slurp(out + "/results.csv").find("scene,viewpoint,label"), std::string::npos);
+    // Bad sweeps: one clear line each.
+    expectCleanFailure(ssaolab("bench --sweep " + writeTemp("bad1.json", "{\"groups\": [{\"vary\": {\"kernel.nope\": [1]}}]}")),
+                       "kernel.nope");
+    expectCleanFailure(ssaolab("bench --sweep " + writeTemp("bad2.json", "{\"groups\": [{\"set\": {\"ao.radius\": 2}}]}")),
+                       "radius");
+    expectCleanFailure(ssaolab("bench --sweep " + writeTemp("bad3.json", "{not json")), "not valid JSON");
+    expectCleanFailure(ssaolab("bench --sweep /nonexistent.json"), "cannot open");
+}
+
+TEST(Cli, TuneFitsTheReferenceAndSavesAPresetThatRenders) {
+    const std::string preset = std::string(SSAOLAB_TEST_TMP) + "/tuned.json";
+    std::filesystem::remove(preset);
+    CliRun r = ssaolab("tune --scene builtin:showcase --size 160x90 --views 2 --rounds 1 --grid 3 "
+                       "--reference-rays 16 --out " + preset);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("held-out"), std::string::npos) << r.out;
+    // The search starts from the defaults and keeps the best, so training error never rises.
+    double before = 0, after = 0;
+    ASSERT_EQ(std::sscanf(r.out.substr(r.out.find("training")).c_str(), "training %lf -> %lf", &before, &after), 2)
+        << r.out;
+    EXPECT_LE(after, before);
+    auto j = nlohmann::json::parse(slurp(preset));
+    EXPECT_EQ(j["ao"]["radius_mode"], "scene");
+    EXPECT_NE(j["description"].get<std::string>().find("held-out"), std::string::npos);
+    CliRun again = ssaolab("render --preset " + preset + " --size 160x90 --timing-frames 1 --quiet --out " +
+                           outDir("tuned"));
+    EXPECT_EQ(again.exitCode, 0) << again.err;
+    expectCleanFailure(ssaolab("tune --technique nope"), "nope");
 }

@@ -1,0 +1,221 @@
+#include "bench/bench_report.h"
+
+#include "util/error.h"
+#include "util/paths.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace ssao {
+
+namespace {
+
+std::string csvField(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s)
+        q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+
+std::string num(double v, int digits = 6) {
+    if (!std::isfinite(v)) return "";
+    char b[32];
+    std::snprintf(b, sizeof b, "%.*g", digits, v);
+    return b;
+}
+
+nlohmann::json jnum(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+const char* kMetricHeader = "gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,p99_abs,max_abs,psnr_geometry_srgb,"
+                            "psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,reference_noise";
+
+std::string metricCells(const ViewResult& v) {
+    const ErrorMetrics& e = v.error;
+    return num(v.gpuMs) + "," + num(v.gpuMsMin) + "," + num(v.gpuMsMax) + "," + num(e.rmse) + "," + num(e.mae) +
+           "," + num(e.bias) + "," + num(e.p99Abs) + "," + num(e.maxAbs) + "," + num(e.psnrGeometrySrgb) + "," +
+           num(e.psnrFullSrgb) + "," + num(e.rmseEdge) + "," + num(e.rmseInterior) + "," + num(e.ssim) + "," +
+           std::to_string(e.nonFinite) + "," + num(e.referenceNoise);
+}
+
+} // namespace
+
+size_t fastestAtMostBaselineError(const BenchRun& run) {
+    const double base = run.summary[run.sweep->baseline].rmse;
+    size_t best = std::string::npos;
+    for (const auto& s : run.summary)
+        if (s.config != run.sweep->baseline && std::isfinite(s.rmse) && s.rmse <= base &&
+            (best == std::string::npos || s.gpuMs < run.summary[best].gpuMs))
+            best = s.config;
+    return best;
+}
+
+size_t mostAccurate(const BenchRun& run) {
+    size_t best = std::string::npos;
+    for (const auto& s : run.summary)
+        if (std::isfinite(s.rmse) && (best == std::string::npos || s.rmse < run.summary[best].rmse))
+            best = s.config;
+    return best;
+}
+
+void writeBenchFiles(const BenchRun& run, const std::string& dir) {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec) throw Error("cannot create " + dir + ": " + ec.message());
+    const auto& cfgs = run.sweep->configs;
+    {
+        std::ofstream f(fs::path(dir) / "results.csv");
+        f << "scene,viewpoint,label,technique,baseline,pareto," << kMetricHeader << ",settings\n";
+        for (const auto& v : run.views) {
+            const BenchConfig& c = cfgs[v.config];
+            f << csvField(v.scene) << "," << csvField(v.viewpoint) << "," << csvField(c.label) << ","
+              << c.settings.ao.technique << "," << c.baseline << "," << run.summary[v.config].pareto
+              << "," << metricCells(v) << "," << csvField(c.keys.dump()) << "\n";
+        }
+        if (!f) throw Error("cannot write " + dir + "/results.csv");
+    }
+    {
+        std::ofstream f(fs::path(dir) / "summary.csv");
+        f << "label,technique,baseline,pareto,views,gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,"
+             "psnr_geometry_srgb,psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,time_ratio,rmse_ratio,"
+             "settings\n";
+        for (const auto& s : run.summary) {
+            const BenchConfig& c = cfgs[s.config];
+            f << csvField(c.label) << "," << c.settings.ao.technique << "," << c.baseline << ","
+              << s.pareto << "," << s.views << "," << num(s.gpuMs) << "," << num(s.gpuMsMin) << ","
+              << num(s.gpuMsMax) << "," << num(s.rmse) << "," << num(s.mae) << "," << num(s.bias) << ","
+              << num(s.psnrGeometrySrgb) << "," << num(s.psnrFullSrgb) << "," << num(s.rmseEdge) << ","
+              << num(s.rmseInterior) << "," << num(s.ssim) << "," << s.nonFinite << "," << num(s.timeRatio)
+              << "," << num(s.rmseRatio) << "," << csvField(c.keys.dump()) << "\n";
+        }
+        if (!f) throw Error("cannot write " + dir + "/summary.csv");
+    }
+    nlohmann::json j = run.facts;
+    j["sweep"] = {{"name", run.sweep->name}, {"description", run.sweep->description}};
+    for (const auto& s : run.summary) {
+        const BenchConfig& c = cfgs[s.config];
+        j["configurations"].push_back({{"label", c.label},
+                                       {"group", c.group},
+                                       {"keys", c.keys},
+                                       {"baseline", c.baseline},
+                                       {"pareto", s.pareto},
+                                       {"views", s.views},
+                                       {"gpu_ms", jnum(s.gpuMs)},
+                                       {"gpu_ms_min", jnum(s.gpuMsMin)},
+                                       {"gpu_ms_max", jnum(s.gpuMsMax)},
+                                       {"rmse", jnum(s.rmse)},
+                                       {"mae", jnum(s.mae)},
+                                       {"bias", jnum(s.bias)},
+                                       {"psnr_geometry_srgb", jnum(s.psnrGeometrySrgb)},
+                                       {"psnr_full_srgb", jnum(s.psnrFullSrgb)},
+                                       {"rmse_edge", jnum(s.rmseEdge)},
+                                       {"rmse_interior", jnum(s.rmseInterior)},
+                                       {"ssim", jnum(s.ssim)},
+                                       {"nonfinite", s.nonFinite},
+                                       {"time_ratio", jnum(s.timeRatio)},
+                                       {"rmse_ratio", jnum(s.rmseRatio)}});
+    }
+    for (const auto& v : run.views)
+        j["results"].push_back({{"scene", v.scene},
+                                {"viewpoint", v.viewpoint},
+                                {"label", cfgs[v.config].label},
+                                {"gpu_ms", jnum(v.gpuMs)},
+                                {"gpu_ms_min", jnum(v.gpuMsMin)},
+                                {"gpu_ms_max", jnum(v.gpuMsMax)},
+                                {"rmse", jnum(v.error.rmse)},
+                                {"mae", jnum(v.error.mae)},
+                                {"bias", jnum(v.error.bias)},
+                                {"p99_abs", jnum(v.error.p99Abs)},
+                                {"max_abs", jnum(v.error.maxAbs)},
+                                {"psnr_geometry_srgb", jnum(v.error.psnrGeometrySrgb)},
+                                {"psnr_full_srgb", jnum(v.error.psnrFullSrgb)},
+                                {"rmse_edge", jnum(v.error.rmseEdge)},
+                                {"rmse_interior", jnum(v.error.rmseInterior)},
+                                {"ssim", jnum(v.error.ssim)},
+                                {"nonfinite", v.error.nonFinite},
+                                {"reference_noise", jnum(v.error.referenceNoise)}});
+    std::ofstream(fs::path(dir) / "results.json") << j.dump(2) << "\n";
+    std::ofstream(fs::path(dir) / "report.md") << benchMarkdown(run, "pareto.png");
+}
+
+std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
+    const auto& cfgs = run.sweep->configs;
+    const ConfigSummary& base = run.summary[run.sweep->baseline];
+    const nlohmann::json& f = run.facts;
+    std::ostringstream md;
+    md << "Run: " << f.value("date", "") << ", git " << f.value("git_revision", "") << ", "
+       << f.value("build_type", "") << " build; GL renderer **" << f.value("gl_renderer", "") << "** on "
+       << f.value("cpu", "") << " (" << f.value("hardware_threads", 0) << " threads); " << f.value("size", "")
+       << "; " << f.value("frames", 0) << " timed frames per configuration and view (median) after "
+       << f.value("warmup", 0) << " warm-up; reference " << f["reference"].value("variant", "") << ", "
+       << f["reference"].value("rays", 0) << " rays per pixel, R = " << f["reference"].value("radius_scene", 0.0)
+       << " x the scene diagonal.\n\nScenes and viewpoints: ";
+    for (const auto& s : f["scenes"])
+        md << s.value("name", "") << " (" << s["viewpoints"].size() << " views, R " << num(s.value("radius", 0.0), 4)
+           << "), ";
+    md << "\n\n![time against error](" << plotFile << ")\n\n";
+    md << "Baseline: **" << cfgs[run.sweep->baseline].label << "**: " << num(base.gpuMs, 4)
+       << " ms AO + denoise, geometry RMSE " << num(base.rmse, 4) << ", PSNR " << num(base.psnrGeometrySrgb, 4)
+       << " dB (geometry, sRGB), " << num(base.psnrFullSrgb, 4) << " dB full frame.\n\n";
+    const size_t cheap = fastestAtMostBaselineError(run), best = mostAccurate(run);
+    if (cheap != std::string::npos)
+        md << "Fastest configuration at most as wrong as the baseline: **" << cfgs[cheap].label << "**: "
+           << num(run.summary[cheap].gpuMs, 4) << " ms (" << num(run.summary[cheap].timeRatio, 3)
+           << "x the baseline's time), RMSE " << num(run.summary[cheap].rmse, 4) << " ("
+           << num(run.summary[cheap].rmseRatio, 3) << "x).\n\n";
+    if (best != std::string::npos)
+        md << "Lowest error: **" << cfgs[best].label << "**: RMSE " << num(run.summary[best].rmse, 4) << " ("
+           << num(run.summary[best].rmseRatio, 3) << "x the baseline's) in " << num(run.summary[best].gpuMs, 4)
+           << " ms (" << num(run.summary[best].timeRatio, 3) << "x).\n\n";
+    auto table = [&](bool frontOnly) {
+        md << "| configuration | AO+denoise ms | x baseline | RMSE | x baseline | bias | PSNR geo dB | PSNR full dB "
+              "| SSIM | edge RMSE | interior RMSE | front |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
+        std::vector<const ConfigSummary*> rows;
+        for (const auto& s : run.summary)
+            if (!frontOnly || s.pareto || s.config == run.sweep->baseline) rows.push_back(&s);
+        std::sort(rows.begin(), rows.end(), [](auto* a, auto* b) { return a->gpuMs < b->gpuMs; });
+        for (const ConfigSummary* s : rows)
+            md << "| " << cfgs[s->config].label << " | " << num(s->gpuMs, 4) << " | " << num(s->timeRatio, 3)
+               << " | " << num(s->rmse, 4) << " | " << num(s->rmseRatio, 3) << " | " << num(s->bias, 3) << " | "
+               << num(s->psnrGeometrySrgb, 4) << " | " << num(s->psnrFullSrgb, 4) << " | " << num(s->ssim, 4)
+               << " | " << num(s->rmseEdge, 4) << " | " << num(s->rmseInterior, 4) << " | "
+               << (s->pareto ? "yes" : "") << " |\n";
+    };
+    md << "### Pareto front (and the baseline), fastest first\n\n";
+    table(true);
+    md << "\n### Every configuration\n\n";
+    table(false);
+    md << "\nTime: GPU timer queries (GL_TIME_ELAPSED) of every pass but the G-buffer and the composite, "
+          "mean over views of each view's median. RMSE: linear AO over the reference's geometry pixels, "
+          "sqrt of the mean MSE over views; PSNR of the mean sRGB MSE over views (XeGTAO's averaging); bias = "
+          "mean(SSAO - reference), + = too bright.\n";
+    return md.str();
+}
+
+bool plotBench(const std::string& dir, const std::string& title, bool quiet) {
+    std::string script = dataRoot() + "/app/bench/plot_pareto.py";
+    if (!fs::exists(script)) script = dataRoot() + "/bench/plot_pareto.py"; // installed layout
+    // Debian's python3 (python3-matplotlib) first: a pyenv/venv python3 on PATH may lack matplotlib.
+    const std::string py = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+    std::string t = title;
+    for (auto& c : t)
+        if (c == '\'') c = ' ';
+    const std::string cmd = py + " '" + script + "' --summary '" + dir + "/summary.csv' --results '" + dir +
+                            "/results.csv' --out '" + dir + "/pareto' --title '" + t + "'" +
+                            (quiet ? " >/dev/null" : "");
+    const int rc = std::system(cmd.c_str());
+    if (rc != 0) {
+        std::fprintf(stderr, "note: the plot was not drawn (%s failed; install python3-matplotlib); the CSV, "
+                             "JSON and report.md are complete\n",
+                     script.c_str());
+        return false;
+    }
+    return true;
+}
+
+} // namespace ssao

@@ -1,0 +1,33 @@
+// Writes a benchmark's results: results.csv (per view), summary.csv (per configuration),
+// results.json (both, with the run's facts), report.md (the Pareto front and every row against
+// the baseline) and the plot through plot_pareto.py.
+#pragma once
+#include "bench/sweep.h"
+#include "metrics/bench_summary.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace ssao {
+
+struct BenchRun {
+    nlohmann::json facts; // runFacts() + size, frames, reference, scenes...
+    const Sweep* sweep = nullptr;
+    std::vector<ViewResult> views;
+    std::vector<ConfigSummary> summary;
+};
+
+void writeBenchFiles(const BenchRun& run, const std::string& dir);
+// Markdown: the run's facts, the front, the headline sentences and the full table.
+std::string benchMarkdown(const BenchRun& run, const std::string& plotFile);
+// Runs plot_pareto.py; returns false (after printing one line) when Python/matplotlib is missing.
+bool plotBench(const std::string& dir, const std::string& title, bool quiet);
+
+// The rows quoted in the closing line: the best configuration whose error is at most the
+// baseline's (fastest such), and the lowest-error configuration. npos when none.
+size_t fastestAtMostBaselineError(const BenchRun& run);
+size_t mostAccurate(const BenchRun& run);
+
+} // namespace ssao

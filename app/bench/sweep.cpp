@@ -1,0 +1,173 @@
+#include "bench/sweep.h"
+
+#include "settings/params.h"
+#include "settings/preset.h"
+#include "settings/preset_store.h"
+#include "techniques/technique.h"
+#include "util/error.h"
+#include "util/paths.h"
+
+#include <fstream>
+#include <set>
+
+namespace ssao {
+
+bool isRadiusKey(const std::string& key) {
+    for (const auto& k : radiusKeys())
+        if (k == key) return true;
+    return false;
+}
+
+namespace {
+
+std::string valueText(const nlohmann::json& v) {
+    return v.is_string() ? v.get<std::string>() : v.dump();
+}
+
+// Applies {"key": value} (values as JSON scalars) through the parameter table's parser.
+void applyKeys(Settings& s, const nlohmann::json& keys, const std::string& where) {
+    if (!keys.is_object()) throw Error(where + ": expected an object of \"key\": value");
+    for (auto& [k, v] : keys.items()) {
+        if (isRadiusKey(k))
+            throw Error(where + ": '" + k + "' is the radius, which the bench sets (the reference's R); use "
+                                           "--radius-scene");
+        if (!v.is_primitive() || v.is_null()) throw Error(where + ": '" + k + "' needs a number, bool or string");
+        try {
+            setParam(s, k, valueText(v));
+        } catch (const Error& e) {
+            throw Error(where + ": " + e.what());
+        }
+    }
+}
+
+std::string shortKey(const std::string& key) {
+    const auto dot = key.rfind('.');
+    return dot == std::string::npos ? key : key.substr(dot + 1);
+}
+
+std::string labelOf(const nlohmann::json& keys) {
+    std::string l;
+    for (auto& [k, v] : keys.items())
+        l += (l.empty() ? "" : " ") + shortKey(k) + "=" + valueText(v);
+    return l.empty() ? "defaults" : l;
+}
+
+} // namespace
+
+Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::string& presetDir,
+                 size_t maxConfigs) {
+    if (!j.is_object()) throw Error(origin + ": a sweep is a JSON object");
+    for (auto& [k, v] : j.items())
+        if (k != "name" && k != "description" && k != "base" && k != "groups")
+            throw Error(origin + ": unknown key '" + k + "' (name, description, base, groups)");
+    Sweep sw;
+    sw.name = j.value("name", std::string("sweep"));
+    sw.description = j.value("description", std::string());
+    const PresetStore store = PresetStore::standard(presetDir);
+    Settings base = defaultSettings();
+    nlohmann::json baseKeys = nlohmann::json::object();
+    if (j.contains("base")) {
+        const auto& b = j["base"];
+        if (!b.is_object()) throw Error(origin + ": base: expected {\"preset\": ..., \"set\": {...}}");
+        const std::string preset = b.value("preset", std::string());
+        if (!preset.empty()) {
+            base = store.open(preset).settings;
+            resetRadius(base);
+        }
+        if (b.contains("set")) {
+            applyKeys(base, b["set"], origin + ": base.set");
+            baseKeys = b["set"];
+        }
+    }
+    std::set<std::string> seen;
+    auto add = [&](BenchConfig c) {
+        const std::string key = toEffectiveJson(c.settings).dump();
+        if (!seen.insert(key).second) return;
+        if (sw.configs.size() >= maxConfigs)
+            throw Error(origin + ": more than " + std::to_string(maxConfigs) + " configurations");
+        sw.configs.push_back(std::move(c));
+    };
+
+    // The baseline first, so every later row can be read against it.
+    BenchConfig baseline;
+    baseline.label = "learnopengl (baseline)";
+    baseline.group = "baseline";
+    baseline.settings = store.open("learnopengl").settings;
+    resetRadius(baseline.settings); // the bench's radius, like every configuration
+    baseline.keys = {{"preset", "learnopengl"}};
+    baseline.baseline = true;
+    add(baseline);
+
+    if (j.contains("groups")) {
+        const auto& groups = j["groups"];
+        if (!groups.is_array()) throw Error(origin + ": groups: expected an array");
+        for (size_t gi = 0; gi < groups.size(); ++gi) {
+            const auto& g = groups[gi];
+            const std::string gname = g.value("name", "group " + std::to_string(gi + 1));
+            const std::string where = origin + ": group '" + gname + "'";
+            for (auto& [k, v] : g.items())
+                if (k != "name" && k != "set" && k != "vary")
+                    throw Error(where + ": unknown key '" + k + "' (name, set, vary)");
+            Settings gs = base;
+            nlohmann::json gkeys = baseKeys;
+            if (g.contains("set")) {
+                applyKeys(gs, g["set"], where + ".set");
+                gkeys.update(g["set"]);
+            }
+            std::vector<std::pair<std::string, nlohmann::json>> axes;
+            if (g.contains("vary")) {
+                if (!g["vary"].is_object()) throw Error(where + ".vary: expected {\"key\": [values]}");
+                for (auto& [k, v] : g["vary"].items()) {
+                    if (!v.is_array() || v.empty()) throw Error(where + ".vary: '" + k + "' needs a non-empty list");
+                    axes.emplace_back(k, v);
+                }
+            }
+            // Odometer over the axes' lists.
+            std::vector<size_t> idx(axes.size(), 0);
+            for (;;) {
+                BenchConfig c;
+                c.group = gname;
+                c.settings = gs;
+                c.keys = gkeys;
+                for (size_t a = 0; a < axes.size(); ++a) {
+                    nlohmann::json one = {{axes[a].first, axes[a].second[idx[a]]}};
+                    applyKeys(c.settings, one, where + ".vary");
+                    c.keys.update(one);
+                }
+                c.label = labelOf(c.keys);
+                add(c);
+                size_t a = 0;
+                while (a < axes.size() && ++idx[a] == axes[a].second.size())
+                    idx[a++] = 0;
+                if (a == axes.size()) break;
+            }
+        }
+    }
+    // Every technique at its defaults: one added later is never missing from the front.
+    for (const auto& t : techniques()) {
+        BenchConfig c;
+        c.group = "technique defaults";
+        c.settings = base;
+        setParam(c.settings, "ao.technique", t.id);
+        c.keys = {{"ao.technique", t.id}};
+        c.label = t.id + " defaults";
+        add(c);
+    }
+    return sw;
+}
+
+Sweep loadSweep(const std::string& nameOrPath, const std::string& presetDir) {
+    const std::string path =
+        nameOrPath == "builtin" ? assetRoot() + "/bench/sweep_builtin.json" : nameOrPath;
+    std::ifstream in(path);
+    if (!in) throw Error("sweep " + path + ": cannot open");
+    nlohmann::json j;
+    try {
+        in >> j;
+    } catch (const std::exception& e) {
+        throw Error("sweep " + path + ": not valid JSON (" + e.what() + ")");
+    }
+    return parseSweep(j, "sweep " + path, presetDir);
+}
+
+} // namespace ssao

@@ -1,0 +1,42 @@
+// A benchmark sweep: a base preset plus groups of parameter lists whose products are the
+// configurations (JSON, assets/bench/sweep_builtin.json is the built-in one):
+//   {"name": "...", "base": {"preset": "learnopengl" | "" (defaults), "set": {"key": value}},
+//    "groups": [{"name": "...", "set": {"key": value}, "vary": {"key": [v1, v2], "key2": [...]}}]}
+// Each group yields base + set + every combination of its "vary" lists. Configurations whose
+// effective settings are equal are kept once; every registered technique at its defaults and the
+// `learnopengl` baseline are always added.
+#pragma once
+#include "settings/settings.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace ssao {
+
+struct BenchConfig {
+    std::string label;   // "samples=16 denoise=none"; the baseline is "learnopengl (baseline)"
+    std::string group;   // the sweep group it came from
+    Settings settings;   // before the bench's radius is applied
+    nlohmann::json keys; // {"kernel.samples": 16, ...}: what differs from the base
+    bool baseline = false;
+};
+
+struct Sweep {
+    std::string name, description;
+    std::vector<BenchConfig> configs;
+    size_t baseline = 0; // index of the baseline configuration
+};
+
+// Keys a sweep may not set: the bench gives every configuration the same radius (the reference's).
+bool isRadiusKey(const std::string& key);
+
+// Throws ssao::Error naming the file and the key on bad input (unknown key, bad value, radius key,
+// empty lists, more than `maxConfigs` configurations).
+Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::string& presetDir = "",
+                 size_t maxConfigs = 2000);
+// "builtin" or a JSON file path.
+Sweep loadSweep(const std::string& nameOrPath, const std::string& presetDir = "");
+
+} // namespace ssao

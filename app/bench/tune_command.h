@@ -1,0 +1,35 @@
+// `ssaolab tune`: fits one technique's artistic parameters to the ray-traced reference, as XeGTAO
+// tuned its defaults: minimise the geometry-pixel MSE over training viewpoints by coordinate
+// search (each parameter on a grid inside a bracket that halves every round), then report the
+// score on held-out viewpoints and save the tuned preset as JSON.
+// Parameters searched: a radius multiplier (the technique's radius = m x the reference's R),
+// ao.power, and every float parameter of the technique's own group that applies (kernel.bias ...).
+#pragma once
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace ssao {
+
+struct TuneOptions {
+    std::string technique = "kernel";
+    std::string preset;              // starting point (default: the technique's defaults)
+    std::vector<std::string> scenes; // default builtin:showcase
+    std::string size = "640x360";
+    int views = 6;   // even-numbered viewpoints train, odd ones are held out
+    int rounds = 3;  // bracket halvings
+    int grid = 7;    // values per parameter per round
+    int referenceRays = 256;
+    float radiusScene = 0.05f;
+    std::string out = "tuned.json";
+    std::string presetDir;
+    bool quiet = false;
+};
+
+void addTuneOptions(CLI::App& cmd, TuneOptions& o);
+int runTune(const TuneOptions& o);
+
+} // namespace ssao

@@ -1,0 +1,98 @@
+#include "metrics/bench_summary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ssao {
+
+double median(std::vector<double> v) {
+    if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::vector<bool> paretoFront(const std::vector<double>& time, const std::vector<double>& error) {
+    const size_t n = time.size();
+    std::vector<bool> front(n, true);
+    for (size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(time[i]) || !std::isfinite(error[i])) {
+            front[i] = false;
+            continue;
+        }
+        for (size_t j = 0; j < n && front[i]; ++j) {
+            if (j == i || !std::isfinite(time[j]) || !std::isfinite(error[j])) continue;
+            const bool noWorse = time[j] <= time[i] && error[j] <= error[i];
+            const bool better = time[j] < time[i] || error[j] < error[i];
+            if (noWorse && better) front[i] = false;
+        }
+    }
+    return front;
+}
+
+namespace {
+// PSNR (peak 1) ↔ MSE, so views are averaged in MSE as XeGTAO's auto-tune does.
+double mseOf(double psnr) { return std::pow(10.0, -psnr / 10.0); }
+double psnrOf(double mse) { return mse > 0 ? 10.0 * std::log10(1.0 / mse) : 100.0; }
+} // namespace
+
+std::vector<ConfigSummary> summarize(const std::vector<ViewResult>& views, size_t configCount, size_t baseline) {
+    std::vector<ConfigSummary> out(configCount);
+    for (size_t c = 0; c < configCount; ++c) {
+        ConfigSummary& s = out[c];
+        s.config = c;
+        double mse = 0, mseGeo = 0, mseFull = 0, edge = 0, interior = 0;
+        int edgeViews = 0, interiorViews = 0;
+        s.gpuMsMin = std::numeric_limits<double>::infinity();
+        s.gpuMsMax = -s.gpuMsMin;
+        for (const ViewResult& v : views) {
+            if (v.config != c) continue;
+            ++s.views;
+            s.gpuMs += v.gpuMs;
+            s.gpuMsMin = std::min(s.gpuMsMin, v.gpuMsMin);
+            s.gpuMsMax = std::max(s.gpuMsMax, v.gpuMsMax);
+            mse += v.error.rmse * v.error.rmse;
+            s.mae += v.error.mae;
+            s.bias += v.error.bias;
+            mseGeo += mseOf(v.error.psnrGeometrySrgb);
+            mseFull += mseOf(v.error.psnrFullSrgb);
+            if (std::isfinite(v.error.rmseEdge)) edge += v.error.rmseEdge * v.error.rmseEdge, ++edgeViews;
+            if (std::isfinite(v.error.rmseInterior))
+                interior += v.error.rmseInterior * v.error.rmseInterior, ++interiorViews;
+            s.ssim += v.error.ssim;
+            s.nonFinite += v.error.nonFinite;
+        }
+        if (s.views == 0) {
+            const double nan = std::numeric_limits<double>::quiet_NaN();
+            s.gpuMs = s.gpuMsMin = s.gpuMsMax = s.rmse = s.mae = s.bias = nan;
+            s.psnrGeometrySrgb = s.psnrFullSrgb = s.rmseEdge = s.rmseInterior = s.ssim = nan;
+            continue;
+        }
+        const double n = s.views;
+        s.gpuMs /= n;
+        s.rmse = std::sqrt(mse / n);
+        s.mae /= n;
+        s.bias /= n;
+        s.psnrGeometrySrgb = psnrOf(mseGeo / n);
+        s.psnrFullSrgb = psnrOf(mseFull / n);
+        s.rmseEdge = edgeViews ? std::sqrt(edge / edgeViews) : std::numeric_limits<double>::quiet_NaN();
+        s.rmseInterior =
+            interiorViews ? std::sqrt(interior / interiorViews) : std::numeric_limits<double>::quiet_NaN();
+        s.ssim /= n;
+    }
+    std::vector<double> t, e;
+    for (const auto& s : out)
+        t.push_back(s.gpuMs), e.push_back(s.rmse);
+    const std::vector<bool> front = paretoFront(t, e);
+    for (size_t c = 0; c < configCount; ++c) {
+        out[c].pareto = front[c];
+        if (baseline < configCount) {
+            out[c].timeRatio = out[c].gpuMs / out[baseline].gpuMs;
+            out[c].rmseRatio = out[c].rmse / out[baseline].rmse;
+        }
+    }
+    return out;
+}
+
+} // namespace ssao

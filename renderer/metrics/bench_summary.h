@@ -1,0 +1,42 @@
+// Benchmark bookkeeping, pure: per-view measurements → one summary per configuration (time
+// averaged over views, errors as the RMS over views, PSNR of the mean MSE as XeGTAO reports it),
+// ratios to the baseline measured in the same run, and the time/error Pareto front.
+#pragma once
+#include "metrics/error_metrics.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace ssao {
+
+struct ViewResult {
+    std::string scene, viewpoint;
+    size_t config = 0;
+    double gpuMs = 0, gpuMsMin = 0, gpuMsMax = 0; // AO + denoise: median, min, max over timed frames
+    ErrorMetrics error;
+};
+
+struct ConfigSummary {
+    size_t config = 0;
+    int views = 0;
+    double gpuMs = 0, gpuMsMin = 0, gpuMsMax = 0; // mean of the views' medians; min of mins; max of maxes
+    double rmse = 0, mae = 0, bias = 0;           // RMSE = sqrt(mean of the views' MSE)
+    double psnrGeometrySrgb = 0, psnrFullSrgb = 0; // 10 log10(1 / mean MSE) over views
+    double rmseEdge = 0, rmseInterior = 0;         // RMS over the views that have such pixels
+    double ssim = 0;
+    long nonFinite = 0;
+    double timeRatio = 0, rmseRatio = 0; // to the baseline configuration
+    bool pareto = false;
+};
+
+double median(std::vector<double> v); // NaN when empty
+
+// true for every point not dominated by another (another point at most as slow and at most as
+// wrong, strictly better in one). Minimises both coordinates; ties keep both.
+std::vector<bool> paretoFront(const std::vector<double>& time, const std::vector<double>& error);
+
+// One summary per configuration 0..configCount-1 (in that order), ratios against `baseline`.
+std::vector<ConfigSummary> summarize(const std::vector<ViewResult>& views, size_t configCount, size_t baseline);
+
+} // namespace ssao
