@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build run test screenshot goldens clean
+.PHONY: deps configure build run test screenshot goldens bench clean
 
 deps:
 	@bash .ci/install-deps.sh
@@ -35,6 +35,12 @@ goldens: build
 	@for p in $(GOLDEN_PRESETS); do \
 	  d=$$(mktemp -d) && $(BUILD)/app/ssaolab render --preset $$p --size 320x180 --timing-frames 1 --quiet --out $$d && \
 	  cp $$d/ao.denoised.png assets/golden/showcase_$$p\_ao.png && rm -rf $$d && echo "golden: $$p"; done
+
+# docs/benchmarks.md: reference rays/s and the time-against-error sweep on the shared scenes
+# (1280x720 on whatever GL the machine has; llvmpipe without a GPU; ~20-40 minutes on 2 cores).
+SCENES ?= ../shared/scenes
+bench: build
+	@bash .ci/bench.sh $(BUILD) $(SCENES)
 
 clean:
 	@rm -rf $(BUILD) $(OUT)
