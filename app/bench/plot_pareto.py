@@ -1,31 +1,28 @@
 #!/usr/bin/env python3
 """Draw the run-time-against-error (Pareto) plot of an ssaolab benchmark run.
 
-Called by the C++ benchmark command after it has written summary.csv (one row
-per configuration) and results.csv (one row per scene, viewpoint and
-configuration). x is the AO + denoise GPU time per frame (log axis), y the
-geometry-pixel RMSE against the ray-traced reference. Every configuration is a
-grey dot, the Pareto front (flagged by the C++ side, not recomputed here) is
-highlighted and joined by a step line, the learnopengl baseline is a black star.
+Called by the C++ benchmark command once it has written summary.csv (one row per
+configuration) and results.csv (one row per scene, viewpoint and configuration).
+x: AO + denoise GPU time per frame (log axis); y: geometry-pixel RMSE against the
+ray-traced reference. Every configuration is a grey dot with a thin min..max time
+bar; the Pareto front (flagged by the C++ side, not recomputed) is highlighted and
+joined by a step line; the learnopengl baseline is a black star.
 
 Writes OUT.png (dpi 150) and OUT.svg, and with --results also
-OUT_by_scene.png/.svg with one panel per scene.
+OUT_by_scene.png/.svg: one panel per scene, views averaged per configuration
+(mean time, RMS of the per-view RMSE), front as flagged per configuration.
 
-Usage: plot_pareto.py --summary DIR/summary.csv [--results DIR/results.csv]
-                      --out DIR/pareto [--title TEXT]
-Standard library and matplotlib only; bad input gives one line on stderr and
-exit status 2, never a traceback.
+Usage: plot_pareto.py --summary S.csv [--results R.csv] --out DIR/pareto [--title T]
+Bad input: one line on stderr and exit status 2; unusable rows skipped with a warning.
 """
 import argparse
 import csv
 import math
 import os
 import sys
-from collections import OrderedDict
 
 PROG = "plot_pareto"
-FRONT_COLOUR = "#d62728"
-DOT_COLOUR = "#9a9a9a"
+FRONT, DOT, BAR = "#d62728", "#9a9a9a", "#c8c8c8"  # front, other points, time bars
 
 
 def fail(msg):
@@ -46,15 +43,15 @@ def number(text):
 
 
 def flag(text):
-    return (text or "").strip().lower() in ("1", "true", "yes")
+    return (text or "").strip().lower() in ("1", "true")
 
 
 def read_rows(path, extra=()):
-    """Rows of a benchmark CSV as dicts with numeric fields parsed; bad rows skipped."""
+    """Rows of a benchmark CSV as dicts with the plotted fields parsed; bad rows skipped."""
     try:
         with open(path, newline="", encoding="utf-8") as f:
-            raw = list(csv.DictReader(f))
-            fields = raw and list(raw[0].keys())
+            reader = csv.DictReader(f)
+            raw, fields = list(reader), reader.fieldnames or []
     except OSError as e:
         fail(f"cannot read {path}: {e.strerror or e}")
     except (csv.Error, UnicodeDecodeError) as e:
@@ -68,134 +65,122 @@ def read_rows(path, extra=()):
     for n, r in enumerate(raw, start=2):
         t, e = number(r.get("gpu_ms")), number(r.get("rmse"))
         if t is None or e is None or t <= 0:
-            warn(f"{path}:{n}: skipping '{r.get('label')}': gpu_ms={r.get('gpu_ms')!r} "
-                 f"rmse={r.get('rmse')!r} not a finite number (gpu_ms must be > 0)")
+            warn(f"{path}:{n}: skipping '{r.get('label')}': gpu_ms={r.get('gpu_ms')!r}, "
+                 f"rmse={r.get('rmse')!r} (need finite numbers, gpu_ms > 0)")
             continue
-        rows.append({
-            "label": (r.get("label") or "").strip() or f"row {n}",
-            "scene": (r.get("scene") or "").strip(),
-            "t": t, "e": e,
-            "tmin": number(r.get("gpu_ms_min")), "tmax": number(r.get("gpu_ms_max")),
-            "baseline": flag(r.get("baseline")), "pareto": flag(r.get("pareto")),
-        })
+        rows.append({"label": (r.get("label") or "").strip() or f"row {n}",
+                     "scene": (r.get("scene") or "").strip() or "(no scene)",
+                     "t": t, "e": e,
+                     "tmin": number(r.get("gpu_ms_min")), "tmax": number(r.get("gpu_ms_max")),
+                     "baseline": flag(r.get("baseline")), "pareto": flag(r.get("pareto"))})
     if not rows:
         fail(f"no plottable rows in {path}")
     return rows
 
 
 def check_front(points, where):
-    """Loose consistency check of the C++ Pareto flags; warns only."""
-    base = [p for p in points if p["baseline"]]
-    if len(base) != 1:
-        warn(f"{where}: expected exactly one baseline row, found {len(base)}")
-    tol = 1e-9
-    for p in points:
-        if not p["pareto"]:
-            continue
+    """Loose consistency check of the C++ flags; warns only, never changes them."""
+    nbase = sum(p["baseline"] for p in points)
+    if nbase != 1:
+        warn(f"{where}: expected exactly one baseline row, found {nbase}")
+    for p in (p for p in points if p["pareto"]):
         for q in points:
-            if (q is not p and q["t"] < p["t"] * (1 - 1e-3) - tol
-                    and q["e"] < p["e"] * (1 - 1e-3) - tol):
+            if q["t"] < p["t"] * 0.999 and q["e"] < p["e"] * 0.999:
                 warn(f"{where}: front point '{p['label']}' is dominated by '{q['label']}'")
                 break
 
 
 def place_labels(ax, points):
-    """Annotate every point, trying a few offsets to avoid overlapping earlier labels.
-
-    Front points and the baseline are placed first in a legible font; the others
-    follow in a smaller, lighter font."""
+    """Annotate every point; each label takes the candidate offset that overlaps the
+    legend, markers and earlier labels least. Front points and the baseline go first
+    in a legible font, the others after them in a smaller, lighter one."""
     from matplotlib.transforms import Bbox
-    fig = ax.figure
-    renderer = fig.canvas.get_renderer()
+    renderer = ax.figure.canvas.get_renderer()
+    axbox = ax.get_window_extent(renderer)
     taken = [ax.get_legend().get_window_extent(renderer)] if ax.get_legend() else []
-    # Marker footprints count as taken so labels do not sit on other points.
+    marks = {}  # marker footprints in pixels; a label may touch its own marker only
     for p in points:
         x, y = ax.transData.transform((p["t"], p["e"]))
-        taken.append(Bbox([[x - 3, y - 3], [x + 3, y + 3]]))
-    axbox = ax.get_window_extent(renderer)
-    offsets = [(6, 4, "left", "bottom"), (6, -4, "left", "top"),
-               (-6, 4, "right", "bottom"), (-6, -4, "right", "top"),
-               (0, 9, "center", "bottom"), (0, -9, "center", "top"),
-               (12, 12, "left", "bottom"), (-12, -12, "right", "top"),
-               (12, -14, "left", "top"), (-12, 14, "right", "bottom")]
-    order = sorted(points, key=lambda p: (not (p["baseline"] or p["pareto"]), p["t"]))
-    for p in order:
+        r = 10 if p["baseline"] else 5 if p["pareto"] else 4
+        marks[id(p)] = Bbox([[x - r, y - r], [x + r, y + r]])
+    offsets = [(dx, dy, {1: "left", 0: "center", -1: "right"}[(dx > 0) - (dx < 0)],
+                "bottom" if dy > 0 else "top")  # nearest first, then further out
+               for dx, dy in ((6, 4), (6, -4), (-6, 4), (-6, -4), (0, 8), (0, -8),
+                              (12, 12), (-12, -12), (12, -12), (-12, 12))]
+
+    def cost(box, own):
+        out = sum(max(0.0, d) for d in (axbox.x0 - box.x0, box.x1 - axbox.x1,
+                                        axbox.y0 - box.y0, box.y1 - axbox.y1))
+        area = sum(max(0.0, min(box.x1, b.x1) - max(box.x0, b.x0)) *
+                   max(0.0, min(box.y1, b.y1) - max(box.y0, b.y0)) for b in taken + [m for k, m in marks.items() if k != own])
+        return area + 1e4 * out
+
+    for p in sorted(points, key=lambda p: (not p["baseline"], not p["pareto"], p["t"])):
         strong = p["baseline"] or p["pareto"]
-        style = dict(fontsize=7 if strong else 5.5, color="#202020" if strong else "#6e6e6e",
-                     fontweight="bold" if p["baseline"] else "normal")
-        chosen = None
-        for i, (dx, dy, ha, va) in enumerate(offsets):
-            ann = ax.annotate(p["label"], (p["t"], p["e"]), xytext=(dx, dy),
-                              textcoords="offset points", ha=ha, va=va, zorder=6, **style)
-            box = ann.get_window_extent(renderer)
-            inside = (box.x0 >= axbox.x0 and box.x1 <= axbox.x1
-                      and box.y0 >= axbox.y0 and box.y1 <= axbox.y1)
-            free = inside and not any(box.overlaps(b) for b in taken)
-            if free or i == len(offsets) - 1:
-                if not free:  # nowhere free: fall back to the first offset with a leader line
-                    ann.remove()
-                    dx, dy, ha, va = offsets[0]
-                    ann = ax.annotate(p["label"], (p["t"], p["e"]), xytext=(dx, dy),
-                                      textcoords="offset points", ha=ha, va=va, zorder=6,
-                                      **style)
-                    box = ann.get_window_extent(renderer)
-                chosen = ann
+        style = dict(fontsize=7 if strong else 5.5, color="#1a1a1a" if strong else "#666666",
+                     fontweight="bold" if p["baseline"] else "normal", zorder=6,
+                     textcoords="offset points",
+                     bbox=dict(boxstyle="square,pad=0.05", fc="white", ec="none", alpha=0.6))
+        best = None  # (cost, annotation, box)
+        for dx, dy, ha, va in offsets:
+            k = 1.7 if p["baseline"] else 1.0  # clear the big star
+            ann = ax.annotate(p["label"], (p["t"], p["e"]), xytext=(k * dx, k * dy), ha=ha,
+                              va=va, **style)
+            box = ann.get_window_extent(renderer).padded(1.5)
+            c = cost(box, id(p))
+            if best is None or c < best[0]:
+                if best:
+                    best[1].remove()
+                best = (c, ann, box)
+            else:
+                ann.remove()
+            if c == 0:
                 break
-            ann.remove()
-        taken.append(chosen.get_window_extent(renderer))
+        taken.append(best[2])
 
 
-def draw(ax, points, title):
+def draw(ax, points, title, front_label, legend=True):
     from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
-    xs = [p["t"] for p in points]
-    ys = [p["e"] for p in points]
-    # Thin min..max run-time bars behind everything.
+    xs, ys = [p["t"] for p in points], [p["e"] for p in points]
     bars = [p for p in points if p["tmin"] is not None and p["tmax"] is not None
             and 0 < p["tmin"] <= p["t"] <= p["tmax"] and p["tmax"] > p["tmin"]]
     if bars:
-        ax.errorbar([p["t"] for p in bars], [p["e"] for p in bars],
+        ax.errorbar([p["t"] for p in bars], [p["e"] for p in bars], fmt="none",
                     xerr=[[p["t"] - p["tmin"] for p in bars], [p["tmax"] - p["t"] for p in bars]],
-                    fmt="none", ecolor="#c8c8c8", elinewidth=0.8, capsize=2, zorder=1,
-                    label="GPU time min..max")
-    ax.scatter(xs, ys, s=18, color=DOT_COLOUR, zorder=3, label="configuration",
-               edgecolors="none")
+                    ecolor=BAR, elinewidth=0.8, capsize=2, zorder=1, label="GPU time min..max")
+    ax.scatter(xs, ys, s=18, color=DOT, edgecolors="none", zorder=3, label="configuration")
     front = sorted((p for p in points if p["pareto"]), key=lambda p: (p["t"], p["e"]))
     if front:
-        fx = [p["t"] for p in front] + [max(xs)]
-        fy = [p["e"] for p in front] + [front[-1]["e"]]
-        ax.step(fx, fy, where="post", color=FRONT_COLOUR, lw=1.4, alpha=0.85, zorder=4)
-        ax.scatter(fx[:-1], fy[:-1], s=34, color=FRONT_COLOUR, zorder=5,
-                   edgecolors="white", linewidths=0.6,
-                   label="Pareto front (best RMSE at this time)")
-    for p in points:
-        if p["baseline"]:
-            ax.scatter([p["t"]], [p["e"]], marker="*", s=170, color="black", zorder=7,
-                       edgecolors="white", linewidths=0.6, label=f"baseline: {p['label']}")
+        fx, fy = [p["t"] for p in front], [p["e"] for p in front]
+        ax.step(fx + [max(xs)], fy + [fy[-1]], where="post", color=FRONT, lw=1.4, alpha=0.85,
+                zorder=4)
+        ax.scatter(fx, fy, s=34, color=FRONT, edgecolors="white", linewidths=0.6, zorder=5)
+        ax.plot([], [], color=FRONT, lw=1.4, marker="o", ms=5, mec="white", label=front_label)
+    for p in (p for p in points if p["baseline"]):
+        ax.scatter([p["t"]], [p["e"]], marker="*", s=170, color="black", edgecolors="white",
+                   linewidths=0.6, zorder=7, label=f"baseline: {p['label']}")
+    lo, hi = min([p["tmin"] for p in bars] + xs), max([p["tmax"] for p in bars] + xs)
     ax.set_xscale("log")
-    lo, hi = min(xs), max(xs)
-    for p in points:
-        lo = min(lo, p["tmin"] or lo) if (p["tmin"] or 0) > 0 else lo
-        hi = max(hi, p["tmax"] or hi)
-    pad = 1.25 if hi / lo < 50 else 1.5
-    ax.set_xlim(lo / pad, hi * pad)
+    ax.set_xlim(lo / 1.2, hi * 1.2)
     ylo, yhi = min(ys), max(ys)
-    span = (yhi - ylo) or max(abs(yhi), 1e-3) * 0.1
+    span = (yhi - ylo) or max(abs(yhi), 1e-3) * 0.2
     ax.set_ylim(max(0.0, ylo - 0.08 * span), yhi + 0.12 * span)
     fmt = FuncFormatter(lambda v, _: f"{v:g}")
     ax.xaxis.set_major_formatter(fmt)
-    if hi * pad / (lo / pad) < 100:  # under two decades: label 2x and 5x ticks as well
+    if hi / lo < 70:  # under two decades on screen: label the 2x, 3x and 5x ticks too
         ax.xaxis.set_minor_locator(LogLocator(base=10, subs=(2.0, 3.0, 5.0)))
         ax.xaxis.set_minor_formatter(fmt)
     else:
         ax.xaxis.set_minor_formatter(NullFormatter())
-    ax.tick_params(axis="x", which="minor", labelsize=7)
+    ax.tick_params(axis="both", which="both", labelsize=8)
     ax.grid(True, which="major", color="#dddddd", lw=0.8)
     ax.grid(True, which="minor", axis="x", color="#eeeeee", lw=0.6)
     ax.set_axisbelow(True)
-    ax.set_xlabel("AO + denoise GPU time per frame (ms)")
-    ax.set_ylabel("RMSE vs ray-traced reference (geometry pixels)")
+    ax.set_xlabel("AO + denoise GPU time per frame (ms)", fontsize=9)
+    ax.set_ylabel("RMSE vs ray-traced reference (geometry pixels)", fontsize=9)
     ax.set_title(title, fontsize=10)
-    ax.legend(loc="upper right", fontsize=7, framealpha=0.9)
+    if legend:
+        ax.legend(loc="upper right", fontsize=7, framealpha=0.9)
 
 
 def save(fig, out):
@@ -204,74 +189,63 @@ def save(fig, out):
 
 
 def by_scene(rows):
-    """Per (scene, label): mean time, RMS of per-view RMSE, time range over views."""
-    scenes = OrderedDict()
+    """Per scene, one point per label: mean time, RMS of per-view RMSE, time range."""
+    scenes = {}
     for r in rows:
-        scenes.setdefault(r["scene"] or "(no scene)", OrderedDict()).setdefault(
-            r["label"], []).append(r)
-    out = OrderedDict()
+        scenes.setdefault(r["scene"], {}).setdefault(r["label"], []).append(r)
+    out = {}
     for scene, groups in scenes.items():
-        pts = []
-        for label, g in groups.items():
-            mins = [r["tmin"] if r["tmin"] is not None else r["t"] for r in g]
-            maxs = [r["tmax"] if r["tmax"] is not None else r["t"] for r in g]
-            pts.append({
-                "label": label, "scene": scene,
-                "t": sum(r["t"] for r in g) / len(g),
-                "e": math.sqrt(sum(r["e"] ** 2 for r in g) / len(g)),
-                "tmin": min(mins), "tmax": max(maxs),
-                "baseline": any(r["baseline"] for r in g),
-                "pareto": any(r["pareto"] for r in g),
-            })
-        out[scene] = pts
+        out[scene] = [{"label": label, "t": sum(r["t"] for r in g) / len(g),
+                       "e": math.sqrt(sum(r["e"] ** 2 for r in g) / len(g)),
+                       "tmin": min(r["t"] if r["tmin"] is None else r["tmin"] for r in g),
+                       "tmax": max(r["t"] if r["tmax"] is None else r["tmax"] for r in g),
+                       "baseline": any(r["baseline"] for r in g),
+                       "pareto": False} for label, g in groups.items()]
+        # This scene's own front (the C++ flag is for all scenes together): not dominated here.
+        pts = out[scene]
+        for p in pts:
+            p["pareto"] = not any(q is not p and q["t"] <= p["t"] and q["e"] <= p["e"]
+                                  and (q["t"] < p["t"] or q["e"] < p["e"]) for q in pts)
     return out
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n")[0])
-    ap.add_argument("--summary", required=True, help="summary.csv (one row per configuration)")
-    ap.add_argument("--results", help="results.csv (per scene/viewpoint rows); adds OUT_by_scene")
-    ap.add_argument("--out", required=True, help="output path without extension, e.g. DIR/pareto")
+    ap.add_argument("--summary", required=True, help="summary.csv, one row per configuration")
+    ap.add_argument("--results", help="results.csv, per scene/viewpoint; adds OUT_by_scene")
+    ap.add_argument("--out", required=True, help="output path without extension: DIR/pareto")
     ap.add_argument("--title", default="SSAO run time against error", help="figure title")
     args = ap.parse_args(argv)
-
     out = args.out[:-4] if args.out.lower().endswith((".png", ".svg")) else args.out
     summary = read_rows(args.summary)
     results = read_rows(args.results, extra=("scene",)) if args.results else None
     check_front(summary, args.summary)
-
     try:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError as e:
-        fail(f"matplotlib is not available ({e})")
+        fail(f"matplotlib is not available to {sys.executable} ({e})")
     try:
         os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
         fig, ax = plt.subplots(figsize=(10, 6.5))
-        draw(ax, summary, args.title)
-        fig.tight_layout()  # before labelling: placement works in final pixel positions
+        draw(ax, summary, args.title, "Pareto front (best RMSE at this time)")
+        fig.tight_layout()  # before labelling: placement works on final pixel positions
         place_labels(ax, summary)
         save(fig, out)
-        plt.close(fig)
         if results is not None:
             scenes = by_scene(results)
-            n = len(scenes)
-            cols = min(n, 2)
-            nrows = math.ceil(n / cols)
-            fig, axes = plt.subplots(nrows, cols, figsize=(7.5 * cols, 5.2 * nrows),
-                                     squeeze=False)
-            for ax, (scene, pts) in zip(axes.flat, scenes.items()):
-                draw(ax, pts, scene)
-            for ax in list(axes.flat)[n:]:
+            cols, rows = min(len(scenes), 2), math.ceil(len(scenes) / 2)
+            fig, axes = plt.subplots(rows, cols, figsize=(7.5 * cols, 5.2 * rows), squeeze=False)
+            for i, (ax, (scene, pts)) in enumerate(zip(axes.flat, scenes.items())):
+                draw(ax, pts, scene, "Pareto front (this scene)", legend=(i == 0))
+            for ax in list(axes.flat)[len(scenes):]:
                 ax.set_visible(False)
-            fig.suptitle(f"{args.title}: per scene (views averaged, RMSE as RMS over views)",
-                         fontsize=11)
+            fig.suptitle(f"{args.title}: per scene (mean over views; RMSE as RMS)", fontsize=11)
             fig.tight_layout()
             for ax, pts in zip(axes.flat, scenes.values()):
                 place_labels(ax, pts)
             save(fig, out + "_by_scene")
-            plt.close(fig)
     except OSError as e:
         fail(f"cannot write {out}: {e.strerror or e}")
     return 0
