@@ -95,6 +95,12 @@ void Renderer::setDisplayScale(float scale) {
     displayScale_ = scale;
 }
 
+void Renderer::setReferenceBuffers(std::shared_ptr<const ReferenceBuffers> buffers) {
+    if (bool(buffers) != referenceOn_) graphStale_ = true; // the two buffers join or leave the graph
+    referenceOn_ = bool(buffers);
+    referencePass_.setBuffers(std::move(buffers));
+}
+
 Pass& Renderer::passFor(const std::string& key, const std::function<std::unique_ptr<Pass>()>& make) {
     auto& slot = passes_[key];
     if (!slot) slot = make();
@@ -125,6 +131,7 @@ void Renderer::buildGraph() {
     const std::vector<Pass*> a = chain(Branch::a(), settings_);
     for (Pass* p : a)
         nodes.push_back({p, &settings_});
+    if (referenceOn_) nodes.push_back({&referencePass_, &settings_}); // chain A's; reads nothing
     if (settingsB_) {
         // A pass of chain B whose settings groups and (resolved) inputs equal its chain-A
         // counterpart's would compute the same image: its outputs alias A's instead of running.
@@ -163,7 +170,7 @@ FrameReport Renderer::render() {
     const gpu::FrameConstants fc = packFrameConstants(effective_, width_, height_, sceneRadius());
     frameUbo_.upload(&fc, sizeof fc);
     frameUbo_.bind(SSAO_UBO_FRAME);
-    if (graphStale_) buildGraph(); // only when settings, chain B or the size changed
+    if (graphStale_) buildGraph(); // only when settings, chain B, the size or the reference changed
     frame_ =
         FrameInfo{scene_.get(), sceneVersion_, sceneRadius(), &effective_, width_, height_, displayScale_};
     return graph_.execute(frame_, shaders_, triangle_);

@@ -4,6 +4,7 @@
 #pragma once
 #include "gl/shader_library.h"
 #include "graph/frame_graph.h"
+#include "passes/reference_pass.h"
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
 
@@ -47,6 +48,10 @@ class Renderer {
     // Render pixels per displayed pixel (the app renders reduced while the camera moves): a radius
     // in pixels is a radius in displayed pixels. 1 headless.
     void setDisplayScale(float scale);
+    // The ray-traced reference as two more buffers, reference.ao and reference.error
+    // (passes/reference_pass.h), uploaded when `buffers` has a new version; null (the default, and
+    // headless) takes them out of the graph.
+    void setReferenceBuffers(std::shared_ptr<const ReferenceBuffers> buffers);
     // Forces every pass to run on the next frame (e.g. for timing all passes).
     void invalidate() { graph_.invalidate(); }
 
@@ -96,9 +101,11 @@ class Renderer {
     int width_ = 0, height_ = 0;
     float displayScale_ = 1.0f;
     FrameGraph graph_;
-    bool graphStale_ = true; // settings, chain B or size changed since the graph was compiled
+    bool graphStale_ = true; // settings, chain B, size or reference on/off changed since compile()
     FrameInfo frame_;
     std::map<std::string, std::unique_ptr<Pass>> passes_; // kept across rebuilds (they own GL state)
+    ReferencePass referencePass_;
+    bool referenceOn_ = false;
     std::map<std::string, std::vector<std::unique_ptr<Pass>>> techniquePasses_; // by chain + technique
 };
 

@@ -27,19 +27,21 @@ std::string absoluteSpec(const std::string& spec) {
 }
 } // namespace
 
-AppCore::AppCore(const AppOptions& o) : opts_(o), store_(PresetStore::standard(o.userPresetDir)) {
+AppCore::AppCore(const AppOptions& o)
+    : opts_(o), store_(PresetStore::standard(o.userPresetDir)), reference_(o.wake) {
     if (opts_.shaderDir.empty()) opts_.shaderDir = shaderRoot();
     renderScale = std::clamp(o.renderScale, 0.25f, 1.0f);
     interactiveScale = std::clamp(o.interactiveScale, 0.1f, 1.0f);
+    referenceOn = o.reference;
     loaded_.name = "defaults";
     if (!o.preset.empty()) loaded_ = store_.open(o.preset);
     settings_ = loaded_.settings;
     renderer_ = std::make_unique<Renderer>(opts_.shaderDir);
     const std::string spec = !o.scene.empty() ? o.scene : loaded_.scene.value_or("builtin:showcase");
     adoptScene(loadScene(spec), spec, false);
-    if (loaded_.camera) camera_.reset(*loaded_.camera, scene_.bounds.radius(), scene_.bounds.center());
+    if (loaded_.camera) camera_.reset(*loaded_.camera, scene_->bounds.radius(), scene_->bounds.center());
     shaderTime_ = renderer_->shaders().newestSourceTime();
-    setStatus("loaded " + scene_.name + (o.preset.empty() ? "" : " with preset " + loaded_.name) + "; " +
+    setStatus("loaded " + scene_->name + (o.preset.empty() ? "" : " with preset " + loaded_.name) + "; " +
                   radiusNote(),
               false);
 }
@@ -53,7 +55,7 @@ void AppCore::setStatus(const std::string& s, bool error) {
 }
 
 std::string AppCore::radiusNote() const {
-    const float diag = 2.0f * scene_.bounds.radius();
+    const float diag = 2.0f * scene_->bounds.radius();
     char buf[200];
     const AoSettings& a = settings_.ao;
     if (a.radiusMode == RadiusMode::Scene)
@@ -68,9 +70,9 @@ std::string AppCore::radiusNote() const {
 }
 
 void AppCore::adoptScene(Scene s, const std::string& spec, bool keepCamera) {
-    scene_ = std::move(s);
+    scene_ = std::make_shared<const Scene>(std::move(s));
     sceneSpec_ = absoluteSpec(spec);
-    renderer_->setScene(scene_);
+    renderer_->setScene(*scene_);
     // A radius the preset did not choose follows the scene: a radius tuned by hand for the last
     // scene (e.g. 0.5 m) would make a millimetre model flat grey.
     if (!loaded_.fixesRadius()) resetRadius(settings_);
@@ -81,14 +83,15 @@ void AppCore::adoptScene(Scene s, const std::string& spec, bool keepCamera) {
 }
 
 void AppCore::resetCamera() {
-    camera_.reset(scene_.camera.value_or(frameBounds(scene_.bounds)), scene_.bounds.radius(),
-                  scene_.bounds.center());
+    camera_.reset(scene_->camera.value_or(frameBounds(scene_->bounds)), scene_->bounds.radius(),
+                  scene_->bounds.center());
     poke();
 }
 
 void AppCore::selectSceneCamera(int index) {
-    if (index >= 0 && index < int(scene_.cameras.size()))
-        camera_.reset(scene_.cameras[size_t(index)].second, scene_.bounds.radius(), scene_.bounds.center());
+    if (index >= 0 && index < int(scene_->cameras.size()))
+        camera_.reset(scene_->cameras[size_t(index)].second, scene_->bounds.radius(),
+                      scene_->bounds.center());
     poke();
 }
 
@@ -106,7 +109,7 @@ bool AppCore::attempt(const char* what, const std::function<std::string()>& acti
 bool AppCore::openScene(const std::string& spec) {
     return attempt("load scene", [&] {
         adoptScene(loadScene(spec), spec, false);
-        return "loaded " + scene_.name + " (" + std::to_string(scene_.triangleCount()) + " triangles); " +
+        return "loaded " + scene_->name + " (" + std::to_string(scene_->triangleCount()) + " triangles); " +
                radiusNote();
     });
 }
@@ -120,8 +123,8 @@ bool AppCore::openPreset(const std::string& nameOrPath) {
         loaded_ = p;
         settings_ = p.settings;
         if (s) adoptScene(std::move(*s), *p.scene, false);
-        if (p.camera) camera_.reset(*p.camera, scene_.bounds.radius(), scene_.bounds.center());
-        return "preset " + p.name + " loaded" + (s ? " with its scene " + scene_.name : "") + "; " +
+        if (p.camera) camera_.reset(*p.camera, scene_->bounds.radius(), scene_->bounds.center());
+        return "preset " + p.name + " loaded" + (s ? " with its scene " + scene_->name : "") + "; " +
                radiusNote();
     });
 }

@@ -7,6 +7,7 @@
 #include "settings/preset_store.h"
 #include "view/buffer_views.h"
 #include "view/camera_controller.h"
+#include "view/live_reference.h"
 
 #include <imgui.h>
 
@@ -28,6 +29,10 @@ struct AppOptions {
     std::string userPresetDir;
     float renderScale = 1.0f;       // render resolution relative to the view's pixels (0.25..1)
     float interactiveScale = 0.35f; // while the camera moves or a slider is dragged
+    bool reference = true;          // trace the ray-traced reference of the view in the background
+    // Called from the reference's worker thread when it has news (the window posts an empty event
+    // to wake its loop); may be empty.
+    std::function<void()> wake;
 };
 
 enum class ViewMode { Grid, Single, Split };
@@ -53,8 +58,9 @@ class AppCore {
     void drawUi();
     // Recompiles shaders if a file in shaders/ changed; keeps the last good programs on error.
     void pollShaderReload();
-    // True while something is still changing (input, pending render); false = the app may sleep.
-    bool busy() const { return busyFrames_ > 0; }
+    // True while something is still changing (input, pending render, news from the reference's
+    // threads); false = the app may sleep.
+    bool busy() const { return busyFrames_ > 0 || reference_.hasNews(); }
     void poke(int frames = 3) { busyFrames_ = std::max(busyFrames_, frames); }
     // A camera move or slider drag: render at the interactive scale until input stops.
     void noteInteraction();
@@ -65,7 +71,7 @@ class AppCore {
     const Preset& loadedPreset() const { return loaded_; }
     bool unsavedChanges() const;
     Renderer& renderer() { return *renderer_; }
-    const Scene& scene() const { return scene_; }
+    const Scene& scene() const { return *scene_; }
     const std::string& sceneSpec() const { return sceneSpec_; }
     const std::string& status() const { return status_; }
     bool statusIsError() const { return statusError_; }
@@ -75,6 +81,7 @@ class AppCore {
     const FrameReport& lastReport() const { return lastReport_; }
     int framesRendered() const { return framesRendered_; } // frames in which any pass ran
     BufferViews& views() { return views_; }
+    const LiveReference& reference() const { return reference_; }
     std::optional<Settings> settingsB(); // chain B of the split view, or nullopt
 
     // UI state
@@ -91,6 +98,8 @@ class AppCore {
     float interactiveScale = 0.35f;
     ViewStyle style;
     bool showSamples = true;
+    bool referenceOn = true; // the ray-traced reference and the error against it (AppOptions::reference)
+    int referenceRays = 512; // rays per pixel the reference refines to (XeGTAO's 512)
     bool pinPixel = false;
     // Where the cursor is (or the pinned point), as uv of the view (y from the top; -1: nowhere):
     // resolution independent, so it stays put when the render size changes while moving.
@@ -130,7 +139,7 @@ class AppCore {
 
     AppOptions opts_;
     PresetStore store_;
-    Scene scene_;
+    std::shared_ptr<const Scene> scene_; // shared with the reference's worker thread, never changed
     std::string sceneSpec_;
     Settings settings_;
     Preset loaded_;
@@ -161,6 +170,7 @@ class AppCore {
         std::vector<float> values;
     };
     std::map<std::string, CachedValue> values_;
+    LiveReference reference_;
     RadiusInfo radius_;
     std::string radiusKey_;
     std::pair<int, int> fullSize_{0, 0}; // the render size when input is still
@@ -171,7 +181,12 @@ void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size);
 void drawParameters(AppCore& app);
 void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size);
 void drawInfoStrip(AppCore& app, ImVec2 pos, ImVec2 size); // timing and inspector, always visible
-void rememberRect(AppCore& app, const std::string& key);   // the last item's rectangle, for tests
+void drawReferenceSection(AppCore& app);                   // the "vs reference" block of the strip
+std::string referenceTag(AppCore& app); // rays per pixel so far, for the labels of its views
+// Why a reference.* buffer has nothing of this view to show yet (it reads 0 then); "" when it has,
+// or for any other buffer. Views cover such a buffer with this text, the readout prints "-".
+std::string referenceEmptyReason(AppCore& app, const std::string& buffer);
+void rememberRect(AppCore& app, const std::string& key); // the last item's rectangle, for tests
 void beginFixedWindow(const char* name, ImVec2 pos, ImVec2 size, ImGuiWindowFlags extra = 0);
 
 } // namespace ssao

@@ -10,6 +10,19 @@ namespace ssao {
 namespace {
 constexpr size_t kTimingHistory = 60;
 constexpr double kSettleSeconds = 0.25; // input quiet this long: refine to full resolution
+
+// `first` and then `second` rendered in one UI frame: what ran in either, in `second`'s order (its
+// graph may have gained or lost the reference's pass).
+FrameReport merged(const FrameReport& first, const FrameReport& second) {
+    FrameReport out = second;
+    for (PassReport& p : out.passes) {
+        if (p.ran) continue;
+        for (const PassReport& q : first.passes)
+            if (q.name == p.name && q.ran) p = q;
+    }
+    return out;
+}
+
 } // namespace
 
 double AppCore::Timing::average(const std::string& pass) const {
@@ -51,7 +64,16 @@ void AppCore::renderIfNeeded(int viewW, int viewH) {
         r.setCamera(camera_.camera());
         r.setSettings(settings_);
         r.setSettingsB(settingsB());
+        r.setReferenceBuffers(reference_.buffers());
         FrameReport rep = r.render(); // cheap when nothing changed: no pass runs
+        // The reference after the frame: a trace starts from the view as just rendered (its radius
+        // at the centre), and the error needs this frame's ao.denoised. New buffers are uploaded
+        // at once (only the upload pass runs), not one frame late.
+        if (reference_.update(r, scene_, referenceOn, std::max(referenceRays, 1), fullSize_.first,
+                              fullSize_.second, inter, [this] { return radiusInfo().world; })) {
+            r.setReferenceBuffers(reference_.buffers());
+            rep = merged(rep, r.render());
+        }
         if (!rep.ran().empty()) {
             lastReport_ = rep;
             ++framesRendered_;

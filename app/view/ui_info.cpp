@@ -1,5 +1,6 @@
 // The strip under the image, always in view: per-pass GPU times (at full resolution and while
-// moving, in graph order) with the frame-time plot, and the pixel / sample inspector.
+// moving, in graph order) with the frame-time plot, the error against the ray-traced reference
+// (ui_reference.cpp), and the pixel / sample inspector.
 #include "view/app_core.h"
 
 #include <cfloat>
@@ -77,8 +78,9 @@ void inspectorSection(AppCore& app) {
     for (const Resource* r : app.renderer().buffers()) {
         std::string name = r->desc.name;
         if (!prefix.empty() && app.renderer().graph().find(prefix + name)) name = prefix + name;
-        const std::vector<float> v = app.valueAt(name, px);
-        std::string text;
+        const std::vector<float> v =
+            referenceEmptyReason(app, name).empty() ? app.valueAt(name, px) : std::vector<float>{};
+        std::string text = v.empty() ? "         -" : ""; // no reference of this view yet
         for (float x : v) {
             char buf[24];
             std::snprintf(buf, sizeof buf, "%10.4g", x);
@@ -110,11 +112,14 @@ void inspectorSection(AppCore& app) {
 
 void drawInfoStrip(AppCore& app, ImVec2 pos, ImVec2 size) {
     beginFixedWindow("info", pos, size, ImGuiWindowFlags_NoTitleBar);
-    if (ImGui::BeginTable("info", 2, ImGuiTableFlags_BordersInnerV)) {
-        ImGui::TableSetupColumn("timing", ImGuiTableColumnFlags_WidthStretch, 0.45f);
-        ImGui::TableSetupColumn("inspector", ImGuiTableColumnFlags_WidthStretch, 0.55f);
+    if (ImGui::BeginTable("info", 3, ImGuiTableFlags_BordersInnerV)) {
+        ImGui::TableSetupColumn("timing", ImGuiTableColumnFlags_WidthStretch, 0.38f);
+        ImGui::TableSetupColumn("reference", ImGuiTableColumnFlags_WidthStretch, 0.22f);
+        ImGui::TableSetupColumn("inspector", ImGuiTableColumnFlags_WidthStretch, 0.40f);
         ImGui::TableNextColumn();
         timingSection(app);
+        ImGui::TableNextColumn();
+        drawReferenceSection(app);
         ImGui::TableNextColumn();
         inspectorSection(app);
         ImGui::EndTable();

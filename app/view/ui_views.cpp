@@ -22,6 +22,20 @@ void fit(ImVec2 avail, float aspect, ImVec2& outPos, ImVec2& outSize) {
     outSize = s;
 }
 
+// The number of grid columns that shows `n` views of this aspect largest (fewer on a tie): the
+// grid has 8 buffers, 10 with the reference's, and the window may have any shape.
+int gridColumns(int n, ImVec2 avail, float aspect) {
+    int best = 1;
+    float bestWidth = -1.0f;
+    for (int cols = 1; cols <= std::max(n, 1); ++cols) {
+        const int rows = (n + cols - 1) / cols;
+        ImVec2 off, sz;
+        fit(ImVec2(avail.x / float(cols) - 4, avail.y / float(std::max(rows, 1)) - 4), aspect, off, sz);
+        if (sz.x > bestWidth + 0.5f) best = cols, bestWidth = sz.x;
+    }
+    return best;
+}
+
 // Camera interaction and hover over an image rectangle; returns true on a click (no drag).
 bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
     ImGui::SetCursorScreenPos(pos);
@@ -86,6 +100,24 @@ void label(ImDrawList* dl, ImVec2 pos, const std::string& text, float maxWidth =
     dl->PushClipRect(pos, ImVec2(pos.x + maxWidth, pos.y + ts.y + 4), true);
     dl->AddRectFilled(pos, ImVec2(pos.x + ts.x + 8, pos.y + ts.y + 4), IM_COL32(0, 0, 0, 170));
     dl->AddText(ImVec2(pos.x + 4, pos.y + 2), IM_COL32(255, 255, 255, 255), text.c_str());
+    dl->PopClipRect();
+}
+
+// The reference's buffers say how far the trace is (or why it waits) on their label.
+std::string tag(AppCore& app, const std::string& buffer) {
+    return buffer.rfind("reference.", 0) == 0 ? referenceTag(app) : std::string();
+}
+
+// A buffer with nothing to show yet (its zeros would read as "fully occluded" or "no error"):
+// covered, with the reason wrapped in the middle.
+void cover(ImDrawList* dl, ImVec2 p, ImVec2 q, const std::string& why) {
+    if (why.empty()) return;
+    dl->AddRectFilled(p, q, IM_COL32(28, 28, 32, 255));
+    const float wrap = std::max(q.x - p.x - 16.0f, 40.0f);
+    const ImVec2 ts = ImGui::CalcTextSize(why.c_str(), nullptr, false, wrap);
+    dl->PushClipRect(p, q, true);
+    dl->AddText(nullptr, 0.0f, ImVec2((p.x + q.x - ts.x) * 0.5f, (p.y + q.y - ts.y) * 0.5f),
+                IM_COL32(200, 200, 200, 255), why.c_str(), nullptr, wrap);
     dl->PopClipRect();
 }
 
@@ -221,8 +253,9 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
 
     if (app.viewMode == ViewMode::Grid) {
         const auto buffers = r.buffers();
-        const int cols = 3, rows = int((buffers.size() + 2) / 3);
-        const ImVec2 cell(avail.x / cols, avail.y / float(std::max(rows, 1)));
+        const int cols = gridColumns(int(buffers.size()), avail, aspect);
+        const int rows = int((buffers.size() + size_t(cols) - 1) / size_t(cols));
+        const ImVec2 cell(avail.x / float(cols), avail.y / float(std::max(rows, 1)));
         for (size_t i = 0; i < buffers.size(); ++i) {
             const std::string& name = buffers[i]->desc.name;
             ImVec2 off, sz;
@@ -234,7 +267,8 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
             ImGui::PopID();
             const BufferViews::View* v = views.find(name);
             image(dl, v, p, ImVec2(p.x + sz.x, p.y + sz.y));
-            label(dl, p, v ? v->label : name, sz.x);
+            cover(dl, p, ImVec2(p.x + sz.x, p.y + sz.y), referenceEmptyReason(app, name));
+            label(dl, p, (v ? v->label : name) + tag(app, name), sz.x);
             app.widgetRects["view#" + name] = ImVec4(p.x, p.y, p.x + sz.x, p.y + sz.y);
             if (clicked) {
                 app.enlarged = name;
@@ -251,7 +285,8 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
         if (app.viewMode == ViewMode::Single) {
             const BufferViews::View* v = views.find(app.enlarged);
             image(dl, v, p, q);
-            label(dl, p, v ? v->label : app.enlarged);
+            cover(dl, p, q, referenceEmptyReason(app, app.enlarged));
+            label(dl, p, (v ? v->label : app.enlarged) + tag(app, app.enlarged));
             drawSamples(app, dl, p, sz);
         } else if (app.splitDifference) {
             if (r.graph().find("b." + app.splitBuffer)) {

@@ -111,7 +111,11 @@ int runWindowApp(const WindowOptions& o) {
 
     int rc = 0;
     {
-        AppCore app(o.app);
+        AppOptions appOptions = o.app;
+        // The reference's worker thread wakes the sleeping loop when a snapshot or progress step is
+        // ready (glfwPostEmptyEvent may be called from any thread; AppCore joins it before glfwTerminate).
+        appOptions.wake = [] { glfwPostEmptyEvent(); };
+        AppCore app(appOptions);
         glfwSetWindowUserPointer(window, &app);
         int frame = 0;
         double lastShaderCheck = glfwGetTime();

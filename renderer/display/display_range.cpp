@@ -15,6 +15,7 @@ DisplayRange displayRange(const Image& img, const ResourceDesc& d, const Image* 
                           const ViewStyle& style) {
     DisplayRange r;
     if (d.display == Display::Direction) r = {glm::vec3(-1.0f), glm::vec3(1.0f), false};
+    if (d.display == Display::Signed) r = {glm::vec3(-kSignedRange), glm::vec3(kSignedRange), false};
     if (!needsFit(d, style)) return r;
     const bool vector = d.display == Display::Vector || d.display == Display::Direction;
     const int channels = vector ? std::min(3, img.channels) : 1;
@@ -43,6 +44,10 @@ DisplayRange displayRange(const Image& img, const ResourceDesc& d, const Image* 
         r.lo[c] = lo, r.hi[c] = hi;
     }
     if (!vector) r.lo = glm::vec3(r.lo.x), r.hi = glm::vec3(r.hi.x);
+    if (d.display == Display::Signed) { // 0 stays in the middle (white): symmetric about it
+        const float m = std::max(std::abs(r.lo.x), std::abs(r.hi.x));
+        r.lo = glm::vec3(-m), r.hi = glm::vec3(m);
+    }
     r.fitted = true;
     return r;
 }

@@ -19,6 +19,10 @@ struct ViewStyle {
     bool operator==(const ViewStyle& o) const { return fit == o.fit && falseColor == o.falseColor; }
 };
 
+// The natural range of a Signed buffer, ±: an AO error of a quarter saturates, as in the CLI's
+// error.png heat map (metrics/evaluate.h errorHeatmap).
+constexpr float kSignedRange = 0.25f;
+
 struct DisplayRange {
     glm::vec3 lo{0.0f}, hi{1.0f}; // per channel; scalars use x
     bool fitted = false;

@@ -34,6 +34,7 @@ DisplayRange ViewPainter::paint(const Resource& r, const Resource& mask, const V
     glUseProgram(prog);
     const int mode = d.display == Display::Color                                         ? SSAO_VIEW_COLOR
                      : (d.display == Display::Vector || d.display == Display::Direction) ? SSAO_VIEW_VECTOR
+                     : d.display == Display::Signed                                      ? SSAO_VIEW_SIGNED
                                                                                          : SSAO_VIEW_SCALAR;
     glProgramUniform1i(prog, 0, mode);
     glProgramUniform3f(prog, 1, range.lo.x, range.lo.y, range.lo.z);

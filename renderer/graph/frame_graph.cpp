@@ -219,6 +219,7 @@ FrameReport FrameGraph::execute(const FrameInfo& frame, gl::ShaderLibrary& shade
         std::string key = base + n.settingsKey;
         if (n.decl.scene) key += "|scene" + std::to_string(frame.sceneVersion);
         if (n.decl.camera) key += cameraKey(*frame.camera);
+        if (const uint64_t ext = n.pass->externalVersion()) key += "|ext" + std::to_string(ext);
         for (const auto& r : n.decl.reads)
             key += "|" + r + "@" + std::to_string(get(r).version);
         for (const auto& w : n.decl.writes)

@@ -1,8 +1,8 @@
 // The frame graph: passes declare what they read and write (graph/pass.h); compile() orders them
 // so producers run first and allocates every resource at its declared size; execute() runs a pass
 // only when its key changed — the settings groups it reads, the scene and camera if it uses them,
-// the base size, and the versions of the resources it reads. A missing producer, two producers of
-// one resource or a cycle is an ssao::Error naming the resource.
+// the base size, the versions of the resources it reads and of its external data. A missing
+// producer, two producers of one resource or a cycle is an ssao::Error naming the resource.
 #pragma once
 #include "gl/resources.h"
 #include "graph/pass.h"

@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -100,6 +101,9 @@ class Pass {
     const Branch& branch() const { return branch_; }
     virtual void setup(PassBuilder& b, const Settings& s) const = 0;
     virtual void execute(PassContext& ctx) = 0;
+    // Data from outside the graph that the pass's output depends on (a CPU image it uploads): the
+    // graph re-runs the pass when this changes, as it does for a changed input. 0 = none.
+    virtual uint64_t externalVersion() const { return 0; }
     // The sample inspector: re-runs the pass's own shader for one pixel of its output, compiled
     // with INSPECT, and returns what it recorded. Passes without taps return false.
     virtual bool inspect(PassContext& ctx, glm::ivec2 pixel, PixelInspection& out) {

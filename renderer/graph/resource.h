@@ -16,6 +16,7 @@ enum class Display {
     Scalar,    // one scalar with no natural range (depth): range auto-fitted over geometry
     Direction, // unit vectors, natural range [-1,1] per channel (normals)
     Vector,    // vectors with no natural range (positions): one range auto-fitted over xyz
+    Signed,    // one signed scalar centred on 0 (an error): a symmetric range, diverging colours
 };
 
 struct ResourceDesc {

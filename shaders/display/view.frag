@@ -50,6 +50,10 @@ void main() {
         }
         d = clamp(d * uDiffScale, -1.0, 1.0);
         c = d >= 0.0 ? mix(vec3(0.5), vec3(1.0, 0.15, 0.1), d) : mix(vec3(0.5), vec3(0.1, 0.35, 1.0), -d);
+    } else if (uMode == SSAO_VIEW_SIGNED) {
+        // The CLI's error.png (metrics/evaluate.cpp errorHeatmap): white at 0, red above, blue below.
+        float t = clamp((v.r * uDecode.x + uDecode.y) / span.x * 2.0, -1.0, 1.0);
+        c = vec3(t < 0.0 ? 1.0 + t : 1.0, 1.0 - abs(t), t > 0.0 ? 1.0 - t : 1.0);
     } else {
         float t = ((v.r * uDecode.x + uDecode.y) - uLo.x) / span.x;
         c = uFalseColor != 0 ? viridis(t) : vec3(t);

@@ -41,6 +41,7 @@
 #define SSAO_VIEW_SCALAR 1 // one channel, [lo, hi] → [0, 1], optional false colour
 #define SSAO_VIEW_VECTOR 2 // xyz, each [lo, hi] → [0, 1]
 #define SSAO_VIEW_DIFF 3   // (a - b) * scale, signed, diverging colours
+#define SSAO_VIEW_SIGNED 4 // one signed channel, [-hi, hi]: blue < 0, white 0, red > 0 (error.png's map)
 
 #ifdef __cplusplus
 #include <glm/glm.hpp>

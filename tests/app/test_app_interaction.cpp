@@ -165,16 +165,16 @@ TEST_F(AppUse, TimingAndInspectorAreInViewAt900PixelsAndThePlotDraws) {
     ui_->app().noteFrameMs(12.0f);
     ui_->app().noteFrameMs(15.0f);
     ui_->frames(2);
-    for (const char* key : {"timing", "inspector", "timing#plot"}) {
+    for (const char* key : {"timing", "inspector", "timing#plot", "reference#on", "reference#progress"}) {
         const ImVec4 r = ui_->rect(key);
         EXPECT_GT(r.w, r.y) << key;
         EXPECT_LE(r.w, 900.0f) << key << " is below the fold";
     }
     const ImVec4 plot = ui_->rect("timing#plot");
     EXPECT_GT(plot.z - plot.x, 50.0f) << "the frame-time plot has a width";
-    // The timing table lists passes in graph order, not by name.
+    // The timing table lists passes in graph order, not by name (the reference's upload last).
     EXPECT_EQ(ui_->app().renderer().graph().passOrder(),
-              (std::vector<std::string>{"gbuffer", "ao", "denoise", "composite"}));
+              (std::vector<std::string>{"gbuffer", "ao", "denoise", "composite", "reference"}));
     ui_->save(std::string(SSAOLAB_TEST_TMP) + "/ui_900.png");
 }
 

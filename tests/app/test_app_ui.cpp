@@ -24,6 +24,9 @@ class AppUi : public GlTest {
         AppOptions o;
         o.userPresetDir = userDir_;
         o.renderScale = 0.3f; // keeps llvmpipe fast; the UI logic is the same at any scale
+        // These tests count the SSAO chain's passes and idle frames; the reference's background
+        // trace (and its upload pass) has its own tests in test_app_reference.cpp.
+        o.reference = false;
         ui_ = std::make_unique<UiDriver>(o);
     }
     void TearDown() override {

@@ -92,3 +92,15 @@ TEST(DisplayRange, VectorsGetOneRangePerChannel) {
     EXPECT_NEAR(r.hi.z, -10.0f, 1.1f);
     EXPECT_NE(rangeText(r, desc(Display::Vector, 3)).find("y "), std::string::npos);
 }
+
+TEST(DisplayRange, SignedErrorsAreSymmetricAboutZero) {
+    const Image img = ramp(64, 64, -0.05f, 0.2f); // mostly too bright
+    const DisplayRange natural = displayRange(img, desc(Display::Signed), nullptr, {});
+    EXPECT_FALSE(natural.fitted);
+    EXPECT_EQ(natural.lo.x, -kSignedRange); // as error.png: saturates at a quarter
+    EXPECT_EQ(natural.hi.x, kSignedRange);
+    const DisplayRange fitted = displayRange(img, desc(Display::Signed), nullptr, ViewStyle{true, false});
+    EXPECT_TRUE(fitted.fitted);
+    EXPECT_NEAR(fitted.hi.x, 0.1975f, 2e-3f); // the 99th percentile of the larger side...
+    EXPECT_EQ(fitted.lo.x, -fitted.hi.x);     // ...on both: 0 stays white, in the middle
+}

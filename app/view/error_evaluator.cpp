@@ -1,0 +1,62 @@
+#include "view/error_evaluator.h"
+
+#include "view/reference_worker.h"
+
+namespace ssao {
+
+ErrorEvaluator::ErrorEvaluator(std::function<void()> wake) : wake_(std::move(wake)) {
+    thread_ = std::thread([this] { run(); });
+}
+
+ErrorEvaluator::~ErrorEvaluator() {
+    {
+        std::lock_guard<std::mutex> lock(m_);
+        quit_ = true;
+        pending_.reset();
+    }
+    cv_.notify_all();
+    thread_.join();
+}
+
+void ErrorEvaluator::submit(Request r) {
+    {
+        std::lock_guard<std::mutex> lock(m_);
+        pending_ = std::move(r);
+    }
+    cv_.notify_all();
+}
+
+std::optional<ErrorEvaluator::Result> ErrorEvaluator::take() {
+    std::lock_guard<std::mutex> lock(m_);
+    std::optional<Result> out = std::move(result_);
+    result_.reset();
+    return out;
+}
+
+bool ErrorEvaluator::busy() const {
+    std::lock_guard<std::mutex> lock(m_);
+    return working_ || pending_.has_value();
+}
+
+void ErrorEvaluator::run() {
+    lowerThisThreadsPriority(); // as the tracer: the frames come first
+    std::unique_lock<std::mutex> lock(m_);
+    for (;;) {
+        cv_.wait(lock, [&] { return quit_ || pending_.has_value(); });
+        if (quit_) return;
+        Request r = std::move(*pending_);
+        pending_.reset();
+        working_ = true;
+        lock.unlock();
+        Result out{evaluate(r.ao, *r.reference), std::move(r.reference), r.tag};
+        lock.lock();
+        working_ = false;
+        result_ = std::move(out);
+        lock.unlock();
+        ++serial_;
+        if (wake_) wake_();
+        lock.lock();
+    }
+}
+
+} // namespace ssao

@@ -1,0 +1,58 @@
+// Judges an AO frame against a reference snapshot (metrics/evaluate.h) on its own thread: on two
+// cores the metrics of a full-size frame (SSIM, edge mask, percentiles) take ~65 ms, too long for
+// a UI frame. One request at a time; a newer request replaces one still queued.
+#pragma once
+#include "metrics/evaluate.h"
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+namespace ssao {
+
+class ErrorEvaluator {
+  public:
+    struct Request {
+        Image ao; // read back on the GL thread
+        std::shared_ptr<const ReferenceImage> reference;
+        uint64_t tag = 0; // the caller's, returned with the result
+    };
+    struct Result {
+        Evaluation evaluation;
+        std::shared_ptr<const ReferenceImage> reference;
+        uint64_t tag = 0;
+    };
+
+    // `wake` (may be empty) is called from the evaluator's thread when a result is ready.
+    explicit ErrorEvaluator(std::function<void()> wake = {});
+    ~ErrorEvaluator(); // finishes the evaluation under way (if any) and joins
+    ErrorEvaluator(const ErrorEvaluator&) = delete;
+    ErrorEvaluator& operator=(const ErrorEvaluator&) = delete;
+
+    void submit(Request r);
+    // The latest finished result, once; nullopt when none is new.
+    std::optional<Result> take();
+    // True while a request is queued or being evaluated.
+    bool busy() const;
+    // Changes whenever a result is ready (cheap to poll every frame).
+    uint64_t serial() const { return serial_.load(); }
+
+  private:
+    void run();
+
+    std::function<void()> wake_;
+    mutable std::mutex m_;
+    std::condition_variable cv_;
+    std::optional<Request> pending_;
+    std::optional<Result> result_;
+    bool working_ = false, quit_ = false;
+    std::atomic<uint64_t> serial_{0};
+    std::thread thread_; // last: started once everything above exists
+};
+
+} // namespace ssao

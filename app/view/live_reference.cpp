@@ -1,0 +1,149 @@
+#include "view/live_reference.h"
+
+#include "output/image.h"
+
+#include <algorithm>
+#include <thread>
+
+namespace ssao {
+
+bool LiveReference::Key::operator==(const Key& o) const {
+    const Camera &a = camera, &b = o.camera;
+    return sceneVersion == o.sceneVersion && width == o.width && height == o.height && target == o.target &&
+           a.eye == b.eye && a.target == b.target && a.up == b.up && a.fovYDeg == b.fovYDeg &&
+           a.nearZ == b.nearZ && a.farZ == b.farZ && radius.radiusMode == o.radius.radiusMode &&
+           radius.radius == o.radius.radius && radius.radiusScene == o.radius.radiusScene &&
+           radius.radiusPx == o.radius.radiusPx;
+}
+
+void LiveReference::forget() {
+    snapshot_.reset();
+    submitted_.reset();
+    validFrom_ = tag_ + 1; // an evaluation under way is of the old view
+    clear();
+}
+
+void LiveReference::clear() {
+    shown_.reset();
+    metrics_.reset();
+    // Bumped only when the buffers held something: while the camera moves this runs every frame,
+    // and the upload pass must not run with it.
+    if (!buffers_ || buffers_->width > 0) {
+        auto b = std::make_shared<ReferenceBuffers>();
+        b->version = ++version_;
+        buffers_ = std::move(b);
+    }
+}
+
+void LiveReference::publish(const ErrorEvaluator::Result& r) {
+    shown_ = r.reference;
+    auto b = std::make_shared<ReferenceBuffers>();
+    b->width = shown_->width;
+    b->height = shown_->height;
+    b->ao = shown_->ao;
+    b->error = r.evaluation.error.data;
+    b->version = ++version_;
+    buffers_ = std::move(b);
+    metrics_ = r.evaluation.metrics;
+}
+
+bool LiveReference::update(Renderer& r, const std::shared_ptr<const Scene>& scene, bool on, int targetRays,
+                           int fullW, int fullH, bool interacting,
+                           const std::function<float()>& radiusWorld) {
+    // Read first: whatever the threads do after this is news next time.
+    seenTrace_ = worker_.serial();
+    seenEvaluation_ = evaluator_.serial();
+    if (!on) {
+        const bool had = key_ || buffers_;
+        if (key_) worker_.cancel();
+        key_.reset();
+        started_ = false;
+        forget();
+        buffers_.reset();
+        return had;
+    }
+    bool changed = !buffers_;
+    const Key key{r.sceneVersion(), r.camera(), fullW, fullH, targetRays, r.settings().ao};
+    if (!key_ || *key_ != key) {
+        if (started_) worker_.cancel(); // the trace is of another view now
+        key_ = key;
+        started_ = false;
+        const uint64_t before = buffers_ ? buffers_->version : 0;
+        forget();
+        changed |= buffers_->version != before;
+    }
+    // While input moves, the trace neither starts (dragging the camera would start and cancel one
+    // per frame) nor shows its progress: the frames keep the CPU.
+    if (interacting) return changed;
+    if (!started_) {
+        // The frame just rendered is the full-size one: its radius at the centre is the one shown.
+        ReferenceWorker::Job job;
+        job.scene = scene;
+        job.camera = r.camera();
+        job.width = fullW;
+        job.height = fullH;
+        job.settings.radius = radiusWorld();
+        job.settings.samples = targetRays;
+        job.settings.variant = ReferenceVariant::Visibility;
+        // One core stays with the renderer (llvmpipe draws the frames on the CPU too).
+        job.settings.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
+        radius_ = job.settings.radius;
+        job_ = worker_.start(std::move(job));
+        started_ = true;
+    }
+    ReferenceWorker::Snapshot s = worker_.latest();
+    if (s.job == job_ && s.image) snapshot_ = std::move(s.image);
+    // The error follows each new snapshot and ao.denoised (a parameter changed, the reference
+    // stays); the evaluation runs on the evaluator's thread and is shown when it is done.
+    const Resource* ao = r.graph().find("ao.denoised");
+    if (snapshot_ && ao &&
+        (snapshot_ != submitted_ || ao->version != submittedAo_ ||
+         ao->generation != submittedAoGeneration_)) {
+        evaluator_.submit({readBack(ao->texture, 1), snapshot_, ++tag_});
+        submitted_ = snapshot_;
+        submittedAo_ = ao->version;
+        submittedAoGeneration_ = ao->generation;
+    }
+    if (std::optional<ErrorEvaluator::Result> done = evaluator_.take(); done && done->tag >= validFrom_) {
+        publish(*done);
+        changed = true;
+    }
+    return changed;
+}
+
+LiveReference::Status LiveReference::status() const {
+    Status s;
+    if (!key_) return s;
+    s.target = key_->target;
+    s.radius = radius_;
+    if (!started_) {
+        s.state = State::Waiting;
+        return s;
+    }
+    const ReferenceWorker::Progress p = worker_.progress();
+    s.fraction = p.job == job_ ? p.fraction : 0.0;
+    s.rays = shown_ ? shown_->samples : 0;
+    if (shown_) {
+        s.seconds = shown_->seconds;
+        s.mraysPerSecond = shown_->raysPerSecond() * 1e-6;
+    }
+    switch (p.phase) {
+    case ReferenceWorker::Phase::Idle:
+    case ReferenceWorker::Phase::Building:
+        s.state = State::Starting;
+        break;
+    case ReferenceWorker::Phase::Tracing:
+        s.state = State::Tracing;
+        break;
+    case ReferenceWorker::Phase::Done: // done only once the buffers show the last snapshot
+        s.state = s.rays >= s.target ? State::Done : State::Tracing;
+        break;
+    case ReferenceWorker::Phase::Failed:
+        s.state = State::Failed;
+        s.error = p.error;
+        break;
+    }
+    return s;
+}
+
+} // namespace ssao
