@@ -158,6 +158,14 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
     for (const auto& s : f["scenes"])
         md << s.value("name", "") << " (" << s["viewpoints"].size() << " views, R " << num(s.value("radius", 0.0), 4)
            << "), ";
+    double noise = 0;
+    for (const auto& v : run.views)
+        noise += v.error.referenceNoise * v.error.referenceNoise;
+    if (!run.views.empty())
+        md << "\n\nThe reference's own noise (RMS over geometry pixels of its per-pixel standard error, over "
+              "all views): "
+           << num(std::sqrt(noise / double(run.views.size())), 3)
+           << " — errors well above it are the techniques', not the reference's.";
     md << "\n\n![time against error](" << plotFile << ")\n\n";
     md << "Baseline: **" << cfgs[run.sweep->baseline].label << "**: " << num(base.gpuMs, 4)
        << " ms AO + denoise, geometry RMSE " << num(base.rmse, 4) << ", PSNR " << num(base.psnrGeometrySrgb, 4)

@@ -1,0 +1,93 @@
+// The benchmark's pure parts: viewpoints orbit the scene's camera without changing what it looks
+// at or how far away it is; sweeps expand to the configurations they describe.
+#include "bench/sweep.h"
+#include "bench/viewpoints.h"
+#include "settings/params.h"
+#include "util/error.h"
+
+#include <gtest/gtest.h>
+
+using namespace ssao;
+
+TEST(BenchViewpoints, OrbitsKeepTargetDistanceAndLens) {
+    Camera c;
+    c.eye = {3, 2, 5};
+    c.target = {0.5f, 0.2f, -0.3f};
+    c.fovYDeg = 50;
+    const auto views = viewpoints(c, 5);
+    ASSERT_EQ(views.size(), 5u);
+    EXPECT_EQ(views[0].first, "camera");
+    EXPECT_EQ(views[0].second.eye, c.eye);
+    EXPECT_EQ(views[1].first, "orbit+25");
+    EXPECT_EQ(views[2].first, "orbit-25");
+    EXPECT_EQ(views[3].first, "orbit+50");
+    const float dist = glm::length(c.eye - c.target);
+    for (size_t i = 1; i < views.size(); ++i) {
+        const Camera& v = views[i].second;
+        EXPECT_EQ(v.target, c.target);
+        EXPECT_EQ(v.fovYDeg, c.fovYDeg);
+        EXPECT_NEAR(glm::length(v.eye - v.target), dist, 1e-3f * dist);
+        EXPECT_GT(glm::length(v.eye - c.eye), 0.1f * dist) << views[i].first; // really another view
+        validateCamera(v);
+    }
+}
+
+TEST(BenchSweep, GroupsExpandToProductsDeduplicatedWithTheBaselineFirst) {
+    const nlohmann::json j = nlohmann::json::parse(R"({
+      "name": "t", "base": {"set": {"kernel.noise": "none"}},
+      "groups": [{"name": "a", "vary": {"kernel.samples": [4, 8], "denoise.kind": ["none", "box4"]}},
+                 {"name": "b", "set": {"kernel.samples": 4, "denoise.kind": "none"}}]})");
+    const Sweep s = parseSweep(j, "test");
+    // baseline + 2x2 products (group b repeats one of them) + the kernel technique at its defaults
+    // over the base (64 samples, box4: not a duplicate).
+    ASSERT_EQ(s.configs.size(), 1u + 4u + 1u);
+    EXPECT_EQ(s.baseline, 0u);
+    EXPECT_TRUE(s.configs[0].baseline);
+    EXPECT_EQ(s.configs[0].label, "learnopengl (baseline)");
+    EXPECT_EQ(s.configs[1].settings.kernel.samples, 4);
+    EXPECT_EQ(s.configs[1].settings.kernel.noise, Noise::None); // the base applies
+    EXPECT_EQ(s.configs[1].label, "kind=none noise=none samples=4");
+    EXPECT_EQ(s.configs[4].settings.kernel.samples, 8);
+    EXPECT_EQ(s.configs[5].group, "technique defaults");
+}
+
+TEST(BenchSweep, TheBuiltinSweepCoversWhatTheIssueLists) {
+    const Sweep s = loadSweep("builtin");
+    std::set<int> samples;
+    std::set<std::string> blurs, positions, normals, shapes;
+    bool separable = false;
+    for (const auto& c : s.configs) {
+        samples.insert(c.settings.kernel.samples);
+        blurs.insert(findParam("denoise.kind")->format(findParam("denoise.kind")->get(c.settings)));
+        positions.insert(findParam("gbuffer.position_format")->format(findParam("gbuffer.position_format")->get(c.settings)));
+        normals.insert(findParam("gbuffer.normal_format")->format(findParam("gbuffer.normal_format")->get(c.settings)));
+        shapes.insert(findParam("kernel.shape")->format(findParam("kernel.shape")->get(c.settings)));
+        separable |= c.settings.kernel.separable;
+    }
+    EXPECT_TRUE(samples.count(4) && samples.count(256));
+    EXPECT_EQ(blurs.size(), findParam("denoise.kind")->choices.size());
+    EXPECT_EQ(shapes.size(), findParam("kernel.shape")->choices.size());
+    EXPECT_EQ(positions.size(), 2u);
+    EXPECT_GE(normals.size(), 2u); // 8-bit and float normals
+    EXPECT_TRUE(separable);
+}
+
+TEST(BenchSweep, BadSweepsAreRefusedNamingTheProblem) {
+    auto fails = [](const char* text, const char* needle) {
+        try {
+            parseSweep(nlohmann::json::parse(text), "test");
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+            return;
+        }
+        ADD_FAILURE() << "accepted: " << text;
+    };
+    fails(R"({"groups": [{"vary": {"kernel.samples": []}}]})", "non-empty");
+    fails(R"({"groups": [{"vary": {"kernel.samples": [0]}}]})", "kernel.samples");
+    fails(R"({"groups": [{"set": {"ao.radius_scene": 0.1}}]})", "radius");
+    fails(R"({"groups": [{"sett": {}}]})", "sett");
+    fails(R"({"grups": []})", "grups");
+    fails(R"({"base": {"preset": "no-such-preset"}})", "no-such-preset");
+    fails(R"({"groups": [{"vary": {"kernel.samples": [1,2,3,4,5,6,7,8,9,10], "kernel.bias": [0,0.1,0.2,0.3,0.4,0.5,0.6,0.7,0.8,0.9], "kernel.seed": [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19,20,21]}}]})",
+          "more than");
+}
