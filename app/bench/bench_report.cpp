@@ -155,9 +155,12 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
        << f.value("warmup", 0) << " warm-up; reference " << f["reference"].value("variant", "") << ", "
        << f["reference"].value("rays", 0) << " rays per pixel, R = " << f["reference"].value("radius_scene", 0.0)
        << " x the scene diagonal.\n\nScenes and viewpoints: ";
-    for (const auto& s : f["scenes"])
-        md << s.value("name", "") << " (" << s["viewpoints"].size() << " views, R " << num(s.value("radius", 0.0), 4)
-           << "), ";
+    for (size_t i = 0; i < f["scenes"].size(); ++i) {
+        const auto& s = f["scenes"][i];
+        md << (i ? ", " : "") << s.value("name", "") << " (" << s["viewpoints"].size() << " views, R "
+           << num(s.value("radius", 0.0), 4) << ")";
+    }
+    md << ".";
     double noise = 0;
     for (const auto& v : run.views)
         noise += v.error.referenceNoise * v.error.referenceNoise;
