@@ -57,9 +57,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_flag("--quiet", o.quiet, "print nothing on success");
 }
 
-namespace {
-
-void parseSize(const std::string& s, int& w, int& h) {
+void parseSizeOption(const std::string& s, int& w, int& h) {
     int n = 0;
     if (std::sscanf(s.c_str(), "%dx%d%n", &w, &h, &n) != 2 || n != int(s.size()))
         throw Error("--size '" + s + "': expected WIDTHxHEIGHT, e.g. 1280x720");
@@ -70,15 +68,13 @@ void parseSize(const std::string& s, int& w, int& h) {
     }
 }
 
-} // namespace
-
 int runRender(const RenderOptions& o) {
     // Validate everything that needs no GL first, so bad input fails fast with one line.
     Preset preset;
     if (!o.preset.empty()) preset = PresetStore::standard(o.presetDir).open(o.preset);
     int w = 1280, h = 720;
     if (!o.size.empty())
-        parseSize(o.size, w, h);
+        parseSizeOption(o.size, w, h);
     else if (preset.size)
         std::tie(w, h) = *preset.size;
     Settings settings = preset.settings;

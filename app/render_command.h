@@ -30,6 +30,8 @@ struct RenderOptions {
 };
 
 void addRenderOptions(CLI::App& cmd, RenderOptions& o);
+// "WIDTHxHEIGHT" within the render limits; throws ssao::Error naming --size (render, bench, tune).
+void parseSizeOption(const std::string& text, int& w, int& h);
 // Throws ssao::Error on any problem; returns the process exit code.
 int runRender(const RenderOptions& o);
 

@@ -5,6 +5,7 @@
 #include "bench/viewpoints.h"
 #include "gl/context.h"
 #include "progress_bar.h"
+#include "render_command.h"
 #include "reference/reference_cache.h"
 #include "scene/scene.h"
 #include "util/error.h"

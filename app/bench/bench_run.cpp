@@ -78,15 +78,5 @@ nlohmann::json runFacts(const std::string& glRenderer) {
             {"git_revision", rev.empty() ? "unknown" : rev}};
 }
 
-void parseSizeOption(const std::string& text, int& w, int& h) {
-    int n = 0;
-    if (std::sscanf(text.c_str(), "%dx%d%n", &w, &h, &n) != 2 || n != int(text.size()))
-        throw Error("--size '" + text + "': expected WIDTHxHEIGHT, e.g. 1280x720");
-    try {
-        checkRenderSize(w, h);
-    } catch (const Error& e) {
-        throw Error("--size '" + text + "': " + e.what());
-    }
-}
 
 } // namespace ssao

@@ -22,6 +22,5 @@ ViewResult measure(Renderer& r, const Settings& s, const ReferenceImage& ref, in
 // Machine, GL renderer, build type, date, git revision.
 nlohmann::json runFacts(const std::string& glRenderer);
 
-void parseSizeOption(const std::string& text, int& w, int& h); // "WxH", throws naming the option
 
 } // namespace ssao

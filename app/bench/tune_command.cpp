@@ -4,6 +4,7 @@
 #include "bench/viewpoints.h"
 #include "gl/context.h"
 #include "progress_bar.h"
+#include "render_command.h"
 #include "reference/reference_cache.h"
 #include "settings/params.h"
 #include "settings/preset.h"
