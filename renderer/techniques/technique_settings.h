@@ -1,12 +1,14 @@
 // One member per AO technique. Settings (settings/settings.h) inherits this struct, so a pass
 // reads `settings.kernel.samples`. Adding a technique adds one member (and its include) here.
 #pragma once
+#include "techniques/gtao/settings.h"
 #include "techniques/kernel/settings.h"
 
 namespace ssao {
 
 struct TechniqueSettings {
     KernelSettings kernel;
+    GtaoSettings gtao;
 };
 
 } // namespace ssao

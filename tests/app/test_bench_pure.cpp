@@ -3,6 +3,7 @@
 #include "bench/sweep.h"
 #include "bench/viewpoints.h"
 #include "settings/params.h"
+#include "techniques/technique.h"
 #include "util/error.h"
 
 #include <gtest/gtest.h>
@@ -38,9 +39,9 @@ TEST(BenchSweep, GroupsExpandToProductsDeduplicatedWithTheBaselineFirst) {
       "groups": [{"name": "a", "vary": {"kernel.samples": [4, 8], "denoise.kind": ["none", "box4"]}},
                  {"name": "b", "set": {"kernel.samples": 4, "denoise.kind": "none"}}]})");
     const Sweep s = parseSweep(j, "test");
-    // baseline + 2x2 products (group b repeats one of them) + the kernel technique at its defaults
-    // over the base (64 samples, box4: not a duplicate).
-    ASSERT_EQ(s.configs.size(), 1u + 4u + 1u);
+    // baseline + 2x2 products (group b repeats one of them) + every technique at its defaults over
+    // the base (kernel: 64 samples, box4: not a duplicate).
+    ASSERT_EQ(s.configs.size(), 1u + 4u + techniques().size());
     EXPECT_EQ(s.baseline, 0u);
     EXPECT_TRUE(s.configs[0].baseline);
     EXPECT_EQ(s.configs[0].label, "learnopengl (baseline)");

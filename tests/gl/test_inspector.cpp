@@ -2,6 +2,8 @@
 // for one pixel, records its taps. The record must reproduce the value the pass wrote.
 #include "gl_fixture.h"
 
+#include "techniques/gtao/settings.h"
+
 #include "scene/scene.h"
 #include "techniques/technique.h"
 #include "util/error.h"
@@ -58,6 +60,18 @@ TEST_F(Inspector, GpuTapsReproduceTheWrittenAoForEveryModeAndTechnique) {
                         continue;
                     }
                     ++geometry;
+                    if (t.id == "gtao") {
+                        // Every step of every slice on both sides is recorded; a tap's contribution
+                        // is its falloff weight (the horizon, not a sum, decides the occlusion).
+                        int slices = 0, steps = 0;
+                        gtaoSlicesSteps(s.gtao, slices, steps);
+                        EXPECT_EQ(int(pi->taps.size()), slices * steps * 2) << mode;
+                        for (const auto& tap : pi->taps)
+                            EXPECT_TRUE(tap.contribution >= 0.0f && tap.contribution <= 1.0f) << mode;
+                        const float vis = std::clamp(1.0f - pi->occlusion, 0.0f, 1.0f);
+                        EXPECT_NEAR(std::pow(vis, s.ao.power), pi->ao, 1e-4f) << mode;
+                        continue;
+                    }
                     // The taps add up to what the shader accumulated.
                     double sum = 0;
                     for (const auto& tap : pi->taps)

@@ -1,0 +1,12 @@
+// GTAO settings → its GPU constants (shaders/techniques/gtao/layout.h), pure and tested.
+#pragma once
+#include "settings/settings.h"
+
+#include "../../../shaders/include/bindings.h"
+#include "../../../shaders/techniques/gtao/layout.h"
+
+namespace ssao {
+
+gpu::GtaoConstants packGtaoConstants(const GtaoSettings& s, const gpu::AoCommon& common, bool normalUnorm);
+
+} // namespace ssao

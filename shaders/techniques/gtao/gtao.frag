@@ -1,0 +1,120 @@
+#version 450 core
+// GTAO (Jimenez, Wu, Pesce, Jarabo 2016), laid out like Intel XeGTAO's MainPass (our own code):
+// for each slice (a screen direction ω through the pixel, i.e. a plane containing the view
+// vector V), march the depth buffer on both sides to find the highest horizon, then integrate the
+// cosine-weighted visibility between the two horizons analytically (the paper's eq. 10):
+//   â = ¼(−cos(2h₀ − n) + cos n + 2h₀ sin n) + ¼(−cos(2h₁ − n) + cos n + 2h₁ sin n)
+// weighted by the length of the normal projected into the slice, averaged over slices.
+#include "include/bindings.h"
+#include "techniques/gtao/layout.h"
+#include "include/frame.glsl"
+#include "include/ao_common.glsl"
+#include "include/inspect.glsl"
+
+layout(std140, binding = SSAO_UBO_AO) uniform GtaoBlock { GtaoConstants_ ssao; };
+layout(binding = SSAO_TEX_POSITION) uniform sampler2D gPosition;
+layout(binding = SSAO_TEX_NORMAL) uniform sampler2D gNormal;
+
+in vec2 vUv;
+layout(location = 0) out float oAO;
+
+const float PI = 3.14159265358979;
+const float HALF_PI = 1.57079632679490;
+
+bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
+
+// Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of Duty:
+// Advanced Warfare"): a per-pixel value in [0,1) whose 3x3 neighbourhoods are well spread.
+float ign(vec2 p) { return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715)))); }
+
+// acos of a cosine that rounding may have pushed past ±1 (acos(1 + ε) is NaN on llvmpipe).
+float safeAcos(float x) { return acos(clamp(x, -1.0, 1.0)); }
+
+void main() {
+    vec4 P4 = texture(gPosition, vUv);
+    if (P4.w == 0.0) { // sky: unoccluded, no work spent
+        oAO = 1.0;
+        INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
+        return;
+    }
+    vec3 P = P4.xyz;
+    vec3 N = texture(gNormal, vUv).xyz;
+    if (hasFlag(GTAO_FLAG_NORMAL_UNORM)) N = N * 2.0 - 1.0;
+    float nl2 = dot(N, N);
+    N = nl2 > 1e-12 ? N * inversesqrt(nl2) : vec3(0.0, 0.0, 1.0);
+    vec3 V = normalize(-P);
+    float depth = -P.z;
+
+    // Search radius (world) and its size in G-buffer pixels: a unit at view depth d spans
+    // proj[1][1] * H / (2 d) pixels.
+    float R = aoRadius(ssao.aoCommon, depth) * ssao.params.x;
+    float radiusPx = R * frame.proj[1][1] * 0.5 * frame.viewport.y / depth;
+    float falloffMul = ssao.params.y / R, falloffAdd = ssao.params.z;
+    // The first step lands at least ~1.3 px away: sampling the pixel itself gives a zero delta
+    // (NaN direction) and self-occlusion lines (XeGTAO minS; HBAO "first step >= 1 px").
+    float minS = ssao.params2.y / max(radiusPx, 1e-6);
+    int slices = ssao.modes.x, steps = ssao.modes.y;
+    vec2 noise = vec2(0.5);
+    if (hasFlag(GTAO_FLAG_NOISE)) noise = vec2(ign(gl_FragCoord.xy), ign(gl_FragCoord.xy + vec2(47.0, 17.0)));
+
+    float visibility = 0.0;
+    for (int slice = 0; slice < slices; ++slice) {
+        float phi = (float(slice) + noise.x) / float(slices) * PI;
+        vec2 omega = vec2(cos(phi), sin(phi)); // pixel space, y up like view space
+        vec3 dirV = vec3(omega, 0.0);
+        // The slice plane holds V and dirV; project the normal into it.
+        vec3 orthoDir = dirV - dot(dirV, V) * V;
+        vec3 axis = normalize(cross(orthoDir, V));
+        vec3 projN = N - axis * dot(N, axis);
+        float projNLen = length(projN);
+        float cosNorm = clamp(dot(projN, V) / max(projNLen, 1e-6), 0.0, 1.0);
+        float n = sign(dot(orthoDir, projN)) * safeAcos(cosNorm); // normal's angle from V in the slice
+        // With no occluder the horizons are the tangent plane: n ± π/2.
+        float lowCos0 = cos(n + HALF_PI), lowCos1 = cos(n - HALF_PI);
+        float hCos0 = lowCos0, hCos1 = lowCos1;
+        for (int step = 0; step < steps; ++step) {
+            float s = pow((float(step) + noise.y) / float(steps), ssao.params.w) + minS;
+            // Snap to texel centres: positions are not interpolated (XeGTAO rounds likewise).
+            vec2 offsetUv = round(s * radiusPx * omega) * frame.viewport.zw;
+            for (int side = 0; side < 2; ++side) {
+                vec2 uv = vUv + (side == 0 ? offsetUv : -offsetUv);
+                if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) {
+                    INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, slice); // unseen: no occluder
+                    continue;
+                }
+                vec4 S = textureLod(gPosition, uv, 0.0);
+                if (S.w == 0.0) {
+                    INSPECT_TAP(P, uv, SSAO_TAP_SKY, 0.0, slice);
+                    continue;
+                }
+                vec3 delta = S.xyz - P;
+                float dist = length(delta);
+                if (!(dist > 0.0)) { // the same texel: no direction to a horizon
+                    INSPECT_TAP(S.xyz, uv, SSAO_TAP_OPEN, 0.0, slice);
+                    continue;
+                }
+                float shc = dot(delta / dist, V);
+                // Thin-occluder heuristic: depth differences count (1 + t) times in the falloff.
+                float falloffBase = length(vec3(delta.xy, delta.z * (1.0 + ssao.params2.x)));
+                float w = clamp(falloffBase * falloffMul + falloffAdd, 0.0, 1.0);
+                float low = side == 0 ? lowCos0 : lowCos1;
+                shc = mix(low, shc, w); // beyond the radius an occluder fades to the tangent plane
+                bool raises = side == 0 ? shc > hCos0 : shc > hCos1;
+                if (side == 0) hCos0 = max(hCos0, shc);
+                else hCos1 = max(hCos1, shc);
+                INSPECT_TAP(S.xyz, uv, raises && w > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN, w, slice);
+            }
+        }
+        // Horizon angles from V (side 0 positive), kept within the hemisphere around the normal.
+        float h0 = -safeAcos(hCos1), h1 = safeAcos(hCos0);
+        h0 = n + clamp(h0 - n, -HALF_PI, HALF_PI);
+        h1 = n + clamp(h1 - n, -HALF_PI, HALF_PI);
+        float sinN = sin(n);
+        float iarc0 = (cosNorm + 2.0 * h0 * sinN - cos(2.0 * h0 - n)) * 0.25;
+        float iarc1 = (cosNorm + 2.0 * h1 * sinN - cos(2.0 * h1 - n)) * 0.25;
+        visibility += projNLen * (iarc0 + iarc1);
+    }
+    visibility /= float(slices);
+    oAO = aoFinish(ssao.aoCommon, visibility);
+    INSPECT_RESULT(true, P, N, 1.0 - visibility, float(slices), R, oAO);
+}

@@ -1,0 +1,46 @@
+// GTAO's settings → constants packing (pure): quality presets, falloff arithmetic, flags.
+#include "techniques/gtao/pack.h"
+
+#include <gtest/gtest.h>
+
+using namespace ssao;
+
+TEST(GtaoPack, QualityPresetsAreXeGtaos) {
+    GtaoSettings s;
+    const std::pair<GtaoQuality, glm::ivec2> presets[] = {{GtaoQuality::Low, {1, 2}},
+                                                          {GtaoQuality::Medium, {2, 2}},
+                                                          {GtaoQuality::High, {3, 3}},
+                                                          {GtaoQuality::Ultra, {9, 3}}};
+    for (auto [q, ss] : presets) {
+        s.quality = q;
+        const auto c = packGtaoConstants(s, gpu::AoCommon{}, false);
+        EXPECT_EQ(c.modes.x, ss.x);
+        EXPECT_EQ(c.modes.y, ss.y);
+    }
+    s.quality = GtaoQuality::Custom;
+    s.slices = 5, s.steps = 1000; // clamped to the shader's limits
+    const auto c = packGtaoConstants(s, gpu::AoCommon{}, false);
+    EXPECT_EQ(c.modes.x, 5);
+    EXPECT_EQ(c.modes.y, GTAO_MAX_STEPS);
+}
+
+TEST(GtaoPack, FalloffWeightIsOneInsideAndZeroAtTheSearchRadius) {
+    GtaoSettings s;
+    s.falloffRange = 0.4f;
+    s.radiusMultiplier = 2.0f;
+    const auto c = packGtaoConstants(s, gpu::AoCommon{}, true);
+    EXPECT_EQ(c.params.x, 2.0f);
+    // weight(d) = saturate(d / R * mul + add), R the search radius: 1 at 0.6 R, 0 at R.
+    auto weight = [&](float dOverR) { return std::clamp(dOverR * c.params.y + c.params.z, 0.0f, 1.0f); };
+    EXPECT_NEAR(weight(0.6f), 1.0f, 1e-6f);
+    EXPECT_NEAR(weight(0.8f), 0.5f, 1e-6f);
+    EXPECT_NEAR(weight(1.0f), 0.0f, 1e-6f);
+    EXPECT_EQ(weight(0.1f), 1.0f);
+    EXPECT_EQ(c.modes.z, GTAO_FLAG_NOISE | GTAO_FLAG_NORMAL_UNORM);
+    EXPECT_GT(c.params2.y, 1.0f); // the first step is at least a pixel away
+    s.noise = GtaoNoise::None;
+    s.falloffRange = 0.0f; // clamped: no division by zero
+    const auto d = packGtaoConstants(s, gpu::AoCommon{}, false);
+    EXPECT_TRUE(std::isfinite(d.params.y) && std::isfinite(d.params.z));
+    EXPECT_EQ(d.modes.z, 0);
+}
