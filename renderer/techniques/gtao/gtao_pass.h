@@ -1,22 +1,17 @@
-// GTAO's pass: reads the G-buffer (positions, normals), writes ao.raw (R32F, never 8-bit: an
-// 8-bit target turns a NaN into 1.0 on llvmpipe and hides the bug from every test).
+// GTAO's pass: reads the G-buffer's positions and normals, writes ao.raw (techniques/ao_pass.h).
 #pragma once
-#include "graph/inspect_probe.h"
-#include "graph/pass.h"
+#include "techniques/ao_pass.h"
 
 namespace ssao {
 
-class GtaoPass final : public Pass {
+class GtaoPass final : public AoPass {
   public:
-    explicit GtaoPass(const Branch& b) : Pass(b.res("ao"), b) {}
+    using AoPass::AoPass;
     void setup(PassBuilder& b, const Settings& s) const override;
-    void execute(PassContext& ctx) override;
-    bool inspect(PassContext& ctx, glm::ivec2 pixel, PixelInspection& out) override;
 
   private:
-    void draw(PassContext& ctx, bool inspect);
+    std::string prepare(PassContext& ctx) override;
     gl::UniformBuffer ubo_;
-    InspectProbe probe_;
 };
 
 } // namespace ssao

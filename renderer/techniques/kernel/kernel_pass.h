@@ -1,24 +1,20 @@
-// Kernel SSAO's pass: reads the G-buffer, writes ao.raw (R32F, never 8-bit: an 8-bit target turns
-// a NaN into 1.0 on llvmpipe and hides the bug from every test) at the AO resolution.
+// Kernel SSAO's pass: reads the G-buffer (positions or the depth buffer, normals), writes ao.raw
+// (techniques/ao_pass.h).
 #pragma once
-#include "graph/inspect_probe.h"
-#include "graph/pass.h"
+#include "techniques/ao_pass.h"
 
 namespace ssao {
 
-class KernelPass final : public Pass {
+class KernelPass final : public AoPass {
   public:
-    explicit KernelPass(const Branch& b) : Pass(b.res("ao"), b) {}
+    using AoPass::AoPass;
     void setup(PassBuilder& b, const Settings& s) const override;
-    void execute(PassContext& ctx) override;
-    bool inspect(PassContext& ctx, glm::ivec2 pixel, PixelInspection& out) override;
 
   private:
-    void draw(PassContext& ctx, bool inspect);
+    std::string prepare(PassContext& ctx) override;
     gl::Texture2D noise_;
     gl::UniformBuffer ubo_;
     int noiseSeed_ = -1;
-    InspectProbe probe_;
 };
 
 } // namespace ssao

@@ -1,0 +1,47 @@
+#include "techniques/ao_pass.h"
+
+#include "gl/shader_library.h"
+#include "scene/camera.h"
+#include "techniques/ao_common.h"
+
+namespace ssao {
+
+ResourceDesc AoPass::rawOutput(const Settings& s) const {
+    ResourceDesc out = describe(branch().res("ao.raw"), GL_R32F, 1, Display::Unit,
+                                "AO of the technique before denoising (1 = open, 0 = fully occluded)");
+    out.scale = resolutionScale(s.ao.resolution);
+    return out;
+}
+
+gpu::AoCommon AoPass::common(PassContext& ctx) const {
+    const FrameInfo& f = ctx.frame;
+    const glm::mat4 proj = f.camera->projection(float(f.width) / float(f.height));
+    // A radius in pixels means displayed pixels, also while the app renders reduced.
+    const float upp = unitsPerPixelAtUnitDepth(proj, f.height) * f.displayScale;
+    return packAoCommon(ctx.settings.ao, 2.0f * f.sceneRadius, upp, ctx.size(branch().res("ao.raw")));
+}
+
+bool AoPass::normalUnorm(PassContext& ctx) const {
+    return ctx.desc("gbuffer.normal").format == GL_RGBA8;
+}
+
+void AoPass::draw(PassContext& ctx, bool inspect) {
+    const std::string frag = prepare(ctx);
+    gl::Defines defs;
+    if (inspect)
+        defs.push_back({"INSPECT", "1"});
+    else
+        ctx.bindOutputs({branch().res("ao.raw")});
+    glUseProgram(ctx.shaders.program("passes/fullscreen.vert", frag, defs));
+    ctx.drawFullscreen();
+}
+
+bool AoPass::inspect(PassContext& ctx, glm::ivec2 pixel, PixelInspection& out) {
+    const glm::ivec2 size = ctx.size(branch().res("ao.raw"));
+    if (pixel.x < 0 || pixel.y < 0 || pixel.x >= size.x || pixel.y >= size.y) return false;
+    probe_.run(
+        pixel, size, [&] { draw(ctx, true); }, out);
+    return true;
+}
+
+} // namespace ssao

@@ -1,0 +1,32 @@
+// What every technique's AO pass shares: it writes the chain's ao.raw (R32F at the AO resolution:
+// never 8-bit, which turns a NaN into 1.0 on llvmpipe and hides the bug from every test), draws one
+// fullscreen triangle with its fragment shader, and replays that shader with INSPECT for the
+// sample inspector. A technique's pass supplies its inputs, constants and shader (prepare()).
+#pragma once
+#include "graph/inspect_probe.h"
+#include "graph/pass.h"
+
+#include "../../shaders/include/bindings.h"
+
+namespace ssao {
+
+class AoPass : public Pass {
+  public:
+    explicit AoPass(const Branch& b) : Pass(b.res("ao"), b) {}
+    void execute(PassContext& ctx) override { draw(ctx, false); }
+    bool inspect(PassContext& ctx, glm::ivec2 pixel, PixelInspection& out) override;
+
+  protected:
+    ResourceDesc rawOutput(const Settings& s) const; // the chain's ao.raw
+    // This frame's shared constants: radius (in displayed pixels for screen mode), power, target.
+    gpu::AoCommon common(PassContext& ctx) const;
+    bool normalUnorm(PassContext& ctx) const; // the normal target stores (n+1)/2
+    // Binds the technique's inputs and constants; returns its fragment shader (under shaders/).
+    virtual std::string prepare(PassContext& ctx) = 0;
+
+  private:
+    void draw(PassContext& ctx, bool inspect);
+    InspectProbe probe_;
+};
+
+} // namespace ssao
