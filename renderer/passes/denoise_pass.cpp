@@ -4,14 +4,22 @@
 #include "passes/denoise_weights.h"
 #include "techniques/ao_common.h"
 
+#include <algorithm>
+
 namespace ssao {
 
 void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
     b.read(branch().res("ao.raw"));
     ResourceDesc tmp =
         describe(branch().res("denoise.tmp"), GL_R32F, 1, Display::Unit, "x pass of the denoiser");
-    tmp.scale = resolutionScale(s.ao.resolution);
+    // The bilateral's passes all run at full resolution (its first pass upsamples jointly).
+    const bool bilateral = s.denoise.kind == DenoiseKind::Bilateral;
+    tmp.scale = bilateral ? 1.0f : resolutionScale(s.ao.resolution);
     tmp.internal = true;
+    if (bilateral) {
+        b.read("gbuffer.depth");
+        b.read("gbuffer.normal");
+    }
     b.write(tmp);
     b.write(describe(branch().res("ao.denoised"), GL_R32F, 1, Display::Unit,
                      "AO after the denoise stage, at full resolution (what the composite uses)"));
@@ -22,6 +30,10 @@ void DenoisePass::execute(PassContext& ctx) {
     if (!linear_) linear_ = gl::Sampler(GL_LINEAR, GL_CLAMP_TO_EDGE, name() + ".upsample");
     const std::string raw = branch().res("ao.raw"), tmp = branch().res("denoise.tmp"),
                       out = branch().res("ao.denoised");
+    if (ctx.settings.denoise.kind == DenoiseKind::Bilateral) {
+        bilateral(ctx);
+        return;
+    }
     const bool upsample = ctx.size(tmp) != ctx.size(out);
     glUseProgram(ctx.shaders.program("passes/fullscreen.vert", "passes/denoise.frag"));
     for (int dir = 0; dir < 2; ++dir) {
@@ -41,6 +53,30 @@ void DenoisePass::execute(PassContext& ctx) {
         ctx.drawFullscreen();
     }
     gl::Sampler::unbind(SSAO_TEX_AO);
+}
+
+void DenoisePass::bilateral(PassContext& ctx) {
+    const std::string raw = branch().res("ao.raw"), tmp = branch().res("denoise.tmp"),
+                      out = branch().res("ao.denoised");
+    if (!ubo_[0]) ubo_[0] = gl::UniformBuffer(sizeof(gpu::DenoiseConstants), name() + ".x.constants");
+    const bool unorm = ctx.desc("gbuffer.normal").format == GL_RGBA8;
+    const gpu::DenoiseConstants c = packBilateralConstants(ctx.settings.denoise, unorm);
+    ubo_[0].upload(&c, sizeof c);
+    ubo_[0].bind(SSAO_UBO_DENOISE);
+    ctx.in("gbuffer.depth").bind(SSAO_TEX_LINEAR_DEPTH);
+    ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
+    gl::Sampler::unbind(SSAO_TEX_AO);
+    glUseProgram(ctx.shaders.program("passes/fullscreen.vert", "passes/denoise_bilateral.frag"));
+    // Alternate targets so the last pass lands in ao.denoised: n = 3 is raw → out → tmp → out.
+    const int n = std::clamp(ctx.settings.denoise.passes, 1, 3);
+    std::string input = raw;
+    for (int i = 0; i < n; ++i) {
+        const std::string target = (n - 1 - i) % 2 == 0 ? out : tmp;
+        ctx.in(input).bind(SSAO_TEX_AO);
+        ctx.bindOutputs({target});
+        ctx.drawFullscreen();
+        input = target;
+    }
 }
 
 } // namespace ssao

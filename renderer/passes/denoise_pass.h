@@ -1,6 +1,7 @@
 // The denoise stage: a separable filter of the raw AO (box 4x4 of seed 004 or gaussian of seed 003),
 // x pass at the AO's resolution, y pass at full resolution — so reduced-resolution AO is
-// upsampled (bilinearly) here. It may read depth and normals (the bilateral denoiser will).
+// upsampled (bilinearly) here — or the edge-aware bilateral, which reads depth and normals and
+// upsamples jointly.
 #pragma once
 #include "graph/pass.h"
 
@@ -13,6 +14,7 @@ class DenoisePass final : public Pass {
     void execute(PassContext& ctx) override;
 
   private:
+    void bilateral(PassContext& ctx); // edge-aware, 1-3 passes at full resolution
     gl::UniformBuffer ubo_[2];
     gl::Sampler linear_;
 };

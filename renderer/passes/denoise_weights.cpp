@@ -34,4 +34,13 @@ gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int directi
     return c;
 }
 
+gpu::DenoiseConstants packBilateralConstants(const DenoiseSettings& d, bool normalUnorm) {
+    gpu::DenoiseConstants c{};
+    c.taps = {std::clamp(d.halfWidth, 0, SSAO_BILATERAL_MAX_HALF_WIDTH), 0,
+              normalUnorm ? SSAO_DENOISE_NORMAL_UNORM : 0, 0};
+    // Normal term cos^8: 0.5 at ~25 degrees, so creases split while curved surfaces stay smooth.
+    c.offsetsWeights[0] = {std::max(d.sigma, 0.1f), std::max(d.sharpness, 0.0f), 8.0f, 0.0f};
+    return c;
+}
+
 } // namespace ssao

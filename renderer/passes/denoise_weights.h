@@ -10,4 +10,8 @@ namespace ssao {
 // `spacing` pixels, weights exp(-i²/(2σ²)) normalised; none → the centre tap (a copy).
 gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int direction);
 
+// Bilateral: taps = (half-width clamped to 8, unused, flags, unused); offsetsWeights[0] =
+// (sigma, depth sharpness, normal power, unused). Flags: SSAO_DENOISE_NORMAL_UNORM.
+gpu::DenoiseConstants packBilateralConstants(const DenoiseSettings& d, bool normalUnorm);
+
 } // namespace ssao

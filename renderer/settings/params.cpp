@@ -76,21 +76,30 @@ std::vector<Param> coreRows() {
               {"quarter", AoResolution::Quarter}})),
         // ---- Denoise --------------------------------------------------------------------------
         ENUM_ROW("denoise.kind", "Denoise", denoise.kind, DenoiseKind,
-                 "Removes the sampling noise: none, 4x4 box (seed 004) or gaussian (seed 003); both run "
-                 "separably and upsample reduced-resolution AO.",
+                 "Removes the sampling noise: none, 4x4 box (seed 004), gaussian (seed 003) - both separable, "
+                 "upsampling reduced-resolution AO bilinearly - or bilateral: edge-aware, weighted by depth "
+                 "and normal similarity so AO does not bleed across silhouettes, with a joint-bilateral upsample.",
                  ({{"none", DenoiseKind::None},
                    {"box4", DenoiseKind::Box4},
-                   {"gaussian", DenoiseKind::Gaussian}})),
+                   {"gaussian", DenoiseKind::Gaussian},
+                   {"bilateral", DenoiseKind::Bilateral}})),
         FLOAT_ROW("denoise.sigma", "Sigma", denoise.sigma, 0.1, 32.0, "taps",
-                  "Gaussian standard deviation; weight = exp(-d^2 / (2 sigma^2)).")
-            .onlyWhen("denoise.kind", {"gaussian"}),
+                  "Gaussian standard deviation (also the bilateral's spatial term); weight = exp(-d^2 / (2 sigma^2)).")
+            .onlyWhen("denoise.kind", {"gaussian", "bilateral"}),
         INT_ROW("denoise.half_width", "Half-width", denoise.halfWidth, 0, 32, "taps",
-                "Gaussian taps each side of the centre (2 gives the seed's 5x5).")
-            .onlyWhen("denoise.kind", {"gaussian"}),
+                "Taps each side of the centre (2 gives the seed's 5x5; the bilateral uses at most 8).")
+            .onlyWhen("denoise.kind", {"gaussian", "bilateral"}),
         FLOAT_ROW(
             "denoise.spacing", "Tap spacing", denoise.spacing, 0.25, 16.0, "pixels",
             "Distance between gaussian taps (seed 003 blurRadius); >1 widens the blur without more taps.")
             .onlyWhen("denoise.kind", {"gaussian"}),
+        FLOAT_ROW("denoise.sharpness", "Edge sharpness", denoise.sharpness, 0.0, 200.0, "",
+                  "Bilateral: a neighbour whose depth differs by a fraction f of the pixel's weighs "
+                  "exp(-(f x sharpness)^2); higher keeps AO from crossing depth edges, 0 ignores depth.")
+            .onlyWhen("denoise.kind", {"bilateral"}),
+        INT_ROW("denoise.passes", "Passes", denoise.passes, 1, 3, "",
+                "Bilateral: how many times the edge-aware filter runs (XeGTAO's denoiser runs 1-3).")
+            .onlyWhen("denoise.kind", {"bilateral"}),
         // ---- Composite ------------------------------------------------------------------------
         FLOAT_ROW("composite.ambient", "Ambient", composite.ambient, 0.0, 4.0, "",
                   "Ambient term strength: ambient * albedo * AO (seed 004 uses 0.1 with a bright light)."),

@@ -11,7 +11,7 @@ namespace ssao {
 enum class TargetFormat { RGBA16F, RGBA32F, RGBA8 }; // RGBA8: normals only, stored (n+1)/2
 enum class RadiusMode { World, Scene, Screen };
 enum class AoResolution { Full, Half, Quarter };
-enum class DenoiseKind { None, Box4, Gaussian };
+enum class DenoiseKind { None, Box4, Gaussian, Bilateral };
 
 struct GBufferSettings {
     TargetFormat positionFormat = TargetFormat::RGBA32F;
@@ -35,6 +35,8 @@ struct DenoiseSettings {
     float sigma = 1.5f;   // gaussian standard deviation, in taps
     int halfWidth = 2;    // gaussian taps each side of the centre (2 → the seed's 5x5)
     float spacing = 1.0f; // pixels between gaussian taps
+    float sharpness = 16.0f; // bilateral: relative depth difference d weighs exp(-(d * sharpness)^2)
+    int passes = 2;          // bilateral: repeated edge-aware passes (XeGTAO runs 1-3)
 };
 
 struct CompositeSettings {

@@ -23,6 +23,8 @@
 #define SSAO_SSBO_INSPECT 0 // sample inspector record (INSPECT builds only)
 
 #define SSAO_MAX_DENOISE_TAPS 65 // 2*32+1 taps of a 1-D kernel
+#define SSAO_BILATERAL_MAX_HALF_WIDTH 8 // the bilateral's 2-D window: at most 17x17
+#define SSAO_DENOISE_NORMAL_UNORM 1     // bilateral: normals stored as (n+1)/2
 #define SSAO_INSPECT_MAX_TAPS 1024
 
 // Radius modes as the shaders see them (scene mode is resolved to world units on the CPU).

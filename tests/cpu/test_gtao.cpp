@@ -1,4 +1,5 @@
 // GTAO's settings → constants packing (pure): quality presets, falloff arithmetic, flags.
+#include "passes/denoise_weights.h"
 #include "techniques/gtao/pack.h"
 
 #include <gtest/gtest.h>
@@ -43,4 +44,20 @@ TEST(GtaoPack, FalloffWeightIsOneInsideAndZeroAtTheSearchRadius) {
     const auto d = packGtaoConstants(s, gpu::AoCommon{}, false);
     EXPECT_TRUE(std::isfinite(d.params.y) && std::isfinite(d.params.z));
     EXPECT_EQ(d.modes.z, 0);
+}
+
+TEST(BilateralPack, WindowSigmaSharpnessAndFlags) {
+    DenoiseSettings d;
+    d.kind = DenoiseKind::Bilateral;
+    d.halfWidth = 30; // the 2-D window is clamped: (2*30+1)^2 taps would stall a frame
+    d.sigma = 2.0f;
+    d.sharpness = 20.0f;
+    const auto c = packBilateralConstants(d, true);
+    EXPECT_EQ(c.taps.x, SSAO_BILATERAL_MAX_HALF_WIDTH);
+    EXPECT_EQ(c.taps.z, SSAO_DENOISE_NORMAL_UNORM);
+    EXPECT_EQ(c.offsetsWeights[0].x, 2.0f);
+    EXPECT_EQ(c.offsetsWeights[0].y, 20.0f);
+    EXPECT_GT(c.offsetsWeights[0].z, 1.0f); // a normal term that separates creases
+    d.sigma = 0.0f;                         // never a division by zero in exp(-d^2 / 2 sigma^2)
+    EXPECT_GT(packBilateralConstants(d, false).offsetsWeights[0].x, 0.0f);
 }

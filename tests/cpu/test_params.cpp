@@ -220,7 +220,11 @@ TEST(ParamTable, RowsDeclareWhenTheyApply) {
     EXPECT_FALSE(sigma.applies(s)); // sigma under box4 has no effect: greyed out
     s.denoise.kind = DenoiseKind::Gaussian;
     EXPECT_TRUE(sigma.applies(s));
-    EXPECT_EQ(sigma.whenText(), "denoise.kind = gaussian");
+    EXPECT_EQ(sigma.whenText(), "denoise.kind = gaussian|bilateral");
+    EXPECT_FALSE(findParam("denoise.sharpness")->applies(s)); // the bilateral's own rows
+    s.denoise.kind = DenoiseKind::Bilateral;
+    EXPECT_TRUE(sigma.applies(s));
+    EXPECT_TRUE(findParam("denoise.sharpness")->applies(s));
     for (const char* mode : {"world", "scene", "screen"}) {
         setParam(s, "ao.radius_mode", mode);
         int applying = 0;
@@ -230,7 +234,7 @@ TEST(ParamTable, RowsDeclareWhenTheyApply) {
     }
     // Every technique row applies only while its technique is chosen.
     for (const auto& p : paramTable())
-        if (p.group() == "kernel") {
+        if (p.group() == "kernel" || p.group() == "gtao") {
             ASSERT_FALSE(p.when.empty()) << p.key;
             EXPECT_EQ(p.when.front().key, "ao.technique") << p.key;
         }

@@ -3,6 +3,9 @@
 //   AO(d) = 1 - (acos a - a sqrt(1 - a^2)) / pi,  a = min(d / R, 1).
 #include "gl_fixture.h"
 
+#include "metrics/evaluate.h"
+#include "output/reference_report.h"
+#include "scene/scene.h"
 #include "techniques/technique.h"
 
 #include <cmath>
@@ -40,8 +43,8 @@ double cornerRmse(const std::string& id, const Settings& s) {
             if (r.position.at(x, y, 3) == 0.0f) continue;
             glm::vec3 n(r.normal.at(x, y, 0), r.normal.at(x, y, 1), r.normal.at(x, y, 2));
             if (glm::dot(n, up) < 0.99f) continue; // the wall
-            const glm::vec3 pw = glm::vec3(
-                invView * glm::vec4(r.position.at(x, y, 0), r.position.at(x, y, 1), r.position.at(x, y, 2), 1.0f));
+            const glm::vec3 pw = glm::vec3(invView * glm::vec4(r.position.at(x, y, 0), r.position.at(x, y, 1),
+                                                               r.position.at(x, y, 2), 1.0f));
             const float d = pw.z + 2.0f; // wall face at z = -2
             if (d > 2.0f * s.ao.radius) continue;
             auto& b = bins[int(d / 0.05f)];
@@ -71,10 +74,33 @@ TEST_F(Techniques, EveryTechniqueIsFiniteOpenOnAPlaneAndNearTheClosedFormBesideA
         Rendered show = render("builtin:showcase", s, 200, 120);
         ASSERT_TRUE(finiteInRange(show.aoRaw, 0.0f, 1.0f)) << t.id;
         const double rmse = cornerRmse(t.id, s);
-        std::printf("%-8s plane AO %.4f; floor beside a wall: RMSE %.4f against the closed form\n", t.id.c_str(),
-                    planeMean, rmse);
+        std::printf("%-8s plane AO %.4f; floor beside a wall: RMSE %.4f against the closed form\n",
+                    t.id.c_str(), planeMean, rmse);
         EXPECT_GE(planeMean, 0.95) << t.id;
         ASSERT_TRUE(bound.count(t.id)) << "state a closed-form bound for " << t.id;
         EXPECT_LT(rmse, bound.at(t.id)) << t.id;
     }
+}
+
+TEST_F(Techniques, TheBilateralDenoiserKeepsAoFromCrossingEdges) {
+    // Against the reference on CornellBox: the box blur smears AO across silhouettes (edge RMSE);
+    // the edge-aware filter weights neighbours by depth and normal similarity and does less.
+    const Scene scene = loadScene(std::string(SSAOLAB_SCENES_DIR) + "/CornellBox/cornellBox.gltf");
+    EmbreeScene rt(scene);
+    double edge[2] = {0, 0};
+    for (int k = 0; k < 2; ++k) {
+        Settings s = defaultSettings();
+        s.ao.technique = "gtao";
+        s.denoise.kind = k == 0 ? DenoiseKind::Box4 : DenoiseKind::Bilateral;
+        auto r = makeRenderer(scene, s, 480, 270);
+        r->render();
+        const ReferenceImage ref = traceReference(rt, r->camera(), 480, 270,
+                                                  referenceSettingsFor(*r, 64, ReferenceVariant::Visibility));
+        const Evaluation e = evaluate(readBack(r->texture("ao.denoised"), 1), ref);
+        ASSERT_EQ(e.metrics.nonFinite, 0);
+        edge[k] = e.metrics.rmseEdge;
+    }
+    std::printf("GTAO on CornellBox 480x270: edge RMSE %.4f with the box blur, %.4f bilateral\n", edge[0],
+                edge[1]);
+    EXPECT_LT(edge[1], edge[0]);
 }

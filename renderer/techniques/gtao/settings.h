@@ -7,12 +7,12 @@
 namespace ssao {
 
 enum class GtaoQuality { Low, Medium, High, Ultra, Custom }; // XeGTAO's presets: slices x steps
-enum class GtaoNoise { Ign, None };                           // interleaved gradient noise (Jimenez 2014)
+enum class GtaoNoise { Ign, None };                          // interleaved gradient noise (Jimenez 2014)
 
 struct GtaoSettings {
     GtaoQuality quality = GtaoQuality::High;
-    int slices = 4;                 // custom quality only
-    int steps = 8;                  // per side of each slice, custom quality only
+    int slices = 4;                  // custom quality only
+    int steps = 8;                   // per side of each slice, custom quality only
     float radiusMultiplier = 1.457f; // XeGTAO's auto-tuned default: the search radius is R x this
     float falloffRange = 0.615f;     // fraction of the radius over which occluders fade out (XeGTAO)
     float distributionPower = 2.0f;  // steps at s^p of the radius: denser near the pixel (XeGTAO)

@@ -1,0 +1,55 @@
+#version 450 core
+// Edge-aware (bilateral) denoise: each neighbour of the AO input weighs
+//   exp(-d²/2σ²)                      spatial, d in input texels
+// × exp(-(|z - z₀| / z₀ · sharpness)²) depth similarity (relative: the same at any distance)
+// × max(0, n·n₀)^p                    normal similarity (creases stay sharp)
+// with z, n read from the full-resolution G-buffer at the neighbour's centre, so a reduced-
+// resolution input is upsampled jointly (Kopf et al. 2007, "Joint Bilateral Upsampling") rather
+// than bilinearly across silhouettes. Not separable: a 2-D window (the bilateral is not a
+// product of 1-D filters). Sky pixels pass through as 1.
+#include "include/bindings.h"
+
+layout(std140, binding = SSAO_UBO_DENOISE) uniform DenoiseBlock { DenoiseConstants_ denoise; };
+layout(binding = SSAO_TEX_AO) uniform sampler2D aoIn;
+layout(binding = SSAO_TEX_LINEAR_DEPTH) uniform sampler2D gDepth;
+layout(binding = SSAO_TEX_NORMAL) uniform sampler2D gNormal;
+
+in vec2 vUv;
+layout(location = 0) out float oAO;
+
+vec3 normalAt(vec2 uv) {
+    vec3 n = textureLod(gNormal, uv, 0.0).xyz;
+    if ((denoise.taps.z & SSAO_DENOISE_NORMAL_UNORM) != 0) n = n * 2.0 - 1.0;
+    float l2 = dot(n, n);
+    return l2 > 1e-12 ? n * inversesqrt(l2) : vec3(0.0, 0.0, 1.0);
+}
+
+void main() {
+    float z0 = textureLod(gDepth, vUv, 0.0).r;
+    ivec2 inSize = textureSize(aoIn, 0);
+    ivec2 c = clamp(ivec2(vUv * vec2(inSize)), ivec2(0), inSize - 1);
+    if (!(z0 > 0.0)) { // sky
+        oAO = 1.0;
+        return;
+    }
+    vec3 n0 = normalAt(vUv);
+    float sigma = denoise.offsetsWeights[0].x, sharp = denoise.offsetsWeights[0].y;
+    float npow = denoise.offsetsWeights[0].z;
+    int r = denoise.taps.x;
+    float sum = 0.0, wsum = 0.0;
+    for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx) {
+            ivec2 t = c + ivec2(dx, dy);
+            if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, inSize))) continue;
+            vec2 tuv = (vec2(t) + 0.5) / vec2(inSize);
+            float z = textureLod(gDepth, tuv, 0.0).r;
+            if (!(z > 0.0)) continue; // sky holds no AO of a surface
+            float rel = abs(z - z0) / z0 * sharp;
+            float w = exp(-float(dx * dx + dy * dy) / (2.0 * sigma * sigma)) * exp(-rel * rel) *
+                      pow(max(dot(normalAt(tuv), n0), 0.0), npow);
+            sum += texelFetch(aoIn, t, 0).r * w;
+            wsum += w;
+        }
+    // No similar neighbour at all (a lone pixel): keep its own value rather than divide by ~0.
+    oAO = wsum > 1e-6 ? sum / wsum : texelFetch(aoIn, c, 0).r;
+}
