@@ -13,6 +13,21 @@ ResourceDesc AoPass::rawOutput(const Settings& s) const {
     return out;
 }
 
+void AoPass::declarePositionsNormals(PassBuilder& b, const Settings& s, const char* group) const {
+    b.read("gbuffer.position");
+    b.read("gbuffer.normal");
+    b.write(rawOutput(s));
+    b.settings("ao");
+    b.settings(group);
+    b.usesScene();  // scene-relative radius
+    b.usesCamera(); // projection: the radius in pixels
+}
+
+void AoPass::bindPositionsNormals(PassContext& ctx) const {
+    ctx.in("gbuffer.position").bind(SSAO_TEX_POSITION);
+    ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
+}
+
 gpu::AoCommon AoPass::common(PassContext& ctx) const {
     const FrameInfo& f = ctx.frame;
     const glm::mat4 proj = f.camera->projection(float(f.width) / float(f.height));

@@ -18,6 +18,10 @@ class AoPass : public Pass {
 
   protected:
     ResourceDesc rawOutput(const Settings& s) const; // the chain's ao.raw
+    // The common declaration of a pass that reads G-buffer positions and normals and the settings
+    // groups "ao" and `group`, and writes ao.raw (horizon techniques: HBAO, GTAO...).
+    void declarePositionsNormals(PassBuilder& b, const Settings& s, const char* group) const;
+    void bindPositionsNormals(PassContext& ctx) const;
     // This frame's shared constants: radius (in displayed pixels for screen mode), power, target.
     gpu::AoCommon common(PassContext& ctx) const;
     bool normalUnorm(PassContext& ctx) const; // the normal target stores (n+1)/2

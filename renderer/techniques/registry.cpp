@@ -1,6 +1,7 @@
 // The list of AO techniques. Adding one: its folder, one member in technique_settings.h and
 // one entry here.
 #include "techniques/gtao/technique.h"
+#include "techniques/hbao/technique.h"
 #include "techniques/kernel/technique.h"
 #include "techniques/technique.h"
 #include "util/error.h"
@@ -8,7 +9,7 @@
 namespace ssao {
 
 const std::vector<TechniqueInfo>& techniques() {
-    static const std::vector<TechniqueInfo> list = {kernelTechnique(), gtaoTechnique()};
+    static const std::vector<TechniqueInfo> list = {kernelTechnique(), hbaoTechnique(), gtaoTechnique()};
     return list;
 }
 

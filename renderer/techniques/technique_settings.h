@@ -2,6 +2,7 @@
 // reads `settings.kernel.samples`. Adding a technique adds one member (and its include) here.
 #pragma once
 #include "techniques/gtao/settings.h"
+#include "techniques/hbao/settings.h"
 #include "techniques/kernel/settings.h"
 
 namespace ssao {
@@ -9,6 +10,7 @@ namespace ssao {
 struct TechniqueSettings {
     KernelSettings kernel;
     GtaoSettings gtao;
+    HbaoSettings hbao;
 };
 
 } // namespace ssao

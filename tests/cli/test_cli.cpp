@@ -143,7 +143,7 @@ TEST(Cli, BadInputGivesOneClearLineAndExitCodeOne) {
     expectCleanFailure(ssaolab("render --set ao.bogus=1" + out), "unknown parameter 'ao.bogus'");
     expectCleanFailure(ssaolab("render --set ao.radius=-0.5" + out), "ao.radius: value -0.5 is out of range");
     expectCleanFailure(ssaolab("render --set kernel.samples=100000" + out), "kernel.samples");
-    expectCleanFailure(ssaolab("render --set ao.technique=hbao" + out), "'hbao' is not one of kernel");
+    expectCleanFailure(ssaolab("render --set ao.technique=ssdo" + out), "'ssdo' is not one of kernel");
     expectCleanFailure(ssaolab("render --preset nonesuch" + out), "no preset named 'nonesuch'");
     expectCleanFailure(ssaolab("render --preset " + writeTemp("cli_size.json", R"({"size":[0,5]})") + out),
                        "size");

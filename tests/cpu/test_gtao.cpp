@@ -1,6 +1,8 @@
-// GTAO's settings → constants packing (pure): quality presets, falloff arithmetic, flags.
+// Settings → constants packing of the horizon techniques and the bilateral denoiser (pure): GTAO's
+// quality presets and falloff arithmetic, HBAO's limits, flags.
 #include "passes/denoise_weights.h"
 #include "techniques/gtao/pack.h"
+#include "techniques/hbao/pack.h"
 
 #include <gtest/gtest.h>
 
@@ -60,4 +62,17 @@ TEST(BilateralPack, WindowSigmaSharpnessAndFlags) {
     EXPECT_GT(c.offsetsWeights[0].z, 1.0f); // a normal term that separates creases
     d.sigma = 0.0f;                         // never a division by zero in exp(-d^2 / 2 sigma^2)
     EXPECT_GT(packBilateralConstants(d, false).offsetsWeights[0].x, 0.0f);
+}
+
+TEST(HbaoPack, CountsBiasAndLimitsAreClamped) {
+    HbaoSettings s;
+    s.directions = 0, s.steps = 1000, s.tangentBias = 2.0f, s.maxRadiusPx = 0.0f;
+    const auto c = packHbaoConstants(s, gpu::AoCommon{}, true);
+    EXPECT_EQ(c.modes.x, 1);              // at least one direction
+    EXPECT_EQ(c.modes.y, HBAO_MAX_STEPS); // the shader's loop bound
+    EXPECT_LT(c.params.x, 1.0f);          // bias < 1: the normaliser (1 - bias) stays positive
+    EXPECT_GE(c.params.y, 2.0f);          // a radius of at least two pixels
+    EXPECT_EQ(c.modes.z, HBAO_FLAG_NOISE | HBAO_FLAG_NORMAL_UNORM);
+    s.noise = HbaoNoise::None;
+    EXPECT_EQ(packHbaoConstants(s, gpu::AoCommon{}, false).modes.z, 0);
 }

@@ -5,13 +5,7 @@
 namespace ssao {
 
 void GtaoPass::setup(PassBuilder& b, const Settings& s) const {
-    b.read("gbuffer.position");
-    b.read("gbuffer.normal");
-    b.write(rawOutput(s));
-    b.settings("ao");
-    b.settings("gtao");
-    b.usesScene();  // scene-relative radius
-    b.usesCamera(); // projection: the radius in pixels
+    declarePositionsNormals(b, s, "gtao");
 }
 
 std::string GtaoPass::prepare(PassContext& ctx) {
@@ -19,8 +13,7 @@ std::string GtaoPass::prepare(PassContext& ctx) {
     const gpu::GtaoConstants c = packGtaoConstants(ctx.settings.gtao, common(ctx), normalUnorm(ctx));
     ubo_.upload(&c, sizeof c);
     ubo_.bind(SSAO_UBO_AO);
-    ctx.in("gbuffer.position").bind(SSAO_TEX_POSITION);
-    ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
+    bindPositionsNormals(ctx);
     return "techniques/gtao/gtao.frag";
 }
 

@@ -1,0 +1,12 @@
+// HBAO settings → its GPU constants (shaders/techniques/hbao/layout.h), pure and tested.
+#pragma once
+#include "settings/settings.h"
+
+#include "../../../shaders/include/bindings.h"
+#include "../../../shaders/techniques/hbao/layout.h"
+
+namespace ssao {
+
+gpu::HbaoConstants packHbaoConstants(const HbaoSettings& s, const gpu::AoCommon& common, bool normalUnorm);
+
+} // namespace ssao

@@ -1,0 +1,7 @@
+// HBAO: the module's entry for the technique registry.
+#pragma once
+#include "techniques/technique.h"
+
+namespace ssao {
+TechniqueInfo hbaoTechnique();
+} // namespace ssao

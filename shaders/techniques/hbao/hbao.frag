@@ -1,0 +1,85 @@
+#version 450 core
+// HBAO (Bavoil, Sainz, Dimitrov 2008; seed 002), with HBAO+'s per-sample attenuation: along each
+// of D screen directions, march S steps; every sample that raises the horizon above the highest
+// so far adds (sin h - sin h_prev) W(r), W = max(0, 1 - r/R) (the paper's linear falloff), with
+// the horizon starting at the tangent bias. AO = 1 - mean over directions (uniform solid angle).
+#include "include/bindings.h"
+#include "techniques/hbao/layout.h"
+#include "include/frame.glsl"
+#include "include/ao_common.glsl"
+#include "include/inspect.glsl"
+
+layout(std140, binding = SSAO_UBO_AO) uniform HbaoBlock { HbaoConstants_ ssao; };
+layout(binding = SSAO_TEX_POSITION) uniform sampler2D gPosition;
+layout(binding = SSAO_TEX_NORMAL) uniform sampler2D gNormal;
+
+in vec2 vUv;
+layout(location = 0) out float oAO;
+
+const float TWO_PI = 6.28318530717959;
+
+bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
+
+// Interleaved gradient noise (Jimenez 2014): per-pixel values whose neighbourhoods are well spread.
+float ign(vec2 p) { return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715)))); }
+
+void main() {
+    vec4 P4 = texture(gPosition, vUv);
+    if (P4.w == 0.0) { // sky: unoccluded, no work spent
+        oAO = 1.0;
+        INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
+        return;
+    }
+    vec3 P = P4.xyz;
+    vec3 N = texture(gNormal, vUv).xyz;
+    if (hasFlag(HBAO_FLAG_NORMAL_UNORM)) N = N * 2.0 - 1.0;
+    float nl2 = dot(N, N);
+    N = nl2 > 1e-12 ? N * inversesqrt(nl2) : vec3(0.0, 0.0, 1.0);
+    float depth = -P.z;
+    float R = aoRadius(ssao.aoCommon, depth);
+    // The radius projected to G-buffer pixels, clamped (a close-up would march the whole screen).
+    float radiusPx = min(R * frame.proj[1][1] * 0.5 * frame.viewport.y / depth, ssao.params.y);
+    int dirs = ssao.modes.x, steps = ssao.modes.y;
+    // Steps of at least a pixel, the first one pixel out: never the pixel itself (no self-
+    // occlusion lines), every step a new texel.
+    float stepPx = max(radiusPx / float(steps + 1), 1.0);
+    vec2 noise = vec2(0.0, 0.5);
+    if (hasFlag(HBAO_FLAG_NOISE)) noise = vec2(ign(gl_FragCoord.xy), ign(gl_FragCoord.xy + vec2(47.0, 17.0)));
+
+    float occlusion = 0.0;
+    for (int d = 0; d < dirs; ++d) {
+        float phi = (float(d) + noise.x) / float(dirs) * TWO_PI;
+        vec2 omega = vec2(cos(phi), sin(phi));
+        float sinH = ssao.params.x; // the horizon starts at the tangent bias
+        float occ = 0.0;
+        for (int s = 0; s < steps; ++s) {
+            vec2 offsetPx = round(omega * (1.0 + (float(s) + noise.y) * stepPx));
+            vec2 uv = vUv + offsetPx * frame.viewport.zw;
+            if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) {
+                INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, d);
+                continue;
+            }
+            vec4 S = textureLod(gPosition, uv, 0.0);
+            if (S.w == 0.0) {
+                INSPECT_TAP(P, uv, SSAO_TAP_SKY, 0.0, d);
+                continue;
+            }
+            vec3 H = S.xyz - P;
+            float r = length(H);
+            float sinS = r > 0.0 ? dot(N, H) / r : -1.0; // elevation above the tangent plane
+            float contribution = 0.0;
+            if (sinS > sinH) {
+                float W = max(0.0, 1.0 - r / R); // Bavoil 2008 eq. 3: linear falloff
+                contribution = (sinS - sinH) * W;
+                occ += contribution;
+                sinH = sinS;
+            }
+            INSPECT_TAP(S.xyz, uv, contribution > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN, contribution, d);
+        }
+        occlusion += occ;
+    }
+    // Each direction's occlusion is at most 1 - bias; normalise so a fully closed pixel reads 0.
+    float norm = float(dirs) * (1.0 - ssao.params.x);
+    oAO = aoFinish(ssao.aoCommon, 1.0 - occlusion / norm);
+    INSPECT_RESULT(true, P, N, occlusion, norm, R, oAO);
+}
