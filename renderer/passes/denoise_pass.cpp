@@ -44,8 +44,10 @@ void DenoisePass::execute(PassContext& ctx) {
         ubo_[dir].upload(&c, sizeof c);
         ubo_[dir].bind(SSAO_UBO_DENOISE);
         ctx.in(dir == 0 ? raw : tmp).bind(SSAO_TEX_AO);
-        // Reduced-resolution AO is brought to full size bilinearly by the y pass.
-        if (dir == 1 && upsample)
+        // Reduced-resolution AO is brought to full size bilinearly by the y pass; the centred box
+        // reads between texels in both passes.
+        const bool centred = ctx.settings.denoise.kind == DenoiseKind::Box4Centred;
+        if ((dir == 1 && upsample) || centred)
             linear_.bind(SSAO_TEX_AO);
         else
             gl::Sampler::unbind(SSAO_TEX_AO);

@@ -11,6 +11,11 @@ gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int directi
     if (d.kind == DenoiseKind::Box4) {
         for (int i = -2; i <= 1; ++i)
             c.offsetsWeights[count++] = {float(i), 0.25f, 0.0f, 0.0f};
+    } else if (d.kind == DenoiseKind::Box4Centred) {
+        // Half-texel offsets read bilinearly: each tap averages two texels, so the 4-wide box is
+        // centred (weights 1/8, 1/4, 1/4, 1/4, 1/8 over -2..+2) instead of the seed's -2..+1.
+        for (int i = 0; i < 4; ++i)
+            c.offsetsWeights[count++] = {float(i) - 1.5f, 0.25f, 0.0f, 0.0f};
     } else if (d.kind == DenoiseKind::Gaussian) {
         const int r = std::clamp(d.halfWidth, 0, (SSAO_MAX_DENOISE_TAPS - 1) / 2);
         float sum = 0.0f;

@@ -6,7 +6,8 @@
 
 namespace ssao {
 
-// Direction 0 = x, 1 = y. Box4 → taps -2..1, weight 1/4 (seed 004); gaussian → taps -r..r at
+// Direction 0 = x, 1 = y. Box4 → taps -2..1, weight 1/4 (seed 004); Box4Centred → taps at
+// -1.5, -0.5, 0.5, 1.5 (read bilinearly: the DenoisePass binds a linear sampler); gaussian → taps -r..r at
 // `spacing` pixels, weights exp(-i²/(2σ²)) normalised; none → the centre tap (a copy).
 gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int direction);
 

@@ -76,11 +76,13 @@ std::vector<Param> coreRows() {
               {"quarter", AoResolution::Quarter}})),
         // ---- Denoise --------------------------------------------------------------------------
         ENUM_ROW("denoise.kind", "Denoise", denoise.kind, DenoiseKind,
-                 "Removes the sampling noise: none, 4x4 box (seed 004), gaussian (seed 003) - both separable, "
+                 "Removes the sampling noise: none, 4x4 box (seed 004: taps -2..+1, shifted half a pixel), "
+                 "box4c (the same width centred: taps -1.5..+1.5 read bilinearly), gaussian (seed 003) - separable, "
                  "upsampling reduced-resolution AO bilinearly - or bilateral: edge-aware, weighted by depth "
                  "and normal similarity so AO does not bleed across silhouettes, with a joint-bilateral upsample.",
                  ({{"none", DenoiseKind::None},
                    {"box4", DenoiseKind::Box4},
+                   {"box4c", DenoiseKind::Box4Centred},
                    {"gaussian", DenoiseKind::Gaussian},
                    {"bilateral", DenoiseKind::Bilateral}})),
         FLOAT_ROW("denoise.sigma", "Sigma", denoise.sigma, 0.1, 32.0, "taps",

@@ -11,7 +11,7 @@ namespace ssao {
 enum class TargetFormat { RGBA16F, RGBA32F, RGBA8 }; // RGBA8: normals only, stored (n+1)/2
 enum class RadiusMode { World, Scene, Screen };
 enum class AoResolution { Full, Half, Quarter };
-enum class DenoiseKind { None, Box4, Gaussian, Bilateral };
+enum class DenoiseKind { None, Box4, Box4Centred, Gaussian, Bilateral };
 
 struct GBufferSettings {
     TargetFormat positionFormat = TargetFormat::RGBA32F;

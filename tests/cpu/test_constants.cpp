@@ -108,6 +108,26 @@ TEST(PackDenoise, BoxIsTheSeedsFourTapsMinusTwoToOne) {
     }
 }
 
+TEST(PackDenoise, TheCentredBoxHasNoHalfPixelShift) {
+    // The seed's taps -2..+1 average around -0.5 px: the blurred AO moves half a pixel per pass
+    // (a pixel over x and y). The centred variant reads at -1.5..+1.5 between texels: mean 0.
+    DenoiseSettings d;
+    auto centre = [](const gpu::DenoiseConstants& c) {
+        double m = 0;
+        for (int i = 0; i < c.taps.x; ++i)
+            m += c.offsetsWeights[i].x * c.offsetsWeights[i].y;
+        return m;
+    };
+    d.kind = DenoiseKind::Box4;
+    EXPECT_DOUBLE_EQ(centre(packDenoiseConstants(d, 0)), -0.5);
+    d.kind = DenoiseKind::Box4Centred;
+    const auto c = packDenoiseConstants(d, 0);
+    ASSERT_EQ(c.taps.x, 4);
+    EXPECT_DOUBLE_EQ(centre(c), 0.0);
+    EXPECT_FLOAT_EQ(c.offsetsWeights[0].x, -1.5f);
+    EXPECT_FLOAT_EQ(c.offsetsWeights[3].x, 1.5f);
+}
+
 TEST(PackDenoise, GaussianWeightsNormalisedSymmetricAndGaussian) {
     DenoiseSettings d;
     d.kind = DenoiseKind::Gaussian;
