@@ -3,13 +3,14 @@
 #include "techniques/gtao/technique.h"
 #include "techniques/hbao/technique.h"
 #include "techniques/kernel/technique.h"
+#include "techniques/sao/technique.h"
 #include "techniques/technique.h"
 #include "util/error.h"
 
 namespace ssao {
 
 const std::vector<TechniqueInfo>& techniques() {
-    static const std::vector<TechniqueInfo> list = {kernelTechnique(), hbaoTechnique(), gtaoTechnique()};
+    static const std::vector<TechniqueInfo> list = {kernelTechnique(), saoTechnique(), hbaoTechnique(), gtaoTechnique()};
     return list;
 }
 

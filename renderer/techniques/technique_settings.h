@@ -4,6 +4,7 @@
 #include "techniques/gtao/settings.h"
 #include "techniques/hbao/settings.h"
 #include "techniques/kernel/settings.h"
+#include "techniques/sao/settings.h"
 
 namespace ssao {
 
@@ -11,6 +12,7 @@ struct TechniqueSettings {
     KernelSettings kernel;
     GtaoSettings gtao;
     HbaoSettings hbao;
+    SaoSettings sao;
 };
 
 } // namespace ssao

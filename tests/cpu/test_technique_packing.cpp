@@ -3,6 +3,7 @@
 #include "passes/denoise_weights.h"
 #include "techniques/gtao/pack.h"
 #include "techniques/hbao/pack.h"
+#include "techniques/sao/pack.h"
 
 #include <gtest/gtest.h>
 
@@ -75,4 +76,21 @@ TEST(HbaoPack, CountsBiasAndLimitsAreClamped) {
     EXPECT_EQ(c.modes.z, HBAO_FLAG_NOISE | HBAO_FLAG_NORMAL_UNORM);
     s.noise = HbaoNoise::None;
     EXPECT_EQ(packHbaoConstants(s, gpu::AoCommon{}, false).modes.z, 0);
+}
+
+TEST(SaoPack, AlchemyNormalisationAndLimits) {
+    SaoSettings s;
+    s.samples = 10, s.intensity = 1.5f, s.bias = 0.02f, s.turns = 7.0f;
+    const auto c = packSaoConstants(s, gpu::AoCommon{}, false);
+    EXPECT_EQ(c.modes.x, 10);
+    EXPECT_FLOAT_EQ(c.params.y, 2.0f * 1.5f / 10.0f); // 2 sigma / N
+    EXPECT_FLOAT_EQ(c.params.z, 0.02f);
+    EXPECT_GT(c.params.w, 0.0f); // epsilon: a tap at the pixel itself stays finite
+    EXPECT_EQ(c.modes.y, SAO_FLAG_NOISE);
+    s.samples = 0;
+    s.intensity = -1.0f;
+    const auto d = packSaoConstants(s, gpu::AoCommon{}, true);
+    EXPECT_EQ(d.modes.x, 1);
+    EXPECT_EQ(d.params.y, 0.0f);
+    EXPECT_EQ(d.modes.y, SAO_FLAG_NOISE | SAO_FLAG_NORMAL_UNORM);
 }

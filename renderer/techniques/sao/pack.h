@@ -1,0 +1,12 @@
+// SAO settings → its GPU constants (shaders/techniques/sao/layout.h), pure and tested.
+#pragma once
+#include "settings/settings.h"
+
+#include "../../../shaders/include/bindings.h"
+#include "../../../shaders/techniques/sao/layout.h"
+
+namespace ssao {
+
+gpu::SaoConstants packSaoConstants(const SaoSettings& s, const gpu::AoCommon& common, bool normalUnorm);
+
+} // namespace ssao

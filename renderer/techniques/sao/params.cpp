@@ -1,0 +1,41 @@
+// SAO's rows of the parameter table (group "sao"; they apply while ao.technique = sao).
+// Defaults: SaoSettings' initialisers (settings.h).
+#include "settings/param_rows.h"
+#include "techniques/sao/pack.h"
+#include "techniques/sao/sao_pass.h"
+#include "techniques/sao/technique.h"
+
+namespace ssao {
+
+namespace {
+std::vector<Param> saoParams() {
+    return {
+        INT_ROW("sao.samples", "Samples", sao.samples, 1, SAO_MAX_SAMPLES, "taps",
+                "Taps on the spiral (SAO uses 11); more = less noise, linear cost."),
+        FLOAT_ROW("sao.turns", "Spiral turns", sao.turns, 0.0, 32.0, "turns",
+                  "How many times the spiral winds over the taps; pick it coprime with the tap count so "
+                  "taps do not line up (SAO: 7 turns for 11 taps)."),
+        FLOAT_ROW("sao.intensity", "Intensity", sao.intensity, 0.0, 10.0, "",
+                  "Alchemy AO's sigma: scales the summed obscurance before it is subtracted from 1."),
+        FLOAT_ROW("sao.bias", "Bias", sao.bias, 0.0, 0.5, "x radius",
+                  "Alchemy AO's beta: an occluder must rise this far (a fraction of the radius) above the "
+                  "tangent plane; removes self-occlusion of tessellated surfaces."),
+        ENUM_ROW("sao.noise", "Noise", sao.noise, SaoNoise,
+                 "Per-pixel rotation of the spiral: interleaved gradient noise, or none (banding).",
+                 ({{"ign", SaoNoise::Ign}, {"none", SaoNoise::None}})),
+    };
+}
+} // namespace
+
+TechniqueInfo saoTechnique() {
+    return {"sao", "SAO / Alchemy AO (McGuire 2011/2012)",
+            "Spiral taps, falloff-weighted obscurance max(0, v.n - bias)/(v.v + eps): McGuire et al. 2011 "
+            "(Alchemy AO), McGuire, Mara, Luebke 2012 (SAO)",
+            saoParams, [](const Branch& b) {
+                std::vector<std::unique_ptr<Pass>> passes;
+                passes.push_back(std::make_unique<SaoPass>(b));
+                return passes;
+            }};
+}
+
+} // namespace ssao

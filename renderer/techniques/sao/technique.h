@@ -1,0 +1,7 @@
+// SAO: the module's entry for the technique registry.
+#pragma once
+#include "techniques/technique.h"
+
+namespace ssao {
+TechniqueInfo saoTechnique();
+} // namespace ssao

@@ -1,0 +1,68 @@
+#version 450 core
+// Scalable Ambient Obscurance (McGuire, Mara, Luebke 2012) with the Alchemy AO estimator
+// (McGuire et al. 2011):  A = max(0, 1 - (2σ/N) Σ f(v) max(0, v·n - β) / (v·v + ε))
+// over N taps on a spiral, f = (1 - v·v)³ the paper's recommended falloff. Every length is in
+// units of the radius R (v = (Q - P) / R), so β and ε mean the same at any scene scale (the
+// paper's constants assume R ≈ 1 world unit). The contrast k of the paper is ao.power.
+#include "include/bindings.h"
+#include "techniques/sao/layout.h"
+#include "include/frame.glsl"
+#include "include/ao_common.glsl"
+#include "include/inspect.glsl"
+
+layout(std140, binding = SSAO_UBO_AO) uniform SaoBlock { SaoConstants_ ssao; };
+layout(binding = SSAO_TEX_POSITION) uniform sampler2D gPosition;
+layout(binding = SSAO_TEX_NORMAL) uniform sampler2D gNormal;
+
+in vec2 vUv;
+layout(location = 0) out float oAO;
+
+const float TWO_PI = 6.28318530717959;
+
+bool hasFlag(int f) { return (ssao.modes.y & f) != 0; }
+
+// Interleaved gradient noise (Jimenez 2014).
+float ign(vec2 p) { return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715)))); }
+
+void main() {
+    vec4 P4 = texture(gPosition, vUv);
+    if (P4.w == 0.0) { // sky: unoccluded, no work spent
+        oAO = 1.0;
+        INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
+        return;
+    }
+    vec3 P = P4.xyz;
+    vec3 N = texture(gNormal, vUv).xyz;
+    if (hasFlag(SAO_FLAG_NORMAL_UNORM)) N = N * 2.0 - 1.0;
+    float nl2 = dot(N, N);
+    N = nl2 > 1e-12 ? N * inversesqrt(nl2) : vec3(0.0, 0.0, 1.0);
+    float depth = -P.z;
+    float R = aoRadius(ssao.aoCommon, depth);
+    float radiusPx = R * frame.proj[1][1] * 0.5 * frame.viewport.y / depth;
+    float spin = hasFlag(SAO_FLAG_NOISE) ? ign(gl_FragCoord.xy) * TWO_PI : 0.0;
+    int n = ssao.modes.x;
+    float occlusion = 0.0;
+    for (int i = 0; i < n; ++i) {
+        float alpha = (float(i) + 0.5) / float(n);
+        float angle = alpha * ssao.params.x * TWO_PI + spin;
+        vec2 uv = vUv + round(alpha * radiusPx * vec2(cos(angle), sin(angle))) * frame.viewport.zw;
+        if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) {
+            INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, 0);
+            continue;
+        }
+        vec4 Q = textureLod(gPosition, uv, 0.0);
+        if (Q.w == 0.0) {
+            INSPECT_TAP(P, uv, SSAO_TAP_SKY, 0.0, 0);
+            continue;
+        }
+        vec3 v = (Q.xyz - P) / R;
+        float vv = dot(v, v), vn = dot(v, N);
+        float f = max(1.0 - vv, 0.0);
+        // ε keeps taps at the pixel itself (v = 0) finite and stops crevices over-darkening.
+        float term = f * f * f * max(vn - ssao.params.z, 0.0) / (vv + ssao.params.w) * ssao.params.y;
+        occlusion += term;
+        INSPECT_TAP(Q.xyz, uv, term > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN, term, 0);
+    }
+    oAO = aoFinish(ssao.aoCommon, 1.0 - occlusion);
+    INSPECT_RESULT(true, P, N, occlusion, 1.0, R, oAO);
+}
