@@ -121,6 +121,8 @@ int runRender(const RenderOptions& o) {
     r.setCamera(cam);
     r.setSettings(settings);
     FrameReport first = r.render();
+    while (r.accumulating()) // temporal accumulation: the frames it blends, deterministically
+        first = r.render();
 
     // Timing: force every pass for `timingFrames` frames and average (the first frame includes JIT).
     nlohmann::json timing = nlohmann::json::object();
@@ -142,7 +144,8 @@ int runRender(const RenderOptions& o) {
     nlohmann::json m = writeOutputs(r, o.out, info, first, timing);
     char line[512] = "";
     if (o.reference) {
-        const ReferenceSettings rs = referenceSettingsFor(r, o.referenceRays, parseVariant(o.referenceVariant));
+        const ReferenceSettings rs =
+            referenceSettingsFor(r, o.referenceRays, parseVariant(o.referenceVariant));
         ReferenceProvider provider(scene, o.noCache ? std::string() : referenceCacheDir());
         bool cached = false;
         ReferenceImage ref;
@@ -150,7 +153,8 @@ int runRender(const RenderOptions& o) {
             ProgressBar bar("reference " + std::to_string(w) + "x" + std::to_string(h) + " x " +
                                 std::to_string(rs.samples) + " rays",
                             !o.quiet);
-            ref = provider.get(r.camera(), w, h, rs, [&](double f) { bar.update(f); }, &cached);
+            ref = provider.get(
+                r.camera(), w, h, rs, [&](double f) { bar.update(f); }, &cached);
         }
         nlohmann::json e = writeReferenceOutputs(r, ref, rs, o.out);
         e["error"]["reference"]["cached"] = cached;
@@ -159,16 +163,17 @@ int runRender(const RenderOptions& o) {
         std::ofstream(std::filesystem::path(o.out) / "metrics.json") << m.dump(2) << "\n";
         {
             const auto& j = m["error"];
-            std::snprintf(line, sizeof line, "reference (%s, R %.4g, %d rays%s): RMSE %.4f, MAE %.4f, bias %+.4f, PSNR %.2f dB "
-                        "(geometry, sRGB), %.2f dB full frame, SSIM %.4f; reference noise %.4f\n",
-                        rs.variant == ReferenceVariant::Visibility ? "visibility" : "obscurance", rs.radius,
-                        rs.samples,
-                        cached ? ", cached"
-                               : (", " + std::to_string(int(ref.raysPerSecond() * 1e-6 + 0.5)) + " Mrays/s")
-                                     .c_str(),
-                        j["rmse"].get<double>(), j["mae"].get<double>(), j["bias"].get<double>(),
-                        j["psnr_geometry_srgb"].get<double>(), j["psnr_full_srgb"].get<double>(),
-                        j["ssim"].get<double>(), j["reference"]["noise_rms"].get<double>());
+            std::snprintf(
+                line, sizeof line,
+                "reference (%s, R %.4g, %d rays%s): RMSE %.4f, MAE %.4f, bias %+.4f, PSNR %.2f dB "
+                "(geometry, sRGB), %.2f dB full frame, SSIM %.4f; reference noise %.4f\n",
+                rs.variant == ReferenceVariant::Visibility ? "visibility" : "obscurance", rs.radius,
+                rs.samples,
+                cached ? ", cached"
+                       : (", " + std::to_string(int(ref.raysPerSecond() * 1e-6 + 0.5)) + " Mrays/s").c_str(),
+                j["rmse"].get<double>(), j["mae"].get<double>(), j["bias"].get<double>(),
+                j["psnr_geometry_srgb"].get<double>(), j["psnr_full_srgb"].get<double>(),
+                j["ssim"].get<double>(), j["reference"]["noise_rms"].get<double>());
         }
     }
     const std::string glErr = gl::pollGlErrors();

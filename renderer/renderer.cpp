@@ -28,13 +28,14 @@ void checkRenderSize(int width, int height) {
                     " million pixels (e.g. 4096x4096)");
 }
 
-gpu::FrameConstants packFrameConstants(const Camera& cam, int width, int height, float sceneRadius) {
+gpu::FrameConstants packFrameConstants(const Camera& cam, int width, int height, float sceneRadius,
+                                       int frameIndex) {
     gpu::FrameConstants f{};
     f.view = cam.view();
     f.proj = cam.projection(float(width) / float(height));
     f.invProj = glm::inverse(f.proj);
     f.viewport = {float(width), float(height), 1.0f / float(width), 1.0f / float(height)};
-    f.clip = {cam.nearZ, cam.farZ, sceneRadius, 0.0f};
+    f.clip = {cam.nearZ, cam.farZ, sceneRadius, float(frameIndex)};
     return f;
 }
 
@@ -167,13 +168,43 @@ FrameReport Renderer::render() {
     if (!scene_) throw Error("renderer: no scene set");
     if (width_ <= 0) throw Error("renderer: no size set");
     effective_ = effectiveCamera(camera_, bounds_);
-    const gpu::FrameConstants fc = packFrameConstants(effective_, width_, height_, sceneRadius());
+    // Temporal accumulation: a settings/size/scene change drops the history, a camera change only
+    // restarts the count (the history is reprojected); while counting, every pass re-runs with a
+    // new frame index (new noise).
+    int frameIndex = 0;
+    bool reset = true;
+    if (settings_.temporal.enabled) {
+        const std::string sk = toJson(settings_).dump() + "|" + std::to_string(width_) + "x" +
+                               std::to_string(height_) + "|" + std::to_string(sceneVersion_);
+        const Camera& c = effective_;
+        char ck[256];
+        std::snprintf(ck, sizeof ck, "%a %a %a %a %a %a %a %a %a %a %a %a", c.eye.x, c.eye.y, c.eye.z,
+                      c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg, c.nearZ, c.farZ);
+        reset = sk != temporalSettingsKey_;
+        if (reset || ck != temporalCameraKey_) temporalFrame_ = 0;
+        temporalSettingsKey_ = sk;
+        temporalCameraKey_ = ck;
+        if (temporalFrame_ < settings_.temporal.frames) {
+            graph_.invalidate();
+            frameIndex = temporalFrame_++;
+        } else {
+            frameIndex = temporalFrame_ - 1;
+        }
+    } else {
+        temporalFrame_ = 0;
+        temporalSettingsKey_.clear();
+    }
+    const gpu::FrameConstants fc = packFrameConstants(effective_, width_, height_, sceneRadius(), frameIndex);
     frameUbo_.upload(&fc, sizeof fc);
     frameUbo_.bind(SSAO_UBO_FRAME);
     if (graphStale_) buildGraph(); // only when settings, chain B, the size or the reference changed
-    frame_ =
-        FrameInfo{scene_.get(), sceneVersion_, sceneRadius(), &effective_, width_, height_, displayScale_};
+    frame_ = FrameInfo{scene_.get(), sceneVersion_, sceneRadius(), &effective_, width_,
+                       height_,      displayScale_, frameIndex,    reset};
     return graph_.execute(frame_, shaders_, triangle_);
+}
+
+bool Renderer::accumulating() const {
+    return settings_.temporal.enabled && temporalFrame_ < settings_.temporal.frames;
 }
 
 std::vector<const Resource*> Renderer::buffers() const {

@@ -25,7 +25,9 @@ constexpr long kMaxRenderPixels = 4096L * 4096L;
 void checkRenderSize(int width, int height);
 
 // Camera and size → the per-frame constant block every shader reads (pure).
-gpu::FrameConstants packFrameConstants(const Camera& cam, int width, int height, float sceneRadius);
+// `frameIndex`: the temporal accumulation's frame (per-frame noise offsets; 0 otherwise).
+gpu::FrameConstants packFrameConstants(const Camera& cam, int width, int height, float sceneRadius,
+                                       int frameIndex = 0);
 
 // The AO radius as it is at the centre of the view (the panel and metrics.json show it).
 struct RadiusInfo {
@@ -56,6 +58,9 @@ class Renderer {
     void invalidate() { graph_.invalidate(); }
 
     FrameReport render();
+    // Temporal accumulation on and fewer than temporal.frames frames blended since the last change:
+    // render() again (the app keeps drawing, headless renders that many frames).
+    bool accumulating() const;
 
     const Settings& settings() const { return settings_; }
     const std::optional<Settings>& settingsB() const { return settingsB_; }
@@ -102,6 +107,8 @@ class Renderer {
     float displayScale_ = 1.0f;
     FrameGraph graph_;
     bool graphStale_ = true; // settings, chain B, size or reference on/off changed since compile()
+    int temporalFrame_ = 0;  // frames accumulated since the camera or the settings changed
+    std::string temporalSettingsKey_, temporalCameraKey_;
     FrameInfo frame_;
     std::map<std::string, std::unique_ptr<Pass>> passes_; // kept across rebuilds (they own GL state)
     ReferencePass referencePass_;

@@ -22,6 +22,8 @@ Settings withRadius(Settings s, float radius) {
 ViewResult measure(Renderer& r, const Settings& s, const ReferenceImage& ref, int warmup, int frames) {
     r.setSettings(s);
     r.render();
+    while (r.accumulating()) // temporal: judge the image after its frames are blended
+        r.render();
     ViewResult v;
     v.error = evaluate(readBack(r.texture("ao.denoised"), 1), ref).metrics;
     std::vector<double> ms;
@@ -68,7 +70,8 @@ nlohmann::json runFacts(const std::string& glRenderer) {
     const std::time_t now = std::time(nullptr);
     std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
     std::string rev = firstLine("git -C '" SSAOLAB_SOURCE_DIR "' rev-parse --short HEAD 2>/dev/null");
-    if (!rev.empty() && !firstLine("git -C '" SSAOLAB_SOURCE_DIR "' status --porcelain -uno 2>/dev/null").empty())
+    if (!rev.empty() &&
+        !firstLine("git -C '" SSAOLAB_SOURCE_DIR "' status --porcelain -uno 2>/dev/null").empty())
         rev += "+dirty";
     return {{"cpu", cpuModel()},
             {"hardware_threads", std::thread::hardware_concurrency()},
@@ -77,6 +80,5 @@ nlohmann::json runFacts(const std::string& glRenderer) {
             {"date", date},
             {"git_revision", rev.empty() ? "unknown" : rev}};
 }
-
 
 } // namespace ssao

@@ -66,6 +66,7 @@ void AppCore::renderIfNeeded(int viewW, int viewH) {
         r.setSettingsB(settingsB());
         r.setReferenceBuffers(reference_.buffers());
         FrameReport rep = r.render(); // cheap when nothing changed: no pass runs
+        if (r.accumulating()) poke(); // temporal accumulation: keep drawing until its frames are in
         // The reference after the frame: a trace starts from the view as just rendered (its radius
         // at the centre), and the error needs this frame's ao.denoised. New buffers are uploaded
         // at once (only the upload pass runs), not one frame late.

@@ -64,6 +64,10 @@ struct FrameInfo {
     // Render pixels per displayed pixel (below 1 while the app renders reduced as the camera
     // moves): a radius in pixels means displayed pixels.
     float displayScale = 1.0f;
+    // Temporal accumulation: this frame's index since the last change (0 = start over), and
+    // whether the history must be dropped entirely (settings, size or scene changed).
+    int temporalFrame = 0;
+    bool temporalReset = true;
 };
 
 // Handed to execute(): the pass's settings, inputs and outputs by the names it declared.

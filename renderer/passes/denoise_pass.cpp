@@ -16,9 +16,11 @@ void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
     const bool bilateral = s.denoise.kind == DenoiseKind::Bilateral;
     tmp.scale = bilateral ? 1.0f : resolutionScale(s.ao.resolution);
     tmp.internal = true;
-    if (bilateral) {
-        b.read("gbuffer.depth");
-        b.read("gbuffer.normal");
+    if (bilateral || s.temporal.enabled) b.read("gbuffer.depth");
+    if (bilateral) b.read("gbuffer.normal");
+    if (s.temporal.enabled) {
+        b.settings("temporal");
+        b.usesCamera(); // reprojection
     }
     b.write(tmp);
     b.write(describe(branch().res("ao.denoised"), GL_R32F, 1, Display::Unit,
@@ -28,12 +30,16 @@ void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
 
 void DenoisePass::execute(PassContext& ctx) {
     if (!linear_) linear_ = gl::Sampler(GL_LINEAR, GL_CLAMP_TO_EDGE, name() + ".upsample");
+    if (ctx.settings.denoise.kind == DenoiseKind::Bilateral)
+        bilateral(ctx);
+    else
+        separable(ctx);
+    if (ctx.settings.temporal.enabled) temporal_.run(ctx, branch().res("ao.denoised"), name());
+}
+
+void DenoisePass::separable(PassContext& ctx) {
     const std::string raw = branch().res("ao.raw"), tmp = branch().res("denoise.tmp"),
                       out = branch().res("ao.denoised");
-    if (ctx.settings.denoise.kind == DenoiseKind::Bilateral) {
-        bilateral(ctx);
-        return;
-    }
     const bool upsample = ctx.size(tmp) != ctx.size(out);
     glUseProgram(ctx.shaders.program("passes/fullscreen.vert", "passes/denoise.frag"));
     for (int dir = 0; dir < 2; ++dir) {

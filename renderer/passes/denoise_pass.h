@@ -4,6 +4,7 @@
 // upsamples jointly.
 #pragma once
 #include "graph/pass.h"
+#include "passes/temporal_accumulator.h"
 
 namespace ssao {
 
@@ -14,9 +15,11 @@ class DenoisePass final : public Pass {
     void execute(PassContext& ctx) override;
 
   private:
+    void separable(PassContext& ctx); // box or gaussian, x then y
     void bilateral(PassContext& ctx); // edge-aware, 1-3 passes at full resolution
     gl::UniformBuffer ubo_[2];
     gl::Sampler linear_;
+    TemporalAccumulator temporal_; // when temporal.enabled: accumulates ao.denoised over frames
 };
 
 } // namespace ssao

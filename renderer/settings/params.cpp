@@ -102,6 +102,18 @@ std::vector<Param> coreRows() {
         INT_ROW("denoise.passes", "Passes", denoise.passes, 1, 3, "",
                 "Bilateral: how many times the edge-aware filter runs (XeGTAO's denoiser runs 1-3).")
             .onlyWhen("denoise.kind", {"bilateral"}),
+        // ---- Temporal ---------------------------------------------------------------------------
+        BOOL_ROW("temporal.enabled", "Temporal", temporal.enabled,
+                 "Accumulate the denoised AO over frames, each with new noise, reprojecting the history "
+                 "through the previous camera (headless: renders that many frames)."),
+        INT_ROW("temporal.frames", "Frames", temporal.frames, 1, 64, "frames",
+                "Frames blended after a change (running mean: frame k weighs 1/k); then the image is final "
+                "and nothing re-runs.")
+            .onlyWhen("temporal.enabled", {"true"}),
+        FLOAT_ROW("temporal.depth_tolerance", "Depth tolerance", temporal.depthTolerance, 0.001, 0.5, "relative",
+                  "A pixel's history is dropped when the surface there was at a depth differing by more than "
+                  "this fraction (disocclusion: no ghost trails while the camera moves).")
+            .onlyWhen("temporal.enabled", {"true"}),
         // ---- Composite ------------------------------------------------------------------------
         FLOAT_ROW("composite.ambient", "Ambient", composite.ambient, 0.0, 4.0, "",
                   "Ambient term strength: ambient * albedo * AO (seed 004 uses 0.1 with a bright light)."),

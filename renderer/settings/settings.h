@@ -39,6 +39,15 @@ struct DenoiseSettings {
     int passes = 2;          // bilateral: repeated edge-aware passes (XeGTAO runs 1-3)
 };
 
+// Temporal accumulation: the denoised AO of successive frames, each with its own noise, blended
+// with the previous result reprojected through the previous camera; pixels whose history does not
+// match (disocclusion: another surface was there) restart.
+struct TemporalSettings {
+    bool enabled = false;
+    int frames = 8;                // frames accumulated after a change; then the frame stays still
+    float depthTolerance = 0.02f; // relative depth mismatch that rejects the history of a pixel
+};
+
 struct CompositeSettings {
     float ambient = 0.7f; // ambient strength multiplied by albedo and AO (strong: AO is what we look at)
     float light = 0.6f;   // point-light intensity (0 = AO-only shading)
@@ -49,6 +58,7 @@ struct Settings : TechniqueSettings {
     GBufferSettings gbuffer;
     AoSettings ao;
     DenoiseSettings denoise;
+    TemporalSettings temporal;
     CompositeSettings composite;
 };
 

@@ -9,6 +9,7 @@
 #define SSAO_TEX_NORMAL 1       // gbuffer.normal: view-space normal (raw or (n+1)/2 encoded)
 #define SSAO_TEX_DEPTH 2        // gbuffer.zbuffer: hardware depth (window-space [0,1])
 #define SSAO_TEX_ALBEDO 3       // gbuffer.albedo: base colour
+#define SSAO_TEX_HISTORY 4      // temporal accumulation: the previous frame's AO, depth, count
 #define SSAO_TEX_AO 5           // AO input of the denoise / composite passes
 #define SSAO_TEX_LINEAR_DEPTH 6 // gbuffer.depth: linear view distance (positive), 0 = sky
 #define SSAO_TEX_VIEW_SOURCE 7  // buffer shown by the view pass
@@ -60,7 +61,7 @@ SSAO_STRUCT FrameConstants_ {
     mat4 proj;     // view -> clip (OpenGL, z_ndc in [-1,1])
     mat4 invProj;
     vec4 viewport; // width, height, 1/width, 1/height of the G-buffer (pixels)
-    vec4 clip;     // near, far, sceneRadius, unused  (scene units)
+    vec4 clip;     // near, far, sceneRadius (scene units), temporal frame index (0 without temporal)
 };
 
 // What every AO technique shares (settings/settings.h AoSettings), first in its constant block.

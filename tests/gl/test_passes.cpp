@@ -109,6 +109,13 @@ TEST_F(Passes, EveryParameterInvalidatesExactlyTheDependentsOfTheGroupItBelongsT
         }
         r_->setSettings(s);
         const V ran = r_->render().ran();
+        if (p.group() == "temporal") {
+            // Switching accumulation on starts it: every pass runs again, each frame with new noise.
+            EXPECT_EQ(ran.size(), r_->graph().passOrder().size()) << p.key;
+            r_->setSettings(base);
+            r_->render();
+            continue;
+        }
         EXPECT_EQ(std::set<std::string>(ran.begin(), ran.end()), dirty) << p.key;
         r_->setSettings(base);
         r_->render();

@@ -25,7 +25,10 @@ bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
 
 // Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of Duty:
 // Advanced Warfare"): a per-pixel value in [0,1) whose 3x3 neighbourhoods are well spread.
-float ign(vec2 p) { return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715)))); }
+float ign(vec2 p) {
+    p += 5.588238 * frame.clip.w; // a new pattern every temporal frame (frame index, else 0)
+    return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
+}
 
 // acos of a cosine that rounding may have pushed past ±1 (acos(1 + ε) is NaN on llvmpipe).
 float safeAcos(float x) { return acos(clamp(x, -1.0, 1.0)); }

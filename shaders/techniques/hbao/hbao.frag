@@ -21,7 +21,10 @@ const float TWO_PI = 6.28318530717959;
 bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
 
 // Interleaved gradient noise (Jimenez 2014): per-pixel values whose neighbourhoods are well spread.
-float ign(vec2 p) { return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715)))); }
+float ign(vec2 p) {
+    p += 5.588238 * frame.clip.w; // a new pattern every temporal frame (frame index, else 0)
+    return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
+}
 
 void main() {
     vec4 P4 = texture(gPosition, vUv);

@@ -92,7 +92,11 @@ void main() {
     float nl2 = dot(N, N);
     N = nl2 > 1e-12 ? N * inversesqrt(nl2) : vec3(0.0, 0.0, 1.0); // renormalise after decoding
 
-    vec3 r = hasFlag(KERNEL_FLAG_NOISE) ? texture(texNoise, vUv * ssao.noiseScale.xy).xyz : vec3(1.0, 0.0, 0.0);
+    // Temporal accumulation shifts the 4x4 tile by a texel pattern per frame (16 arrangements), so
+    // successive frames rotate each pixel's kernel differently (frame index 0 otherwise).
+    float k = frame.clip.w;
+    vec2 shift = vec2(mod(k, 4.0), mod(floor(k / 4.0), 4.0)) * 0.25;
+    vec3 r = hasFlag(KERNEL_FLAG_NOISE) ? texture(texNoise, vUv * ssao.noiseScale.xy + shift).xyz : vec3(1.0, 0.0, 0.0);
     mat3 TBN = tangentFrame(N, r);
     float radius = aoRadius(ssao.aoCommon, -P.z);
 

@@ -1,0 +1,27 @@
+// The denoise stage's temporal step (shaders/passes/temporal.frag): blends this frame's denoised
+// AO with the reprojected history, then writes the result back as ao.denoised, so every consumer
+// (composite, metrics, views) sees the accumulated AO. Owns the two history targets (ping-pong)
+// and the previous frame's camera.
+#pragma once
+#include "gl/resources.h"
+#include "graph/pass.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+
+namespace ssao {
+
+class TemporalAccumulator {
+  public:
+    // `ao`: the resource holding this frame's denoised AO, overwritten with the accumulated one.
+    void run(PassContext& ctx, const std::string& ao, const std::string& passName);
+
+  private:
+    gl::RenderTarget history_[2];
+    int current_ = 0; // index of the latest history
+    glm::mat4 prevViewProj_{1.0f}, prevView_{1.0f};
+    bool valid_ = false; // a history of this size exists
+};
+
+} // namespace ssao
