@@ -1,9 +1,11 @@
 // The parameter panel, generated from the parameter table: one widget per row, greyed out when the
-// row does not apply (e.g. sigma unless the gaussian denoiser is chosen), with the radius shown in
-// world units and pixels under the AO group.
+// row does not apply (e.g. sigma unless the gaussian denoiser is chosen) and hidden when it belongs
+// to a technique other than the chosen one, with the radius shown in world units and pixels under
+// the AO group.
 #include "settings/params.h"
 #include "view/app_core.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ssao {
@@ -124,10 +126,19 @@ void radiusLine(AppCore& app) {
 
 } // namespace
 
+// A row of a technique that is not the chosen one: hidden, not greyed (four techniques' rows
+// would bury the ones that matter).
+static bool otherTechnique(const Param& p, const Settings& s) {
+    if (p.when.empty() || p.when.front().key != "ao.technique") return false;
+    const auto& ids = p.when.front().values;
+    return std::find(ids.begin(), ids.end(), s.ao.technique) == ids.end();
+}
+
 void drawParameters(AppCore& app) {
     std::string group;
     Settings& s = app.settings();
     for (const Param& p : paramTable()) {
+        if (otherTechnique(p, s)) continue;
         if (p.group() != group) {
             if (group == "ao") radiusLine(app);
             group = p.group();
