@@ -33,4 +33,26 @@ class AoPass : public Pass {
     InspectProbe probe_;
 };
 
+// The pass of a technique that is one constant block and one shader over positions and normals
+// (SAO, HBAO, GTAO): Traits gives `Constants`, `group`, `shader` and
+// `static Constants pack(const Settings&, const gpu::AoCommon&, bool normalUnorm)`.
+template <class Traits> class OneBlockPass final : public AoPass {
+  public:
+    using AoPass::AoPass;
+    void setup(PassBuilder& b, const Settings& s) const override {
+        declarePositionsNormals(b, s, Traits::group);
+    }
+
+  private:
+    std::string prepare(PassContext& ctx) override {
+        if (!ubo_) ubo_ = gl::UniformBuffer(sizeof(typename Traits::Constants), name() + ".constants");
+        const typename Traits::Constants c = Traits::pack(ctx.settings, common(ctx), normalUnorm(ctx));
+        ubo_.upload(&c, sizeof c);
+        ubo_.bind(SSAO_UBO_AO);
+        bindPositionsNormals(ctx);
+        return Traits::shader;
+    }
+    gl::UniformBuffer ubo_;
+};
+
 } // namespace ssao

@@ -1,17 +1,19 @@
-// HBAO's pass: reads the G-buffer's positions and normals, writes ao.raw (techniques/ao_pass.h).
+// HBAO's pass: one constant block (pack.h) and one shader over the G-buffer's positions and
+// normals, writing ao.raw (techniques/ao_pass.h).
 #pragma once
 #include "techniques/ao_pass.h"
+#include "techniques/hbao/pack.h"
 
 namespace ssao {
 
-class HbaoPass final : public AoPass {
-  public:
-    using AoPass::AoPass;
-    void setup(PassBuilder& b, const Settings& s) const override;
-
-  private:
-    std::string prepare(PassContext& ctx) override;
-    gl::UniformBuffer ubo_;
+struct HbaoTraits {
+    using Constants = gpu::HbaoConstants;
+    static constexpr const char* group = "hbao";
+    static constexpr const char* shader = "techniques/hbao/hbao.frag";
+    static Constants pack(const Settings& s, const gpu::AoCommon& common, bool normalUnorm) {
+        return packHbaoConstants(s.hbao, common, normalUnorm);
+    }
 };
+using HbaoPass = OneBlockPass<HbaoTraits>;
 
 } // namespace ssao
