@@ -5,8 +5,8 @@
 #include "bench/viewpoints.h"
 #include "gl/context.h"
 #include "progress_bar.h"
-#include "render_command.h"
 #include "reference/reference_cache.h"
+#include "render_command.h"
 #include "scene/scene.h"
 #include "util/error.h"
 #include "util/paths.h"
@@ -14,14 +14,15 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 
 namespace ssao {
 
 void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
-    cmd.add_option("--scene", o.scenes, "scene to measure (repeatable): builtin:NAME or a .gltf file "
-                                        "(default builtin:showcase)");
+    cmd.add_option("--scene", o.scenes,
+                   "scene to measure (repeatable): builtin:NAME or a .gltf file "
+                   "(default builtin:showcase)");
     cmd.add_option("--sweep", o.sweep, "builtin, or a sweep JSON file (see assets/bench/sweep_builtin.json)")
         ->capture_default_str();
     cmd.add_option("--size", o.size, "render size WIDTHxHEIGHT")->capture_default_str();
@@ -31,21 +32,25 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
     cmd.add_option("--frames", o.frames, "timed frames per configuration and view (median, min, max)")
         ->capture_default_str()
         ->check(CLI::Range(1, 10000));
-    cmd.add_option("--warmup", o.warmup, "untimed frames before timing")->capture_default_str()->check(CLI::Range(0, 1000));
+    cmd.add_option("--warmup", o.warmup, "untimed frames before timing")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1000));
     cmd.add_option("--reference-rays", o.referenceRays, "reference rays per pixel")
         ->capture_default_str()
         ->check(CLI::Range(1, 1 << 16));
     cmd.add_option("--reference-variant", o.referenceVariant, "visibility (XeGTAO's) or obscurance")
         ->capture_default_str()
         ->check(CLI::IsMember({"visibility", "obscurance"}));
-    cmd.add_option("--radius-scene", o.radiusScene,
-                   "the AO radius R of every configuration and of the reference, as a fraction of the scene's "
-                   "bounding-box diagonal")
+    cmd.add_option(
+           "--radius-scene", o.radiusScene,
+           "the AO radius R of every configuration and of the reference, as a fraction of the scene's "
+           "bounding-box diagonal")
         ->capture_default_str()
         ->check(CLI::Range(0.0001, 0.5));
     cmd.add_option("--out", o.out, "output folder")->capture_default_str();
     cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)");
-    cmd.add_flag("--no-plot", [&o](int64_t) { o.plot = false; }, "skip the matplotlib plot");
+    cmd.add_flag(
+        "--no-plot", [&o](int64_t) { o.plot = false; }, "skip the matplotlib plot");
     cmd.add_flag("--quiet", o.quiet, "no progress output");
 }
 
@@ -55,7 +60,8 @@ int runBench(const BenchOptions& o) {
     parseSizeOption(o.size, w, h);
     const Sweep sweep = loadSweep(o.sweep, o.presetDir);
     const ReferenceVariant variant = parseVariant(o.referenceVariant);
-    const std::vector<std::string> specs = o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
+    const std::vector<std::string> specs =
+        o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
     std::vector<Scene> scenes;
     for (const auto& s : specs)
         scenes.push_back(loadScene(s));
@@ -75,19 +81,23 @@ int runBench(const BenchOptions& o) {
     r.setSize(w, h);
     const size_t total = scenes.size() * size_t(o.views) * sweep.configs.size();
     if (!o.quiet)
-        std::printf("bench: %zu configurations x %zu scenes x %d views at %dx%d on %s\n", sweep.configs.size(),
-                    scenes.size(), o.views, w, h, ctx.renderer().c_str());
+        std::printf("bench: %zu configurations x %zu scenes x %d views at %dx%d on %s\n",
+                    sweep.configs.size(), scenes.size(), o.views, w, h, ctx.renderer().c_str());
     size_t done = 0;
     for (size_t si = 0; si < scenes.size(); ++si) {
         Scene& scene = scenes[si];
         // Files are named by their stem in tables and plots ("cornellBox"), built-ins by name.
-        if (specs[si].rfind("builtin:", 0) != 0) scene.name = std::filesystem::path(specs[si]).stem().string();
+        if (specs[si].rfind("builtin:", 0) != 0)
+            scene.name = std::filesystem::path(specs[si]).stem().string();
         const float radius = o.radiusScene * 2.0f * scene.bounds.radius();
         r.setScene(scene);
         ReferenceProvider provider(scene);
         const Camera base = scene.camera ? *scene.camera : frameBounds(scene.bounds);
-        nlohmann::json sceneFacts = {{"name", scene.name}, {"spec", specs[si]}, {"triangles", scene.triangleCount()},
-                                     {"diagonal", 2.0f * scene.bounds.radius()}, {"radius", radius}};
+        nlohmann::json sceneFacts = {{"name", scene.name},
+                                     {"spec", specs[si]},
+                                     {"triangles", scene.triangleCount()},
+                                     {"diagonal", 2.0f * scene.bounds.radius()},
+                                     {"radius", radius}};
         for (const auto& [vname, cam] : viewpoints(base, o.views)) {
             r.setCamera(cam);
             r.setSettings(withRadius(sweep.configs[sweep.baseline].settings, radius));
@@ -96,19 +106,23 @@ int runBench(const BenchOptions& o) {
             ReferenceImage ref;
             {
                 ProgressBar bar("  reference " + scene.name + " " + vname, !o.quiet);
-                ref = provider.get(r.camera(), w, h, {radius, o.referenceRays, variant},
-                                   [&](double f) { bar.update(f); }, &cached);
+                ref = provider.get(
+                    r.camera(), w, h, {radius, o.referenceRays, variant}, [&](double f) { bar.update(f); },
+                    &cached);
             }
-            sceneFacts["viewpoints"].push_back(
-                {{"name", vname}, {"camera", {{"eye", {cam.eye.x, cam.eye.y, cam.eye.z}},
-                                              {"target", {cam.target.x, cam.target.y, cam.target.z}}}},
-                 {"reference_cached", cached}, {"reference_seconds", ref.seconds},
-                 {"reference_mrays_per_second", ref.raysPerSecond() * 1e-6}});
+            sceneFacts["viewpoints"].push_back({{"name", vname},
+                                                {"camera",
+                                                 {{"eye", {cam.eye.x, cam.eye.y, cam.eye.z}},
+                                                  {"target", {cam.target.x, cam.target.y, cam.target.z}}}},
+                                                {"reference_cached", cached},
+                                                {"reference_seconds", ref.seconds},
+                                                {"reference_mrays_per_second", ref.raysPerSecond() * 1e-6}});
             ProgressBar bar("  " + scene.name + " " + vname + ": " + std::to_string(sweep.configs.size()) +
                                 " configurations",
                             !o.quiet);
             for (size_t c = 0; c < sweep.configs.size(); ++c) {
-                ViewResult v = measure(r, withRadius(sweep.configs[c].settings, radius), ref, o.warmup, o.frames);
+                ViewResult v =
+                    measure(r, withRadius(sweep.configs[c].settings, radius), ref, o.warmup, o.frames);
                 v.scene = scene.name;
                 v.viewpoint = vname;
                 v.config = c;
@@ -136,23 +150,25 @@ int runBench(const BenchOptions& o) {
         const size_t cheap = fastestAtMostBaselineError(run), best = mostAccurate(run);
         if (cheap != std::string::npos)
             std::printf("fastest at most the baseline's error: %s: %.3f ms (%.3fx), RMSE %.4f (%.3fx)\n",
-                        sweep.configs[cheap].label.c_str(), run.summary[cheap].gpuMs, run.summary[cheap].timeRatio,
-                        run.summary[cheap].rmse, run.summary[cheap].rmseRatio);
+                        sweep.configs[cheap].label.c_str(), run.summary[cheap].gpuMs,
+                        run.summary[cheap].timeRatio, run.summary[cheap].rmse, run.summary[cheap].rmseRatio);
         if (best != std::string::npos)
-            std::printf("lowest error: %s: RMSE %.4f (%.3fx) in %.3f ms (%.3fx)\n", sweep.configs[best].label.c_str(),
-                        run.summary[best].rmse, run.summary[best].rmseRatio, run.summary[best].gpuMs,
-                        run.summary[best].timeRatio);
+            std::printf("lowest error: %s: RMSE %.4f (%.3fx) in %.3f ms (%.3fx)\n",
+                        sweep.configs[best].label.c_str(), run.summary[best].rmse,
+                        run.summary[best].rmseRatio, run.summary[best].gpuMs, run.summary[best].timeRatio);
         int front = 0;
         for (const auto& s : run.summary)
             front += s.pareto;
-        std::printf("%d configurations on the Pareto front; wrote %s/{results.csv,summary.csv,results.json,report.md"
-                    "%s}\n",
-                    front, o.out.c_str(), o.plot ? ",pareto.png,pareto.svg" : "");
+        std::printf(
+            "%d configurations on the Pareto front; wrote %s/{results.csv,summary.csv,results.json,report.md"
+            "%s}\n",
+            front, o.out.c_str(), o.plot ? ",pareto.png,pareto.svg" : "");
     }
     long bad = 0;
     for (const auto& s : run.summary)
         bad += s.nonFinite;
-    if (bad > 0) throw Error(std::to_string(bad) + " non-finite AO pixels in the benchmark (see results.csv)");
+    if (bad > 0)
+        throw Error(std::to_string(bad) + " non-finite AO pixels in the benchmark (see results.csv)");
     return 0;
 }
 

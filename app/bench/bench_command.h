@@ -15,9 +15,9 @@ struct BenchOptions {
     std::vector<std::string> scenes; // default: builtin:showcase
     std::string sweep = "builtin";
     std::string size = "1280x720";
-    int views = 3;         // the scene's camera + orbits
-    int frames = 20;       // timed frames per configuration and view (median, min, max)
-    int warmup = 2;        // untimed frames first (shader compilation, caches)
+    int views = 3;   // the scene's camera + orbits
+    int frames = 20; // timed frames per configuration and view (median, min, max)
+    int warmup = 2;  // untimed frames first (shader compilation, caches)
     int referenceRays = 512;
     std::string referenceVariant = "visibility";
     float radiusScene = 0.05f; // R = radiusScene x the scene's bounding-box diagonal

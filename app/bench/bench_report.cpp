@@ -30,17 +30,21 @@ std::string num(double v, int digits = 6) {
     return b;
 }
 
-nlohmann::json jnum(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+nlohmann::json jnum(double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
 
-const char* kMetricHeader = "gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,p99_abs,max_abs,psnr_geometry_srgb,"
-                            "psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,reference_noise";
+const char* kMetricHeader =
+    "gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,p99_abs,max_abs,psnr_geometry_srgb,"
+    "psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,reference_noise,frames,rmse_first_frame";
 
 std::string metricCells(const ViewResult& v) {
     const ErrorMetrics& e = v.error;
-    return num(v.gpuMs) + "," + num(v.gpuMsMin) + "," + num(v.gpuMsMax) + "," + num(e.rmse) + "," + num(e.mae) +
-           "," + num(e.bias) + "," + num(e.p99Abs) + "," + num(e.maxAbs) + "," + num(e.psnrGeometrySrgb) + "," +
-           num(e.psnrFullSrgb) + "," + num(e.rmseEdge) + "," + num(e.rmseInterior) + "," + num(e.ssim) + "," +
-           std::to_string(e.nonFinite) + "," + num(e.referenceNoise);
+    return num(v.gpuMs) + "," + num(v.gpuMsMin) + "," + num(v.gpuMsMax) + "," + num(e.rmse) + "," +
+           num(e.mae) + "," + num(e.bias) + "," + num(e.p99Abs) + "," + num(e.maxAbs) + "," +
+           num(e.psnrGeometrySrgb) + "," + num(e.psnrFullSrgb) + "," + num(e.rmseEdge) + "," +
+           num(e.rmseInterior) + "," + num(e.ssim) + "," + std::to_string(e.nonFinite) + "," +
+           num(e.referenceNoise) + "," + std::to_string(v.frames) + "," + num(v.rmseFirstFrame);
 }
 
 } // namespace
@@ -74,8 +78,8 @@ void writeBenchFiles(const BenchRun& run, const std::string& dir) {
         for (const auto& v : run.views) {
             const BenchConfig& c = cfgs[v.config];
             f << csvField(v.scene) << "," << csvField(v.viewpoint) << "," << csvField(c.label) << ","
-              << c.settings.ao.technique << "," << c.baseline << "," << run.summary[v.config].pareto
-              << "," << metricCells(v) << "," << csvField(c.keys.dump()) << "\n";
+              << c.settings.ao.technique << "," << c.baseline << "," << run.summary[v.config].pareto << ","
+              << metricCells(v) << "," << csvField(c.keys.dump()) << "\n";
         }
         if (!f) throw Error("cannot write " + dir + "/results.csv");
     }
@@ -83,15 +87,17 @@ void writeBenchFiles(const BenchRun& run, const std::string& dir) {
         std::ofstream f(fs::path(dir) / "summary.csv");
         f << "label,technique,baseline,pareto,views,gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,"
              "psnr_geometry_srgb,psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,time_ratio,rmse_ratio,"
+             "rmse_first_frame,"
              "settings\n";
         for (const auto& s : run.summary) {
             const BenchConfig& c = cfgs[s.config];
-            f << csvField(c.label) << "," << c.settings.ao.technique << "," << c.baseline << ","
-              << s.pareto << "," << s.views << "," << num(s.gpuMs) << "," << num(s.gpuMsMin) << ","
-              << num(s.gpuMsMax) << "," << num(s.rmse) << "," << num(s.mae) << "," << num(s.bias) << ","
+            f << csvField(c.label) << "," << c.settings.ao.technique << "," << c.baseline << "," << s.pareto
+              << "," << s.views << "," << num(s.gpuMs) << "," << num(s.gpuMsMin) << "," << num(s.gpuMsMax)
+              << "," << num(s.rmse) << "," << num(s.mae) << "," << num(s.bias) << ","
               << num(s.psnrGeometrySrgb) << "," << num(s.psnrFullSrgb) << "," << num(s.rmseEdge) << ","
               << num(s.rmseInterior) << "," << num(s.ssim) << "," << s.nonFinite << "," << num(s.timeRatio)
-              << "," << num(s.rmseRatio) << "," << csvField(c.keys.dump()) << "\n";
+              << "," << num(s.rmseRatio) << "," << num(s.rmseFirstFrame) << "," << csvField(c.keys.dump())
+              << "\n";
         }
         if (!f) throw Error("cannot write " + dir + "/summary.csv");
     }
@@ -116,6 +122,7 @@ void writeBenchFiles(const BenchRun& run, const std::string& dir) {
                                        {"rmse_edge", jnum(s.rmseEdge)},
                                        {"rmse_interior", jnum(s.rmseInterior)},
                                        {"ssim", jnum(s.ssim)},
+                                       {"rmse_first_frame", jnum(s.rmseFirstFrame)},
                                        {"nonfinite", s.nonFinite},
                                        {"time_ratio", jnum(s.timeRatio)},
                                        {"rmse_ratio", jnum(s.rmseRatio)}});
@@ -137,6 +144,8 @@ void writeBenchFiles(const BenchRun& run, const std::string& dir) {
                                 {"rmse_edge", jnum(v.error.rmseEdge)},
                                 {"rmse_interior", jnum(v.error.rmseInterior)},
                                 {"ssim", jnum(v.error.ssim)},
+                                {"frames", v.frames},
+                                {"rmse_first_frame", jnum(v.rmseFirstFrame)},
                                 {"nonfinite", v.error.nonFinite},
                                 {"reference_noise", jnum(v.error.referenceNoise)}});
     std::ofstream(fs::path(dir) / "results.json") << j.dump(2) << "\n";
@@ -153,7 +162,8 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
        << f.value("cpu", "") << " (" << f.value("hardware_threads", 0) << " threads); " << f.value("size", "")
        << "; " << f.value("frames", 0) << " timed frames per configuration and view (median) after "
        << f.value("warmup", 0) << " warm-up; reference " << f["reference"].value("variant", "") << ", "
-       << f["reference"].value("rays", 0) << " rays per pixel, R = " << f["reference"].value("radius_scene", 0.0)
+       << f["reference"].value("rays", 0)
+       << " rays per pixel, R = " << f["reference"].value("radius_scene", 0.0)
        << " x the scene diagonal.\n\nScenes and viewpoints: ";
     for (size_t i = 0; i < f["scenes"].size(); ++i) {
         const auto& s = f["scenes"][i];
@@ -171,31 +181,34 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
            << " — errors well above it are the techniques', not the reference's.";
     md << "\n\n![time against error](" << plotFile << ")\n\n";
     md << "Baseline: **" << cfgs[run.sweep->baseline].label << "**: " << num(base.gpuMs, 4)
-       << " ms AO + denoise, geometry RMSE " << num(base.rmse, 4) << ", PSNR " << num(base.psnrGeometrySrgb, 4)
-       << " dB (geometry, sRGB), " << num(base.psnrFullSrgb, 4) << " dB full frame.\n\n";
+       << " ms AO + denoise, geometry RMSE " << num(base.rmse, 4) << ", PSNR "
+       << num(base.psnrGeometrySrgb, 4) << " dB (geometry, sRGB), " << num(base.psnrFullSrgb, 4)
+       << " dB full frame.\n\n";
     const size_t cheap = fastestAtMostBaselineError(run), best = mostAccurate(run);
     if (cheap != std::string::npos)
-        md << "Fastest configuration at most as wrong as the baseline: **" << cfgs[cheap].label << "**: "
-           << num(run.summary[cheap].gpuMs, 4) << " ms (" << num(run.summary[cheap].timeRatio, 3)
+        md << "Fastest configuration at most as wrong as the baseline: **" << cfgs[cheap].label
+           << "**: " << num(run.summary[cheap].gpuMs, 4) << " ms (" << num(run.summary[cheap].timeRatio, 3)
            << "x the baseline's time), RMSE " << num(run.summary[cheap].rmse, 4) << " ("
            << num(run.summary[cheap].rmseRatio, 3) << "x).\n\n";
     if (best != std::string::npos)
         md << "Lowest error: **" << cfgs[best].label << "**: RMSE " << num(run.summary[best].rmse, 4) << " ("
-           << num(run.summary[best].rmseRatio, 3) << "x the baseline's) in " << num(run.summary[best].gpuMs, 4)
-           << " ms (" << num(run.summary[best].timeRatio, 3) << "x).\n\n";
+           << num(run.summary[best].rmseRatio, 3) << "x the baseline's) in "
+           << num(run.summary[best].gpuMs, 4) << " ms (" << num(run.summary[best].timeRatio, 3) << "x).\n\n";
     auto table = [&](bool frontOnly) {
-        md << "| configuration | AO+denoise ms | x baseline | RMSE | x baseline | bias | PSNR geo dB | PSNR full dB "
-              "| SSIM | edge RMSE | interior RMSE | front |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
+        md << "| configuration | AO+denoise ms | x baseline | RMSE | x baseline | bias | PSNR geo dB | PSNR "
+              "full dB "
+              "| SSIM | edge RMSE | interior RMSE | 1st-frame RMSE | front "
+              "|\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
         std::vector<const ConfigSummary*> rows;
         for (const auto& s : run.summary)
             if (!frontOnly || s.pareto || s.config == run.sweep->baseline) rows.push_back(&s);
         std::sort(rows.begin(), rows.end(), [](auto* a, auto* b) { return a->gpuMs < b->gpuMs; });
         for (const ConfigSummary* s : rows)
             md << "| " << cfgs[s->config].label << " | " << num(s->gpuMs, 4) << " | " << num(s->timeRatio, 3)
-               << " | " << num(s->rmse, 4) << " | " << num(s->rmseRatio, 3) << " | " << num(s->bias, 3) << " | "
-               << num(s->psnrGeometrySrgb, 4) << " | " << num(s->psnrFullSrgb, 4) << " | " << num(s->ssim, 4)
-               << " | " << num(s->rmseEdge, 4) << " | " << num(s->rmseInterior, 4) << " | "
-               << (s->pareto ? "yes" : "") << " |\n";
+               << " | " << num(s->rmse, 4) << " | " << num(s->rmseRatio, 3) << " | " << num(s->bias, 3)
+               << " | " << num(s->psnrGeometrySrgb, 4) << " | " << num(s->psnrFullSrgb, 4) << " | "
+               << num(s->ssim, 4) << " | " << num(s->rmseEdge, 4) << " | " << num(s->rmseInterior, 4) << " | "
+               << num(s->rmseFirstFrame, 4) << " | " << (s->pareto ? "yes" : "") << " |\n";
     };
     md << "### Pareto front (and the baseline), fastest first\n\n";
     table(true);
@@ -203,8 +216,11 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
     table(false);
     md << "\nTime: GPU timer queries (GL_TIME_ELAPSED) of every pass but the G-buffer and the composite, "
           "mean over views of each view's median. RMSE: linear AO over the reference's geometry pixels, "
-          "sqrt of the mean MSE over views; PSNR of the mean sRGB MSE over views (XeGTAO's averaging); bias = "
-          "mean(SSAO - reference), + = too bright.\n";
+          "sqrt of the mean MSE over views; PSNR of the mean sRGB MSE over views (XeGTAO's averaging); bias "
+          "= "
+          "mean(SSAO - reference), + = too bright. With temporal accumulation the RMSE is of the image after "
+          "its "
+          "frames are blended; 1st-frame RMSE is of its first frame alone.\n";
     return md.str();
 }
 
@@ -221,8 +237,9 @@ bool plotBench(const std::string& dir, const std::string& title, bool quiet) {
                             (quiet ? " >/dev/null" : "");
     const int rc = std::system(cmd.c_str());
     if (rc != 0) {
-        std::fprintf(stderr, "note: the plot was not drawn (%s failed; install python3-matplotlib); the CSV, "
-                             "JSON and report.md are complete\n",
+        std::fprintf(stderr,
+                     "note: the plot was not drawn (%s failed; install python3-matplotlib); the CSV, "
+                     "JSON and report.md are complete\n",
                      script.c_str());
         return false;
     }

@@ -22,9 +22,12 @@ Settings withRadius(Settings s, float radius) {
 ViewResult measure(Renderer& r, const Settings& s, const ReferenceImage& ref, int warmup, int frames) {
     r.setSettings(s);
     r.render();
-    while (r.accumulating()) // temporal: judge the image after its frames are blended
-        r.render();
     ViewResult v;
+    v.rmseFirstFrame = evaluate(readBack(r.texture("ao.denoised"), 1), ref).metrics.rmse;
+    while (r.accumulating()) { // temporal: judge the image after its frames are blended
+        r.render();
+        ++v.frames;
+    }
     v.error = evaluate(readBack(r.texture("ao.denoised"), 1), ref).metrics;
     std::vector<double> ms;
     for (int f = 0; f < warmup + frames && frames > 0; ++f) {

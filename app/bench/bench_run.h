@@ -22,5 +22,4 @@ ViewResult measure(Renderer& r, const Settings& s, const ReferenceImage& ref, in
 // Machine, GL renderer, build type, date, git revision.
 nlohmann::json runFacts(const std::string& glRenderer);
 
-
 } // namespace ssao

@@ -29,9 +29,11 @@ void applyKeys(Settings& s, const nlohmann::json& keys, const std::string& where
     if (!keys.is_object()) throw Error(where + ": expected an object of \"key\": value");
     for (auto& [k, v] : keys.items()) {
         if (isRadiusKey(k))
-            throw Error(where + ": '" + k + "' is the radius, which the bench sets (the reference's R); use "
-                                           "--radius-scene");
-        if (!v.is_primitive() || v.is_null()) throw Error(where + ": '" + k + "' needs a number, bool or string");
+            throw Error(where + ": '" + k +
+                        "' is the radius, which the bench sets (the reference's R); use "
+                        "--radius-scene");
+        if (!v.is_primitive() || v.is_null())
+            throw Error(where + ": '" + k + "' needs a number, bool or string");
         try {
             setParam(s, k, valueText(v));
         } catch (const Error& e) {
@@ -40,7 +42,10 @@ void applyKeys(Settings& s, const nlohmann::json& keys, const std::string& where
     }
 }
 
+// Labels name parameters by their short name ("samples=16"), except where that would be unclear
+// ("enabled=true" means nothing without "temporal.").
 std::string shortKey(const std::string& key) {
+    if (key.rfind("temporal.", 0) == 0) return key;
     const auto dot = key.rfind('.');
     return dot == std::string::npos ? key : key.substr(dot + 1);
 }
@@ -118,7 +123,8 @@ Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::
             if (g.contains("vary")) {
                 if (!g["vary"].is_object()) throw Error(where + ".vary: expected {\"key\": [values]}");
                 for (auto& [k, v] : g["vary"].items()) {
-                    if (!v.is_array() || v.empty()) throw Error(where + ".vary: '" + k + "' needs a non-empty list");
+                    if (!v.is_array() || v.empty())
+                        throw Error(where + ".vary: '" + k + "' needs a non-empty list");
                     axes.emplace_back(k, v);
                 }
             }
@@ -157,8 +163,7 @@ Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::
 }
 
 Sweep loadSweep(const std::string& nameOrPath, const std::string& presetDir) {
-    const std::string path =
-        nameOrPath == "builtin" ? assetRoot() + "/bench/sweep_builtin.json" : nameOrPath;
+    const std::string path = nameOrPath == "builtin" ? assetRoot() + "/bench/sweep_builtin.json" : nameOrPath;
     std::ifstream in(path);
     if (!in) throw Error("sweep " + path + ": cannot open");
     nlohmann::json j;

@@ -4,8 +4,8 @@
 #include "bench/viewpoints.h"
 #include "gl/context.h"
 #include "progress_bar.h"
-#include "render_command.h"
 #include "reference/reference_cache.h"
+#include "render_command.h"
 #include "settings/params.h"
 #include "settings/preset.h"
 #include "settings/preset_store.h"
@@ -16,8 +16,8 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <memory>
 
@@ -34,7 +34,9 @@ void addTuneOptions(CLI::App& cmd, TuneOptions& o) {
     cmd.add_option("--rounds", o.rounds, "search rounds (each halves every bracket)")
         ->capture_default_str()
         ->check(CLI::Range(1, 10));
-    cmd.add_option("--grid", o.grid, "values per parameter per round")->capture_default_str()->check(CLI::Range(3, 33));
+    cmd.add_option("--grid", o.grid, "values per parameter per round")
+        ->capture_default_str()
+        ->check(CLI::Range(3, 33));
     cmd.add_option("--reference-rays", o.referenceRays, "reference rays per pixel")
         ->capture_default_str()
         ->check(CLI::Range(1, 1 << 16));
@@ -70,7 +72,8 @@ int runTune(const TuneOptions& o) {
     Settings start = defaultSettings();
     if (!o.preset.empty()) start = PresetStore::standard(o.presetDir).open(o.preset).settings;
     setParam(start, "ao.technique", o.technique);
-    const std::vector<std::string> specs = o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
+    const std::vector<std::string> specs =
+        o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
     std::vector<Scene> scenes;
     for (const auto& s : specs) {
         scenes.push_back(loadScene(s));
@@ -99,8 +102,8 @@ int runTune(const TuneOptions& o) {
             r.setSettings(withRadius(start, radius));
             r.render();
             ProgressBar bar("  reference " + sc.name + " " + name, !o.quiet);
-            ReferenceImage ref =
-                providers.back()->get(r.camera(), w, h, {radius, o.referenceRays}, [&](double f) { bar.update(f); });
+            ReferenceImage ref = providers.back()->get(r.camera(), w, h, {radius, o.referenceRays},
+                                                       [&](double f) { bar.update(f); });
             views.push_back({si, r.camera(), radius, std::move(ref), k++ % 2 == 0});
         }
     }
@@ -108,8 +111,10 @@ int runTune(const TuneOptions& o) {
     auto settingsWith = [&](const std::vector<Knob>& ks, float radius) {
         Settings s = withRadius(start, radius);
         for (const Knob& k : ks) {
-            if (k.key == "radius_multiplier") s.ao.radius = float(radius * k.value);
-            else findParam(k.key)->set(s, k.value);
+            if (k.key == "radius_multiplier")
+                s.ao.radius = float(radius * k.value);
+            else
+                findParam(k.key)->set(s, k.value);
         }
         return s;
     };
@@ -168,20 +173,22 @@ int runTune(const TuneOptions& o) {
     tuned.ao.radiusScene = float(o.radiusScene * multiplier);
     p.settings = tuned;
     char desc[512];
-    std::snprintf(desc, sizeof desc,
-                  "ssaolab tune: %s fitted to the ray-traced reference (R = %.3g x diagonal) on %d training views; "
-                  "geometry RMSE train %.4f -> %.4f, held-out %.4f -> %.4f",
-                  o.technique.c_str(), o.radiusScene, int((views.size() + 1) / 2), std::sqrt(trainBefore),
-                  std::sqrt(trainAfter), std::sqrt(testBefore), std::sqrt(testAfter));
+    std::snprintf(
+        desc, sizeof desc,
+        "ssaolab tune: %s fitted to the ray-traced reference (R = %.3g x diagonal) on %d training views; "
+        "geometry RMSE train %.4f -> %.4f, held-out %.4f -> %.4f",
+        o.technique.c_str(), o.radiusScene, int((views.size() + 1) / 2), std::sqrt(trainBefore),
+        std::sqrt(trainAfter), std::sqrt(testBefore), std::sqrt(testAfter));
     p.description = desc;
     writePresetFile(p, o.out);
     if (!o.quiet) {
-        std::printf("tuned %s on %zu views (%zu held out):", o.technique.c_str(), views.size(), views.size() / 2);
+        std::printf("tuned %s on %zu views (%zu held out):", o.technique.c_str(), views.size(),
+                    views.size() / 2);
         for (const Knob& k : knobs)
             std::printf(" %s=%.4g", k.key.c_str(), k.value);
         std::printf("\ngeometry RMSE: training %.4f -> %.4f, held-out %.4f -> %.4f; saved %s\n",
-                    std::sqrt(trainBefore), std::sqrt(trainAfter), std::sqrt(testBefore), std::sqrt(testAfter),
-                    o.out.c_str());
+                    std::sqrt(trainBefore), std::sqrt(trainAfter), std::sqrt(testBefore),
+                    std::sqrt(testAfter), o.out.c_str());
     }
     return 0;
 }

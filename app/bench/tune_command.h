@@ -19,9 +19,9 @@ struct TuneOptions {
     std::string preset;              // starting point (default: the technique's defaults)
     std::vector<std::string> scenes; // default builtin:showcase
     std::string size = "640x360";
-    int views = 6;   // even-numbered viewpoints train, odd ones are held out
-    int rounds = 3;  // bracket halvings
-    int grid = 7;    // values per parameter per round
+    int views = 6;  // even-numbered viewpoints train, odd ones are held out
+    int rounds = 3; // bracket halvings
+    int grid = 7;   // values per parameter per round
     int referenceRays = 256;
     float radiusScene = 0.05f;
     std::string out = "tuned.json";

@@ -10,8 +10,8 @@ std::vector<std::pair<std::string, Camera>> viewpoints(const Camera& base, int c
     std::vector<std::pair<std::string, Camera>> out{{"camera", base}};
     const glm::vec3 up = glm::normalize(base.up);
     for (int k = 1; k < count; ++k) {
-        const int step = (k + 1) / 2;               // 1, 1, 2, 2, 3, ...
-        const float sign = (k % 2) ? 1.0f : -1.0f;  // +, -, +, -
+        const int step = (k + 1) / 2;              // 1, 1, 2, 2, 3, ...
+        const float sign = (k % 2) ? 1.0f : -1.0f; // +, -, +, -
         const float azimuth = sign * 25.0f * float(step);
         Camera c = base;
         glm::vec3 offset = base.eye - base.target;
@@ -20,8 +20,9 @@ std::vector<std::pair<std::string, Camera>> viewpoints(const Camera& base, int c
         const glm::vec3 side = glm::cross(up, offset);
         if (glm::length(side) > 1e-6f * glm::length(offset)) {
             const float elevation = (step % 2 ? 8.0f : -8.0f);
-            const glm::vec3 rotated = glm::vec3(
-                glm::rotate(glm::mat4(1.0f), glm::radians(elevation), glm::normalize(side)) * glm::vec4(offset, 0.0f));
+            const glm::vec3 rotated =
+                glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(elevation), glm::normalize(side)) *
+                          glm::vec4(offset, 0.0f));
             if (std::abs(glm::dot(glm::normalize(rotated), up)) < 0.97f) offset = rotated;
         }
         c.eye = base.target + offset;

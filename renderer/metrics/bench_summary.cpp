@@ -33,16 +33,21 @@ std::vector<bool> paretoFront(const std::vector<double>& time, const std::vector
 
 namespace {
 // PSNR (peak 1) ↔ MSE, so views are averaged in MSE as XeGTAO's auto-tune does.
-double mseOf(double psnr) { return std::pow(10.0, -psnr / 10.0); }
-double psnrOf(double mse) { return mse > 0 ? 10.0 * std::log10(1.0 / mse) : 100.0; }
+double mseOf(double psnr) {
+    return std::pow(10.0, -psnr / 10.0);
+}
+double psnrOf(double mse) {
+    return mse > 0 ? 10.0 * std::log10(1.0 / mse) : 100.0;
+}
 } // namespace
 
-std::vector<ConfigSummary> summarize(const std::vector<ViewResult>& views, size_t configCount, size_t baseline) {
+std::vector<ConfigSummary> summarize(const std::vector<ViewResult>& views, size_t configCount,
+                                     size_t baseline) {
     std::vector<ConfigSummary> out(configCount);
     for (size_t c = 0; c < configCount; ++c) {
         ConfigSummary& s = out[c];
         s.config = c;
-        double mse = 0, mseGeo = 0, mseFull = 0, edge = 0, interior = 0;
+        double mse = 0, mseGeo = 0, mseFull = 0, edge = 0, interior = 0, mseFirst = 0;
         int edgeViews = 0, interiorViews = 0;
         s.gpuMsMin = std::numeric_limits<double>::infinity();
         s.gpuMsMax = -s.gpuMsMin;
@@ -53,6 +58,7 @@ std::vector<ConfigSummary> summarize(const std::vector<ViewResult>& views, size_
             s.gpuMsMin = std::min(s.gpuMsMin, v.gpuMsMin);
             s.gpuMsMax = std::max(s.gpuMsMax, v.gpuMsMax);
             mse += v.error.rmse * v.error.rmse;
+            mseFirst += v.rmseFirstFrame * v.rmseFirstFrame;
             s.mae += v.error.mae;
             s.bias += v.error.bias;
             mseGeo += mseOf(v.error.psnrGeometrySrgb);
@@ -66,12 +72,14 @@ std::vector<ConfigSummary> summarize(const std::vector<ViewResult>& views, size_
         if (s.views == 0) {
             const double nan = std::numeric_limits<double>::quiet_NaN();
             s.gpuMs = s.gpuMsMin = s.gpuMsMax = s.rmse = s.mae = s.bias = nan;
-            s.psnrGeometrySrgb = s.psnrFullSrgb = s.rmseEdge = s.rmseInterior = s.ssim = nan;
+            s.psnrGeometrySrgb = s.psnrFullSrgb = s.rmseEdge = s.rmseInterior = s.ssim = s.rmseFirstFrame =
+                nan;
             continue;
         }
         const double n = s.views;
         s.gpuMs /= n;
         s.rmse = std::sqrt(mse / n);
+        s.rmseFirstFrame = std::sqrt(mseFirst / n);
         s.mae /= n;
         s.bias /= n;
         s.psnrGeometrySrgb = psnrOf(mseGeo / n);

@@ -14,17 +14,20 @@ struct ViewResult {
     std::string scene, viewpoint;
     size_t config = 0;
     double gpuMs = 0, gpuMsMin = 0, gpuMsMax = 0; // AO + denoise: median, min, max over timed frames
-    ErrorMetrics error;
+    ErrorMetrics error;        // of the image judged: after temporal accumulation when it is on
+    double rmseFirstFrame = 0; // geometry RMSE of the first frame alone (= error.rmse without temporal)
+    int frames = 1;            // frames blended into the judged image
 };
 
 struct ConfigSummary {
     size_t config = 0;
     int views = 0;
-    double gpuMs = 0, gpuMsMin = 0, gpuMsMax = 0; // mean of the views' medians; min of mins; max of maxes
-    double rmse = 0, mae = 0, bias = 0;           // RMSE = sqrt(mean of the views' MSE)
+    double gpuMs = 0, gpuMsMin = 0, gpuMsMax = 0;  // mean of the views' medians; min of mins; max of maxes
+    double rmse = 0, mae = 0, bias = 0;            // RMSE = sqrt(mean of the views' MSE)
     double psnrGeometrySrgb = 0, psnrFullSrgb = 0; // 10 log10(1 / mean MSE) over views
     double rmseEdge = 0, rmseInterior = 0;         // RMS over the views that have such pixels
     double ssim = 0;
+    double rmseFirstFrame = 0; // sqrt of the mean over views of the first frame's MSE
     long nonFinite = 0;
     double timeRatio = 0, rmseRatio = 0; // to the baseline configuration
     bool pareto = false;
@@ -37,6 +40,7 @@ double median(std::vector<double> v); // NaN when empty
 std::vector<bool> paretoFront(const std::vector<double>& time, const std::vector<double>& error);
 
 // One summary per configuration 0..configCount-1 (in that order), ratios against `baseline`.
-std::vector<ConfigSummary> summarize(const std::vector<ViewResult>& views, size_t configCount, size_t baseline);
+std::vector<ConfigSummary> summarize(const std::vector<ViewResult>& views, size_t configCount,
+                                     size_t baseline);
 
 } // namespace ssao

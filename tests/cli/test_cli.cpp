@@ -246,10 +246,11 @@ TEST(Cli, RenderWithReferenceWritesTheErrorAndCachesTheTrace) {
     std::filesystem::remove_all(cache);
     const std::string args = "render --scene " + std::string(SSAOLAB_SCENES_DIR) +
                              "/CornellBox/cornellBox.gltf --size 160x90 --timing-frames 1 --reference "
-                             "--reference-rays 64 --out " + out;
+                             "--reference-rays 64 --out " +
+                             out;
     // The cache goes to a folder of the test's own (ssaolab() has no environment hook).
-    const std::string cmd = "SSAOLAB_CACHE_DIR=" + cache + " '" + SSAOLAB_BINARY + "' " + args + " >" +
-                            out + ".log 2>&1";
+    const std::string cmd =
+        "SSAOLAB_CACHE_DIR=" + cache + " '" + SSAOLAB_BINARY + "' " + args + " >" + out + ".log 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(out + ".log");
     for (const char* f : {"ao_reference.exr", "ao_reference.png", "ao_reference_stderr.exr", "error.exr",
                           "error.png", "metrics.json"})
@@ -282,12 +283,14 @@ TEST(Cli, BenchWritesResultsTheFrontAndRatiosToTheBaseline) {
     const std::string sweep = writeTemp("small_sweep.json", R"({
       "name": "small", "base": {"set": {"kernel.noise": "tex4x4"}},
       "groups": [{"name": "samples", "vary": {"kernel.samples": [4, 32]}},
-                 {"name": "blur", "set": {"kernel.samples": 8}, "vary": {"denoise.kind": ["none", "gaussian"]}}]})");
-    CliRun r = ssaolab("bench --scene " + std::string(SSAOLAB_SCENES_DIR) +
-                       "/CornellBox/cornellBox.gltf --sweep " + sweep +
-                       " --size 160x90 --views 2 --frames 2 --warmup 0 --reference-rays 16 --quiet --out " + out);
+                 {"name": "blur", "set": {"kernel.samples": 8}, "vary": {"denoise.kind": ["none", "gaussian"]}},
+                 {"name": "temporal", "set": {"ao.technique": "gtao", "temporal.enabled": true, "temporal.frames": 4}}]})");
+    CliRun r = ssaolab(
+        "bench --scene " + std::string(SSAOLAB_SCENES_DIR) + "/CornellBox/cornellBox.gltf --sweep " + sweep +
+        " --size 160x90 --views 2 --frames 2 --warmup 0 --reference-rays 16 --quiet --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    for (const char* f : {"results.csv", "summary.csv", "results.json", "report.md", "pareto.png", "pareto.svg"})
+    for (const char* f :
+         {"results.csv", "summary.csv", "results.json", "report.md", "pareto.png", "pareto.svg"})
         EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
     auto j = nlohmann::json::parse(slurp(out + "/results.json"));
     // baseline + 2 + 2 (+ every technique at its defaults, 64 samples: not a duplicate here).
@@ -297,6 +300,14 @@ TEST(Cli, BenchWritesResultsTheFrontAndRatiosToTheBaseline) {
     EXPECT_EQ(cfgs[0]["time_ratio"], 1.0);
     EXPECT_EQ(cfgs[0]["rmse_ratio"], 1.0);
     EXPECT_EQ(j["results"].size(), cfgs.size() * 2); // two views each
+    for (const auto& v : j["results"]) {
+        // Temporal accumulation blends its frames before it is judged; everything else is one frame.
+        const bool temporal = v["label"].get<std::string>().find("temporal") != std::string::npos;
+        EXPECT_EQ(v["frames"], temporal ? 4 : 1) << v["label"];
+        if (!temporal) {
+            EXPECT_EQ(v["rmse_first_frame"], v["rmse"]) << v["label"];
+        }
+    }
     int front = 0;
     for (const auto& c : cfgs) {
         EXPECT_GT(c["gpu_ms"].get<double>(), 0.0) << c["label"];
@@ -324,10 +335,12 @@ TEST(Cli, BenchWritesResultsTheFrontAndRatiosToTheBaseline) {
     EXPECT_NE(md.find("learnopengl (baseline)"), std::string::npos);
     EXPECT_NE(slurp(out + "/results.csv").find("scene,viewpoint,label"), std::string::npos);
     // Bad sweeps: one clear line each.
-    expectCleanFailure(ssaolab("bench --sweep " + writeTemp("bad1.json", "{\"groups\": [{\"vary\": {\"kernel.nope\": [1]}}]}")),
+    expectCleanFailure(ssaolab("bench --sweep " +
+                               writeTemp("bad1.json", "{\"groups\": [{\"vary\": {\"kernel.nope\": [1]}}]}")),
                        "kernel.nope");
-    expectCleanFailure(ssaolab("bench --sweep " + writeTemp("bad2.json", "{\"groups\": [{\"set\": {\"ao.radius\": 2}}]}")),
-                       "radius");
+    expectCleanFailure(
+        ssaolab("bench --sweep " + writeTemp("bad2.json", "{\"groups\": [{\"set\": {\"ao.radius\": 2}}]}")),
+        "radius");
     expectCleanFailure(ssaolab("bench --sweep " + writeTemp("bad3.json", "{not json")), "not valid JSON");
     expectCleanFailure(ssaolab("bench --sweep /nonexistent.json"), "cannot open");
 }
@@ -336,12 +349,14 @@ TEST(Cli, TuneFitsTheReferenceAndSavesAPresetThatRenders) {
     const std::string preset = std::string(SSAOLAB_TEST_TMP) + "/tuned.json";
     std::filesystem::remove(preset);
     CliRun r = ssaolab("tune --scene builtin:showcase --size 160x90 --views 2 --rounds 1 --grid 3 "
-                       "--reference-rays 16 --out " + preset);
+                       "--reference-rays 16 --out " +
+                       preset);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("held-out"), std::string::npos) << r.out;
     // The search starts from the defaults and keeps the best, so training error never rises.
     double before = 0, after = 0;
-    ASSERT_EQ(std::sscanf(r.out.substr(r.out.find("training")).c_str(), "training %lf -> %lf", &before, &after), 2)
+    ASSERT_EQ(
+        std::sscanf(r.out.substr(r.out.find("training")).c_str(), "training %lf -> %lf", &before, &after), 2)
         << r.out;
     EXPECT_LE(after, before);
     auto j = nlohmann::json::parse(slurp(preset));
