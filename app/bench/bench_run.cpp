@@ -23,12 +23,15 @@ ViewResult measure(Renderer& r, const Settings& s, const ReferenceImage& ref, in
     r.setSettings(s);
     r.render();
     ViewResult v;
-    v.rmseFirstFrame = evaluate(readBack(r.texture("ao.denoised"), 1), ref).metrics.rmse;
-    while (r.accumulating()) { // temporal: judge the image after its frames are blended
-        r.render();
-        ++v.frames;
-    }
     v.error = evaluate(readBack(r.texture("ao.denoised"), 1), ref).metrics;
+    v.rmseFirstFrame = v.error.rmse;
+    if (r.accumulating()) { // temporal: judge the image after its frames are blended
+        do {
+            r.render();
+            ++v.frames;
+        } while (r.accumulating());
+        v.error = evaluate(readBack(r.texture("ao.denoised"), 1), ref).metrics;
+    }
     std::vector<double> ms;
     for (int f = 0; f < warmup + frames && frames > 0; ++f) {
         r.invalidate();
