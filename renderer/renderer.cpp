@@ -174,16 +174,17 @@ FrameReport Renderer::render() {
     int frameIndex = 0;
     bool reset = true;
     if (settings_.temporal.enabled) {
-        const std::string sk = toJson(settings_).dump() + "|" + std::to_string(width_) + "x" +
-                               std::to_string(height_) + "|" + std::to_string(sceneVersion_);
         const Camera& c = effective_;
-        char ck[256];
-        std::snprintf(ck, sizeof ck, "%a %a %a %a %a %a %a %a %a %a %a %a", c.eye.x, c.eye.y, c.eye.z,
-                      c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg, c.nearZ, c.farZ);
-        reset = sk != temporalSettingsKey_;
-        if (reset || ck != temporalCameraKey_) temporalFrame_ = 0;
-        temporalSettingsKey_ = sk;
-        temporalCameraKey_ = ck;
+        const Camera& p = temporalCamera_;
+        const bool sameCamera = c.eye == p.eye && c.target == p.target && c.up == p.up &&
+                                c.fovYDeg == p.fovYDeg && c.nearZ == p.nearZ && c.farZ == p.farZ;
+        reset = !temporalSettings_ || *temporalSettings_ != settings_ ||
+                temporalSize_ != glm::ivec2(width_, height_) || temporalScene_ != sceneVersion_;
+        if (reset || !sameCamera) temporalFrame_ = 0;
+        temporalSettings_ = settings_;
+        temporalCamera_ = c;
+        temporalSize_ = {width_, height_};
+        temporalScene_ = sceneVersion_;
         if (temporalFrame_ < settings_.temporal.frames) {
             graph_.invalidate();
             frameIndex = temporalFrame_++;
@@ -192,7 +193,7 @@ FrameReport Renderer::render() {
         }
     } else {
         temporalFrame_ = 0;
-        temporalSettingsKey_.clear();
+        temporalSettings_.reset();
     }
     const gpu::FrameConstants fc = packFrameConstants(effective_, width_, height_, sceneRadius(), frameIndex);
     frameUbo_.upload(&fc, sizeof fc);

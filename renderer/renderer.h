@@ -108,7 +108,12 @@ class Renderer {
     FrameGraph graph_;
     bool graphStale_ = true; // settings, chain B, size or reference on/off changed since compile()
     int temporalFrame_ = 0;  // frames accumulated since the camera or the settings changed
-    std::string temporalSettingsKey_, temporalCameraKey_;
+    // What the accumulated history was made with: settings, size or scene differing drop it; a
+    // different camera only restarts the count (compared directly, not serialised, every frame).
+    std::optional<Settings> temporalSettings_;
+    Camera temporalCamera_;
+    glm::ivec2 temporalSize_{0};
+    unsigned temporalScene_ = 0;
     FrameInfo frame_;
     std::map<std::string, std::unique_ptr<Pass>> passes_; // kept across rebuilds (they own GL state)
     ReferencePass referencePass_;
