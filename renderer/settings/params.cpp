@@ -74,6 +74,11 @@ std::vector<Param> coreRows() {
             ({{"full", AoResolution::Full},
               {"half", AoResolution::Half},
               {"quarter", AoResolution::Quarter}})),
+        ENUM_ROW("ao.normals", "Normals", ao.normals, NormalSource,
+                 "Where the AO pass takes the surface normal: the G-buffer, or reconstructed from the positions "
+                 "alone (as an engine without a normal target must), using on each axis the neighbour with the "
+                 "smaller depth difference so silhouettes do not bend the normal.",
+                 ({{"gbuffer", NormalSource::GBuffer}, {"depth", NormalSource::Depth}})),
         // ---- Denoise --------------------------------------------------------------------------
         ENUM_ROW("denoise.kind", "Denoise", denoise.kind, DenoiseKind,
                  "Removes the sampling noise: none, 4x4 box (seed 004: taps -2..+1, shifted half a pixel), "

@@ -11,6 +11,7 @@ namespace ssao {
 enum class TargetFormat { RGBA16F, RGBA32F, RGBA8 }; // RGBA8: normals only, stored (n+1)/2
 enum class RadiusMode { World, Scene, Screen };
 enum class AoResolution { Full, Half, Quarter };
+enum class NormalSource { GBuffer, Depth }; // SSAO_NORMALS_* (bindings.h)
 enum class DenoiseKind { None, Box4, Box4Centred, Gaussian, Bilateral };
 
 struct GBufferSettings {
@@ -28,6 +29,7 @@ struct AoSettings {
     float radiusPx = 24.0f;    // screen mode: pixels, at the shaded pixel's depth (N8AO, three.js GTAO)
     float power = 1.0f;        // AO = visibility^power (seed 001; XeGTAO FinalValuePower)
     AoResolution resolution = AoResolution::Full;
+    NormalSource normals = NormalSource::GBuffer; // depth: reconstructed from positions (no normal target)
 };
 
 struct DenoiseSettings {

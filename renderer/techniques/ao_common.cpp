@@ -36,7 +36,7 @@ gpu::AoCommon packAoCommon(const AoSettings& s, float sceneDiagonal, float units
     const bool screen = s.radiusMode == RadiusMode::Screen;
     c.radius = {screen ? 0.0f : worldRadius(s, sceneDiagonal, 1.0f, unitsPerPixel), unitsPerPixel,
                 float(screen ? SSAO_RADIUS_SCREEN : SSAO_RADIUS_WORLD), s.radiusPx};
-    c.shape = {s.power, 0.0f, 0.0f, 0.0f};
+    c.shape = {s.power, float(SSAO_NOISE_NONE), float(int(s.normals)), 0.0f}; // noise, pyramid: the technique
     c.target = {float(target.x), float(target.y), 1.0f / float(target.x), 1.0f / float(target.y)};
     return c;
 }

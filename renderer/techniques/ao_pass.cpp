@@ -3,6 +3,7 @@
 #include "gl/shader_library.h"
 #include "scene/camera.h"
 #include "techniques/ao_common.h"
+#include "techniques/noise/blue_noise.h"
 
 namespace ssao {
 
@@ -36,12 +37,28 @@ gpu::AoCommon AoPass::common(PassContext& ctx) const {
     return packAoCommon(ctx.settings.ao, 2.0f * f.sceneRadius, upp, ctx.size(branch().res("ao.raw")));
 }
 
+void AoPass::bindShared(PassContext& ctx, const gpu::AoCommon& c) {
+    if (int(c.shape.y) == SSAO_NOISE_BLUE) {
+        if (!blueNoise_) { // made on first use: void and cluster takes a moment (techniques/noise)
+            blueNoise_ = gl::Texture2D(kBlueNoiseSize, kBlueNoiseSize, GL_RG32F, name() + ".blue_noise");
+            blueNoise_.setWrap(GL_REPEAT);
+            glTextureSubImage2D(blueNoise_.id(), 0, 0, 0, kBlueNoiseSize, kBlueNoiseSize, GL_RG, GL_FLOAT,
+                                blueNoise64Rg().data());
+        }
+        blueNoise_.bind(SSAO_TEX_BLUE_NOISE);
+    }
+    if (c.shape.w > 0.0f) {
+        pyramid_.build(ctx, ctx.in("gbuffer.position"));
+        pyramid_.bind(SSAO_TEX_POSITION_MIPS);
+    }
+}
+
 bool AoPass::normalUnorm(PassContext& ctx) const {
     return ctx.desc("gbuffer.normal").format == GL_RGBA8;
 }
 
 void AoPass::draw(PassContext& ctx, bool inspect) {
-    const std::string frag = prepare(ctx);
+    const std::string frag = prepare(ctx); // may draw (the position pyramid): outputs bound after
     gl::Defines defs;
     if (inspect)
         defs.push_back({"INSPECT", "1"});

@@ -5,6 +5,7 @@
 #pragma once
 #include "graph/inspect_probe.h"
 #include "graph/pass.h"
+#include "techniques/position_pyramid.h"
 
 #include "../../shaders/include/bindings.h"
 
@@ -25,16 +26,22 @@ class AoPass : public Pass {
     // This frame's shared constants: radius (in displayed pixels for screen mode), power, target.
     gpu::AoCommon common(PassContext& ctx) const;
     bool normalUnorm(PassContext& ctx) const; // the normal target stores (n+1)/2
+    // What the packed constants ask of the shared shader code (include/noise.glsl, position_taps.glsl):
+    // binds the blue-noise tile when shape.y is SSAO_NOISE_BLUE, and builds and binds the position
+    // pyramid when shape.w (its offset) is non-zero.
+    void bindShared(PassContext& ctx, const gpu::AoCommon& c);
     // Binds the technique's inputs and constants; returns its fragment shader (under shaders/).
     virtual std::string prepare(PassContext& ctx) = 0;
 
   private:
     void draw(PassContext& ctx, bool inspect);
     InspectProbe probe_;
+    PositionPyramid pyramid_;
+    gl::Texture2D blueNoise_;
 };
 
 // The pass of a technique that is one constant block and one shader over positions and normals
-// (SAO, HBAO, GTAO): Traits gives `Constants`, `group`, `shader` and
+// (SAO, HBAO, GTAO, visibility bitmask): Traits gives `Constants`, `group`, `shader` and
 // `static Constants pack(const Settings&, const gpu::AoCommon&, bool normalUnorm)`.
 template <class Traits> class OneBlockPass final : public AoPass {
   public:
@@ -49,6 +56,7 @@ template <class Traits> class OneBlockPass final : public AoPass {
         const typename Traits::Constants c = Traits::pack(ctx.settings, common(ctx), normalUnorm(ctx));
         ubo_.upload(&c, sizeof c);
         ubo_.bind(SSAO_UBO_AO);
+        bindShared(ctx, c.aoCommon);
         bindPositionsNormals(ctx);
         return Traits::shader;
     }

@@ -5,12 +5,14 @@
 #include "techniques/kernel/technique.h"
 #include "techniques/sao/technique.h"
 #include "techniques/technique.h"
+#include "techniques/vbao/technique.h"
 #include "util/error.h"
 
 namespace ssao {
 
 const std::vector<TechniqueInfo>& techniques() {
-    static const std::vector<TechniqueInfo> list = {kernelTechnique(), saoTechnique(), hbaoTechnique(), gtaoTechnique()};
+    static const std::vector<TechniqueInfo> list = {kernelTechnique(), saoTechnique(), hbaoTechnique(), gtaoTechnique(),
+                                                   vbaoTechnique()};
     return list;
 }
 

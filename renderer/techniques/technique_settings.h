@@ -5,6 +5,7 @@
 #include "techniques/hbao/settings.h"
 #include "techniques/kernel/settings.h"
 #include "techniques/sao/settings.h"
+#include "techniques/vbao/settings.h"
 
 namespace ssao {
 
@@ -13,6 +14,7 @@ struct TechniqueSettings {
     GtaoSettings gtao;
     HbaoSettings hbao;
     SaoSettings sao;
+    VbaoSettings vbao;
 };
 
 } // namespace ssao

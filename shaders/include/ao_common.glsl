@@ -11,3 +11,37 @@ float aoRadius(AoCommon_ c, float depth) {
 float aoFinish(AoCommon_ c, float visibility) {
     return pow(clamp(visibility, 0.0, 1.0), c.shape.x);
 }
+
+// Distance in depth from P to a neighbour that can stand in for it: a sky texel or one off the
+// image is never chosen.
+float aoNeighbourGap(vec4 S, vec2 uv, vec3 P) {
+    bool inside = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
+    return inside && S.w != 0.0 ? abs(S.z - P.z) : 1e30;
+}
+
+// The pixel's unit view-space normal: decoded from the G-buffer, or (shape.z = SSAO_NORMALS_DEPTH)
+// reconstructed from the positions alone. The reconstruction takes, on each axis, the neighbour
+// whose depth is closer to the pixel's (the one on the same surface): a naive cross product of
+// screen derivatives mixes the two sides of a silhouette and bends the normal of every edge pixel.
+vec3 aoNormal(AoCommon_ c, sampler2D positions, sampler2D normals, vec2 uv, vec3 P, bool unorm) {
+    vec3 N;
+    if (int(c.shape.z) == SSAO_NORMALS_DEPTH) {
+        vec2 t = 1.0 / vec2(textureSize(positions, 0));
+        vec2 uvL = uv - vec2(t.x, 0.0), uvR = uv + vec2(t.x, 0.0);
+        vec2 uvD = uv - vec2(0.0, t.y), uvU = uv + vec2(0.0, t.y);
+        vec4 L = textureLod(positions, uvL, 0.0), R = textureLod(positions, uvR, 0.0);
+        vec4 D = textureLod(positions, uvD, 0.0), U = textureLod(positions, uvU, 0.0);
+        float gL = aoNeighbourGap(L, uvL, P), gR = aoNeighbourGap(R, uvR, P);
+        float gD = aoNeighbourGap(D, uvD, P), gU = aoNeighbourGap(U, uvU, P);
+        vec3 dx = gL < gR ? P - L.xyz : R.xyz - P;
+        vec3 dy = gD < gU ? P - D.xyz : U.xyz - P;
+        N = cross(dx, dy);
+        if (min(gL, gR) >= 1e30 || min(gD, gU) >= 1e30 || !(dot(N, N) > 1e-36)) N = -P; // isolated pixel
+        N = normalize(N);
+        return dot(N, -P) < 0.0 ? -N : N; // face the camera, as the G-buffer's normals do
+    }
+    N = texture(normals, uv).xyz;
+    if (unorm) N = N * 2.0 - 1.0;
+    float l2 = dot(N, N);
+    return l2 > 1e-12 ? N * inversesqrt(l2) : vec3(0.0, 0.0, 1.0);
+}

@@ -16,6 +16,8 @@
 #define SSAO_TEX_VIEW_MASK 8    // geometry mask for the view pass (linear depth > 0)
 #define SSAO_TEX_VIEW_SOURCE_B 9 // second buffer of a difference view
 #define SSAO_TEX_TECHNIQUE 10   // first unit free for a technique's own textures
+#define SSAO_TEX_BLUE_NOISE 14  // 64x64 blue noise, two channels (techniques/noise/blue_noise.h)
+#define SSAO_TEX_POSITION_MIPS 15 // gbuffer.position with a MIP pyramid (techniques/position_pyramid.h)
 
 // ---- Uniform / storage buffer bindings -----------------------------------------------------
 #define SSAO_UBO_FRAME 0   // FrameConstants
@@ -31,6 +33,17 @@
 // Radius modes as the shaders see them (scene mode is resolved to world units on the CPU).
 #define SSAO_RADIUS_WORLD 0
 #define SSAO_RADIUS_SCREEN 1
+
+// Per-pixel noise of the horizon techniques (AoCommon.shape.y; techniques/noise/noise.h, same order).
+#define SSAO_NOISE_IGN 0   // interleaved gradient noise (Jimenez 2014)
+#define SSAO_NOISE_R2 1    // Roberts' R2 low-discrepancy sequence over the pixel grid (2018)
+#define SSAO_NOISE_BLUE 2  // a 64x64 void-and-cluster blue-noise tile (Ulichney 1993)
+#define SSAO_NOISE_TILE4 3 // a 4x4 tile of random values (the seeds' noise texture)
+#define SSAO_NOISE_NONE 4
+
+// Where the AO passes take normals from (AoCommon.shape.z; settings.h NormalSource, same order).
+#define SSAO_NORMALS_GBUFFER 0
+#define SSAO_NORMALS_DEPTH 1 // reconstructed from positions, the smaller-difference neighbour per axis
 
 // Tap states recorded by the inspector (graph/inspection.h: TapState, same order).
 #define SSAO_TAP_OPEN 0
@@ -68,7 +81,8 @@ SSAO_STRUCT FrameConstants_ {
 SSAO_STRUCT AoCommon_ {
     vec4 radius; // x: world radius (world and scene modes), y: scene units per pixel at unit
                  // depth (screen mode: radius = y * depth * radiusPx), z: mode, w: radius in pixels
-    vec4 shape;  // x: power, y: unused, zw: unused
+    vec4 shape;  // x: power, y: noise kind (SSAO_NOISE_*), z: normal source (SSAO_NORMALS_*),
+                 // w: position-pyramid offset: taps d pixels away read MIP log2(d) - w (0 = no pyramid)
     vec4 target; // AO target width, height, 1/width, 1/height (pixels)
 };
 

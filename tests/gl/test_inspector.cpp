@@ -72,6 +72,16 @@ TEST_F(Inspector, GpuTapsReproduceTheWrittenAoForEveryModeAndTechnique) {
                         EXPECT_NEAR(std::pow(vis, s.ao.power), pi->ao, 1e-4f) << mode;
                         continue;
                     }
+                    if (t.id == "vbao") {
+                        // Every sample is recorded with the fraction of the slice's 32 sectors it hides;
+                        // the mask (their union, cosine-weighted), not a sum, decides the occlusion.
+                        EXPECT_EQ(int(pi->taps.size()), s.vbao.slices * s.vbao.steps * 2) << mode;
+                        for (const auto& tap : pi->taps)
+                            EXPECT_TRUE(tap.contribution >= 0.0f && tap.contribution <= 1.0f) << mode;
+                        const float vis = std::clamp(1.0f - pi->occlusion, 0.0f, 1.0f);
+                        EXPECT_NEAR(std::pow(vis, s.ao.power), pi->ao, 1e-4f) << mode;
+                        continue;
+                    }
                     // The taps add up to what the shader accumulated.
                     double sum = 0;
                     for (const auto& tap : pi->taps)

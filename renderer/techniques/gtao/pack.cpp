@@ -39,7 +39,9 @@ gpu::GtaoConstants packGtaoConstants(const GtaoSettings& s, const gpu::AoCommon&
                 std::max(s.distributionPower, 0.1f)};
     c.params2 = {std::max(s.thinCompensation, 0.0f), 1.3f /* min first step, px */, 0.0f, 0.0f};
     int flags = 0;
-    if (s.noise == GtaoNoise::Ign) flags |= GTAO_FLAG_NOISE;
+    packNoise(c.aoCommon, s.noise);
+    c.aoCommon.shape.w = s.pyramid ? 3.3f : 0.0f; // taps d px away read MIP log2(d) - this (XeGTAO depthMIPSamplingOffset)
+    if (s.noise != AoNoise::None) flags |= GTAO_FLAG_NOISE;
     if (normalUnorm) flags |= GTAO_FLAG_NORMAL_UNORM;
     c.modes = {slices, steps, flags, 0};
     return c;

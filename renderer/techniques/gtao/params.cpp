@@ -36,10 +36,8 @@ std::vector<Param> gtaoParams() {
         FLOAT_ROW("gtao.thin_compensation", "Thin occluders", gtao.thinCompensation, 0.0, 0.7, "",
                   "XeGTAO's heuristic: depth differences count (1 + t) times in the falloff, so thin objects "
                   "in front occlude less of what is behind them (0 = off)."),
-        ENUM_ROW("gtao.noise", "Noise", gtao.noise, GtaoNoise,
-                 "Per-pixel slice rotation and step offset: interleaved gradient noise (Jimenez 2014), which "
-                 "the denoiser removes, or none (banding).",
-                 ({{"ign", GtaoNoise::Ign}, {"none", GtaoNoise::None}})),
+        ENUM_ROW("gtao.noise", "Noise", gtao.noise, AoNoise, kAoNoiseHelp, (aoNoiseChoices())),
+        BOOL_ROW("gtao.pyramid", "Position MIPs", gtao.pyramid, kPyramidHelp),
     };
 }
 } // namespace

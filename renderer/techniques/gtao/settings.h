@@ -3,11 +3,12 @@
 // slices through the view vector; in each, the two horizons found by marching the depth buffer;
 // the cosine-weighted visibility between them integrated analytically.
 #pragma once
+#include "techniques/noise/noise.h"
 
 namespace ssao {
 
 enum class GtaoQuality { Low, Medium, High, Ultra, Custom }; // XeGTAO's presets: slices x steps
-enum class GtaoNoise { Ign, None };                          // interleaved gradient noise (Jimenez 2014)
+using GtaoNoise = AoNoise; // shared with every horizon technique (techniques/noise/noise.h)
 
 struct GtaoSettings {
     GtaoQuality quality = GtaoQuality::High;
@@ -18,6 +19,7 @@ struct GtaoSettings {
     float distributionPower = 2.0f;  // steps at s^p of the radius: denser near the pixel (XeGTAO)
     float thinCompensation = 0.0f;   // thin-occluder heuristic: stretch depth deltas by (1 + t) (XeGTAO)
     GtaoNoise noise = GtaoNoise::Ign;
+    bool pyramid = true;             // far taps read the position pyramid (techniques/position_pyramid.h)
 };
 
 // Slices and steps per side of a quality level (XeGTAO vaGTAO.hlsl: Low 1x2, Medium 2x2, High 3x3,

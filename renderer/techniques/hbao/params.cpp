@@ -19,10 +19,8 @@ std::vector<Param> hbaoParams() {
                   "self-occlusion of tessellated or noisy surfaces (HBAO's angle bias)."),
         FLOAT_ROW("hbao.max_radius_px", "Max radius", hbao.maxRadiusPx, 2.0, 1024.0, "pixels",
                   "The radius projected to the screen is clamped to this: close-ups stay affordable."),
-        ENUM_ROW("hbao.noise", "Noise", hbao.noise, HbaoNoise,
-                 "Per-pixel rotation of the directions and jitter of the steps: interleaved gradient noise "
-                 "(seed 002) or none (banding).",
-                 ({{"ign", HbaoNoise::Ign}, {"none", HbaoNoise::None}})),
+        ENUM_ROW("hbao.noise", "Noise", hbao.noise, AoNoise, kAoNoiseHelp, (aoNoiseChoices())),
+        BOOL_ROW("hbao.pyramid", "Position MIPs", hbao.pyramid, kPyramidHelp),
     };
 }
 } // namespace

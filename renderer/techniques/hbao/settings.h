@@ -3,10 +3,11 @@
 // the tangent plane per direction, occlusion = the rise of sin(horizon) weighted by a linear
 // falloff W = max(0, 1 - r/R) (the per-sample attenuation of HBAO+), uniform in solid angle.
 #pragma once
+#include "techniques/noise/noise.h"
 
 namespace ssao {
 
-enum class HbaoNoise { Ign, None };
+using HbaoNoise = AoNoise; // shared with every horizon technique (techniques/noise/noise.h)
 
 struct HbaoSettings {
     int directions = 8;         // D
@@ -14,6 +15,7 @@ struct HbaoSettings {
     float tangentBias = 0.1f;   // sin of the bias angle above the tangent plane (~6 degrees)
     float maxRadiusPx = 128.0f; // the projected radius is clamped to this many pixels (cache, cost)
     HbaoNoise noise = HbaoNoise::Ign;
+    bool pyramid = true;             // far taps read the position pyramid (techniques/position_pyramid.h)
 };
 
 } // namespace ssao

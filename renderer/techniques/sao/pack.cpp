@@ -12,7 +12,9 @@ gpu::SaoConstants packSaoConstants(const SaoSettings& s, const gpu::AoCommon& co
     c.params = {std::max(s.turns, 0.0f), 2.0f * std::max(s.intensity, 0.0f) / float(n),
                 std::clamp(s.bias, 0.0f, 1.0f), 0.01f};
     int flags = 0;
-    if (s.noise == SaoNoise::Ign) flags |= SAO_FLAG_NOISE;
+    packNoise(c.aoCommon, s.noise);
+    c.aoCommon.shape.w = s.pyramid ? 3.0f : 0.0f; // taps d px away read MIP log2(d) - this (SAO LOG_MAX_OFFSET)
+    if (s.noise != AoNoise::None) flags |= SAO_FLAG_NOISE;
     if (normalUnorm) flags |= SAO_FLAG_NORMAL_UNORM;
     c.modes = {n, flags, 0, 0};
     return c;

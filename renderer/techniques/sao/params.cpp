@@ -20,9 +20,8 @@ std::vector<Param> saoParams() {
         FLOAT_ROW("sao.bias", "Bias", sao.bias, 0.0, 0.5, "x radius",
                   "Alchemy AO's beta: an occluder must rise this far (a fraction of the radius) above the "
                   "tangent plane; removes self-occlusion of tessellated surfaces."),
-        ENUM_ROW("sao.noise", "Noise", sao.noise, SaoNoise,
-                 "Per-pixel rotation of the spiral: interleaved gradient noise, or none (banding).",
-                 ({{"ign", SaoNoise::Ign}, {"none", SaoNoise::None}})),
+        ENUM_ROW("sao.noise", "Noise", sao.noise, AoNoise, kAoNoiseHelp, (aoNoiseChoices())),
+        BOOL_ROW("sao.pyramid", "Position MIPs", sao.pyramid, kPyramidHelp),
     };
 }
 } // namespace

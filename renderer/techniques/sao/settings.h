@@ -3,10 +3,11 @@
 // the recommended falloff (1 - v·v/R²)³, in units of the radius so it behaves the same at any
 // scene scale. An obscurance (falloff-weighted), not binary visibility.
 #pragma once
+#include "techniques/noise/noise.h"
 
 namespace ssao {
 
-enum class SaoNoise { Ign, None };
+using SaoNoise = AoNoise; // shared with every horizon technique (techniques/noise/noise.h)
 
 struct SaoSettings {
     int samples = 11;       // taps (the SAO paper's 11)
@@ -14,6 +15,7 @@ struct SaoSettings {
     float intensity = 1.0f; // σ of Alchemy AO: scales the summed obscurance
     float bias = 0.012f;    // β: v·n must exceed this fraction of R (SAO's 0.012 at R = 1)
     SaoNoise noise = SaoNoise::Ign;
+    bool pyramid = true;             // far taps read the position pyramid (techniques/position_pyramid.h)
 };
 
 } // namespace ssao

@@ -9,6 +9,8 @@
 #include "techniques/gtao/layout.h"
 #include "include/frame.glsl"
 #include "include/ao_common.glsl"
+#include "include/noise.glsl"
+#include "include/position_taps.glsl"
 #include "include/inspect.glsl"
 
 layout(std140, binding = SSAO_UBO_AO) uniform GtaoBlock { GtaoConstants_ ssao; };
@@ -23,13 +25,6 @@ const float HALF_PI = 1.57079632679490;
 
 bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
 
-// Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of Duty:
-// Advanced Warfare"): a per-pixel value in [0,1) whose 3x3 neighbourhoods are well spread.
-float ign(vec2 p) {
-    p += 5.588238 * frame.clip.w; // a new pattern every temporal frame (frame index, else 0)
-    return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
-}
-
 // acos of a cosine that rounding may have pushed past ±1 (acos(1 + ε) is NaN on llvmpipe).
 float safeAcos(float x) { return acos(clamp(x, -1.0, 1.0)); }
 
@@ -41,10 +36,7 @@ void main() {
         return;
     }
     vec3 P = P4.xyz;
-    vec3 N = texture(gNormal, vUv).xyz;
-    if (hasFlag(GTAO_FLAG_NORMAL_UNORM)) N = N * 2.0 - 1.0;
-    float nl2 = dot(N, N);
-    N = nl2 > 1e-12 ? N * inversesqrt(nl2) : vec3(0.0, 0.0, 1.0);
+    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, vUv, P, hasFlag(GTAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
     vec3 V = normalize(-P);
     float depth = -P.z;
 
@@ -58,7 +50,7 @@ void main() {
     float minS = ssao.params2.y / max(radiusPx, 1e-6);
     int slices = ssao.modes.x, steps = ssao.modes.y;
     vec2 noise = vec2(0.5);
-    if (hasFlag(GTAO_FLAG_NOISE)) noise = vec2(ign(gl_FragCoord.xy), ign(gl_FragCoord.xy + vec2(47.0, 17.0)));
+    if (hasFlag(GTAO_FLAG_NOISE)) noise = aoNoise(ssao.aoCommon, gl_FragCoord.xy);
 
     float visibility = 0.0;
     for (int slice = 0; slice < slices; ++slice) {
@@ -85,7 +77,7 @@ void main() {
                     INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, slice); // unseen: no occluder
                     continue;
                 }
-                vec4 S = textureLod(gPosition, uv, 0.0);
+                vec4 S = aoTap(ssao.aoCommon, gPosition, uv, s * radiusPx);
                 if (S.w == 0.0) {
                     INSPECT_TAP(P, uv, SSAO_TAP_SKY, 0.0, slice);
                     continue;

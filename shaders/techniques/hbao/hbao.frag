@@ -7,6 +7,8 @@
 #include "techniques/hbao/layout.h"
 #include "include/frame.glsl"
 #include "include/ao_common.glsl"
+#include "include/noise.glsl"
+#include "include/position_taps.glsl"
 #include "include/inspect.glsl"
 
 layout(std140, binding = SSAO_UBO_AO) uniform HbaoBlock { HbaoConstants_ ssao; };
@@ -20,12 +22,6 @@ const float TWO_PI = 6.28318530717959;
 
 bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
 
-// Interleaved gradient noise (Jimenez 2014): per-pixel values whose neighbourhoods are well spread.
-float ign(vec2 p) {
-    p += 5.588238 * frame.clip.w; // a new pattern every temporal frame (frame index, else 0)
-    return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
-}
-
 void main() {
     vec4 P4 = texture(gPosition, vUv);
     if (P4.w == 0.0) { // sky: unoccluded, no work spent
@@ -34,10 +30,7 @@ void main() {
         return;
     }
     vec3 P = P4.xyz;
-    vec3 N = texture(gNormal, vUv).xyz;
-    if (hasFlag(HBAO_FLAG_NORMAL_UNORM)) N = N * 2.0 - 1.0;
-    float nl2 = dot(N, N);
-    N = nl2 > 1e-12 ? N * inversesqrt(nl2) : vec3(0.0, 0.0, 1.0);
+    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, vUv, P, hasFlag(HBAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
     float depth = -P.z;
     float R = aoRadius(ssao.aoCommon, depth);
     // The radius projected to G-buffer pixels, clamped (a close-up would march the whole screen).
@@ -47,7 +40,7 @@ void main() {
     // occlusion lines), every step a new texel.
     float stepPx = max(radiusPx / float(steps + 1), 1.0);
     vec2 noise = vec2(0.0, 0.5);
-    if (hasFlag(HBAO_FLAG_NOISE)) noise = vec2(ign(gl_FragCoord.xy), ign(gl_FragCoord.xy + vec2(47.0, 17.0)));
+    if (hasFlag(HBAO_FLAG_NOISE)) noise = aoNoise(ssao.aoCommon, gl_FragCoord.xy);
 
     float occlusion = 0.0;
     for (int d = 0; d < dirs; ++d) {
@@ -62,7 +55,7 @@ void main() {
                 INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, d);
                 continue;
             }
-            vec4 S = textureLod(gPosition, uv, 0.0);
+            vec4 S = aoTap(ssao.aoCommon, gPosition, uv, length(offsetPx));
             if (S.w == 0.0) {
                 INSPECT_TAP(P, uv, SSAO_TAP_SKY, 0.0, d);
                 continue;

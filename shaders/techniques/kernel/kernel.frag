@@ -87,10 +87,7 @@ void main() {
         INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
         return;
     }
-    vec3 N = texture(gNormal, vUv).xyz;
-    if (hasFlag(KERNEL_FLAG_NORMAL_UNORM)) N = N * 2.0 - 1.0;
-    float nl2 = dot(N, N);
-    N = nl2 > 1e-12 ? N * inversesqrt(nl2) : vec3(0.0, 0.0, 1.0); // renormalise after decoding
+    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, vUv, P.xyz, hasFlag(KERNEL_FLAG_NORMAL_UNORM)); // G-buffer or from depth
 
     // Temporal accumulation shifts the 4x4 tile by a texel pattern per frame (16 arrangements), so
     // successive frames rotate each pixel's kernel differently (frame index 0 otherwise).

@@ -8,6 +8,8 @@
 #include "techniques/sao/layout.h"
 #include "include/frame.glsl"
 #include "include/ao_common.glsl"
+#include "include/noise.glsl"
+#include "include/position_taps.glsl"
 #include "include/inspect.glsl"
 
 layout(std140, binding = SSAO_UBO_AO) uniform SaoBlock { SaoConstants_ ssao; };
@@ -21,12 +23,6 @@ const float TWO_PI = 6.28318530717959;
 
 bool hasFlag(int f) { return (ssao.modes.y & f) != 0; }
 
-// Interleaved gradient noise (Jimenez 2014).
-float ign(vec2 p) {
-    p += 5.588238 * frame.clip.w; // a new pattern every temporal frame (frame index, else 0)
-    return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
-}
-
 void main() {
     vec4 P4 = texture(gPosition, vUv);
     if (P4.w == 0.0) { // sky: unoccluded, no work spent
@@ -35,14 +31,11 @@ void main() {
         return;
     }
     vec3 P = P4.xyz;
-    vec3 N = texture(gNormal, vUv).xyz;
-    if (hasFlag(SAO_FLAG_NORMAL_UNORM)) N = N * 2.0 - 1.0;
-    float nl2 = dot(N, N);
-    N = nl2 > 1e-12 ? N * inversesqrt(nl2) : vec3(0.0, 0.0, 1.0);
+    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, vUv, P, hasFlag(SAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
     float depth = -P.z;
     float R = aoRadius(ssao.aoCommon, depth);
     float radiusPx = R * frame.proj[1][1] * 0.5 * frame.viewport.y / depth;
-    float spin = hasFlag(SAO_FLAG_NOISE) ? ign(gl_FragCoord.xy) * TWO_PI : 0.0;
+    float spin = hasFlag(SAO_FLAG_NOISE) ? aoNoise(ssao.aoCommon, gl_FragCoord.xy).x * TWO_PI : 0.0;
     int n = ssao.modes.x;
     float occlusion = 0.0;
     for (int i = 0; i < n; ++i) {
@@ -53,7 +46,7 @@ void main() {
             INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, 0);
             continue;
         }
-        vec4 Q = textureLod(gPosition, uv, 0.0);
+        vec4 Q = aoTap(ssao.aoCommon, gPosition, uv, alpha * radiusPx);
         if (Q.w == 0.0) {
             INSPECT_TAP(P, uv, SSAO_TAP_SKY, 0.0, 0);
             continue;

@@ -1,0 +1,12 @@
+// Visibility-bitmask settings → its GPU constants (shaders/techniques/vbao/layout.h), pure and tested.
+#pragma once
+#include "settings/settings.h"
+
+#include "../../../shaders/include/bindings.h"
+#include "../../../shaders/techniques/vbao/layout.h"
+
+namespace ssao {
+
+gpu::VbaoConstants packVbaoConstants(const VbaoSettings& s, const gpu::AoCommon& common, bool normalUnorm);
+
+} // namespace ssao

@@ -1,0 +1,40 @@
+// Visibility-bitmask rows of the parameter table (group "vbao"; they apply while
+// ao.technique = vbao). Defaults: VbaoSettings' initialisers (settings.h).
+#include "settings/param_rows.h"
+#include "techniques/vbao/pack.h"
+#include "techniques/vbao/technique.h"
+#include "techniques/vbao/vbao_pass.h"
+
+namespace ssao {
+
+namespace {
+std::vector<Param> vbaoParams() {
+    return {
+        INT_ROW("vbao.slices", "Slices", vbao.slices, 1, VBAO_MAX_SLICES, "slices",
+                "Directions around the view vector per pixel, each a 32-sector visibility mask."),
+        INT_ROW("vbao.steps", "Steps", vbao.steps, 1, VBAO_MAX_STEPS, "per side",
+                "Depth samples along each side of a slice; each marks the sectors it hides."),
+        FLOAT_ROW("vbao.thickness", "Thickness", vbao.thickness, 0.0, 4.0, "x radius",
+                  "Assumed depth of every surface seen: a sample hides the sectors between its front and "
+                  "its front pushed this far back. Small: thin objects let light pass behind them; large: "
+                  "behaves like a horizon (GTAO)."),
+        FLOAT_ROW("vbao.distribution_power", "Step distribution", vbao.distributionPower, 0.5, 4.0, "power",
+                  "Step k of n lies at (k/n)^p of the radius: >1 samples more densely near the pixel."),
+        ENUM_ROW("vbao.noise", "Noise", vbao.noise, AoNoise, kAoNoiseHelp, (aoNoiseChoices())),
+        BOOL_ROW("vbao.pyramid", "Position MIPs", vbao.pyramid, kPyramidHelp),
+    };
+}
+} // namespace
+
+TechniqueInfo vbaoTechnique() {
+    return {"vbao", "Visibility bitmask (Therrien 2023)",
+            "GTAO's slices with a 32-sector occlusion bitmask per slice and an assumed thickness: Therrien, "
+            "Levesque, Gilet 2023",
+            vbaoParams, [](const Branch& b) {
+                std::vector<std::unique_ptr<Pass>> passes;
+                passes.push_back(std::make_unique<VbaoPass>(b));
+                return passes;
+            }};
+}
+
+} // namespace ssao

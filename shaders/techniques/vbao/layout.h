@@ -1,0 +1,29 @@
+// The visibility-bitmask constant block, shared by C++ (renderer/techniques/vbao/pack.h) and GLSL
+// (vbao.frag). Both include bindings.h first.
+#ifndef SSAOLAB_VBAO_LAYOUT_H
+#define SSAOLAB_VBAO_LAYOUT_H
+#ifndef SSAOLAB_BINDINGS_H
+#error "include shaders/include/bindings.h before this file"
+#endif
+#ifdef __cplusplus
+namespace ssao::gpu {
+#endif
+
+#define VBAO_MAX_SLICES 16
+#define VBAO_MAX_STEPS 32
+#define VBAO_SECTORS 32          // bits of the per-slice mask (one uint)
+#define VBAO_FLAG_NOISE 1        // per-pixel noise on slice angle and steps (AoCommon.shape.y: kind)
+#define VBAO_FLAG_NORMAL_UNORM 2 // normals stored as (n+1)/2
+
+SSAO_STRUCT VbaoConstants_ {
+    AoCommon_ aoCommon; // radius, power, noise, normals, pyramid (first in every technique's block)
+    vec4 params;  // x: thickness (x radius), y: step distribution power, z: smallest first step (px), w: unused
+    ivec4 modes;  // slices, steps per side, flags, unused
+};
+
+#ifdef __cplusplus
+using VbaoConstants = VbaoConstants_;
+static_assert(sizeof(VbaoConstants) == sizeof(AoCommon) + 2 * 16, "std140 layout");
+} // namespace ssao::gpu
+#endif
+#endif

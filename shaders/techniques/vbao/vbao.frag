@@ -1,0 +1,122 @@
+#version 450 core
+// Visibility-bitmask AO (Therrien, Levesque, Gilet 2023), on GTAO's slices (gtao.frag): in each
+// slice through the view vector V, every depth sample within the radius hides the angular
+// interval between its front point and its back point (the front pushed away from the camera by
+// the assumed thickness). The intervals are OR-ed into a mask of 32 equal sectors spanning the
+// hemisphere around the normal, n - π/2 .. n + π/2 (angles from V, n the projected normal's).
+// Unlike a horizon, a thin object hides only its own sectors: light passing behind it still counts.
+// Visibility integrates the open sectors with GTAO's cosine weight cos(h - n)|sin h| (Jimenez
+// 2016, eq. 10), so an empty mask reproduces GTAO's open value exactly.
+#include "include/bindings.h"
+#include "techniques/vbao/layout.h"
+#include "include/frame.glsl"
+#include "include/ao_common.glsl"
+#include "include/noise.glsl"
+#include "include/position_taps.glsl"
+#include "include/inspect.glsl"
+
+layout(std140, binding = SSAO_UBO_AO) uniform VbaoBlock { VbaoConstants_ ssao; };
+layout(binding = SSAO_TEX_POSITION) uniform sampler2D gPosition;
+layout(binding = SSAO_TEX_NORMAL) uniform sampler2D gNormal;
+
+in vec2 vUv;
+layout(location = 0) out float oAO;
+
+const float PI = 3.14159265358979;
+const float HALF_PI = 1.57079632679490;
+
+bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
+float safeAcos(float x) { return acos(clamp(x, -1.0, 1.0)); } // acos(1 + ε) is NaN on llvmpipe
+
+// ∫₀ʰ cos(θ - n)|sin θ| dθ with the sign of h: the cosine-weighted measure between V and angle h
+// in a slice (GTAO's inner integral; weight of [a, b] = G(b) - G(a)).
+float arcG(float h, float n, float cosN, float sinN) {
+    float a = 0.25 * (cosN + 2.0 * h * sinN - cos(2.0 * h - n));
+    return h < 0.0 ? -a : a;
+}
+
+// Sector index (0..32) of angle h on the hemisphere's 32 sectors, rounded to the nearest edge.
+int sectorEdge(float h, float n) {
+    return int(clamp(round((h - (n - HALF_PI)) / PI * float(VBAO_SECTORS)), 0.0, float(VBAO_SECTORS)));
+}
+float edgeAngle(int e, float n) { return n - HALF_PI + float(e) * (PI / float(VBAO_SECTORS)); }
+
+void main() {
+    vec4 P4 = texture(gPosition, vUv);
+    if (P4.w == 0.0) { // sky: unoccluded, no work spent
+        oAO = 1.0;
+        INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
+        return;
+    }
+    vec3 P = P4.xyz;
+    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, vUv, P, hasFlag(VBAO_FLAG_NORMAL_UNORM));
+    vec3 V = normalize(-P);
+    float depth = -P.z;
+    // Binary visibility within R, as the reference defines it: no falloff, no radius multiplier.
+    float R = aoRadius(ssao.aoCommon, depth);
+    float radiusPx = R * frame.proj[1][1] * 0.5 * frame.viewport.y / depth;
+    float thickness = ssao.params.x * R;
+    float minS = ssao.params.z / max(radiusPx, 1e-6); // first step >= ~1.3 px: no self-occlusion
+    int slices = ssao.modes.x, steps = ssao.modes.y;
+    vec2 noise = hasFlag(VBAO_FLAG_NOISE) ? aoNoise(ssao.aoCommon, gl_FragCoord.xy) : vec2(0.5);
+
+    float visibility = 0.0;
+    for (int slice = 0; slice < slices; ++slice) {
+        float phi = (float(slice) + noise.x) / float(slices) * PI;
+        vec2 omega = vec2(cos(phi), sin(phi));
+        vec3 dirV = vec3(omega, 0.0);
+        vec3 orthoDir = dirV - dot(dirV, V) * V;
+        vec3 axis = normalize(cross(orthoDir, V));
+        vec3 projN = N - axis * dot(N, axis);
+        float projNLen = length(projN);
+        float cosN = clamp(dot(projN, V) / max(projNLen, 1e-6), 0.0, 1.0);
+        float n = sign(dot(orthoDir, projN)) * safeAcos(cosN);
+        float sinN = sin(n);
+        uint mask = 0u;
+        for (int step = 0; step < steps; ++step) {
+            float s = pow((float(step) + noise.y) / float(steps), ssao.params.y) + minS;
+            vec2 offsetUv = round(s * radiusPx * omega) * frame.viewport.zw;
+            for (int side = 0; side < 2; ++side) {
+                vec2 uv = vUv + (side == 0 ? offsetUv : -offsetUv);
+                if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) {
+                    INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, slice);
+                    continue;
+                }
+                vec4 S = aoTap(ssao.aoCommon, gPosition, uv, s * radiusPx);
+                if (S.w == 0.0) {
+                    INSPECT_TAP(P, uv, SSAO_TAP_SKY, 0.0, slice);
+                    continue;
+                }
+                vec3 front = S.xyz - P;
+                float dist = length(front);
+                if (!(dist > 0.0) || dist > R) { // the pixel itself, or beyond the radius: hides nothing
+                    INSPECT_TAP(S.xyz, uv, SSAO_TAP_OPEN, 0.0, slice);
+                    continue;
+                }
+                vec3 back = front + normalize(S.xyz) * thickness; // along the view ray through S
+                float sgn = side == 0 ? 1.0 : -1.0; // side 0 at positive angles from V
+                float hFront = sgn * safeAcos(dot(front / dist, V));
+                float hBack = sgn * safeAcos(dot(normalize(back), V));
+                int a = sectorEdge(min(hFront, hBack), n), b = sectorEdge(max(hFront, hBack), n);
+                uint bits = b - a >= 32 ? 0xFFFFFFFFu : ((1u << uint(b - a)) - 1u) << uint(a);
+                bool hides = (bits & ~mask) != 0u;
+                mask |= bits;
+                INSPECT_TAP(S.xyz, uv, hides ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN, float(bitCount(bits)) / 32.0, slice);
+            }
+        }
+        // Open measure of the whole hemisphere minus that of each run of hidden sectors.
+        float open = arcG(n + HALF_PI, n, cosN, sinN) - arcG(n - HALF_PI, n, cosN, sinN);
+        uint m = mask;
+        for (int guard = 0; guard < VBAO_SECTORS && m != 0u; ++guard) {
+            int a = findLSB(m);
+            uint rest = ~(m >> uint(a));
+            int b = rest == 0u ? VBAO_SECTORS : min(a + findLSB(rest), VBAO_SECTORS);
+            open -= arcG(edgeAngle(b, n), n, cosN, sinN) - arcG(edgeAngle(a, n), n, cosN, sinN);
+            m = b >= VBAO_SECTORS ? 0u : m & (0xFFFFFFFFu << uint(b));
+        }
+        visibility += projNLen * max(open, 0.0);
+    }
+    visibility /= float(slices);
+    oAO = aoFinish(ssao.aoCommon, visibility);
+    INSPECT_RESULT(true, P, N, 1.0 - visibility, float(slices), R, oAO);
+}
