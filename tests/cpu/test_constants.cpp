@@ -86,6 +86,13 @@ TEST(AoCommon, RadiusInEachModeInWorldUnitsAndPixels) {
     EXPECT_FLOAT_EQ(c.radius.y * c.radius.w * 1000.0f, 24.0f); // what the shader computes
     a.radiusMode = RadiusMode::Scene;
     EXPECT_FLOAT_EQ(packAoCommon(a, diag, upp, {64, 32}).radius.x, 40.0f);
+    // The normal source is the shaders' SSAO_NORMALS_*; noise and pyramid are the technique's (none, off).
+    EXPECT_EQ(int(packAoCommon(a, diag, upp, {64, 32}).shape.z), SSAO_NORMALS_GBUFFER);
+    a.normals = NormalSource::Depth;
+    const auto d = packAoCommon(a, diag, upp, {64, 32});
+    EXPECT_EQ(int(d.shape.z), SSAO_NORMALS_DEPTH);
+    EXPECT_EQ(int(d.shape.y), SSAO_NOISE_NONE);
+    EXPECT_EQ(d.shape.w, 0.0f);
 }
 
 TEST(AoCommon, UnitsPerPixelMatchTheFieldOfView) {

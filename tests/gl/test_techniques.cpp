@@ -104,3 +104,66 @@ TEST_F(Techniques, TheBilateralDenoiserKeepsAoFromCrossingEdges) {
                 edge[1]);
     EXPECT_LT(edge[1], edge[0]);
 }
+
+TEST_F(Techniques, TheVisibilityBitmaskBeatsGtaoOnTheReferenceAndThicknessActs) {
+    // Therrien 2023's claim, measured: a sample hides only the sectors between its front and its
+    // assumed back, so what lies behind a thin object is not darkened as a horizon would darken it.
+    const Scene scene = loadScene(std::string(SSAOLAB_SCENES_DIR) + "/CornellBox/cornellBox.gltf");
+    EmbreeScene rt(scene);
+    const int w = 320, h = 180;
+    auto rmseOf = [&](const Settings& s, double* mean) {
+        auto r = makeRenderer(scene, s, w, h);
+        r->render();
+        const ReferenceImage ref =
+            traceReference(rt, r->camera(), w, h, referenceSettingsFor(*r, 64, ReferenceVariant::Visibility));
+        const Image ao = readBack(r->texture("ao.denoised"), 1);
+        EXPECT_TRUE(finiteInRange(ao, 0.0f, 1.0f));
+        const Evaluation e = evaluate(ao, ref);
+        if (mean) *mean = e.metrics.bias; // AO - reference over geometry: brighter = larger
+        return e.metrics.rmse;
+    };
+    Settings g = defaultSettings();
+    g.ao.technique = "gtao";
+    Settings v = g;
+    v.ao.technique = "vbao";
+    const double gtao = rmseOf(g, nullptr), vbao = rmseOf(v, nullptr);
+    double thinBias = 0, thickBias = 0;
+    v.vbao.thickness = 0.1f;
+    rmseOf(v, &thinBias);
+    v.vbao.thickness = 4.0f;
+    rmseOf(v, &thickBias);
+    std::printf("CornellBox %dx%d: RMSE GTAO %.4f, visibility bitmask %.4f; bias thickness 0.1 %+.4f, 4.0 %+.4f\n",
+                w, h, gtao, vbao, thinBias, thickBias);
+    EXPECT_LT(vbao, gtao);
+    EXPECT_GT(thinBias, thickBias + 0.005); // thinner surfaces hide less
+}
+
+TEST_F(Techniques, NormalsFromDepthAndThePositionPyramidKeepTheAnswer) {
+    // Normals reconstructed from positions (smaller-difference neighbour) give the G-buffer's answer
+    // on planes and creases; the pyramid changes only far taps. Both stay open on a plane and near
+    // the closed form beside a wall.
+    for (const char* id : {"sao", "hbao", "gtao", "vbao", "kernel"}) {
+        Settings s = forTechnique(id);
+        s.ao.radius = 1.5f; // far taps reach the pyramid's coarser levels (>= 16 px)
+        const double base = cornerRmse(id, s);
+        Settings d = s;
+        d.ao.normals = NormalSource::Depth;
+        Rendered plane = render("builtin:plane", d, 160, 120);
+        EXPECT_TRUE(finiteInRange(plane.aoRaw, 0.0f, 1.0f)) << id;
+        EXPECT_GE(geometryMean(plane, plane.ao), 0.95) << id;
+        const double fromDepth = cornerRmse(id, d);
+        Rendered a = render("builtin:showcase", s, 200, 120), b = render("builtin:showcase", d, 200, 120);
+        EXPECT_TRUE(finiteInRange(b.aoRaw, 0.0f, 1.0f)) << id;
+        const double showDiff = std::abs(geometryMean(a, a.ao) - geometryMean(b, b.ao));
+        std::printf("%-6s corner RMSE: G-buffer normals %.4f, from depth %.4f; showcase mean AO differs %.4f\n", id,
+                    base, fromDepth, showDiff);
+        EXPECT_LT(std::abs(fromDepth - base), 0.01) << id;
+        EXPECT_LT(showDiff, 0.02) << id;
+        if (std::string(id) == "kernel") continue; // no pyramid: its taps are projected 3-D points
+        Settings p = s;
+        p.sao.pyramid = p.hbao.pyramid = p.gtao.pyramid = p.vbao.pyramid = false;
+        const double flat = cornerRmse(id, p);
+        std::printf("%-6s corner RMSE: pyramid %.4f, full resolution taps %.4f\n", id, base, flat);
+        EXPECT_LT(std::abs(flat - base), 0.02) << id;
+    }
+}
