@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build run test screenshot goldens bench clean
+.PHONY: deps configure build run test screenshot goldens bench presets clean
 
 deps:
 	@bash .ci/install-deps.sh
@@ -41,6 +41,9 @@ goldens: build
 SCENES ?= ../shared/scenes
 bench: build
 	@bash .ci/bench.sh $(BUILD) $(SCENES)
+
+presets: build
+	@bash .ci/tune-presets.sh $(BUILD) $(SCENES)
 
 clean:
 	@rm -rf $(BUILD) $(OUT)

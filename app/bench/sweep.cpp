@@ -111,10 +111,16 @@ Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::
             const std::string gname = g.value("name", "group " + std::to_string(gi + 1));
             const std::string where = origin + ": group '" + gname + "'";
             for (auto& [k, v] : g.items())
-                if (k != "name" && k != "set" && k != "vary")
-                    throw Error(where + ": unknown key '" + k + "' (name, set, vary)");
+                if (k != "name" && k != "preset" && k != "set" && k != "vary")
+                    throw Error(where + ": unknown key '" + k + "' (name, preset, set, vary)");
             Settings gs = base;
             nlohmann::json gkeys = baseKeys;
+            if (g.contains("preset")) { // the group starts from a preset instead of the base
+                if (!g["preset"].is_string()) throw Error(where + ".preset: expected a preset name");
+                gs = store.open(g["preset"].get<std::string>()).settings;
+                resetRadius(gs);
+                gkeys = {{"preset", g["preset"]}};
+            }
             if (g.contains("set")) {
                 applyKeys(gs, g["set"], where + ".set");
                 gkeys.update(g["set"]);

@@ -15,6 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -43,6 +44,10 @@ void addTuneOptions(CLI::App& cmd, TuneOptions& o) {
     cmd.add_option("--radius-scene", o.radiusScene, "the reference's R as a fraction of the scene diagonal")
         ->capture_default_str()
         ->check(CLI::Range(0.0001, 0.5));
+    cmd.add_option("--set", o.sets, "KEY=VALUE applied to the start, e.g. vbao.slices=2 (repeatable)");
+    cmd.add_option("--knob", o.knobs,
+                   "fit only this knob (repeatable: a float parameter key or radius_multiplier; default: "
+                   "radius_multiplier, ao.power and the technique's float rows)");
     cmd.add_option("--out", o.out, "where to save the tuned preset (JSON)")->capture_default_str();
     cmd.add_option("--preset-dir", o.presetDir, "folder of user presets");
     cmd.add_flag("--quiet", o.quiet, "no progress output");
@@ -72,6 +77,8 @@ int runTune(const TuneOptions& o) {
     Settings start = defaultSettings();
     if (!o.preset.empty()) start = PresetStore::standard(o.presetDir).open(o.preset).settings;
     setParam(start, "ao.technique", o.technique);
+    for (const std::string& a : o.sets)
+        applyAssignment(start, a);
     const std::vector<std::string> specs =
         o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
     std::vector<Scene> scenes;
@@ -85,6 +92,20 @@ int runTune(const TuneOptions& o) {
     for (const Param& p : paramTable())
         if (p.group() == o.technique && p.type == Param::Type::Float && p.applies(start))
             knobs.push_back({p.key, p.min, p.max, p.get(start)});
+    if (!o.knobs.empty()) {
+        std::vector<Knob> chosen;
+        for (const std::string& key : o.knobs) {
+            auto it = std::find_if(knobs.begin(), knobs.end(), [&](const Knob& k) { return k.key == key; });
+            if (it == knobs.end()) {
+                std::string known;
+                for (const Knob& k : knobs)
+                    known += (known.empty() ? "" : ", ") + k.key;
+                throw Error("--knob " + key + " is not a knob of " + o.technique + " (knobs: " + known + ")");
+            }
+            chosen.push_back(*it);
+        }
+        knobs = chosen;
+    }
 
     gl::HeadlessContext ctx;
     Renderer r(shaderRoot());

@@ -24,6 +24,11 @@ struct TuneOptions {
     int grid = 7;   // values per parameter per round
     int referenceRays = 256;
     float radiusScene = 0.05f;
+    // Only these knobs (keys, or "radius_multiplier"); empty = the radius multiplier, ao.power and the
+    // technique's float rows. Shipped presets fit the technique's rows only: R stays the reference's
+    // and power 1 (a power that only darkens is not physics).
+    std::vector<std::string> knobs;
+    std::vector<std::string> sets; // KEY=VALUE applied to the start (a quality level's sample counts)
     std::string out = "tuned.json";
     std::string presetDir;
     bool quiet = false;

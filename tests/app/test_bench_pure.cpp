@@ -71,6 +71,29 @@ TEST(BenchSweep, TheBuiltinSweepCoversWhatTheIssueLists) {
     EXPECT_EQ(positions.size(), 2u);
     EXPECT_GE(normals.size(), 2u); // 8-bit and float normals
     EXPECT_TRUE(separable);
+    // Issue 8: every technique, noise kind, normal source, resolution, the pyramid on and off,
+    // temporal accumulation and the shipped tuned presets.
+    std::set<std::string> techs, noises, sources, resolutions, presets;
+    std::set<bool> pyramid, temporal;
+    for (const auto& c : s.configs) {
+        techs.insert(c.settings.ao.technique);
+        if (c.settings.ao.technique == "gtao") {
+            noises.insert(findParam("gtao.noise")->format(findParam("gtao.noise")->get(c.settings)));
+            pyramid.insert(c.settings.gtao.pyramid);
+        }
+        sources.insert(findParam("ao.normals")->format(findParam("ao.normals")->get(c.settings)));
+        resolutions.insert(findParam("ao.resolution")->format(findParam("ao.resolution")->get(c.settings)));
+        temporal.insert(c.settings.temporal.enabled);
+        if (c.keys.contains("preset")) presets.insert(c.keys["preset"].get<std::string>());
+    }
+    EXPECT_EQ(techs.size(), techniques().size());
+    EXPECT_EQ(noises.size(), findParam("gtao.noise")->choices.size());
+    EXPECT_EQ(sources.size(), 2u);
+    EXPECT_EQ(resolutions.size(), 3u);
+    EXPECT_EQ(pyramid.size(), 2u);
+    EXPECT_EQ(temporal.size(), 2u);
+    for (const char* p : {"gtao-high", "vbao-high", "sao-medium", "hbao-high"})
+        EXPECT_TRUE(presets.count(p)) << p;
 }
 
 TEST(BenchSweep, BadSweepsAreRefusedNamingTheProblem) {
@@ -89,6 +112,8 @@ TEST(BenchSweep, BadSweepsAreRefusedNamingTheProblem) {
     fails(R"({"groups": [{"sett": {}}]})", "sett");
     fails(R"({"grups": []})", "grups");
     fails(R"({"base": {"preset": "no-such-preset"}})", "no-such-preset");
+    fails(R"({"groups": [{"preset": "no-such-preset"}]})", "no-such-preset");
+    fails(R"({"groups": [{"preset": 3}]})", "preset name");
     fails(R"({"groups": [{"vary": {"kernel.samples": [1,2,3,4,5,6,7,8,9,10], "kernel.bias": [0,0.1,0.2,0.3,0.4,0.5,0.6,0.7,0.8,0.9], "kernel.seed": [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19,20,21]}}]})",
           "more than");
 }

@@ -12,7 +12,7 @@ namespace ssao {
 struct VbaoSettings {
     int slices = 4;                 // directions around the view vector
     int steps = 8;                  // depth samples per side of a slice
-    float thickness = 0.5f;         // assumed depth of every surface, in units of the AO radius
+    float thickness = 1.0f;         // assumed depth of every surface, in units of the AO radius
     float distributionPower = 2.0f; // step k of n at (k/n)^p of the radius, denser near the pixel
     AoNoise noise = AoNoise::Ign;
     bool pyramid = true;            // far taps read the position pyramid (techniques/position_pyramid.h)
