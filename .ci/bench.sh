@@ -14,7 +14,7 @@ mkdir -p "$OUT"
 "$BUILD/app/ssaolab" bench \
   --scene "$SCENES/CornellBox/cornellBox.gltf" --scene "$SCENES/FlightHelmet/FlightHelmet.gltf" \
   --scene "$SCENES/2CylinderEngine/2CylinderEngine.gltf" --scene "$SCENES/Lantern/Lantern.gltf" \
-  --size "$SIZE" --views 3 --frames 20 --out "$OUT"
+  --size "$SIZE" --views 3 --frames "${BENCH_FRAMES:-10}" --out "$OUT"
 
 {
   cat <<'MD'

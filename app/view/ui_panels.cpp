@@ -4,6 +4,7 @@
 #include "view/app_core.h"
 
 #include <cstring>
+#include <vector>
 
 namespace ssao {
 
@@ -85,8 +86,16 @@ void presetSection(AppCore& app) {
     ImGui::Text("current: %s", current.c_str());
     static std::string selected;
     if (ImGui::BeginListBox("##presets", ImVec2(-1, ImGui::GetTextLineHeightWithSpacing() * 9))) {
-        for (const auto& e : store.entries()) {
-            std::string label = (e.builtin ? "[seed] " : "") + e.name;
+        // The user's own presets first (what one reloads most), then the shipped ones (the seeds'
+        // reproductions and the tuned technique-quality presets), so a long shipped list never
+        // hides them below the fold.
+        std::vector<const PresetEntry*> order;
+        for (bool builtin : {false, true})
+            for (const auto& e : store.entries())
+                if (e.builtin == builtin) order.push_back(&e);
+        for (const PresetEntry* ep : order) {
+            const PresetEntry& e = *ep;
+            std::string label = (e.builtin ? "[shipped] " : "") + e.name;
             if (e.name == app.loadedPreset().name && app.unsavedChanges()) label += " *";
             if (ImGui::Selectable(label.c_str(), selected == e.name)) selected = e.name;
             if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(0)) app.openPreset(e.name);

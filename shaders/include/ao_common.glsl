@@ -12,6 +12,15 @@ float aoFinish(AoCommon_ c, float visibility) {
     return pow(clamp(visibility, 0.0, 1.0), c.shape.x);
 }
 
+// The G-buffer texel an AO pixel stands for, as a uv at that texel's centre. At half or quarter
+// resolution an AO pixel's centre falls exactly on a boundary between G-buffer texels, where
+// nearest sampling picks either side by rounding: the pixel's own position and its taps (offset
+// by whole G-buffer pixels) would then disagree from pixel to pixel, drawing stripes. The -0.25
+// picks the texel below-left of a boundary at every resolution and the texel itself at full size.
+vec2 aoPixelUv(vec2 uv) {
+    return (floor(uv * frame.viewport.xy - 0.25) + 0.5) * frame.viewport.zw;
+}
+
 // Distance in depth from P to a neighbour that can stand in for it: a sky texel or one off the
 // image is never chosen.
 float aoNeighbourGap(vec4 S, vec2 uv, vec3 P) {
@@ -26,7 +35,10 @@ float aoNeighbourGap(vec4 S, vec2 uv, vec3 P) {
 vec3 aoNormal(AoCommon_ c, sampler2D positions, sampler2D normals, vec2 uv, vec3 P, bool unorm) {
     vec3 N;
     if (int(c.shape.z) == SSAO_NORMALS_DEPTH) {
+        // Whole texels around the pixel's own texel (see aoPixelUv), never a boundary.
         vec2 t = 1.0 / vec2(textureSize(positions, 0));
+        uv = (floor(uv / t - 0.25) + 0.5) * t;
+        P = textureLod(positions, uv, 0.0).xyz;
         vec2 uvL = uv - vec2(t.x, 0.0), uvR = uv + vec2(t.x, 0.0);
         vec2 uvD = uv - vec2(0.0, t.y), uvU = uv + vec2(0.0, t.y);
         vec4 L = textureLod(positions, uvL, 0.0), R = textureLod(positions, uvR, 0.0);

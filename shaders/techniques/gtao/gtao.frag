@@ -29,14 +29,15 @@ bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
 float safeAcos(float x) { return acos(clamp(x, -1.0, 1.0)); }
 
 void main() {
-    vec4 P4 = texture(gPosition, vUv);
+    vec2 uv0 = aoPixelUv(vUv); // the G-buffer texel this AO pixel stands for
+    vec4 P4 = texture(gPosition, uv0);
     if (P4.w == 0.0) { // sky: unoccluded, no work spent
         oAO = 1.0;
         INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
         return;
     }
     vec3 P = P4.xyz;
-    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, vUv, P, hasFlag(GTAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
+    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(GTAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
     vec3 V = normalize(-P);
     float depth = -P.z;
 
@@ -72,7 +73,7 @@ void main() {
             // Snap to texel centres: positions are not interpolated (XeGTAO rounds likewise).
             vec2 offsetUv = round(s * radiusPx * omega) * frame.viewport.zw;
             for (int side = 0; side < 2; ++side) {
-                vec2 uv = vUv + (side == 0 ? offsetUv : -offsetUv);
+                vec2 uv = uv0 + (side == 0 ? offsetUv : -offsetUv);
                 if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) {
                     INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, slice); // unseen: no occluder
                     continue;

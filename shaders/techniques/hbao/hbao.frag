@@ -23,14 +23,15 @@ const float TWO_PI = 6.28318530717959;
 bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
 
 void main() {
-    vec4 P4 = texture(gPosition, vUv);
+    vec2 uv0 = aoPixelUv(vUv); // the G-buffer texel this AO pixel stands for
+    vec4 P4 = texture(gPosition, uv0);
     if (P4.w == 0.0) { // sky: unoccluded, no work spent
         oAO = 1.0;
         INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
         return;
     }
     vec3 P = P4.xyz;
-    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, vUv, P, hasFlag(HBAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
+    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(HBAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
     float depth = -P.z;
     float R = aoRadius(ssao.aoCommon, depth);
     // The radius projected to G-buffer pixels, clamped (a close-up would march the whole screen).
@@ -50,7 +51,7 @@ void main() {
         float occ = 0.0;
         for (int s = 0; s < steps; ++s) {
             vec2 offsetPx = round(omega * (1.0 + (float(s) + noise.y) * stepPx));
-            vec2 uv = vUv + offsetPx * frame.viewport.zw;
+            vec2 uv = uv0 + offsetPx * frame.viewport.zw;
             if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) {
                 INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, d);
                 continue;

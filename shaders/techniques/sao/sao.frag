@@ -24,14 +24,15 @@ const float TWO_PI = 6.28318530717959;
 bool hasFlag(int f) { return (ssao.modes.y & f) != 0; }
 
 void main() {
-    vec4 P4 = texture(gPosition, vUv);
+    vec2 uv0 = aoPixelUv(vUv); // the G-buffer texel this AO pixel stands for
+    vec4 P4 = texture(gPosition, uv0);
     if (P4.w == 0.0) { // sky: unoccluded, no work spent
         oAO = 1.0;
         INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
         return;
     }
     vec3 P = P4.xyz;
-    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, vUv, P, hasFlag(SAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
+    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(SAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
     float depth = -P.z;
     float R = aoRadius(ssao.aoCommon, depth);
     float radiusPx = R * frame.proj[1][1] * 0.5 * frame.viewport.y / depth;
@@ -41,7 +42,7 @@ void main() {
     for (int i = 0; i < n; ++i) {
         float alpha = (float(i) + 0.5) / float(n);
         float angle = alpha * ssao.params.x * TWO_PI + spin;
-        vec2 uv = vUv + round(alpha * radiusPx * vec2(cos(angle), sin(angle))) * frame.viewport.zw;
+        vec2 uv = uv0 + round(alpha * radiusPx * vec2(cos(angle), sin(angle))) * frame.viewport.zw;
         if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) {
             INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, 0);
             continue;

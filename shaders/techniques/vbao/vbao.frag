@@ -42,14 +42,15 @@ int sectorEdge(float h, float n) {
 float edgeAngle(int e, float n) { return n - HALF_PI + float(e) * (PI / float(VBAO_SECTORS)); }
 
 void main() {
-    vec4 P4 = texture(gPosition, vUv);
+    vec2 uv0 = aoPixelUv(vUv); // the G-buffer texel this AO pixel stands for
+    vec4 P4 = texture(gPosition, uv0);
     if (P4.w == 0.0) { // sky: unoccluded, no work spent
         oAO = 1.0;
         INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
         return;
     }
     vec3 P = P4.xyz;
-    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, vUv, P, hasFlag(VBAO_FLAG_NORMAL_UNORM));
+    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(VBAO_FLAG_NORMAL_UNORM));
     vec3 V = normalize(-P);
     float depth = -P.z;
     // Binary visibility within R, as the reference defines it: no falloff, no radius multiplier.
@@ -77,7 +78,7 @@ void main() {
             float s = pow((float(step) + noise.y) / float(steps), ssao.params.y) + minS;
             vec2 offsetUv = round(s * radiusPx * omega) * frame.viewport.zw;
             for (int side = 0; side < 2; ++side) {
-                vec2 uv = vUv + (side == 0 ? offsetUv : -offsetUv);
+                vec2 uv = uv0 + (side == 0 ? offsetUv : -offsetUv);
                 if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) {
                     INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, slice);
                     continue;
