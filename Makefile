@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build run test screenshot goldens bench presets clean
+.PHONY: deps configure build run test screenshot goldens bench presets fuzz clean
 
 deps:
 	@bash .ci/install-deps.sh
@@ -44,6 +44,11 @@ bench: build
 
 presets: build
 	@bash .ci/tune-presets.sh $(BUILD) $(SCENES)
+
+# libFuzzer + ASan/UBSan on the glTF loader and the settings parsers (build-fuzz/, clang);
+# FUZZ_SECONDS per target (60 by default; `FUZZ_SECONDS=3600 make fuzz` for a long run).
+fuzz: configure
+	@bash .ci/fuzz.sh build-fuzz $(SCENES)
 
 clean:
 	@rm -rf $(BUILD) $(OUT)

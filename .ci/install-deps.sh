@@ -11,6 +11,7 @@ PKGS=(
   libgtest-dev libgmock-dev
   libembree-dev libtbb-dev libbenchmark-dev
   python3 python3-matplotlib
+  clang  # libFuzzer targets with ASan+UBSan (tests/fuzz)
   xvfb xauth
 )
 

@@ -4,6 +4,7 @@
 #include "bench/tune_command.h"
 #include "render_command.h"
 #include "scene/builtin_scenes.h"
+#include "scene/scene.h"
 #include "settings/params.h"
 #include "settings/preset_store.h"
 #include "util/error.h"
@@ -14,6 +15,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 namespace {
 
@@ -43,6 +45,12 @@ int main(int argc, char** argv) {
         "Without a subcommand it opens the window (or, with no display, renders the default scene\n"
         "headless into ./out/)."};
     app.require_subcommand(0, 1);
+    app.fallthrough(); // global options may follow the subcommand
+    double maxTriangles = double(ssao::SceneBudget{}.triangles);
+    app.add_option("--max-triangles", maxTriangles,
+                   "refuse scenes that expand to more triangles once instances are flattened")
+        ->capture_default_str()
+        ->check(CLI::Range(1.0, 2e9));
     ssao::RenderOptions ro;
     CLI::App* render =
         app.add_subcommand("render", "render a scene headless (EGL) into EXR/PNG buffers and metrics.json");
@@ -81,6 +89,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     try {
+        ssao::setSceneBudget({size_t(maxTriangles)});
         if (app.got_subcommand("params")) {
             printParams();
             return 0;
@@ -95,12 +104,9 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("bench")) return ssao::runBench(bo);
         if (app.got_subcommand("tune")) return ssao::runTune(to);
         if (app.got_subcommand("view") || (!app.got_subcommand("render") && ssao::haveDisplay())) {
-            int used = 0;
-            if (std::sscanf(windowSize.c_str(), "%dx%d%n", &wo.width, &wo.height, &used) != 2 ||
-                used != int(windowSize.size()) || wo.width < 200 || wo.height < 150 || wo.width > 16384 ||
-                wo.height > 16384)
-                throw ssao::Error("--size '" + windowSize +
-                                  "': expected WIDTHxHEIGHT, from 200x150 to 16384x16384");
+            ssao::parseSizeOption(windowSize, wo.width, wo.height); // strict, and within render's budget
+            if (wo.width < 200 || wo.height < 150)
+                throw ssao::Error("--size '" + windowSize + "': the window needs at least 200x150");
             if (!wo.screenshot.empty() && wo.frames <= 0)
                 throw ssao::Error("--screenshot needs --frames N (the frame to save)");
             return ssao::runWindowApp(wo);
@@ -111,7 +117,13 @@ int main(int argc, char** argv) {
                         ro.out.c_str());
         return ssao::runRender(ro);
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "ssaolab: error: %s\n", e.what());
+        // One line, whatever the message carries (a compiler log ends in a newline, may hold several).
+        std::string msg = e.what();
+        while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ' || msg.back() == '\r'))
+            msg.pop_back();
+        for (char& c : msg)
+            if (c == '\n' || c == '\r') c = ';';
+        std::fprintf(stderr, "ssaolab: error: %s\n", msg.c_str());
         return 1;
     }
 }

@@ -8,6 +8,7 @@
 #include "settings/params.h"
 #include "settings/preset.h"
 #include "settings/preset_store.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/paths.h"
 
@@ -35,7 +36,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--out", o.out, "output folder (EXR, PNG, metrics.json)")->capture_default_str();
     cmd.add_option("--timing-frames", o.timingFrames, "extra frames, every pass forced, averaged into gpu_ms")
         ->capture_default_str()
-        ->check(CLI::Range(1, 1000));
+        ->check(CLI::Range(1, 100));
     cmd.add_flag("--fit-range", o.fitRange,
                  "PNG previews: fit every buffer's range (as the app's 'fit range')");
     cmd.add_flag("--false-colour", o.falseColor, "PNG previews: scalar buffers in false colour");
@@ -58,8 +59,16 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
 }
 
 void parseSizeOption(const std::string& s, int& w, int& h) {
-    int n = 0;
-    if (std::sscanf(s.c_str(), "%dx%d%n", &w, &h, &n) != 2 || n != int(s.size()))
+    // Digits only, at most 6 a side: sscanf's %d wraps 4294967396 to 100 without a word.
+    const size_t x = s.find('x');
+    auto side = [&](size_t from, size_t to, int& out) {
+        if (to <= from || to - from > 6) return false;
+        for (size_t i = from; i < to; ++i)
+            if (s[i] < '0' || s[i] > '9') return false;
+        out = std::stoi(s.substr(from, to - from));
+        return true;
+    };
+    if (x == std::string::npos || !side(0, x, w) || !side(x + 1, s.size(), h))
         throw Error("--size '" + s + "': expected WIDTHxHEIGHT, e.g. 1280x720");
     try {
         checkRenderSize(w, h);
@@ -160,7 +169,7 @@ int runRender(const RenderOptions& o) {
         e["error"]["reference"]["cached"] = cached;
         m["error"] = e["error"];
         m["error_raw"] = e["error_raw"];
-        std::ofstream(std::filesystem::path(o.out) / "metrics.json") << m.dump(2) << "\n";
+        writeFileAtomically((std::filesystem::path(o.out) / "metrics.json").string(), m.dump(2) + "\n");
         {
             const auto& j = m["error"];
             std::snprintf(

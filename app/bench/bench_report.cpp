@@ -1,5 +1,6 @@
 #include "bench/bench_report.h"
 
+#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/paths.h"
 
@@ -73,7 +74,7 @@ void writeBenchFiles(const BenchRun& run, const std::string& dir) {
     if (ec) throw Error("cannot create " + dir + ": " + ec.message());
     const auto& cfgs = run.sweep->configs;
     {
-        std::ofstream f(fs::path(dir) / "results.csv");
+        std::ostringstream f;
         f << "scene,viewpoint,label,technique,baseline,pareto," << kMetricHeader << ",settings\n";
         for (const auto& v : run.views) {
             const BenchConfig& c = cfgs[v.config];
@@ -81,10 +82,10 @@ void writeBenchFiles(const BenchRun& run, const std::string& dir) {
               << c.settings.ao.technique << "," << c.baseline << "," << run.summary[v.config].pareto << ","
               << metricCells(v) << "," << csvField(c.keys.dump()) << "\n";
         }
-        if (!f) throw Error("cannot write " + dir + "/results.csv");
+        writeFileAtomically((fs::path(dir) / "results.csv").string(), f.str());
     }
     {
-        std::ofstream f(fs::path(dir) / "summary.csv");
+        std::ostringstream f;
         f << "label,technique,baseline,pareto,views,gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,"
              "psnr_geometry_srgb,psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,time_ratio,rmse_ratio,"
              "rmse_first_frame,"
@@ -99,7 +100,7 @@ void writeBenchFiles(const BenchRun& run, const std::string& dir) {
               << "," << num(s.rmseRatio) << "," << num(s.rmseFirstFrame) << "," << csvField(c.keys.dump())
               << "\n";
         }
-        if (!f) throw Error("cannot write " + dir + "/summary.csv");
+        writeFileAtomically((fs::path(dir) / "summary.csv").string(), f.str());
     }
     nlohmann::json j = run.facts;
     j["sweep"] = {{"name", run.sweep->name}, {"description", run.sweep->description}};
@@ -148,8 +149,8 @@ void writeBenchFiles(const BenchRun& run, const std::string& dir) {
                                 {"rmse_first_frame", jnum(v.rmseFirstFrame)},
                                 {"nonfinite", v.error.nonFinite},
                                 {"reference_noise", jnum(v.error.referenceNoise)}});
-    std::ofstream(fs::path(dir) / "results.json") << j.dump(2) << "\n";
-    std::ofstream(fs::path(dir) / "report.md") << benchMarkdown(run, "pareto.png");
+    writeFileAtomically((fs::path(dir) / "results.json").string(), j.dump(2) + "\n");
+    writeFileAtomically((fs::path(dir) / "report.md").string(), benchMarkdown(run, "pareto.png"));
 }
 
 std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {

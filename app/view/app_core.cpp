@@ -7,6 +7,7 @@
 #include "util/paths.h"
 
 #include <cstdio>
+#include <optional>
 
 namespace fs = std::filesystem;
 
@@ -34,16 +35,36 @@ AppCore::AppCore(const AppOptions& o)
     interactiveScale = std::clamp(o.interactiveScale, 0.1f, 1.0f);
     referenceOn = o.reference;
     loaded_.name = "defaults";
-    if (!o.preset.empty()) loaded_ = store_.open(o.preset);
+    // A bad --preset or --scene opens the window anyway, on the defaults and the built-in scene, with
+    // the problem in the status line: the user fixes it from the panel instead of reading a log.
+    std::string startupError;
+    if (!o.preset.empty()) {
+        try {
+            loaded_ = store_.open(o.preset);
+        } catch (const std::exception& e) {
+            startupError = e.what();
+        }
+    }
     settings_ = loaded_.settings;
     renderer_ = std::make_unique<Renderer>(opts_.shaderDir);
-    const std::string spec = !o.scene.empty() ? o.scene : loaded_.scene.value_or("builtin:showcase");
-    adoptScene(loadScene(spec), spec, false);
+    std::string spec = !o.scene.empty() ? o.scene : loaded_.scene.value_or("builtin:showcase");
+    std::optional<Scene> scene;
+    try {
+        scene = loadScene(spec);
+    } catch (const std::exception& e) {
+        startupError += (startupError.empty() ? "" : "; ") + std::string(e.what());
+        spec = "builtin:showcase";
+        scene = loadScene(spec);
+    }
+    adoptScene(std::move(*scene), spec, false);
     if (loaded_.camera) camera_.reset(*loaded_.camera, scene_->bounds.radius(), scene_->bounds.center());
     shaderTime_ = renderer_->shaders().newestSourceTime();
-    setStatus("loaded " + scene_->name + (o.preset.empty() ? "" : " with preset " + loaded_.name) + "; " +
-                  radiusNote(),
-              false);
+    if (!startupError.empty())
+        setStatus(startupError + " (showing " + spec + ")", true);
+    else
+        setStatus("loaded " + scene_->name + (o.preset.empty() ? "" : " with preset " + loaded_.name) + "; " +
+                      radiusNote(),
+                  false);
 }
 
 AppCore::~AppCore() = default;

@@ -1,6 +1,7 @@
 #include "output/image.h"
 
 #include "gl/resources.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 
 #include <stb_image.h>
@@ -8,6 +9,8 @@
 #include <tinyexr.h>
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -34,13 +37,29 @@ Image readBack(const gl::Texture2D& tex, int channels) {
 
 void writeExr(const Image& img, const std::string& path) {
     const char* err = nullptr;
-    // tinyexr wants 1, 3 or 4 channels; fp32 keeps NaN/inf and full precision.
-    int rc = SaveEXR(img.data.data(), img.width, img.height, img.channels, 0, path.c_str(), &err);
+    // tinyexr wants 1, 3 or 4 channels; fp32 keeps NaN/inf and full precision. It writes to a file
+    // only, so the file is made beside the destination and read back whole: a write that a full disk
+    // cut short fails here (or at the atomic rename) instead of leaving a broken EXR.
+    const std::string staged = path + ".exr-staged";
+    int rc = SaveEXR(img.data.data(), img.width, img.height, img.channels, 0, staged.c_str(), &err);
     if (rc != TINYEXR_SUCCESS) {
         std::string msg = err ? err : "unknown error";
         if (err) FreeEXRErrorMessage(err);
+        std::remove(staged.c_str());
         throw Error("cannot write " + path + ": " + msg);
     }
+    std::string bytes;
+    {
+        std::ifstream in(staged, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    std::remove(staged.c_str());
+    EXRVersion version;
+    if (bytes.empty() ||
+        ParseEXRVersionFromMemory(&version, reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()) !=
+            TINYEXR_SUCCESS)
+        throw Error("cannot write " + path + ": the EXR came out truncated (disk full?)");
+    writeFileAtomically(path, bytes);
 }
 
 Image readExr(const std::string& path) {
@@ -70,8 +89,13 @@ void writePng(const Image& img, const std::string& path, float scale, float offs
             px[p * outC + c] = (unsigned char)std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f);
         }
     }
-    if (!stbi_write_png(path.c_str(), img.width, img.height, outC, px.data(), img.width * outC))
-        throw Error("cannot write " + path);
+    std::string bytes; // encoded in memory: stb's file writer ignores failed writes
+    auto append = [](void* ctx, void* data, int size) {
+        static_cast<std::string*>(ctx)->append(static_cast<const char*>(data), size_t(size));
+    };
+    if (!stbi_write_png_to_func(append, &bytes, img.width, img.height, outC, px.data(), img.width * outC))
+        throw Error("cannot write " + path + ": PNG encoding failed");
+    writeFileAtomically(path, bytes);
 }
 
 Image readPng(const std::string& path) {

@@ -4,6 +4,7 @@
 #include "output/image.h"
 #include "settings/params.h"
 #include "settings/preset.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 
 #include <filesystem>
@@ -143,9 +144,7 @@ nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& 
     m["passes"] = r.graph().passOrder();
     m["passes_run"] = firstFrame.ran();
     m["gpu_ms"] = timing;
-    std::ofstream out(path("metrics.json"));
-    if (!out) throw Error("cannot write " + path("metrics.json"));
-    out << m.dump(2) << "\n";
+    writeFileAtomically(path("metrics.json"), m.dump(2) + "\n");
     return m;
 }
 

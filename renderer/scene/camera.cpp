@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <vector>
 
@@ -48,6 +49,15 @@ void validateCamera(const Camera& c) {
         throw Error("camera: fov, near and far must be finite numbers");
     if (!(c.nearZ > 0.0f)) throw Error("camera: near must be > 0");
     if (!(c.farZ > c.nearZ) || !std::isfinite(c.farZ)) throw Error("camera: far must be > near");
+    // A 32-bit depth buffer spreads its precision as near/z: past ~1e8 every surface lands on the
+    // same depth value and nothing renders (near 1e-9, far 1e9 gave an empty frame reported as
+    // "fully occluded"). 2CylinderEngine's own camera (0.05 .. 1e6, 2e7) still passes.
+    if (double(c.farZ) / double(c.nearZ) > kMaxFarNearRatio) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "camera: far/near = %.3g exceeds %.0e: the depth buffer cannot resolve it "
+                      "(raise near, or fit the planes to the scene)", double(c.farZ) / double(c.nearZ), kMaxFarNearRatio);
+        throw Error(buf);
+    }
 }
 
 Camera parseCamera(const std::string& text, const Camera& base) {

@@ -31,7 +31,9 @@ Camera frameBounds(const Bounds& b);
 // Parses "ex,ey,ez,tx,ty,tz[,ux,uy,uz[,fov[,near,far]]]". Throws ssao::Error naming the problem.
 Camera parseCamera(const std::string& text, const Camera& base);
 
-// Throws when the camera would produce NaN matrices (zero direction, near <= 0, far <= near...).
+// Throws when the camera would produce NaN matrices (zero direction, near <= 0, far <= near...)
+// or a depth range the depth buffer cannot resolve (far/near above kMaxFarNearRatio).
+constexpr double kMaxFarNearRatio = 1e8;
 void validateCamera(const Camera& c);
 
 } // namespace ssao

@@ -80,6 +80,12 @@ bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigne
     return false;
 }
 
+// Images are never decoded: ssaolab shades with base-colour factors only, and a 200-byte header can
+// claim 23000x23000 pixels (4 GB), or point its bufferView outside its buffer.
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+    return true;
+}
+
 const char* kUnsupportedExtensions[] = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
                                         "KHR_mesh_quantization", "KHR_texture_basisu"};
 
@@ -213,6 +219,12 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
     Vec3Reader pos = vec3Accessor(m, posIt->second, what + " POSITION");
     std::vector<uint32_t> idx = toTriangleList(readIndices(m, p, pos.count, what), p.mode);
     if (idx.empty()) return;
+    // The budget, checked before anything is appended (flat normals give every corner a vertex).
+    const size_t budget = sceneBudget().triangles;
+    const size_t newVertices = p.attributes.count("NORMAL") ? pos.count : idx.size();
+    if (s.indices.size() / 3 + idx.size() / 3 > budget || s.vertices.size() + newVertices > 3 * budget)
+        throw Error(what + ": the scene expands past the budget of " + std::to_string(budget) +
+                    " triangles (raise it with ssaolab --max-triangles N)");
 
     const glm::mat3 normalMat = glm::transpose(glm::inverse(glm::mat3(world)));
     const bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
@@ -297,11 +309,17 @@ Scene loadGltf(const std::string& path) {
     tinygltf::TinyGLTF loader;
     SceneFolder folder{std::filesystem::weakly_canonical(std::filesystem::absolute(path)).parent_path()};
     loader.SetFsCallbacks({fileExistsInFolder, keepPath, readFileInFolder, refuseWrite, &folder});
+    loader.SetImageLoader(skipImage, nullptr);
     tinygltf::Model model;
     std::string err, warn;
     const bool binary = path.size() > 4 && path.substr(path.size() - 4) == ".glb";
-    bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                     : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    bool ok = false;
+    try { // tinygltf throws on some malformed input (e.g. nlohmann::json type errors)
+        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                    : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    } catch (const std::exception& e) {
+        throw Error("cannot load glTF " + path + ": " + e.what());
+    }
     if (!ok || !err.empty()) {
         std::string msg = err.empty() ? warn : err;
         while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' '))
@@ -324,11 +342,34 @@ Scene loadGltf(const std::string& path) {
         for (int i = 0; i < int(model.nodes.size()); ++i)
             roots.push_back(i);
 
-    // Nodes may be shared (instancing) but not be their own ancestors; a hostile file can also
-    // multiply instances through shared children, so the walk and the triangle count are bounded.
+    // glTF 2.0 §3.5.3: a node has at most one parent, and the hierarchy is a set of disjoint trees.
+    // Enforced: a node listed twice (by two parents, or twice by one) would be drawn once per path,
+    // and 22 levels of that is 4 million copies from a 1.5 KB file. Meshes may still be shared.
+    std::vector<int> parentOf(model.nodes.size(), -1);
+    for (size_t pi = 0; pi < model.nodes.size(); ++pi)
+        for (int c : model.nodes[pi].children) {
+            if (c < 0 || c >= int(model.nodes.size()))
+                throw Error("glTF " + path + ": node " + std::to_string(pi) + " has a child " + std::to_string(c) +
+                            " that does not exist");
+            if (parentOf[size_t(c)] >= 0)
+                throw Error("glTF " + path + ": node " + std::to_string(c) + " has two parents (" +
+                            std::to_string(parentOf[size_t(c)]) + " and " + std::to_string(pi) +
+                            "); glTF allows one parent per node");
+            parentOf[size_t(c)] = int(pi);
+        }
+    std::vector<char> isRoot(model.nodes.size(), 0);
+    for (int r : roots) {
+        if (r < 0 || r >= int(model.nodes.size()))
+            throw Error("glTF " + path + ": scene root node " + std::to_string(r) + " does not exist");
+        if (parentOf[size_t(r)] >= 0 || isRoot[size_t(r)])
+            throw Error("glTF " + path + ": node " + std::to_string(r) +
+                        " is a scene root and also listed elsewhere; glTF allows one parent per node");
+        isRoot[size_t(r)] = 1;
+    }
+    // Cycles (a node its own ancestor) are still caught on the walk; the visit bound stays as a guard.
     std::vector<char> onPath(model.nodes.size(), 0);
     size_t visits = 0;
-    constexpr size_t kMaxVisits = 1000000, kMaxIndices = 3 * 50000000ull;
+    constexpr size_t kMaxVisits = 1000000;
     std::function<void(int, const glm::mat4&, int)> visit = [&](int ni, const glm::mat4& parent, int depth) {
         if (ni < 0 || ni >= int(model.nodes.size()))
             throw Error("glTF " + path + ": node index " + std::to_string(ni) + " does not exist");
@@ -346,8 +387,6 @@ Scene loadGltf(const std::string& path) {
             const auto& mesh = model.meshes[n.mesh];
             for (const auto& p : mesh.primitives)
                 appendPrimitive(model, p, world, s, "glTF mesh '" + mesh.name + "'");
-            if (s.indices.size() > kMaxIndices)
-                throw Error("glTF " + path + ": more than 50 million triangles to draw");
         }
         if (n.camera >= 0 && n.camera < int(model.cameras.size())) {
             if (auto cam = cameraFromNode(model, n, world)) {

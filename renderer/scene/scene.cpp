@@ -5,6 +5,17 @@
 
 namespace ssao {
 
+namespace {
+SceneBudget gBudget;
+} // namespace
+
+void setSceneBudget(SceneBudget b) {
+    gBudget = b;
+}
+SceneBudget sceneBudget() {
+    return gBudget;
+}
+
 void Scene::computeBounds() {
     bounds = Bounds{};
     for (const auto& v : vertices)

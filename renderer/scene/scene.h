@@ -48,6 +48,15 @@ struct Scene {
     void computeBounds();
 };
 
+// What a scene may expand to once instances are flattened (a 1.5 KB file can list one 65k-vertex
+// accessor in thousands of primitives). Loading a scene past it is a clear error naming the budget;
+// `ssaolab --max-triangles N` raises it.
+struct SceneBudget {
+    size_t triangles = 20000000; // 20 M: ~0.5 GB of vertices and indices, plus the BVH
+};
+void setSceneBudget(SceneBudget b);
+SceneBudget sceneBudget();
+
 // "builtin:NAME" → procedural scene, anything else → glTF file. Throws ssao::Error.
 Scene loadScene(const std::string& spec);
 

@@ -1,6 +1,7 @@
 #include "settings/preset.h"
 
 #include "settings/params.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 
 #include <cmath>
@@ -154,10 +155,7 @@ void writePresetFile(const Preset& p, const std::string& path) {
     std::error_code ec;
     const auto parent = fs::path(path).parent_path();
     if (!parent.empty()) fs::create_directories(parent, ec);
-    std::ofstream out(path);
-    if (!out) throw Error("cannot write preset " + path);
-    out << presetToJson(p).dump(2) << "\n";
-    if (!out) throw Error("cannot write preset " + path);
+    writeFileAtomically(path, presetToJson(p).dump(2) + "\n"); // complete or untouched, never half a preset
 }
 
 } // namespace ssao

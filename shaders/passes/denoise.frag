@@ -20,5 +20,7 @@ void main() {
         vec4 ow = denoise.offsetsWeights[i];
         sum += texture(aoIn, vUv + dir * ow.x).r * ow.y;
     }
-    oAO = sum;
+    // Weights summing to at most 1 still round a sum of ones to 1.0000001-1.0000004 in float
+    // (seed003 on CornellBox did): clamp from above. A NaN fails the comparison and stays visible.
+    oAO = sum > 1.0 ? 1.0 : sum;
 }

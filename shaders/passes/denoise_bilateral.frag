@@ -51,5 +51,6 @@ void main() {
             wsum += w;
         }
     // No similar neighbour at all (a lone pixel): keep its own value rather than divide by ~0.
-    oAO = wsum > 1e-6 ? sum / wsum : texelFetch(aoIn, c, 0).r;
+    float ao = wsum > 1e-6 ? sum / wsum : texelFetch(aoIn, c, 0).r;
+    oAO = ao > 1.0 ? 1.0 : ao; // a weighted mean of ones may round past 1; a NaN stays visible
 }

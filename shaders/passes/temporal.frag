@@ -21,7 +21,10 @@ in vec2 vUv;
 
 #ifdef RESOLVE
 layout(location = 0) out float oAO;
-void main() { oAO = textureLod(history, vUv, 0.0).r; }
+void main() {
+    float ao = textureLod(history, vUv, 0.0).r;
+    oAO = ao > 1.0 ? 1.0 : ao; // a running mean of ones may round past 1; a NaN stays visible
+}
 #else
 layout(location = 0) out vec4 oHistory;
 void main() {

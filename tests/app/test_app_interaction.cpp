@@ -214,3 +214,25 @@ TEST_F(AppUse, ViewsAndPngPreviewsUseOneMapping) {
                     << name << " at " << x << "," << y;
     }
 }
+
+TEST_F(AppUse, ABadStartupSceneOrPresetOpensTheWindowOnTheBuiltInSceneWithTheError) {
+    // Before: `view --scene missing.gltf` or `--preset nosuch` ended the program before a window.
+    for (int k = 0; k < 2; ++k) {
+        AppOptions o;
+        o.userPresetDir = std::string(SSAOLAB_TEST_TMP) + "/use_presets";
+        o.renderScale = 0.3f;
+        if (k == 0) o.scene = "/nonexistent/scene.gltf";
+        else o.preset = "no-such-preset";
+        ui_ = std::make_unique<UiDriver>(o, 1200, 900);
+        ui_->settle();
+        EXPECT_TRUE(ui_->app().statusIsError());
+        EXPECT_NE(ui_->app().status().find(k == 0 ? "scene file not found: /nonexistent/scene.gltf"
+                                                  : "no preset named 'no-such-preset'"),
+                  std::string::npos)
+            << ui_->app().status();
+        EXPECT_NE(ui_->app().status().find("showing builtin:showcase"), std::string::npos);
+        EXPECT_GT(ui_->app().scene().triangleCount(), 0u);
+        EXPECT_TRUE(finiteInRange(readBack(ui_->app().renderer().texture("ao.denoised"), 1), 0.0f, 1.0f));
+        ui_.reset();
+    }
+}

@@ -167,6 +167,24 @@ TEST(Cli, BadInputGivesOneClearLineAndExitCodeOne) {
     expectCleanFailure(ssaolab("render --size 640" + out), "--size '640'");
     expectCleanFailure(ssaolab("render --camera 1,2,3" + out), "--camera");
     expectCleanFailure(ssaolab("render --camera 0,0,0,0,0,0" + out), "eye and target coincide");
+    // Issue 9's adversarial list: sscanf wrapped 4294967396 to 100; 1000 timing frames ran ~15 minutes;
+    // near 1e-9 / far 1e9 rendered nothing and reported it as fully occluded; a shader error printed
+    // the compiler's log over several lines; a scene that expands without bound exhausted memory.
+    expectCleanFailure(ssaolab("render --size 4294967396x100" + out), "--size '4294967396x100'");
+    expectCleanFailure(ssaolab("view --size 20000x20000"), "too large");
+    expectCleanFailure(ssaolab("render --timing-frames 1000" + out), "--timing-frames");
+    expectCleanFailure(ssaolab("render --clip fixed --camera 0,0,5,0,0,0,0,1,0,60,1e-9,1e9" + out), "far/near");
+    {
+        namespace fs = std::filesystem;
+        const std::string bad = std::string(SSAOLAB_TEST_TMP) + "/broken_shaders";
+        fs::remove_all(bad);
+        fs::copy(std::string(SSAOLAB_SOURCE_DIR) + "/shaders", bad, fs::copy_options::recursive);
+        std::ofstream(bad + "/passes/composite.frag", std::ios::app) << "garbage(\n";
+        expectCleanFailure(ssaolab("render --shaders " + bad + out), "composite.frag:");
+    }
+    expectCleanFailure(ssaolab("--max-triangles 10 render --scene '" + std::string(SSAOLAB_SCENES_DIR) +
+                               "/CornellBox/cornellBox.gltf'" + out),
+                       "budget of 10 triangles");
 }
 
 TEST(Cli, WarnsWhenNothingIsInViewOrTheRadiusIsSubPixel) {

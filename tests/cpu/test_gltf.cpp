@@ -1,5 +1,6 @@
 #include "scene/builtin_scenes.h"
 #include "scene/gltf_loader.h"
+#include "scene/scene.h"
 #include "util/error.h"
 
 #include "test_util.h"
@@ -190,20 +191,71 @@ TEST(GltfHostile, BufferUrisStayInsideTheScenesFolder) {
 }
 
 TEST(GltfHostile, CyclesDepthSharedNodesAndDegenerateGeometry) {
+    // A root that lists itself as its child: refused as a node with a second parent (the root list).
     EXPECT_NE(errorOf(writeTemp("cycle.gltf",
                                 patched(R"("mesh":0,"translation":[0,2,0])", R"("mesh":0,"children":[0])")))
-                  .find("node 0 is its own ancestor"),
+                  .find("node 0 is a scene root and also listed elsewhere"),
               std::string::npos);
-    // Two nodes sharing a child is legal instancing; 30 levels of it is 2^30 instances.
+    // A node listing the same child twice, 30 levels deep, was 2^30 instances from a 2 KB file.
+    // glTF allows one parent per node: the first repeated child is refused, by name.
     std::string nodes = R"("nodes":[)";
     for (int i = 0; i < 30; ++i)
         nodes += R"({"children":[)" + std::to_string(i + 1) + "," + std::to_string(i + 1) + "]},";
     nodes += R"({"mesh":0}],)";
     const std::string blowup =
         errorOf(writeTemp("blowup.gltf", patched(R"("nodes":[{"mesh":0,"translation":[0,2,0]}],)", nodes)));
-    EXPECT_NE(blowup.find("node instances"), std::string::npos) << blowup;
+    EXPECT_NE(blowup.find("node 1 has two parents (0 and 0)"), std::string::npos) << blowup;
+    // Two parents sharing a child, and a root that is also a child.
+    auto withNodes = [](const std::string& roots, const std::string& nodes) {
+        std::string g = triangleGltf();
+        const std::string r0 = R"("scenes":[{"nodes":[0]}])", n0 = R"("nodes":[{"mesh":0,"translation":[0,2,0]}])";
+        g.replace(g.find(r0), r0.size(), R"("scenes":[{"nodes":)" + roots + "}]");
+        g.replace(g.find(n0), n0.size(), R"("nodes":)" + nodes);
+        return g;
+    };
+    const std::string shared = errorOf(
+        writeTemp("shared.gltf", withNodes("[0,1]", R"([{"children":[2]},{"children":[2]},{"mesh":0}])")));
+    EXPECT_NE(shared.find("node 2 has two parents (0 and 1)"), std::string::npos) << shared;
+    const std::string rootChild =
+        errorOf(writeTemp("rootchild.gltf", withNodes("[0,1]", R"([{"children":[1]},{"mesh":0}])")));
+    EXPECT_NE(rootChild.find("node 1 is a scene root and also listed elsewhere"), std::string::npos) << rootChild;
+    // A cycle away from the roots is never walked: the scene loads what the roots reach.
+    EXPECT_EQ(errorOf(writeTemp("island.gltf", withNodes("[0]", R"([{"mesh":0},{"children":[2]},{"children":[1]}])"))),
+              "");
     // Every vertex at one point: no extent to scale a radius by.
     EXPECT_NE(errorOf(writeTemp("point.gltf", patched(R"("translation":[0,2,0])", R"("scale":[0,0,0])")))
                   .find("no extent"),
               std::string::npos);
+}
+
+TEST(GltfHostile, OneAccessorInManyPrimitivesMeetsTheBudget) {
+    // Legal glTF: one accessor drawn by many primitives. 4,000 primitives of a 65k-vertex accessor
+    // expanded to 262 M vertices and exhausted memory; now the budget refuses it before appending.
+    std::string prims;
+    for (int i = 0; i < 40; ++i)
+        prims += std::string(i ? "," : "") + R"({"attributes":{"POSITION":0},"indices":1})";
+    const std::string path =
+        writeTemp("manyprims.gltf", patched(R"([{"attributes":{"POSITION":0},"indices":1,"material":0}])",
+                                            "[" + prims + "]"));
+    EXPECT_EQ(loadGltf(path).triangleCount(), 40u); // within the default budget
+    const SceneBudget saved = sceneBudget();
+    setSceneBudget({25});
+    const std::string e = errorOf(path);
+    setSceneBudget(saved);
+    EXPECT_NE(e.find("past the budget of 25 triangles (raise it with ssaolab --max-triangles N)"), std::string::npos)
+        << e;
+}
+
+TEST(GltfHostile, ImagesAreNeverDecoded) {
+    // A JPEG header claiming 23000x23000 (4 GB to decode) and an image whose bufferView lies far
+    // outside its buffer: ssaolab uses no textures, so neither is decoded and the scene loads.
+    std::vector<unsigned char> jpeg = {0xFF, 0xD8, 0xFF, 0xC0, 0x00, 0x11, 0x08, 0x59, 0xD8, 0x59, 0xD8, 0x03,
+                                       0x01, 0x22, 0x00, 0x02, 0x11, 0x01, 0x03, 0x11, 0x01, 0xFF, 0xD9};
+    const std::string images =
+        R"("images":[{"uri":"data:image/jpeg;base64,)" + base64(jpeg) + R"("},{"bufferView":2,"mimeType":"image/png"}],)";
+    std::string g = patched(R"({"buffer":0,"byteOffset":36,"byteLength":3}])",
+                            R"({"buffer":0,"byteOffset":36,"byteLength":3},{"buffer":0,"byteOffset":36,"byteLength":100000}])",
+                            images);
+    const std::string path = writeTemp("images.gltf", g);
+    EXPECT_EQ(errorOf(path), "");
 }

@@ -67,12 +67,13 @@ TEST(NoisePack, KindsPyramidAndFlagsGoWhereTheShadersReadThem) {
     s.slices = 99, s.steps = -3; // clamped to the shader's limits
     s.thickness = -1.0f;         // no negative depth
     s.noise = AoNoise::Blue;
+    s.pyramid = true;
     auto c = packVbaoConstants(s, gpu::AoCommon{}, true);
     EXPECT_EQ(c.modes.x, VBAO_MAX_SLICES);
     EXPECT_EQ(c.modes.y, 1);
     EXPECT_EQ(c.params.x, 0.0f);
     EXPECT_EQ(int(c.aoCommon.shape.y), SSAO_NOISE_BLUE);
-    EXPECT_GT(c.aoCommon.shape.w, 0.0f); // pyramid on by default
+    EXPECT_GT(c.aoCommon.shape.w, 0.0f); // the pyramid's MIP offset
     EXPECT_EQ(c.modes.z, VBAO_FLAG_NOISE | VBAO_FLAG_NORMAL_UNORM);
     s.noise = AoNoise::None;
     s.pyramid = false;

@@ -1,6 +1,8 @@
 // Fitting the view to real scenes: clip planes from the bounds, and the orbit target of a glTF
 // camera on its view ray inside the scene (CornellBox, the millimetre engine).
+#include "scene/camera.h"
 #include "scene/view_fit.h"
+#include "util/error.h"
 
 #include <gtest/gtest.h>
 
@@ -67,4 +69,18 @@ TEST(ViewFit, FirstHitFindsTheNearestTriangle) {
     ASSERT_TRUE(hit.has_value());
     EXPECT_NEAR(*hit, 2.0f - s.bounds.max.y, 1e-4f);
     EXPECT_FALSE(firstHit(s, {0.0f, 2.0f, 0.0f}, {0.0f, 1.0f, 0.0f}).has_value());
+}
+
+TEST(CameraValidation, ADepthRangeTheDepthBufferCannotResolveIsRefused) {
+    // near 1e-9, far 1e9 passed validation and rendered an empty frame reported as AO 0/0/0.
+    Camera base;
+    std::string msg;
+    try {
+        parseCamera("0,0,5,0,0,0,0,1,0,60,1e-9,1e9", base);
+    } catch (const Error& e) {
+        msg = e.what();
+    }
+    EXPECT_NE(msg.find("far/near = 1e+18 exceeds 1e+08"), std::string::npos) << msg;
+    // 2CylinderEngine's own planes (0.05 .. 1e6) stay accepted.
+    EXPECT_NO_THROW(parseCamera("0,0,5,0,0,0,0,1,0,60,0.05,1e6", base));
 }

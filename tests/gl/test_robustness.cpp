@@ -115,3 +115,20 @@ TEST_F(Robustness, ShaderCompileErrorsNameFileAndLine) {
               0u);
     EXPECT_NE(real.program("passes/fullscreen.vert", "display/view.frag"), 0u);
 }
+
+TEST_F(Robustness, DenoisedAoNeverRoundsPastOne) {
+    // Seed 003's gaussian summed ones to 1.0000001-1.0000004 on every geometry pixel of
+    // 2CylinderEngine (weights <= 1 in float, products rounded on the GPU). Every filter clamps.
+    const char* scenes[] = {"/2CylinderEngine/2CylinderEngine.gltf", "/CornellBox/cornellBox.gltf"};
+    for (const char* sc : scenes)
+        for (const char* kind : {"gaussian", "box4", "box4c", "bilateral"}) {
+            Settings s = preset("seed003");
+            applyAssignment(s, std::string("denoise.kind=") + kind);
+            Rendered r = render(std::string(SSAOLAB_SCENES_DIR) + sc, s, 320, 180);
+            float hi = 0.0f;
+            for (float v : r.ao.data)
+                hi = std::max(hi, v);
+            EXPECT_LE(hi, 1.0f) << sc << " " << kind;
+            EXPECT_TRUE(finiteInRange(r.ao, 0.0f, 1.0f)) << sc << " " << kind;
+        }
+}

@@ -19,7 +19,8 @@ struct GtaoSettings {
     float distributionPower = 2.0f;  // steps at s^p of the radius: denser near the pixel (XeGTAO)
     float thinCompensation = 0.0f;   // thin-occluder heuristic: stretch depth deltas by (1 + t) (XeGTAO)
     GtaoNoise noise = GtaoNoise::Ign;
-    bool pyramid = true;             // far taps read the position pyramid (techniques/position_pyramid.h)
+    bool pyramid = false; // far taps read the position pyramid (techniques/position_pyramid.h): off,
+                          // it cost 6-22 % on llvmpipe for the same error (docs/benchmarks.md)
 };
 
 // Slices and steps per side of a quality level (XeGTAO vaGTAO.hlsl: Low 1x2, Medium 2x2, High 3x3,

@@ -15,7 +15,8 @@ struct HbaoSettings {
     float tangentBias = 0.1f;   // sin of the bias angle above the tangent plane (~6 degrees)
     float maxRadiusPx = 128.0f; // the projected radius is clamped to this many pixels (cache, cost)
     HbaoNoise noise = HbaoNoise::Ign;
-    bool pyramid = true;             // far taps read the position pyramid (techniques/position_pyramid.h)
+    bool pyramid = false; // far taps read the position pyramid (techniques/position_pyramid.h): off,
+                          // it cost 6-22 % on llvmpipe for the same error (docs/benchmarks.md)
 };
 
 } // namespace ssao
