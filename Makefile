@@ -26,8 +26,11 @@ screenshot: build
 	@SSAOLAB_PRESET_DIR=$$(mktemp -d) xvfb-run -a -s "-screen 0 1920x1080x24" \
 	  $(BUILD)/app/ssaolab view --size 1600x900 --frames 8 --screenshot assets/screenshots/explorer.png
 
+# Every test, then a short libFuzzer run (60 s a target, ASan+UBSan, build-fuzz/) of the glTF
+# loader and the settings parsers.
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	@bash .ci/fuzz.sh build-fuzz $(SCENES)
 
 # Golden AO images of the seed presets on builtin:showcase (tests/gl/test_golden.cpp compares).
 GOLDEN_PRESETS = learnopengl seed000 crytek-sphere seed001 seed003 seed003-separable
