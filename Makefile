@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build run test screenshot goldens bench presets fuzz clean
+.PHONY: deps configure build run test screenshot goldens bench presets stress fuzz clean
 
 deps:
 	@bash .ci/install-deps.sh
@@ -47,6 +47,11 @@ bench: build
 
 presets: build
 	@bash .ci/tune-presets.sh $(BUILD) $(SCENES)
+
+# docs/stability.md: every technique under extreme projections, scales, placements, precisions and
+# parameter limits (`ssaolab stress`).
+stress: build
+	@bash .ci/stress.sh $(BUILD) $(SCENES)
 
 # libFuzzer + ASan/UBSan on the glTF loader and the settings parsers (build-fuzz/, clang);
 # FUZZ_SECONDS per target (60 by default; `FUZZ_SECONDS=3600 make fuzz` for a long run).

@@ -41,6 +41,8 @@ MD
   echo
   echo "## Time against error (\`ssaolab bench\`, built-in sweep)"
   echo
+  # The hand-written reading of the front (docs/bench-discussion.md), dated to the run it reads.
+  if [ -f docs/bench-discussion.md ]; then cat docs/bench-discussion.md; echo; fi
   sed -e 's#](pareto.png)#](bench/pareto.png)#' "$OUT/report.md"
   echo
   echo "Per scene: ![per scene](bench/pareto_by_scene.png)"

@@ -6,6 +6,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/scene.h"
 #include "settings/params.h"
+#include "stress/stress_command.h"
 #include "settings/preset_store.h"
 #include "util/error.h"
 #include "util/paths.h"
@@ -63,6 +64,11 @@ int main(int argc, char** argv) {
     CLI::App* tune = app.add_subcommand(
         "tune", "fit one technique's parameters to the ray-traced reference; report held-out views; save JSON");
     ssao::addTuneOptions(*tune, to);
+    ssao::StressOptions so;
+    CLI::App* stress = app.add_subcommand(
+        "stress", "numerical stability: every technique under extreme projections, scales, placements, "
+                  "precisions and parameter limits; non-finite, out-of-range and invariance errors");
+    ssao::addStressOptions(*stress, so);
     app.add_subcommand("params", "list every parameter: key, default, unit, range, help");
     app.add_subcommand("paths", "where this binary finds its shaders, assets and presets");
     ssao::WindowOptions wo;
@@ -103,6 +109,7 @@ int main(int argc, char** argv) {
         }
         if (app.got_subcommand("bench")) return ssao::runBench(bo);
         if (app.got_subcommand("tune")) return ssao::runTune(to);
+        if (app.got_subcommand("stress")) return ssao::runStress(so);
         if (app.got_subcommand("view") || (!app.got_subcommand("render") && ssao::haveDisplay())) {
             ssao::parseSizeOption(windowSize, wo.width, wo.height); // strict, and within render's budget
             if (wo.width < 200 || wo.height < 150)

@@ -328,6 +328,9 @@ Scene loadGltf(const std::string& path) {
             if (ch == '\n') ch = ';';
         throw Error("cannot load glTF " + path + ": " + (msg.empty() ? "unknown error" : msg));
     }
+    if (!model.asset.version.empty() && model.asset.version[0] == '1')
+        throw Error("glTF " + path + " is glTF " + model.asset.version +
+                    "; only glTF 2.0 is supported (convert it, e.g. with gltf-pipeline)");
     for (const auto& ext : model.extensionsRequired)
         for (const char* bad : kUnsupportedExtensions)
             if (ext == bad) throw Error("glTF " + path + " requires unsupported extension " + ext);

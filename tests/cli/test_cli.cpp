@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 using ssaotest::slurp;
@@ -384,4 +385,78 @@ TEST(Cli, TuneFitsTheReferenceAndSavesAPresetThatRenders) {
                            outDir("tuned"));
     EXPECT_EQ(again.exitCode, 0) << again.err;
     expectCleanFailure(ssaolab("tune --technique nope"), "nope");
+}
+
+TEST(CliHostile, EveryAssimpTestModelRendersOrFailsWithOneLine) {
+    // Debian's assimp-testmodels: 53 glTF 1.0/2.0 files, many broken on purpose (indices out of
+    // range, recursive nodes, wrong JSON types, missing .bin, infinities, Draco, glTF 1.0). Each
+    // must render with finite AO or fail with one `ssaolab: error:` line: no signal, no hang.
+    namespace fs = std::filesystem;
+    const fs::path root = "/usr/share/assimp/models";
+    ASSERT_TRUE(fs::is_directory(root / "glTF2")) << "install assimp-testmodels (.ci/install-deps.sh)";
+    int rendered = 0, refused = 0;
+    for (const auto& e : fs::recursive_directory_iterator(root)) {
+        const std::string ext = e.path().extension().string();
+        if (ext != ".gltf" && ext != ".glb") continue;
+        const std::string out = outDir("assimp");
+        const std::string base = std::string(SSAOLAB_TEST_TMP) + "/assimp";
+        const std::string cmd = "timeout 60 '" + std::string(SSAOLAB_BINARY) + "' render --size 64x48 --quiet " +
+                                "--timing-frames 1 --scene '" + e.path().string() + "' --out " + out + " >" +
+                                base + ".out 2>" + base + ".err </dev/null";
+        const int status = std::system(cmd.c_str());
+        ASSERT_TRUE(WIFEXITED(status)) << e.path() << " was killed by a signal";
+        const int rc = WEXITSTATUS(status);
+        std::ifstream in(base + ".err");
+        std::stringstream err;
+        err << in.rdbuf();
+        const std::string text = err.str();
+        EXPECT_NE(rc, 124) << e.path() << " hung";
+        if (rc == 0) {
+            ++rendered;
+            std::ifstream m(out + "/metrics.json");
+            const auto j = nlohmann::json::parse(m, nullptr, false);
+            ASSERT_FALSE(j.is_discarded()) << e.path();
+            for (const auto& [name, st] : j["buffers"].items())
+                EXPECT_EQ(st.value("nonfinite", 0), 0) << e.path() << " " << name;
+        } else {
+            ++refused;
+            EXPECT_EQ(rc, 1) << e.path() << ": " << text;
+            EXPECT_EQ(text.rfind("ssaolab: error: ", 0), 0u) << e.path() << ": " << text;
+            EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << e.path() << ": " << text;
+        }
+    }
+    std::printf("assimp-testmodels: %d rendered, %d refused with one line\n", rendered, refused);
+    EXPECT_GE(rendered + refused, 50);
+    EXPECT_GE(rendered, 20);
+}
+
+TEST(CliStress, EveryTechniqueStaysFiniteInRangeAndInvariantUnderScaleAndTranslation) {
+    // `ssaolab stress` at a small size: no NaN/inf or out-of-range value in any case, scale and
+    // translation within RMSE 0.03 of the benign render (0.02 holds to 1e5 units from the origin; at
+    // 1e6 float positions are 1/16 unit apart: docs/stability.md), and the depth-range guard
+    // refuses far/near 1e9 with its one-line message.
+    const std::string out = outDir("stress");
+    CliRun r = ssaolab("stress --quiet --size 128x72 --tolerance 0.03 --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    std::ifstream in(out + "/stress.json");
+    const auto j = nlohmann::json::parse(in, nullptr, false);
+    ASSERT_FALSE(j.is_discarded());
+    std::set<std::string> techs;
+    int refusedDepth = 0, invariant = 0;
+    for (const auto& row : j["rows"]) {
+        techs.insert(row["technique"].get<std::string>());
+        EXPECT_EQ(row["nonfinite"].get<long>(), 0) << row.dump();
+        EXPECT_EQ(row["outside"].get<long>(), 0) << row.dump();
+        if (row["status"] == "refused" && row["message"].get<std::string>().find("far/near") != std::string::npos)
+            ++refusedDepth;
+        if (row["invariant"].get<bool>() && row["status"] == "ok") {
+            ++invariant;
+            EXPECT_LE(row["rmse"].get<double>(), 0.03) << row.dump();
+        }
+    }
+    EXPECT_EQ(techs.size(), 5u);
+    EXPECT_GE(refusedDepth, 5);   // far 1e5 x diag and the 1e9 pair, for every technique
+    EXPECT_EQ(invariant, 5 * 10); // 6 scales + 4 translations per technique
+    std::ifstream md(out + "/stability.md");
+    EXPECT_TRUE(md.good());
 }

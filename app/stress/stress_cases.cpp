@@ -1,0 +1,129 @@
+#include "stress/stress_cases.h"
+
+#include "settings/params.h"
+
+#include <cstdio>
+
+namespace ssao {
+
+namespace {
+// Makes `p` apply: each condition's key set to its first allowed value (recursively).
+void makeApplyFor(Settings& s, const Param& p) {
+    for (const auto& c : p.when) {
+        const Param* q = findParam(c.key);
+        if (!q) continue;
+        makeApplyFor(s, *q);
+        setParam(s, c.key, c.values.front());
+    }
+}
+
+std::string sci(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+} // namespace
+
+Scene transformScene(const Scene& s, double scale, const glm::dvec3& offset) {
+    Scene out = s;
+    for (Vertex& v : out.vertices)
+        v.position = glm::vec3(glm::dvec3(v.position) * scale + offset);
+    if (out.camera) *out.camera = transformCamera(*out.camera, scale, offset);
+    for (auto& [name, c] : out.cameras)
+        c = transformCamera(c, scale, offset);
+    out.computeBounds();
+    return out;
+}
+
+Camera transformCamera(const Camera& c, double scale, const glm::dvec3& offset) {
+    Camera out = c;
+    out.eye = glm::vec3(glm::dvec3(c.eye) * scale + offset);
+    out.target = glm::vec3(glm::dvec3(c.target) * scale + offset);
+    out.nearZ = float(double(c.nearZ) * scale);
+    out.farZ = float(double(c.farZ) * scale);
+    return out;
+}
+
+std::vector<StressCase> stressCases(const std::string& technique) {
+    std::vector<StressCase> cases;
+    // Projection: fixed planes, in units of the scene's bounding-box diagonal so every scene sees
+    // the same ratios (up to 1e11; past 1e8 the camera check refuses, which the report shows).
+    for (double n : {1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1}) {
+        StressCase c{"near", sci(n) + " x diag"};
+        c.nearZ = float(n), c.farZ = 10.0f;
+        cases.push_back(c);
+    }
+    for (double f : {1.0, 10.0, 1e2, 1e3, 1e4, 1e5}) {
+        StressCase c{"far", sci(f) + " x diag"};
+        c.nearZ = 1e-3f, c.farZ = float(f);
+        cases.push_back(c);
+    }
+    StressCase nf{"near/far", "1e-5 / 1e4 x diag"};
+    nf.nearZ = 1e-5f, nf.farZ = 1e4f; // a 1e9 ratio
+    cases.push_back(nf);
+    // Scale and placement: the radius follows the scene (scene mode), so AO must not change.
+    for (double s : {1e-3, 1e-2, 1e-1, 10.0, 1e2, 1e3}) {
+        StressCase c{"scale", "x" + sci(s)};
+        c.scale = s, c.invariant = true;
+        cases.push_back(c);
+    }
+    for (double t : {1e3, 1e4, 1e5, 1e6}) {
+        StressCase c{"translate", "+" + sci(t)};
+        c.offset = glm::dvec3(t, 0.5 * t, -0.25 * t), c.invariant = true;
+        cases.push_back(c);
+    }
+    // G-buffer precision.
+    for (const char* a : {"gbuffer.position_format=rgba16f", "gbuffer.normal_format=rgba8",
+                          "gbuffer.normal_format=rgba32f", "kernel.position_source=depth", "ao.normals=depth"}) {
+        if (technique != "kernel" && std::string(a).rfind("kernel.", 0) == 0) continue;
+        StressCase c{"gbuffer", a};
+        const std::string assignment = a;
+        c.settings = [assignment](Settings& s) { applyAssignment(s, assignment); };
+        cases.push_back(c);
+    }
+    // Every parameter that applies to this technique, at both ends of its range.
+    for (const Param& p : paramTable()) {
+        const std::string g = p.group();
+        if (g != "ao" && g != "denoise" && g != technique) continue;
+        if (p.key == "ao.technique") continue;
+        if (p.type != Param::Type::Float && p.type != Param::Type::Int) continue;
+        for (double v : {p.min, p.max}) {
+            StressCase c{"limits", p.key + "=" + p.format(v)};
+            const std::string key = p.key;
+            c.settings = [key, v](Settings& s) {
+                const Param* q = findParam(key);
+                makeApplyFor(s, *q);
+                q->set(s, v);
+            };
+            cases.push_back(c);
+        }
+    }
+    // Awkward cameras: inside the geometry, on a surface, grazing, looking away from everything.
+    {
+        StressCase c{"camera", "inside the scene's centre"};
+        c.camera = [](Camera& cam, const Scene& s) {
+            const glm::vec3 d = cam.target - cam.eye;
+            cam.eye = s.bounds.center();
+            cam.target = cam.eye + d;
+        };
+        cases.push_back(c);
+        StressCase g{"camera", "grazing the floor"};
+        g.camera = [](Camera& cam, const Scene& s) {
+            const glm::vec3 lo = s.bounds.min, hi = s.bounds.max;
+            cam.eye = glm::vec3(lo.x, lo.y + 1e-3f * (hi.y - lo.y), lo.z);
+            cam.target = glm::vec3(hi.x, lo.y, hi.z);
+            cam.up = glm::vec3(0, 1, 0);
+        };
+        cases.push_back(g);
+        StressCase a{"camera", "looking away"};
+        a.camera = [](Camera& cam, const Scene& s) {
+            const glm::vec3 d = glm::normalize(s.bounds.center() - cam.eye);
+            cam.eye = s.bounds.center() - d * (2.0f * s.bounds.radius());
+            cam.target = cam.eye - d;
+        };
+        cases.push_back(a);
+    }
+    return cases;
+}
+
+} // namespace ssao

@@ -1,0 +1,35 @@
+// The conditions under which SSAO breaks, as data (issue 9, `ssaolab stress`): projection (near
+// and far planes), scale and placement of the whole scene, G-buffer precision, every parameter at
+// the ends of its range, and awkward cameras. Each case says how it changes the scene, the camera
+// and the settings, and whether the AO must equal the benign render's (invariance: scaling the
+// scene and its radius together, moving it far from the origin).
+#pragma once
+#include "scene/camera.h"
+#include "scene/scene.h"
+#include "settings/settings.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace ssao {
+
+struct StressCase {
+    std::string axis;    // "near", "far", "scale", "translate", "gbuffer", "limits", "camera"
+    std::string variant; // e.g. "1e-4", "x1000", "gtao.steps=32"
+    double scale = 1.0;              // the scene and the camera scaled about the origin ...
+    glm::dvec3 offset{0.0};          // ... then moved by this (scene units)
+    float nearZ = 0.0f, farZ = 0.0f; // > 0: fixed clip planes, x the scene's diagonal (else fitted)
+    std::function<void(Settings&)> settings;            // null: unchanged
+    std::function<void(Camera&, const Scene&)> camera;  // null: the scene's view
+    bool invariant = false; // AO must match the benign render (within the stated RMSE)
+};
+
+// Every case for a technique (its own rows at their limits included).
+std::vector<StressCase> stressCases(const std::string& technique);
+
+// The scene scaled about the origin then translated (positions in double, then stored as float).
+Scene transformScene(const Scene& s, double scale, const glm::dvec3& offset);
+Camera transformCamera(const Camera& c, double scale, const glm::dvec3& offset);
+
+} // namespace ssao

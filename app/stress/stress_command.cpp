@@ -1,0 +1,159 @@
+#include "stress/stress_command.h"
+
+#include "gl/context.h"
+#include "output/image.h"
+#include "render_command.h"
+#include "renderer.h"
+#include "scene/view_fit.h"
+#include "stress/stress_cases.h"
+#include "stress/stress_report.h"
+#include "techniques/technique.h"
+#include "util/error.h"
+#include "util/paths.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+namespace ssao {
+
+void addStressOptions(CLI::App& cmd, StressOptions& o) {
+    cmd.add_option("--scene", o.scenes, "scene (repeatable; default builtin:showcase)");
+    cmd.add_option("--technique", o.techniques, "technique (repeatable; default every one)");
+    cmd.add_option("--size", o.size, "render size")->capture_default_str();
+    cmd.add_option("--tolerance", o.tolerance,
+                   "largest RMSE against the benign render allowed where AO must not change (scale, translation)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
+    cmd.add_option("--out", o.out, "output folder (stress.json, stability.md)")->capture_default_str();
+    cmd.add_flag("--quiet", o.quiet, "no progress output");
+}
+
+namespace {
+
+struct Frame {
+    Image raw, ao, mask;
+};
+
+Frame renderFrame(Renderer& r) {
+    do
+        r.render();
+    while (r.accumulating());
+    return {readBack(r.texture("ao.raw"), 1), readBack(r.texture("ao.denoised"), 1),
+            readBack(r.texture("gbuffer.depth"), 1)};
+}
+
+// Non-finite values, and finite values outside [0,1], over every pixel.
+void countBad(const Image& img, long& nonFinite, long& outside) {
+    for (float v : img.data) {
+        if (!std::isfinite(v)) ++nonFinite;
+        else if (v < 0.0f || v > 1.0f) ++outside;
+    }
+}
+
+// RMSE over pixels with geometry in both, and the share of pixels whose coverage differs.
+void compare(const Frame& a, const Frame& b, double& rmse, double& coverage) {
+    double se = 0;
+    long n = 0, differ = 0;
+    const size_t count = std::min(a.ao.data.size(), b.ao.data.size());
+    for (size_t i = 0; i < count; ++i) {
+        const bool ga = a.mask.data[i] > 0.0f, gb = b.mask.data[i] > 0.0f;
+        if (ga != gb) ++differ;
+        if (!ga || !gb) continue;
+        const double d = double(a.ao.data[i]) - double(b.ao.data[i]);
+        se += d * d, ++n;
+    }
+    rmse = n ? std::sqrt(se / double(n)) : 0.0;
+    coverage = count ? double(differ) / double(count) : 0.0;
+}
+
+} // namespace
+
+int runStress(const StressOptions& o) {
+    int w = 0, h = 0;
+    parseSizeOption(o.size, w, h);
+    std::vector<std::string> techs = o.techniques;
+    if (techs.empty())
+        for (const auto& t : techniques())
+            techs.push_back(t.id);
+    for (const auto& t : techs)
+        findTechnique(t); // names the known ones
+    const std::vector<std::string> specs =
+        o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
+
+    gl::HeadlessContext ctx;
+    Renderer r(shaderRoot());
+    r.setSize(w, h);
+    StressRun run;
+    run.size = o.size;
+    run.tolerance = o.tolerance;
+    for (const auto& spec : specs) {
+        Scene base = loadScene(spec);
+        const std::string sceneName =
+            spec.rfind("builtin:", 0) == 0 ? spec : std::filesystem::path(spec).stem().string();
+        const Camera cam0 = base.camera.value_or(frameBounds(base.bounds));
+        for (const auto& tech : techs) {
+            Settings s = defaultSettings();
+            s.ao.technique = tech;
+            r.setScene(base);
+            Camera c0 = cam0;
+            c0.clip = ClipMode::Fit;
+            r.setCamera(c0);
+            r.setSettings(s);
+            const Frame benign = renderFrame(r);
+            const std::vector<StressCase> cases = stressCases(tech);
+            if (!o.quiet) std::fprintf(stderr, "stress: %s %s: %zu cases\n", sceneName.c_str(), tech.c_str(), cases.size());
+            bool transformed = false;
+            for (const StressCase& sc : cases) {
+                StressRow row;
+                row.scene = sceneName, row.technique = tech, row.axis = sc.axis, row.variant = sc.variant;
+                row.invariant = sc.invariant;
+                try {
+                    const bool moves = sc.scale != 1.0 || sc.offset != glm::dvec3(0.0);
+                    Scene moved;
+                    if (moves) moved = transformScene(base, sc.scale, sc.offset);
+                    const Scene& scene = moves ? moved : base;
+                    if (moves || transformed) r.setScene(scene);
+                    transformed = moves;
+                    Camera c = transformCamera(cam0, sc.scale, sc.offset);
+                    c.clip = ClipMode::Fit;
+                    if (sc.camera) sc.camera(c, scene);
+                    if (sc.nearZ > 0.0f) {
+                        c.clip = ClipMode::Fixed;
+                        const double diag = 2.0 * double(scene.bounds.radius());
+                        c.nearZ = float(double(sc.nearZ) * diag);
+                        c.farZ = float(double(sc.farZ) * diag);
+                    }
+                    Settings cs = s;
+                    if (sc.settings) sc.settings(cs);
+                    r.setCamera(c);
+                    r.setSettings(cs);
+                    const Frame f = renderFrame(r);
+                    countBad(f.raw, row.nonFinite, row.outside);
+                    countBad(f.ao, row.nonFinite, row.outside);
+                    const Stats st = stats(f.ao, &f.mask);
+                    row.mean = st.count ? st.mean : 1.0;
+                    row.geometry = st.count;
+                    if (sc.invariant) compare(f, benign, row.rmse, row.coverage);
+                    row.status = "ok";
+                } catch (const Error& e) {
+                    row.status = "refused";
+                    row.message = e.what();
+                }
+                run.rows.push_back(std::move(row));
+            }
+            if (transformed) r.setScene(base);
+        }
+    }
+    writeStressFiles(run, o.out);
+    const StressVerdict v = verdict(run);
+    std::printf("stress: %zu cases, %ld non-finite and %ld out-of-range values, %d invariance cases over RMSE %g, "
+                "%d refused by a guard; wrote %s/{stress.json,stability.md}\n",
+                run.rows.size(), v.nonFinite, v.outside, v.invarianceFailures, o.tolerance, v.refused,
+                o.out.c_str());
+    return v.ok() ? 0 : 1;
+}
+
+} // namespace ssao
