@@ -10,11 +10,15 @@ SIZE=${BENCH_SIZE:-1280x720}
 OUT=docs/bench
 mkdir -p "$OUT"
 
+# BENCH_REPORT_ONLY=1: reassemble docs/benchmarks.md from the last run's files (e.g. after editing
+# docs/bench-discussion.md) without measuring again.
+if [ -z "${BENCH_REPORT_ONLY:-}" ]; then
 "$BUILD/tests/bench_reference" --benchmark_min_time=2 2>/dev/null | tee "$OUT/reference_rays.txt"
 "$BUILD/app/ssaolab" bench \
   --scene "$SCENES/CornellBox/cornellBox.gltf" --scene "$SCENES/FlightHelmet/FlightHelmet.gltf" \
   --scene "$SCENES/2CylinderEngine/2CylinderEngine.gltf" --scene "$SCENES/Lantern/Lantern.gltf" \
   --size "$SIZE" --views 3 --frames "${BENCH_FRAMES:-10}" --out "$OUT"
+fi
 
 {
   cat <<'MD'

@@ -20,7 +20,7 @@ struct GtaoSettings {
     float thinCompensation = 0.0f;   // thin-occluder heuristic: stretch depth deltas by (1 + t) (XeGTAO)
     GtaoNoise noise = GtaoNoise::Ign;
     bool pyramid = false; // far taps read the position pyramid (techniques/position_pyramid.h): off,
-                          // it cost 6-22 % on llvmpipe for the same error (docs/benchmarks.md)
+                          // it cost 9-13 % on llvmpipe for the same error (docs/benchmarks.md)
 };
 
 // Slices and steps per side of a quality level (XeGTAO vaGTAO.hlsl: Low 1x2, Medium 2x2, High 3x3,

@@ -16,7 +16,7 @@ struct HbaoSettings {
     float maxRadiusPx = 128.0f; // the projected radius is clamped to this many pixels (cache, cost)
     HbaoNoise noise = HbaoNoise::Ign;
     bool pyramid = false; // far taps read the position pyramid (techniques/position_pyramid.h): off,
-                          // it cost 6-22 % on llvmpipe for the same error (docs/benchmarks.md)
+                          // it cost 9-13 % on llvmpipe for the same error (docs/benchmarks.md)
 };
 
 } // namespace ssao

@@ -16,7 +16,7 @@ struct SaoSettings {
     float bias = 0.012f;    // β: v·n must exceed this fraction of R (SAO's 0.012 at R = 1)
     SaoNoise noise = SaoNoise::Ign;
     bool pyramid = false; // far taps read the position pyramid (techniques/position_pyramid.h): off,
-                          // it cost 6-22 % on llvmpipe for the same error (docs/benchmarks.md)
+                          // it cost 9-13 % on llvmpipe for the same error (docs/benchmarks.md)
 };
 
 } // namespace ssao

@@ -16,7 +16,7 @@ struct VbaoSettings {
     float distributionPower = 2.0f; // step k of n at (k/n)^p of the radius, denser near the pixel
     AoNoise noise = AoNoise::Ign;
     bool pyramid = false; // far taps read the position pyramid (techniques/position_pyramid.h): off,
-                          // it cost 6-22 % on llvmpipe for the same error (docs/benchmarks.md)
+                          // it cost 9-13 % on llvmpipe for the same error (docs/benchmarks.md)
 };
 
 } // namespace ssao
