@@ -16,6 +16,7 @@ cmake --build "$BUILD" -j "$(nproc)" --target fuzz_gltf fuzz_settings
 
 CORPUS="$BUILD/corpus"
 mkdir -p "$CORPUS/gltf" "$CORPUS/settings"
+rm -f "$BUILD"/crash-* "$BUILD"/leak-* "$BUILD"/timeout-* "$BUILD"/oom-*
 cp tests/fuzz/seeds/gltf/* "$CORPUS/gltf/"
 find "$SCENES" -name '*.gltf' -size -2M -exec cp {} "$CORPUS/gltf/" \; 2>/dev/null || true
 cp tests/fuzz/seeds/settings/* "$CORPUS/settings/"
@@ -29,9 +30,11 @@ for target in fuzz_gltf fuzz_settings; do
   dir=$CORPUS/${target#fuzz_}
   echo "fuzz: $target for ${SECONDS_EACH}s on $(ls "$dir" | wc -l) seeds"
   (cd "$BUILD" && "./tests/fuzz/$target" -max_total_time="$SECONDS_EACH" -timeout=20 -rss_limit_mb=3072 \
-     -print_final_stats=1 "corpus/${target#fuzz_}" 2>&1 | grep -E "stat::number_of_executed_units|stat::peak_rss|ERROR|SUMMARY|crash-|Done" || true)
-  if ls "$BUILD"/crash-* "$BUILD"/leak-* "$BUILD"/timeout-* "$BUILD"/oom-* >/dev/null 2>&1; then
-    echo "fuzz: $target found a failing input:"; ls "$BUILD"/crash-* "$BUILD"/leak-* "$BUILD"/timeout-* "$BUILD"/oom-* 2>/dev/null
+     -print_final_stats=1 "corpus/${target#fuzz_}" 2>&1 | grep -E "stat::number_of_executed_units|stat::peak_rss|ERROR|SUMMARY|crash-|Done|what\(\)|terminate called| in ssao::" || true)
+  found=$(find "$BUILD" -maxdepth 1 \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' -o -name 'oom-*' \))
+  if [ -n "$found" ]; then
+    echo "fuzz: $target found a failing input (reproduce: $BUILD/tests/fuzz/$target FILE):"
+    echo "$found"
     exit 1
   fi
 done

@@ -59,6 +59,16 @@ std::string labelOf(const nlohmann::json& keys) {
 
 } // namespace
 
+namespace {
+// A text field of the sweep file: absent → `fallback`, anything but a string → an error naming it
+// (nlohmann's value() would throw its own type_error, naming neither the file nor the key).
+std::string textField(const nlohmann::json& j, const char* key, const std::string& fallback, const std::string& where) {
+    if (!j.contains(key)) return fallback;
+    if (!j[key].is_string()) throw Error(where + ": '" + key + "' must be a string");
+    return j[key].get<std::string>();
+}
+} // namespace
+
 Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::string& presetDir,
                  size_t maxConfigs) {
     if (!j.is_object()) throw Error(origin + ": a sweep is a JSON object");
@@ -66,15 +76,15 @@ Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::
         if (k != "name" && k != "description" && k != "base" && k != "groups")
             throw Error(origin + ": unknown key '" + k + "' (name, description, base, groups)");
     Sweep sw;
-    sw.name = j.value("name", std::string("sweep"));
-    sw.description = j.value("description", std::string());
+    sw.name = textField(j, "name", "sweep", origin);
+    sw.description = textField(j, "description", "", origin);
     const PresetStore store = PresetStore::standard(presetDir);
     Settings base = defaultSettings();
     nlohmann::json baseKeys = nlohmann::json::object();
     if (j.contains("base")) {
         const auto& b = j["base"];
         if (!b.is_object()) throw Error(origin + ": base: expected {\"preset\": ..., \"set\": {...}}");
-        const std::string preset = b.value("preset", std::string());
+        const std::string preset = textField(b, "preset", "", origin + ": base");
         if (!preset.empty()) {
             base = store.open(preset).settings;
             resetRadius(base);
@@ -108,7 +118,8 @@ Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::
         if (!groups.is_array()) throw Error(origin + ": groups: expected an array");
         for (size_t gi = 0; gi < groups.size(); ++gi) {
             const auto& g = groups[gi];
-            const std::string gname = g.value("name", "group " + std::to_string(gi + 1));
+            if (!g.is_object()) throw Error(origin + ": group " + std::to_string(gi + 1) + " must be an object");
+            const std::string gname = textField(g, "name", "group " + std::to_string(gi + 1), origin);
             const std::string where = origin + ": group '" + gname + "'";
             for (auto& [k, v] : g.items())
                 if (k != "name" && k != "preset" && k != "set" && k != "vary")

@@ -114,6 +114,12 @@ TEST(BenchSweep, BadSweepsAreRefusedNamingTheProblem) {
     fails(R"({"base": {"preset": "no-such-preset"}})", "no-such-preset");
     fails(R"({"groups": [{"preset": "no-such-preset"}]})", "no-such-preset");
     fails(R"({"groups": [{"preset": 3}]})", "preset name");
+    // Found by tests/fuzz/fuzz_settings: a non-string name threw nlohmann's type_error, naming nothing.
+    fails(R"({"name": [{"name": "a"}]})", "'name' must be a string");
+    fails(R"({"description": 3})", "'description' must be a string");
+    fails(R"({"base": {"preset": []}})", "'preset' must be a string");
+    fails(R"({"groups": [{"name": {}}]})", "'name' must be a string");
+    fails(R"({"groups": [3]})", "group 1 must be an object");
     fails(R"({"groups": [{"vary": {"kernel.samples": [1,2,3,4,5,6,7,8,9,10], "kernel.bias": [0,0.1,0.2,0.3,0.4,0.5,0.6,0.7,0.8,0.9], "kernel.seed": [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19,20,21]}}]})",
           "more than");
 }
