@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build run test screenshot goldens bench presets stress fuzz clean
+.PHONY: deps configure build run test screenshot goldens bench presets stress fuzz test-sanitize clean
 
 deps:
 	@bash .ci/install-deps.sh
@@ -52,6 +52,16 @@ presets: build
 # parameter limits (`ssaolab stress`).
 stress: build
 	@bash .ci/stress.sh $(BUILD) $(SCENES)
+
+# The whole test suite built with AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/);
+# Mesa's own allocations that outlive eglTerminate are suppressed by library (.ci/lsan.supp; the
+# sanitizer build keeps Mesa's driver mapped so LeakSanitizer can name it, renderer/gl/context.cpp).
+test-sanitize: deps
+	@cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSAOLAB_SANITIZE=ON >/dev/null
+	@cmake --build build-asan -j $(JOBS)
+	@cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/.ci/lsan.supp:print_suppressions=0 \
+	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS)
 
 # libFuzzer + ASan/UBSan on the glTF loader and the settings parsers (build-fuzz/, clang);
 # FUZZ_SECONDS per target (60 by default; `FUZZ_SECONDS=3600 make fuzz` for a long run).

@@ -66,6 +66,7 @@ void screenshot(int w, int h, const std::string& path) {
 struct GlfwSession {
     GlfwSession() {
         glfwSetErrorCallback(onGlfwError);
+        gl::pinMesaForLeakSanitizer();
         if (!glfwInit())
             throw Error(
                 "no display: cannot open a window (" + g_glfwError +

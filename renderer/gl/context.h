@@ -9,6 +9,10 @@ namespace ssao::gl {
 
 enum class EglPlatform { Auto, Device, Surfaceless };
 
+// Sanitizer builds: keeps Mesa's driver libraries mapped until exit so LeakSanitizer can name (and
+// .ci/lsan.supp suppress) the allocations Mesa keeps past eglTerminate. Does nothing otherwise.
+void pinMesaForLeakSanitizer();
+
 class HeadlessContext {
   public:
     explicit HeadlessContext(EglPlatform platform = EglPlatform::Auto);
