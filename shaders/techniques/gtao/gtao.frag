@@ -11,6 +11,7 @@
 #include "include/ao_common.glsl"
 #include "include/noise.glsl"
 #include "include/position_taps.glsl"
+#include "include/slice.glsl"
 #include "include/inspect.glsl"
 
 layout(std140, binding = SSAO_UBO_AO) uniform GtaoBlock { GtaoConstants_ ssao; };
@@ -20,13 +21,8 @@ layout(binding = SSAO_TEX_NORMAL) uniform sampler2D gNormal;
 in vec2 vUv;
 layout(location = 0) out float oAO;
 
-const float PI = 3.14159265358979;
-const float HALF_PI = 1.57079632679490;
 
 bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
-
-// acos of a cosine that rounding may have pushed past ±1 (acos(1 + ε) is NaN on llvmpipe).
-float safeAcos(float x) { return acos(clamp(x, -1.0, 1.0)); }
 
 void main() {
     vec2 uv0 = aoPixelUv(vUv); // the G-buffer texel this AO pixel stands for
@@ -55,16 +51,9 @@ void main() {
 
     float visibility = 0.0;
     for (int slice = 0; slice < slices; ++slice) {
-        float phi = (float(slice) + noise.x) / float(slices) * PI;
-        vec2 omega = vec2(cos(phi), sin(phi)); // pixel space, y up like view space
-        vec3 dirV = vec3(omega, 0.0);
-        // The slice plane holds V and dirV; project the normal into it.
-        vec3 orthoDir = dirV - dot(dirV, V) * V;
-        vec3 axis = normalize(cross(orthoDir, V));
-        vec3 projN = N - axis * dot(N, axis);
-        float projNLen = length(projN);
-        float cosNorm = clamp(dot(projN, V) / max(projNLen, 1e-6), 0.0, 1.0);
-        float n = sign(dot(orthoDir, projN)) * safeAcos(cosNorm); // normal's angle from V in the slice
+        AoSlice sl = aoSlice((float(slice) + noise.x) / float(slices) * PI, V, N);
+        vec2 omega = sl.omega;
+        float projNLen = sl.projNLen, cosNorm = sl.cosN, n = sl.n; // n: the normal's angle from V
         // With no occluder the horizons are the tangent plane: n ± π/2.
         float lowCos0 = cos(n + HALF_PI), lowCos1 = cos(n - HALF_PI);
         float hCos0 = lowCos0, hCos1 = lowCos1;

@@ -13,6 +13,7 @@
 #include "include/ao_common.glsl"
 #include "include/noise.glsl"
 #include "include/position_taps.glsl"
+#include "include/slice.glsl"
 #include "include/inspect.glsl"
 
 layout(std140, binding = SSAO_UBO_AO) uniform VbaoBlock { VbaoConstants_ ssao; };
@@ -22,11 +23,8 @@ layout(binding = SSAO_TEX_NORMAL) uniform sampler2D gNormal;
 in vec2 vUv;
 layout(location = 0) out float oAO;
 
-const float PI = 3.14159265358979;
-const float HALF_PI = 1.57079632679490;
 
 bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
-float safeAcos(float x) { return acos(clamp(x, -1.0, 1.0)); } // acos(1 + ε) is NaN on llvmpipe
 
 // ∫₀ʰ cos(θ - n)|sin θ| dθ with the sign of h: the cosine-weighted measure between V and angle h
 // in a slice (GTAO's inner integral; weight of [a, b] = G(b) - G(a)).
@@ -63,15 +61,9 @@ void main() {
 
     float visibility = 0.0;
     for (int slice = 0; slice < slices; ++slice) {
-        float phi = (float(slice) + noise.x) / float(slices) * PI;
-        vec2 omega = vec2(cos(phi), sin(phi));
-        vec3 dirV = vec3(omega, 0.0);
-        vec3 orthoDir = dirV - dot(dirV, V) * V;
-        vec3 axis = normalize(cross(orthoDir, V));
-        vec3 projN = N - axis * dot(N, axis);
-        float projNLen = length(projN);
-        float cosN = clamp(dot(projN, V) / max(projNLen, 1e-6), 0.0, 1.0);
-        float n = sign(dot(orthoDir, projN)) * safeAcos(cosN);
+        AoSlice sl = aoSlice((float(slice) + noise.x) / float(slices) * PI, V, N);
+        vec2 omega = sl.omega;
+        float projNLen = sl.projNLen, cosN = sl.cosN, n = sl.n;
         float sinN = sin(n);
         uint mask = 0u;
         for (int step = 0; step < steps; ++step) {
