@@ -177,7 +177,7 @@ TEST(Cli, BadInputGivesOneClearLineAndExitCodeOne) {
     expectCleanFailure(ssaolab("render --clip fixed --camera 0,0,5,0,0,0,0,1,0,60,1e-9,1e9" + out), "far/near");
     {
         namespace fs = std::filesystem;
-        const std::string bad = std::string(SSAOLAB_TEST_TMP) + "/broken_shaders";
+        const std::string bad = std::string(SSAOLAB_TEST_TMP) + "/broken_shaders_cli"; // not Robustness's folder
         fs::remove_all(bad);
         fs::copy(std::string(SSAOLAB_SOURCE_DIR) + "/shaders", bad, fs::copy_options::recursive);
         std::ofstream(bad + "/passes/composite.frag", std::ios::app) << "garbage(\n";

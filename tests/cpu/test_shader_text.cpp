@@ -9,8 +9,11 @@
 using namespace ssao;
 
 namespace {
+// One folder per test: ctest runs the tests of this file in parallel processes, and a shared folder
+// let one test truncate main.frag while another read it (a flaky "must start with #version").
 std::string makeDir() {
-    std::string dir = std::string(SSAOLAB_TEST_TMP) + "/shaders";
+    std::string dir = std::string(SSAOLAB_TEST_TMP) + "/shaders_" +
+                      ::testing::UnitTest::GetInstance()->current_test_info()->name();
     std::filesystem::create_directories(dir + "/include");
     std::ofstream(dir + "/include/a.glsl") << "float a() { return 1.0; }\n";
     std::ofstream(dir + "/main.frag") << "#version 450 core\n// comment\n#include "
