@@ -20,9 +20,19 @@ struct TechniqueInfo {
     std::string summary; // one line: what it estimates and where it comes from
     std::function<std::vector<Param>()> params; // rows "id.*"
     // Its passes for one chain: together they read gbuffer.* and write the chain's ao.raw
-    // (prefilters, mip chains or deinterleaving are passes of their own, wired by declarations).
+    // (a helper image only that pass reads, like the position pyramid, stays inside it; one that
+    // several passes share would be a pass of its own, wired by declarations).
     std::function<std::vector<std::unique_ptr<Pass>>(const Branch&)> makePasses;
 };
+
+// makePasses for a technique that is one pass of type P (every technique so far).
+template <class P> std::function<std::vector<std::unique_ptr<Pass>>(const Branch&)> onePass() {
+    return [](const Branch& b) {
+        std::vector<std::unique_ptr<Pass>> passes;
+        passes.push_back(std::make_unique<P>(b));
+        return passes;
+    };
+}
 
 const std::vector<TechniqueInfo>& techniques();
 // Throws ssao::Error listing the known ids.

@@ -46,11 +46,7 @@ TechniqueInfo gtaoTechnique() {
     return {"gtao", "GTAO (Jimenez 2016 / XeGTAO)",
             "Horizon-based, cosine-weighted visibility integrated analytically per slice: Jimenez et al. "
             "2016, Intel XeGTAO",
-            gtaoParams, [](const Branch& b) {
-                std::vector<std::unique_ptr<Pass>> passes;
-                passes.push_back(std::make_unique<GtaoPass>(b));
-                return passes;
-            }};
+            gtaoParams, onePass<GtaoPass>()};
 }
 
 } // namespace ssao

@@ -29,11 +29,7 @@ TechniqueInfo hbaoTechnique() {
     return {"hbao", "HBAO (Bavoil 2008)",
             "Horizon-based: the highest horizon above the tangent plane along D directions, linear falloff: "
             "Bavoil, Sainz, Dimitrov 2008 (seed 002), NVIDIA HBAO+",
-            hbaoParams, [](const Branch& b) {
-                std::vector<std::unique_ptr<Pass>> passes;
-                passes.push_back(std::make_unique<HbaoPass>(b));
-                return passes;
-            }};
+            hbaoParams, onePass<HbaoPass>()};
 }
 
 } // namespace ssao

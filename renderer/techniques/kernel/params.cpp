@@ -53,11 +53,7 @@ TechniqueInfo kernelTechnique() {
     return {"kernel", "Kernel SSAO (seeds)",
             "N samples in a hemisphere (or sphere) kernel tested against depth: Crytek 2007, Chapman 2013, "
             "LearnOpenGL",
-            kernelParams, [](const Branch& b) {
-                std::vector<std::unique_ptr<Pass>> passes;
-                passes.push_back(std::make_unique<KernelPass>(b));
-                return passes;
-            }};
+            kernelParams, onePass<KernelPass>()};
 }
 
 } // namespace ssao

@@ -30,11 +30,7 @@ TechniqueInfo saoTechnique() {
     return {"sao", "SAO / Alchemy AO (McGuire 2011/2012)",
             "Spiral taps, falloff-weighted obscurance max(0, v.n - bias)/(v.v + eps): McGuire et al. 2011 "
             "(Alchemy AO), McGuire, Mara, Luebke 2012 (SAO)",
-            saoParams, [](const Branch& b) {
-                std::vector<std::unique_ptr<Pass>> passes;
-                passes.push_back(std::make_unique<SaoPass>(b));
-                return passes;
-            }};
+            saoParams, onePass<SaoPass>()};
 }
 
 } // namespace ssao

@@ -30,11 +30,7 @@ TechniqueInfo vbaoTechnique() {
     return {"vbao", "Visibility bitmask (Therrien 2023)",
             "GTAO's slices with a 32-sector occlusion bitmask per slice and an assumed thickness: Therrien, "
             "Levesque, Gilet 2023",
-            vbaoParams, [](const Branch& b) {
-                std::vector<std::unique_ptr<Pass>> passes;
-                passes.push_back(std::make_unique<VbaoPass>(b));
-                return passes;
-            }};
+            vbaoParams, onePass<VbaoPass>()};
 }
 
 } // namespace ssao
