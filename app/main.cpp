@@ -81,6 +81,8 @@ int main(int argc, char** argv) {
     view->add_option("--preset-dir", wo.app.userPresetDir,
                      "folder for saved presets (default $XDG_CONFIG_HOME/ssaolab/presets)");
     view->add_option("--size", windowSize, "window size WIDTHxHEIGHT")->capture_default_str();
+    std::string viewProjection, viewDepth;
+    ssao::addLensOptions(*view, viewProjection, viewDepth);
     view->add_option("--frames", wo.frames, "draw N frames then exit (for tests and screenshots)")
         ->check(CLI::Range(0, 1000000));
     view->add_option("--screenshot", wo.screenshot, "with --frames: save the last frame as PNG");
@@ -114,6 +116,8 @@ int main(int argc, char** argv) {
             ssao::parseSizeOption(windowSize, wo.width, wo.height); // strict, and within render's budget
             if (wo.width < 200 || wo.height < 150)
                 throw ssao::Error("--size '" + windowSize + "': the window needs at least 200x150");
+            if (!viewProjection.empty()) wo.app.projection = ssao::parseProjection(viewProjection);
+            if (!viewDepth.empty()) wo.app.depth = ssao::parseDepthMode(viewDepth);
             if (!wo.screenshot.empty() && wo.frames <= 0)
                 throw ssao::Error("--screenshot needs --frames N (the frame to save)");
             return ssao::runWindowApp(wo);

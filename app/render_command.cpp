@@ -33,6 +33,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--clip", o.clip,
                    "clip planes: fit (to the scene, default) or fixed (the camera's own near/far)")
         ->check(CLI::IsMember({"fit", "fixed"}));
+    addLensOptions(cmd, o.projection, o.depth);
     cmd.add_option("--out", o.out, "output folder (EXR, PNG, metrics.json)")->capture_default_str();
     cmd.add_option("--timing-frames", o.timingFrames, "extra frames, every pass forced, averaged into gpu_ms")
         ->capture_default_str()
@@ -56,6 +57,24 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)");
     cmd.add_flag("--verbose-gl", o.verboseGl, "log every KHR_debug message");
     cmd.add_flag("--quiet", o.quiet, "print nothing on success");
+}
+
+void addLensOptions(CLI::App& cmd, std::string& projection, std::string& depth) {
+    cmd.add_option("--projection", projection,
+                   "perspective (default) or orthographic (spans what the fov sees at the target's distance)")
+        ->check(CLI::IsMember({"perspective", "orthographic"}));
+    cmd.add_option("--depth", depth,
+                   "depth buffer mapping: standard (default) or reversed (reversed-Z float: any far/near, "
+                   "far may be inf)")
+        ->check(CLI::IsMember({"standard", "reversed"}));
+}
+
+void applyCameraOptions(Camera& c, const std::string& clip, const std::string& projection,
+                        const std::string& depth) {
+    if (clip == "fit") c.clip = ClipMode::Fit;
+    if (clip == "fixed") c.clip = ClipMode::Fixed;
+    if (!projection.empty()) c.projectionKind = parseProjection(projection);
+    if (!depth.empty()) c.depth = parseDepthMode(depth);
 }
 
 void parseSizeOption(const std::string& s, int& w, int& h) {
@@ -102,7 +121,9 @@ int runRender(const RenderOptions& o) {
     info.style.falseColor = o.falseColor;
     Camera cam;
     if (!o.camera.empty()) {
-        cam = parseCamera(o.camera, scene.camera.value_or(frameBounds(scene.bounds)));
+        Camera base = scene.camera.value_or(frameBounds(scene.bounds));
+        applyCameraOptions(base, o.clip, o.projection, o.depth); // "inf" far needs reversed depth
+        cam = parseCamera(o.camera, base);
         info.cameraSource = "--camera";
     } else if (preset.camera) { // the preset's camera bookmark
         cam = *preset.camera;
@@ -114,8 +135,7 @@ int runRender(const RenderOptions& o) {
         cam = frameBounds(scene.bounds);
         info.cameraSource = "framed";
     }
-    if (o.clip == "fit") cam.clip = ClipMode::Fit;
-    if (o.clip == "fixed") cam.clip = ClipMode::Fixed;
+    applyCameraOptions(cam, o.clip, o.projection, o.depth);
     validateCamera(cam);
 
     gl::HeadlessContext ctx;

@@ -1,5 +1,7 @@
 // `ssaolab render`: headless render of one scene with one settings set into an output folder.
 #pragma once
+#include "scene/camera.h"
+
 #include <string>
 #include <vector>
 
@@ -16,6 +18,8 @@ struct RenderOptions {
     std::string size;              // empty: the preset's size, else 1280x720
     std::string camera;            // eye,target[,up[,fov[,near,far]]]
     std::string clip;              // fit | fixed (empty: the camera's own setting)
+    std::string projection;        // perspective | orthographic (empty: the camera's own)
+    std::string depth;             // standard | reversed (empty: the camera's own)
     std::string out = "out";
     std::string shaderDir; // default: the installation's (or source tree's) shaders/
     std::string presetDir; // user presets (default: as the app)
@@ -30,6 +34,11 @@ struct RenderOptions {
 };
 
 void addRenderOptions(CLI::App& cmd, RenderOptions& o);
+// --projection and --depth (render and view): the camera's lens and depth mapping.
+void addLensOptions(CLI::App& cmd, std::string& projection, std::string& depth);
+// Applies --clip/--projection/--depth given as text (empty: keep the camera's own).
+void applyCameraOptions(Camera& c, const std::string& clip, const std::string& projection,
+                        const std::string& depth);
 // "WIDTHxHEIGHT" within the render limits; throws ssao::Error naming --size (render, bench, tune).
 void parseSizeOption(const std::string& text, int& w, int& h);
 // Throws ssao::Error on any problem; returns the process exit code.

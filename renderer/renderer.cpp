@@ -36,6 +36,7 @@ gpu::FrameConstants packFrameConstants(const Camera& cam, int width, int height,
     f.invProj = glm::inverse(f.proj);
     f.viewport = {float(width), float(height), 1.0f / float(width), 1.0f / float(height)};
     f.clip = {cam.nearZ, cam.farZ, sceneRadius, float(frameIndex)};
+    f.camera = {cam.orthographic() ? 1.0f : 0.0f, cam.depth == DepthMode::Reversed ? 1.0f : 0.0f, 0.0f, 0.0f};
     return f;
 }
 
@@ -176,8 +177,7 @@ FrameReport Renderer::render() {
     if (settings_.temporal.enabled) {
         const Camera& c = effective_;
         const Camera& p = temporalCamera_;
-        const bool sameCamera = c.eye == p.eye && c.target == p.target && c.up == p.up &&
-                                c.fovYDeg == p.fovYDeg && c.nearZ == p.nearZ && c.farZ == p.farZ;
+        const bool sameCamera = c == p;
         reset = !temporalSettings_ || *temporalSettings_ != settings_ ||
                 temporalSize_ != glm::ivec2(width_, height_) || temporalScene_ != sceneVersion_;
         if (reset || !sameCamera) temporalFrame_ = 0;
@@ -244,8 +244,9 @@ RadiusInfo Renderer::radiusAtCentre() const {
     // Displayed pixels: a render at 0.35 of the view has pixels 1/0.35 times as large.
     const float upp =
         unitsPerPixelAtUnitDepth(c.projection(float(std::max(width_, 1)) / float(h)), h) * displayScale_;
-    ri.world = worldRadius(settings_.ao, ri.sceneDiagonal, ri.depth, upp);
-    ri.pixels = radiusInPixels(settings_.ao, ri.sceneDiagonal, ri.depth, upp);
+    const float depthScale = c.orthographic() ? 1.0f : ri.depth; // pixels do not shrink with depth
+    ri.world = worldRadius(settings_.ao, ri.sceneDiagonal, depthScale, upp);
+    ri.pixels = radiusInPixels(settings_.ao, ri.sceneDiagonal, depthScale, upp);
     return ri;
 }
 

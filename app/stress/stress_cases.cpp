@@ -2,6 +2,7 @@
 
 #include "settings/params.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace ssao {
@@ -47,20 +48,37 @@ Camera transformCamera(const Camera& c, double scale, const glm::dvec3& offset) 
 std::vector<StressCase> stressCases(const std::string& technique) {
     std::vector<StressCase> cases;
     // Projection: fixed planes, in units of the scene's bounding-box diagonal so every scene sees
-    // the same ratios (up to 1e11; past 1e8 the camera check refuses, which the report shows).
-    for (double n : {1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1}) {
-        StressCase c{"near", sci(n) + " x diag"};
-        c.nearZ = float(n), c.farZ = 10.0f;
-        cases.push_back(c);
+    // the same ratios (up to 1e11), with each depth mapping. Standard depth loses surfaces as the
+    // ratio grows (reported against the benign render; past 1e8 the camera check refuses, which
+    // the report shows); reversed-Z float depth must draw what the fitted planes draw.
+    for (DepthMode d : {DepthMode::Standard, DepthMode::Reversed}) {
+        const std::string mode = std::string(", ") + depthModeName(d);
+        auto planes = [&](const std::string& axis, const std::string& variant, float n, float f) {
+            StressCase c{axis, variant + mode};
+            c.nearZ = n, c.farZ = f, c.depth = d;
+            c.compared = true, c.invariant = d == DepthMode::Reversed;
+            cases.push_back(c);
+        };
+        for (double n : {1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1})
+            planes("near", sci(n) + " x diag", float(n), 10.0f);
+        for (double f : {1.0, 10.0, 1e2, 1e3, 1e4, 1e5})
+            planes("far", sci(f) + " x diag", 1e-3f, float(f));
+        planes("near/far", "1e-5 / 1e4 x diag", 1e-5f, 1e4f); // a 1e9 ratio
     }
-    for (double f : {1.0, 10.0, 1e2, 1e3, 1e4, 1e5}) {
-        StressCase c{"far", sci(f) + " x diag"};
-        c.nearZ = 1e-3f, c.farZ = float(f);
-        cases.push_back(c);
+    {
+        StressCase inf{"projection", "infinite far, near 1e-6 x diag, reversed"};
+        inf.nearZ = 1e-6f, inf.farZ = INFINITY, inf.depth = DepthMode::Reversed;
+        inf.compared = inf.invariant = true;
+        cases.push_back(inf);
+        for (DepthMode d : {DepthMode::Standard, DepthMode::Reversed}) {
+            StressCase o{"projection", std::string("orthographic, ") + depthModeName(d)};
+            o.projection = Projection::Orthographic, o.depth = d;
+            cases.push_back(o);
+            StressCase on{"projection", std::string("orthographic, near 1e-6 x diag, ") + depthModeName(d)};
+            on.projection = Projection::Orthographic, on.depth = d, on.nearZ = 1e-6f, on.farZ = 10.0f;
+            cases.push_back(on);
+        }
     }
-    StressCase nf{"near/far", "1e-5 / 1e4 x diag"};
-    nf.nearZ = 1e-5f, nf.farZ = 1e4f; // a 1e9 ratio
-    cases.push_back(nf);
     // Scale and placement: the radius follows the scene (scene mode), so AO must not change.
     for (double s : {1e-3, 1e-2, 1e-1, 10.0, 1e2, 1e3}) {
         StressCase c{"scale", "x" + sci(s)};

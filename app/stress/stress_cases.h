@@ -9,6 +9,7 @@
 #include "settings/settings.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,10 +20,13 @@ struct StressCase {
     std::string variant; // e.g. "1e-4", "x1000", "gtao.steps=32"
     double scale = 1.0;              // the scene and the camera scaled about the origin ...
     glm::dvec3 offset{0.0};          // ... then moved by this (scene units)
-    float nearZ = 0.0f, farZ = 0.0f; // > 0: fixed clip planes, x the scene's diagonal (else fitted)
+    float nearZ = 0.0f, farZ = 0.0f; // > 0: fixed clip planes, x the scene's diagonal (else fitted); far may be inf
+    std::optional<DepthMode> depth;       // unset: the default's
+    std::optional<Projection> projection; // unset: perspective
     std::function<void(Settings&)> settings;            // null: unchanged
     std::function<void(Camera&, const Scene&)> camera;  // null: the scene's view
     bool invariant = false; // AO must match the benign render (within the stated RMSE)
+    bool compared = false;  // the RMSE against the benign render is reported, not required
 };
 
 // Every case for a technique (its own rows at their limits included).

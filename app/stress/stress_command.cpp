@@ -110,6 +110,7 @@ int runStress(const StressOptions& o) {
                 StressRow row;
                 row.scene = sceneName, row.technique = tech, row.axis = sc.axis, row.variant = sc.variant;
                 row.invariant = sc.invariant;
+                row.compared = sc.compared;
                 try {
                     const bool moves = sc.scale != 1.0 || sc.offset != glm::dvec3(0.0);
                     Scene moved;
@@ -124,8 +125,11 @@ int runStress(const StressOptions& o) {
                         c.clip = ClipMode::Fixed;
                         const double diag = 2.0 * double(scene.bounds.radius());
                         c.nearZ = float(double(sc.nearZ) * diag);
-                        c.farZ = float(double(sc.farZ) * diag);
+                        c.farZ = float(double(sc.farZ) * diag); // inf stays inf
                     }
+                    if (sc.depth) c.depth = *sc.depth;
+                    if (sc.projection) c.projectionKind = *sc.projection;
+                    validateCamera(c); // a refused camera is a row, not a GL error
                     Settings cs = s;
                     if (sc.settings) sc.settings(cs);
                     r.setCamera(c);
@@ -136,7 +140,7 @@ int runStress(const StressOptions& o) {
                     const Stats st = stats(f.ao, &f.mask);
                     row.mean = st.count ? st.mean : 1.0;
                     row.geometry = st.count;
-                    if (sc.invariant) compare(f, benign, row.rmse, row.coverage);
+                    if (sc.invariant || sc.compared) compare(f, benign, row.rmse, row.coverage);
                     row.status = "ok";
                 } catch (const Error& e) {
                     row.status = "refused";

@@ -32,7 +32,10 @@ std::string cell(const StressRow& r, double tolerance) {
     std::string s;
     if (r.nonFinite) s += std::to_string(r.nonFinite) + " NaN/inf ";
     if (r.outside) s += std::to_string(r.outside) + " outside [0,1] ";
-    if (r.invariant) {
+    if (r.compared && !r.invariant && s.empty()) { // the mean, and how far it is from the benign render
+        std::snprintf(buf, sizeof buf, r.geometry ? "%.3f, RMSE %.4f" : "%.3f (empty)", r.mean, r.rmse);
+        s = buf;
+    } else if (r.invariant) {
         std::snprintf(buf, sizeof buf, "%s%.4f", r.rmse > tolerance ? "**" : "", r.rmse);
         s += buf;
         if (r.rmse > tolerance) s += "**";
@@ -55,8 +58,9 @@ std::string stabilityMarkdown(const StressRun& run) {
        << v.nonFinite << " non-finite and " << v.outside << " out-of-range values, " << v.invarianceFailures
        << " invariance cases above RMSE " << run.tolerance << ", " << v.refused
        << " cases refused by a guard with a clear error.\n\n"
-       << "Cells: the mean denoised AO over geometry (\"(empty)\": no geometry in view); for the "
-          "invariance axes (scale, translate) the RMSE against the benign render, in bold above the "
+       << "Cells: the mean denoised AO over geometry (\"(empty)\": no geometry in view), with the RMSE "
+          "against the benign render (fitted planes) for standard-depth planes; for the cases that must "
+          "not change AO (scale, translate, reversed-depth planes) the RMSE alone, in bold above the "
           "tolerance, with the share of pixels whose coverage moved; NaN/inf or out-of-range counts when "
           "there are any; \"refused\" where a guard stops the case (messages below).\n";
     std::vector<std::string> scenes, techs, axes;
@@ -110,7 +114,7 @@ void writeStressFiles(const StressRun& run, const std::string& dir) {
     for (const auto& r : run.rows)
         j["rows"].push_back({{"scene", r.scene}, {"technique", r.technique}, {"axis", r.axis},
                              {"variant", r.variant}, {"status", r.status}, {"message", r.message},
-                             {"invariant", r.invariant}, {"nonfinite", r.nonFinite}, {"outside", r.outside},
+                             {"invariant", r.invariant}, {"compared", r.compared}, {"nonfinite", r.nonFinite}, {"outside", r.outside},
                              {"geometry_pixels", r.geometry}, {"mean", r.mean}, {"rmse", r.rmse},
                              {"coverage_moved", r.coverage}});
     writeFileAtomically(dir + "/stress.json", j.dump(2) + "\n");

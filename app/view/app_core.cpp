@@ -58,6 +58,8 @@ AppCore::AppCore(const AppOptions& o)
     }
     adoptScene(std::move(*scene), spec, false);
     if (loaded_.camera) camera_.reset(*loaded_.camera, scene_->bounds.radius(), scene_->bounds.center());
+    if (o.projection) camera_.setProjection(*o.projection);
+    if (o.depth) camera_.setDepth(*o.depth);
     shaderTime_ = renderer_->shaders().newestSourceTime();
     if (!startupError.empty())
         setStatus(startupError + " (showing " + spec + ")", true);
@@ -103,16 +105,22 @@ void AppCore::adoptScene(Scene s, const std::string& spec, bool keepCamera) {
     poke();
 }
 
-void AppCore::resetCamera() {
-    camera_.reset(scene_->camera.value_or(frameBounds(scene_->bounds)), scene_->bounds.radius(),
-                  scene_->bounds.center());
+// A scene's cameras and the framed view take the lens the user chose (projection, depth mode);
+// a preset's camera brings its own.
+void AppCore::resetCameraKeepingLens(Camera c) {
+    c.projectionKind = camera_.camera().projectionKind;
+    c.depth = camera_.camera().depth;
+    camera_.reset(c, scene_->bounds.radius(), scene_->bounds.center());
     poke();
+}
+
+void AppCore::resetCamera() {
+    resetCameraKeepingLens(scene_->camera.value_or(frameBounds(scene_->bounds)));
 }
 
 void AppCore::selectSceneCamera(int index) {
     if (index >= 0 && index < int(scene_->cameras.size()))
-        camera_.reset(scene_->cameras[size_t(index)].second, scene_->bounds.radius(),
-                      scene_->bounds.center());
+        resetCameraKeepingLens(scene_->cameras[size_t(index)].second);
     poke();
 }
 

@@ -30,6 +30,8 @@ struct AppOptions {
     float renderScale = 1.0f;       // render resolution relative to the view's pixels (0.25..1)
     float interactiveScale = 0.35f; // while the camera moves or a slider is dragged
     bool reference = true;          // trace the ray-traced reference of the view in the background
+    std::optional<Projection> projection; // the camera's lens and depth mapping (default: the camera's)
+    std::optional<DepthMode> depth;
     // Called from the reference's worker thread when it has news (the window posts an empty event
     // to wake its loop); may be empty.
     std::function<void()> wake;
@@ -132,6 +134,7 @@ class AppCore {
     void setStatus(const std::string& s, bool error);
 
   private:
+    void resetCameraKeepingLens(Camera c);
     // Runs an action that returns its success message; on an exception shows the error instead.
     bool attempt(const char* what, const std::function<std::string()>& action);
     void adoptScene(Scene s, const std::string& spec, bool keepCamera);

@@ -14,6 +14,8 @@ class CameraController {
     void reset(const Camera& c, float sceneRadius, glm::vec3 sceneCenter);
     void reset(const Camera& c, float sceneRadius) { reset(c, sceneRadius, c.target); }
     void setClip(ClipMode m) { cam_.clip = m; }
+    void setProjection(Projection p) { cam_.projectionKind = p; }
+    void setDepth(DepthMode d) { cam_.depth = d; }
     void setMode(Mode m) { mode_ = m; }
     Mode mode() const { return mode_; }
 

@@ -10,8 +10,7 @@ namespace ssao {
 bool LiveReference::Key::operator==(const Key& o) const {
     const Camera &a = camera, &b = o.camera;
     return sceneVersion == o.sceneVersion && width == o.width && height == o.height && target == o.target &&
-           a.eye == b.eye && a.target == b.target && a.up == b.up && a.fovYDeg == b.fovYDeg &&
-           a.nearZ == b.nearZ && a.farZ == b.farZ && radius.radiusMode == o.radius.radiusMode &&
+           a == b && radius.radiusMode == o.radius.radiusMode &&
            radius.radius == o.radius.radius && radius.radiusScene == o.radius.radiusScene &&
            radius.radiusPx == o.radius.radiusPx;
 }

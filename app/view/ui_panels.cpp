@@ -73,11 +73,31 @@ void sceneSection(AppCore& app) {
         ImGui::SetTooltip(
             "The planes the camera came with (a glTF file's znear/zfar); a far/near ratio of 1e7\n"
             "makes the depth test z-fight into false AO.");
+    int proj = cc.camera().orthographic() ? 1 : 0;
+    ImGui::TextUnformatted("Projection ");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("perspective", &proj, 0)) cc.setProjection(Projection::Perspective), app.poke();
+    rememberRect(app, "camera#perspective");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("orthographic", &proj, 1)) cc.setProjection(Projection::Orthographic), app.poke();
+    rememberRect(app, "camera#orthographic");
+    int depth = cc.camera().depth == DepthMode::Reversed ? 1 : 0;
+    ImGui::TextUnformatted("Depth      ");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("standard", &depth, 0)) cc.setDepth(DepthMode::Standard), app.poke();
+    rememberRect(app, "camera#depth_standard");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("reversed-Z", &depth, 1)) cc.setDepth(DepthMode::Reversed), app.poke();
+    rememberRect(app, "camera#depth_reversed");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Float depth stored as 1 at near, 0 at far: even precision over any far/near\n"
+                          "ratio, so a file's own 0.05 .. 1e6 planes no longer z-fight.");
     const Camera& c = cc.camera();
     const Camera& e = app.renderer().camera();
     ImGui::TextDisabled("eye %.4g %.4g %.4g  target %.4g %.4g %.4g", c.eye.x, c.eye.y, c.eye.z, c.target.x,
                         c.target.y, c.target.z);
-    ImGui::TextDisabled("fov %.0f  near %.4g  far %.4g (as rendered)", e.fovYDeg, e.nearZ, e.farZ);
+    ImGui::TextDisabled("fov %.0f  near %.4g  far %.4g (as rendered)%s", e.fovYDeg, e.nearZ, e.farZ,
+                        e.orthographic() ? "; view height = 2 |target - eye| tan(fov/2)" : "");
 }
 
 void presetSection(AppCore& app) {

@@ -183,8 +183,9 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
 namespace {
 std::string cameraKey(const Camera& c) {
     char buf[400];
-    std::snprintf(buf, sizeof buf, "|cam%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a", c.eye.x, c.eye.y, c.eye.z,
-                  c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg, c.nearZ, c.farZ);
+    std::snprintf(buf, sizeof buf, "|cam%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%d,%d", c.eye.x, c.eye.y, c.eye.z,
+                  c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg, c.nearZ, c.farZ,
+                  int(c.projectionKind), int(c.depth));
     return buf;
 }
 } // namespace

@@ -30,7 +30,7 @@ void GBufferPass::setup(PassBuilder& b, const Settings& s) const {
     b.write(describe("gbuffer.depth", GL_R32F, 1, Display::Scalar, "linear view distance along -z (0 = sky)",
                      "scene units"));
     b.write(describe("gbuffer.zbuffer", GL_DEPTH_COMPONENT32F, 1, Display::Scalar,
-                     "hardware depth in [0,1] (non-linear; seed 001 reconstructs positions from it)"));
+                     "hardware depth in [0,1] (non-linear, 1 at near when reversed; seed 001 reconstructs positions from it)"));
     b.settings("gbuffer");
     b.usesScene();
     b.usesCamera();
@@ -44,17 +44,28 @@ void GBufferPass::execute(PassContext& ctx) {
     const float zero[4] = {0, 0, 0, 0};
     for (int i = 0; i < 4; ++i)
         glClearNamedFramebufferfv(GLuint(fbo), GL_COLOR, i, zero); // w = 0: sky
-    const float one = 1.0f;
-    glClearNamedFramebufferfv(GLuint(fbo), GL_DEPTH, 0, &one);
+    // Reversed depth (scene/camera.h): z_ndc in [0, 1] written as is, 1 at near, cleared to 0 (far)
+    // and tested with GREATER; the other passes draw with the default clip control.
+    const bool reversed = ctx.frame.camera->depth == DepthMode::Reversed;
+    const float clearDepth = reversed ? 0.0f : 1.0f;
+    glClearNamedFramebufferfv(GLuint(fbo), GL_DEPTH, 0, &clearDepth);
+    if (reversed) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    struct RestoreClip {
+        bool on;
+        ~RestoreClip() {
+            if (on) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+        }
+    } restoreClip{reversed};
 
     gl::Defines defs;
     if (ctx.settings.gbuffer.normalFormat == TargetFormat::RGBA8) defs.push_back({"NORMAL_UNORM", "1"});
     glUseProgram(ctx.shaders.program("passes/gbuffer.vert", "passes/gbuffer.frag", defs));
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(reversed ? GL_GREATER : GL_LESS);
     glDisable(GL_CULL_FACE); // glTF doubleSided and CAD winding: shade what is visible
     ctx.frame.scene->draw(0);
     glDisable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
 }
 
 } // namespace ssao

@@ -98,7 +98,7 @@ ReferenceTracer::ReferenceTracer(const EmbreeScene& scene, const Camera& camera,
         sumW2_.assign(n, 0.0);
     }
 
-    // The rasteriser's camera (glm::lookAt + glm::perspective): pixel centre (x + 0.5, y + 0.5),
+    // The rasteriser's camera (glm::lookAt + Camera::projection): pixel centre (x + 0.5, y + 0.5),
     // y from the top, maps to NDC (2(x+0.5)/W - 1, 1 - 2(y+0.5)/H).
     const glm::dvec3 eye(camera.eye);
     const glm::dvec3 fwd = glm::normalize(glm::dvec3(camera.target) - eye);
@@ -106,6 +106,8 @@ ReferenceTracer::ReferenceTracer(const EmbreeScene& scene, const Camera& camera,
     const glm::dvec3 up = glm::cross(right, fwd);
     const double tanHalf = std::tan(glm::radians(double(camera.fovYDeg)) * 0.5);
     const double aspect = double(width) / double(height);
+    const bool ortho = camera.orthographic();
+    const double orthoHalf = glm::length(glm::dvec3(camera.target) - eye) * tanHalf;
     const Scene& sc = scene.scene();
 
     parallelRows(height, threadCount(settings.threads), [&](int y) {
@@ -114,14 +116,16 @@ ReferenceTracer::ReferenceTracer(const EmbreeScene& scene, const Camera& camera,
         ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
         for (int x = 0; x < width; ++x) {
             const double nx = 2.0 * (x + 0.5) / width - 1.0, ny = 1.0 - 2.0 * (y + 0.5) / height;
-            const glm::dvec3 d = glm::normalize(fwd + right * (nx * tanHalf * aspect) + up * (ny * tanHalf));
+            // Orthographic: parallel rays from the eye plane, the view spanning +-orthoHalf.
+            const glm::dvec3 d = ortho ? fwd : glm::normalize(fwd + right * (nx * tanHalf * aspect) + up * (ny * tanHalf));
+            const glm::dvec3 org = ortho ? eye + right * (nx * orthoHalf * aspect) + up * (ny * orthoHalf) : eye;
             const double cosFwd = glm::dot(d, fwd);
             alignas(16) RTCRayHit rh{};
-            rh.ray.org_x = camera.eye.x, rh.ray.org_y = camera.eye.y, rh.ray.org_z = camera.eye.z;
+            rh.ray.org_x = float(org.x), rh.ray.org_y = float(org.y), rh.ray.org_z = float(org.z);
             rh.ray.dir_x = float(d.x), rh.ray.dir_y = float(d.y), rh.ray.dir_z = float(d.z);
             // Only what lies between the clip planes is rasterised (view depth = t * cosFwd).
             rh.ray.tnear = float(camera.nearZ / cosFwd);
-            rh.ray.tfar = float(camera.farZ / cosFwd);
+            rh.ray.tfar = std::isinf(camera.farZ) ? INFINITY : float(camera.farZ / cosFwd);
             rh.ray.mask = 0xffffffffu;
             rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
             rtcIntersect1(scene.handle(), &ctx, &rh);

@@ -50,6 +50,7 @@ std::string ReferenceKey::text() const {
       << " near=" << bits(camera.nearZ) << " far=" << bits(camera.farZ) << " size=" << width << "x" << height
       << " R=" << bits(settings.radius) << " variant=" << variantName(settings.variant)
       << " rays=" << settings.samples;
+    if (camera.orthographic()) s << " projection=orthographic"; // perspective keys stay as they were
     return s.str();
 }
 

@@ -16,8 +16,46 @@ glm::mat4 Camera::view() const {
     return glm::lookAt(eye, target, up);
 }
 
+float Camera::orthoHalfHeight() const {
+    return glm::length(target - eye) * std::tan(glm::radians(fovYDeg) * 0.5f);
+}
+
 glm::mat4 Camera::projection(float aspect) const {
-    return glm::perspective(glm::radians(fovYDeg), aspect, nearZ, farZ);
+    const bool reversed = depth == DepthMode::Reversed;
+    if (orthographic()) {
+        const float h = orthoHalfHeight(), w = h * aspect;
+        glm::mat4 m = glm::ortho(-w, w, -h, h, nearZ, farZ);
+        if (reversed) { // z_ndc = (z_view + far) / (far - near): 1 at -near, 0 at -far
+            m[2][2] = 1.0f / (farZ - nearZ);
+            m[3][2] = farZ / (farZ - nearZ);
+        }
+        return m;
+    }
+    if (!reversed) return glm::perspective(glm::radians(fovYDeg), aspect, nearZ, farZ);
+    // z_clip = A z_view + B, w_clip = -z_view; z_ndc = 1 at -near and 0 at -far:
+    // A = n / (f - n), B = n f / (f - n); an infinite far plane is the limit A = 0, B = n.
+    glm::mat4 m = glm::perspective(glm::radians(fovYDeg), aspect, nearZ, std::isinf(farZ) ? 1e30f : farZ);
+    const double n = nearZ, f = farZ;
+    m[2][2] = std::isinf(farZ) ? 0.0f : float(n / (f - n));
+    m[3][2] = std::isinf(farZ) ? nearZ : float(n * f / (f - n));
+    return m;
+}
+
+const char* projectionName(Projection p) {
+    return p == Projection::Orthographic ? "orthographic" : "perspective";
+}
+const char* depthModeName(DepthMode d) {
+    return d == DepthMode::Reversed ? "reversed" : "standard";
+}
+Projection parseProjection(const std::string& name) {
+    if (name == "perspective") return Projection::Perspective;
+    if (name == "orthographic" || name == "ortho") return Projection::Orthographic;
+    throw Error("projection '" + name + "': expected perspective or orthographic");
+}
+DepthMode parseDepthMode(const std::string& name) {
+    if (name == "standard") return DepthMode::Standard;
+    if (name == "reversed" || name == "reversed-z") return DepthMode::Reversed;
+    throw Error("depth '" + name + "': expected standard or reversed");
 }
 
 Camera frameBounds(const Bounds& b) {
@@ -45,17 +83,21 @@ void validateCamera(const Camera& c) {
     if (glm::length(glm::cross(fwd, c.up)) < 1e-9f * glm::length(fwd))
         throw Error("camera: up is parallel to the view direction");
     if (!(c.fovYDeg > 0.5f && c.fovYDeg < 179.0f)) throw Error("camera: fov must be in (0.5, 179) degrees");
-    if (!std::isfinite(c.nearZ) || !std::isfinite(c.farZ) || !std::isfinite(c.fovYDeg))
+    const bool infiniteFar = std::isinf(c.farZ) && c.farZ > 0.0f;
+    if (infiniteFar && (c.depth != DepthMode::Reversed || c.orthographic()))
+        throw Error("camera: an infinite far plane needs reversed depth and a perspective projection");
+    if (!std::isfinite(c.nearZ) || !(std::isfinite(c.farZ) || infiniteFar) || !std::isfinite(c.fovYDeg))
         throw Error("camera: fov, near and far must be finite numbers");
     if (!(c.nearZ > 0.0f)) throw Error("camera: near must be > 0");
-    if (!(c.farZ > c.nearZ) || !std::isfinite(c.farZ)) throw Error("camera: far must be > near");
+    if (!(c.farZ > c.nearZ)) throw Error("camera: far must be > near");
+    if (c.depth == DepthMode::Reversed) return; // a float holds 1/z to 24 bits at any ratio
     // A 32-bit depth buffer spreads its precision as near/z: past ~1e8 every surface lands on the
     // same depth value and nothing renders (near 1e-9, far 1e9 gave an empty frame reported as
     // "fully occluded"). 2CylinderEngine's own camera (0.05 .. 1e6, 2e7) still passes.
     if (double(c.farZ) / double(c.nearZ) > kMaxFarNearRatio) {
         char buf[160];
         std::snprintf(buf, sizeof buf, "camera: far/near = %.3g exceeds %.0e: the depth buffer cannot resolve it "
-                      "(raise near, or fit the planes to the scene)", double(c.farZ) / double(c.nearZ), kMaxFarNearRatio);
+                      "(raise near, fit the planes to the scene, or use reversed depth)", double(c.farZ) / double(c.nearZ), kMaxFarNearRatio);
         throw Error(buf);
     }
 }
@@ -66,6 +108,10 @@ Camera parseCamera(const std::string& text, const Camera& base) {
     std::string tok;
     while (std::getline(ss, tok, ',')) {
         double d = 0;
+        if (v.size() == 11 && (tok == "inf" || tok == "infinity")) { // an infinite far plane
+            v.push_back(INFINITY);
+            continue;
+        }
         if (!parseDecimal(tok, d)) throw Error("--camera: '" + tok + "' is not a number");
         if (!std::isfinite(float(d))) throw Error("--camera: '" + tok + "' is not a finite number");
         v.push_back(float(d));

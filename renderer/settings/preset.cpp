@@ -4,6 +4,7 @@
 #include "util/atomic_file.h"
 #include "util/error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -51,20 +52,26 @@ void resetRadius(Settings& s) {
 }
 
 nlohmann::json cameraToJson(const Camera& c) {
-    return {{"eye", {c.eye.x, c.eye.y, c.eye.z}},
-            {"target", {c.target.x, c.target.y, c.target.z}},
-            {"up", {c.up.x, c.up.y, c.up.z}},
-            {"fov_y_deg", c.fovYDeg},
-            {"near", c.nearZ},
-            {"far", c.farZ},
-            {"clip", c.clip == ClipMode::Fit ? "fit" : "fixed"}};
+    nlohmann::json j = {{"eye", {c.eye.x, c.eye.y, c.eye.z}},
+                        {"target", {c.target.x, c.target.y, c.target.z}},
+                        {"up", {c.up.x, c.up.y, c.up.z}},
+                        {"fov_y_deg", c.fovYDeg},
+                        {"near", c.nearZ},
+                        {"clip", c.clip == ClipMode::Fit ? "fit" : "fixed"},
+                        {"projection", projectionName(c.projectionKind)},
+                        {"depth", depthModeName(c.depth)}};
+    if (std::isinf(c.farZ))
+        j["far"] = "inf"; // JSON has no infinity
+    else
+        j["far"] = c.farZ;
+    return j;
 }
 
 Camera cameraFromJson(const nlohmann::json& j, const std::string& origin) {
     if (!j.is_object()) throw Error(origin + ": camera must be an object");
+    static const char* const keys[] = {"eye", "target", "up", "fov_y_deg", "near", "far", "clip", "projection", "depth"};
     for (auto& [k, v] : j.items())
-        if (k != "eye" && k != "target" && k != "up" && k != "fov_y_deg" && k != "near" && k != "far" &&
-            k != "clip")
+        if (std::find(std::begin(keys), std::end(keys), k) == std::end(keys))
             throw Error(origin + ": unknown key 'camera." + k + "'");
     Camera c;
     c.eye = vec3From(j, "eye", origin);
@@ -72,15 +79,31 @@ Camera cameraFromJson(const nlohmann::json& j, const std::string& origin) {
     c.up = j.contains("up") ? vec3From(j, "up", origin) : glm::vec3(0, 1, 0);
     c.fovYDeg = numberFrom(j, "fov_y_deg", c.fovYDeg, origin);
     c.nearZ = numberFrom(j, "near", c.nearZ, origin);
-    c.farZ = numberFrom(j, "far", c.farZ, origin);
+    if (j.contains("far") && j["far"] == "inf")
+        c.farZ = INFINITY;
+    else
+        c.farZ = numberFrom(j, "far", c.farZ, origin);
+    auto text = [&](const char* key) {
+        const auto& v = j[key];
+        if (!v.is_string()) throw Error(origin + ": camera." + key + " must be a string");
+        return v.get<std::string>();
+    };
     if (j.contains("clip")) {
-        const auto& clip = j["clip"];
+        const std::string clip = text("clip");
         if (clip == "fit")
             c.clip = ClipMode::Fit;
         else if (clip == "fixed")
             c.clip = ClipMode::Fixed;
         else
             throw Error(origin + ": camera.clip must be \"fit\" or \"fixed\"");
+    }
+    const std::string projection = j.contains("projection") ? text("projection") : "";
+    const std::string depth = j.contains("depth") ? text("depth") : "";
+    try {
+        if (!projection.empty()) c.projectionKind = parseProjection(projection);
+        if (!depth.empty()) c.depth = parseDepthMode(depth);
+    } catch (const Error& e) {
+        throw Error(origin + ": camera." + e.what());
     }
     try {
         validateCamera(c);

@@ -9,7 +9,9 @@
 
 namespace ssao {
 
-// Scene units covered by one pixel at unit view depth, for a G-buffer `heightPx` tall.
+// Scene units covered by one pixel at unit view depth, for a G-buffer `heightPx` tall (an
+// orthographic projection: at every depth). `depth` below is the pixel's view distance under
+// perspective and 1 under orthographic projection (shaders: frameDepthScale).
 float unitsPerPixelAtUnitDepth(const glm::mat4& proj, int heightPx);
 // Size factor of an AO resolution (full 1, half 0.5, quarter 0.25).
 float resolutionScale(AoResolution r);

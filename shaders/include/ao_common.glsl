@@ -4,7 +4,7 @@
 // World-space radius for a pixel at view distance `depth` (scene units, positive).
 // Screen mode keeps the kernel at radiusPx pixels wherever the pixel is (N8AO screenSpaceRadius).
 float aoRadius(AoCommon_ c, float depth) {
-    return int(c.radius.z) == SSAO_RADIUS_SCREEN ? c.radius.y * c.radius.w * depth : c.radius.x;
+    return int(c.radius.z) == SSAO_RADIUS_SCREEN ? c.radius.y * c.radius.w * frameDepthScale(depth) : c.radius.x;
 }
 
 // Seed 001's contrast: AO = visibility^power (its 1 - (1 - occ/N)^power is the occlusion).
@@ -48,9 +48,10 @@ vec3 aoNormal(AoCommon_ c, sampler2D positions, sampler2D normals, vec2 uv, vec3
         vec3 dx = gL < gR ? P - L.xyz : R.xyz - P;
         vec3 dy = gD < gU ? P - D.xyz : U.xyz - P;
         N = cross(dx, dy);
-        if (min(gL, gR) >= 1e30 || min(gD, gU) >= 1e30 || !(dot(N, N) > 1e-36)) N = -P; // isolated pixel
+        vec3 V = frameViewVector(P);
+        if (min(gL, gR) >= 1e30 || min(gD, gU) >= 1e30 || !(dot(N, N) > 1e-36)) N = V; // isolated pixel
         N = normalize(N);
-        return dot(N, -P) < 0.0 ? -N : N; // face the camera, as the G-buffer's normals do
+        return dot(N, V) < 0.0 ? -N : N; // face the camera, as the G-buffer's normals do
     }
     N = texture(normals, uv).xyz;
     if (unorm) N = N * 2.0 - 1.0;

@@ -71,10 +71,11 @@ using ivec4 = glm::ivec4;
 // std140. Matrices are column-major in both languages.
 SSAO_STRUCT FrameConstants_ {
     mat4 view;     // world -> view (right-handed, camera looks down -z)
-    mat4 proj;     // view -> clip (OpenGL, z_ndc in [-1,1])
+    mat4 proj;     // view -> clip (standard depth: z_ndc in [-1,1]; reversed: [0,1], 1 at near)
     mat4 invProj;
     vec4 viewport; // width, height, 1/width, 1/height of the G-buffer (pixels)
     vec4 clip;     // near, far, sceneRadius (scene units), temporal frame index (0 without temporal)
+    vec4 camera;   // x: 1 = orthographic, y: 1 = reversed depth, z, w: unused
 };
 
 // What every AO technique shares (settings/settings.h AoSettings), first in its constant block.
@@ -109,7 +110,7 @@ using AoCommon = AoCommon_;
 using DenoiseConstants = DenoiseConstants_;
 using InspectHeader = InspectHeader_;
 using InspectTap = InspectTap_;
-static_assert(sizeof(FrameConstants) == 3 * 64 + 2 * 16, "std140 layout");
+static_assert(sizeof(FrameConstants) == 3 * 64 + 3 * 16, "std140 layout");
 static_assert(sizeof(AoCommon) == 3 * 16, "std140 layout");
 static_assert(sizeof(DenoiseConstants) == 16 + SSAO_MAX_DENOISE_TAPS * 16, "std140 layout");
 static_assert(sizeof(InspectHeader) == 4 * 16 && sizeof(InspectTap) == 2 * 16, "std430 layout");

@@ -34,7 +34,7 @@ void main() {
     vec3 L = lightPos - P.xyz;
     float d = length(L) / R;
     L = normalize(L);
-    vec3 V = normalize(-P.xyz);
+    vec3 V = frameViewVector(P.xyz);
     vec3 H = normalize(L + V);
     float att = 1.0 / (1.0 + 0.7 * d + 0.9 * d * d);
     vec3 color = uAmbientLight.x * albedo * ao;

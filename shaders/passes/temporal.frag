@@ -34,8 +34,7 @@ void main() {
         oHistory = vec4(ao, 0.0, 1.0, 0.0);
         return;
     }
-    vec2 ndc = vUv * 2.0 - 1.0;
-    vec3 view = vec3(ndc.x * frame.invProj[0][0], ndc.y * frame.invProj[1][1], -1.0) * z;
+    vec3 view = frameViewPosition(vUv, z);
     vec4 world = uInvView * vec4(view, 1.0);
     float frames = 1.0, result = ao;
     vec4 clip = uPrevViewProj * world;

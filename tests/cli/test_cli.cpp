@@ -153,7 +153,12 @@ TEST(Cli, BadInputGivesOneClearLineAndExitCodeOne) {
                        "too large"); // refused before 9 GB of buffers
     expectCleanFailure(ssaolab("render --set ao.power=0x10" + out), "'0x10' is not a number");
     expectCleanFailure(ssaolab("render --set 'ao.power= 2'" + out), "is not a number");
-    expectCleanFailure(ssaolab("render --camera 0,0,5,0,0,0,0,1,0,60,0.1,inf" + out), "not a finite number");
+    expectCleanFailure(ssaolab("render --depth standard --camera 0,0,5,0,0,0,0,1,0,60,0.1,inf" + out),
+                       "an infinite far plane needs reversed depth");
+    expectCleanFailure(ssaolab("render --camera 0,0,5,0,0,inf" + out), "'inf' is not a finite number");
+    expectCleanFailure(ssaolab("render --projection fisheye" + out), "--projection");
+    expectCleanFailure(ssaolab("render --depth logarithmic" + out), "--depth");
+    expectCleanFailure(ssaolab("view --depth logarithmic"), "--depth");
     expectCleanFailure(
         ssaolab("render --preset " + writeTemp("cli_overflow.json", R"({"ao":{"power":1e999}})") + out),
         "is not valid JSON");
@@ -174,7 +179,8 @@ TEST(Cli, BadInputGivesOneClearLineAndExitCodeOne) {
     expectCleanFailure(ssaolab("render --size 4294967396x100" + out), "--size '4294967396x100'");
     expectCleanFailure(ssaolab("view --size 20000x20000"), "too large");
     expectCleanFailure(ssaolab("render --timing-frames 1000" + out), "--timing-frames");
-    expectCleanFailure(ssaolab("render --clip fixed --camera 0,0,5,0,0,0,0,1,0,60,1e-9,1e9" + out), "far/near");
+    expectCleanFailure(ssaolab("render --depth standard --clip fixed --camera 0,0,5,0,0,0,0,1,0,60,1e-9,1e9" + out),
+                       "far/near");
     {
         namespace fs = std::filesystem;
         const std::string bad = std::string(SSAOLAB_TEST_TMP) + "/broken_shaders_cli"; // not Robustness's folder
@@ -186,6 +192,26 @@ TEST(Cli, BadInputGivesOneClearLineAndExitCodeOne) {
     expectCleanFailure(ssaolab("--max-triangles 10 render --scene '" + std::string(SSAOLAB_SCENES_DIR) +
                                "/CornellBox/cornellBox.gltf'" + out),
                        "budget of 10 triangles");
+}
+
+TEST(Cli, LensOptionsReachTheRenderAndItsMetrics) {
+    // Reversed depth with an infinite far plane, and an orthographic view: rendered, finite, and
+    // recorded in metrics.json's camera.
+    const std::string a = outDir("lens_reversed"), b = outDir("lens_ortho");
+    CliRun r = ssaolab("render --size 160x90 --timing-frames 1 --quiet --camera "
+                       "3.2,2.4,3.6,-1.6,0.5,-3.2,0,1,0,60,0.01,inf --out " + a);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    nlohmann::json m = nlohmann::json::parse(slurp(a + "/metrics.json"));
+    EXPECT_EQ(m["camera"]["depth"], "reversed");
+    EXPECT_EQ(m["camera"]["far"], "inf");
+    EXPECT_GT(m["geometry_pixels"].get<int>(), 160 * 90 / 4);
+    EXPECT_GT(m["ao"]["mean"].get<double>(), 0.5);
+    r = ssaolab("render --size 160x90 --timing-frames 1 --quiet --projection orthographic --out " + b);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    m = nlohmann::json::parse(slurp(b + "/metrics.json"));
+    EXPECT_EQ(m["camera"]["projection"], "orthographic");
+    EXPECT_LE(m["ao"]["max"].get<double>(), 1.0);
+    EXPECT_GE(m["ao"]["min"].get<double>(), 0.0);
 }
 
 TEST(Cli, WarnsWhenNothingIsInViewOrTheRadiusIsSubPixel) {
@@ -434,7 +460,7 @@ TEST(CliStress, EveryTechniqueStaysFiniteInRangeAndInvariantUnderScaleAndTransla
     // `ssaolab stress` at a small size: no NaN/inf or out-of-range value in any case, scale and
     // translation within RMSE 0.03 of the benign render (0.02 holds to 1e5 units from the origin; at
     // 1e6 float positions are 1/16 unit apart: docs/stability.md), and the depth-range guard
-    // refuses far/near 1e9 with its one-line message.
+    // refuses far/near 1e9 in a standard depth buffer with its one-line message.
     const std::string out = outDir("stress");
     CliRun r = ssaolab("stress --quiet --size 128x72 --tolerance 0.03 --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
@@ -456,7 +482,9 @@ TEST(CliStress, EveryTechniqueStaysFiniteInRangeAndInvariantUnderScaleAndTransla
     }
     EXPECT_EQ(techs.size(), 5u);
     EXPECT_GE(refusedDepth, 5);   // far 1e5 x diag and the 1e9 pair, for every technique
-    EXPECT_EQ(invariant, 5 * 10); // 6 scales + 4 translations per technique
+    // 6 scales + 4 translations + 13 reversed-depth planes + the infinite far plane, per technique:
+    // reversed-Z float depth draws what the fitted planes draw at every ratio up to 1e11.
+    EXPECT_EQ(invariant, 5 * 24);
     std::ifstream md(out + "/stability.md");
     EXPECT_TRUE(md.good());
 }

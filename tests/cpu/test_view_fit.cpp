@@ -72,8 +72,10 @@ TEST(ViewFit, FirstHitFindsTheNearestTriangle) {
 }
 
 TEST(CameraValidation, ADepthRangeTheDepthBufferCannotResolveIsRefused) {
-    // near 1e-9, far 1e9 passed validation and rendered an empty frame reported as AO 0/0/0.
+    // near 1e-9, far 1e9 passed validation and rendered an empty frame reported as AO 0/0/0
+    // (with standard depth; reversed-Z float depth resolves it, tests/gl/test_lens.cpp).
     Camera base;
+    base.depth = DepthMode::Standard;
     std::string msg;
     try {
         parseCamera("0,0,5,0,0,0,0,1,0,60,1e-9,1e9", base);

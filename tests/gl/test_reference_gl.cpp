@@ -34,8 +34,11 @@ TEST_F(ReferenceGl, PrimaryHitsAlignWithTheGBuffer) {
     for (const std::string& spec :
          {std::string("builtin:showcase"), std::string(SSAOLAB_SCENES_DIR) + "/CornellBox/cornellBox.gltf",
           std::string(SSAOLAB_SCENES_DIR) + "/2CylinderEngine/2CylinderEngine.gltf"}) {
-        const Scene scene = loadScene(spec);
-        auto r = makeRenderer(scene, defaultSettings(), 320, 180);
+      const Scene scene = loadScene(spec);
+      for (Projection lens : {Projection::Perspective, Projection::Orthographic}) { // parallel rays too
+        Camera cam = sceneCamera(scene);
+        cam.projectionKind = lens;
+        auto r = makeRenderer(scene, defaultSettings(), 320, 180, cam);
         r->render();
         const Rendered out = readAll(*r);
         EmbreeScene rt(scene);
@@ -53,13 +56,14 @@ TEST_F(ReferenceGl, PrimaryHitsAlignWithTheGBuffer) {
                 worst = std::max(worst, std::abs(zr - zg) / zr);
                 off += std::abs(zr - zg) > 1e-4 * zr;
             }
-        std::printf("%s: coverage agrees on %.3f %% of pixels; %ld interior pixels, %ld differ by > 1e-4 "
+        std::printf("%s, %s: coverage agrees on %.3f %% of pixels; %ld interior pixels, %ld differ by > 1e-4 "
                     "relative, worst %.2e\n",
-                    scene.name.c_str(), 100.0 * agree / (320 * 180), interiorPixels, off, worst);
-        EXPECT_GT(agree, long(0.995 * 320 * 180)) << scene.name;
-        EXPECT_GT(interiorPixels, 320 * 180 / 10) << scene.name;
+                    scene.name.c_str(), projectionName(lens), 100.0 * agree / (320 * 180), interiorPixels, off, worst);
+        EXPECT_GT(agree, long(0.995 * 320 * 180)) << scene.name << " " << projectionName(lens);
+        EXPECT_GT(interiorPixels, 320 * 180 / 10) << scene.name << " " << projectionName(lens);
         // The CAD engine has a few coincident faces (2 of 18139 pixels): either surface is "right".
-        EXPECT_LE(off, interiorPixels / 1000) << scene.name << ", worst " << worst;
+        EXPECT_LE(off, interiorPixels / 1000) << scene.name << ", worst " << worst << " " << projectionName(lens);
+      }
     }
 }
 

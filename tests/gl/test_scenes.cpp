@@ -51,7 +51,8 @@ TEST_F(Scenes, FittedClipPlanesRemoveTheEnginesZFighting) {
     ref.nearZ = 10.0f;
     ref.farZ = 5000.0f;
     Camera file = *scene.camera;
-    file.clip = ClipMode::Fixed; // the file's planes
+    file.clip = ClipMode::Fixed;          // the file's planes ...
+    file.depth = DepthMode::Standard;     // ... in a standard depth buffer (reversed-Z: test_lens.cpp)
     const Rendered rRef = render(path, s, 320, 180, ref);
     const Rendered rFit = render(path, s, 320, 180, *scene.camera); // the default: fitted
     const Rendered rFile = render(path, s, 320, 180, file);

@@ -34,13 +34,13 @@ void main() {
     }
     vec3 P = P4.xyz;
     vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(GTAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
-    vec3 V = normalize(-P);
+    vec3 V = frameViewVector(P);
     float depth = -P.z;
 
     // Search radius (world) and its size in G-buffer pixels: a unit at view depth d spans
     // proj[1][1] * H / (2 d) pixels.
     float R = aoRadius(ssao.aoCommon, depth) * ssao.params.x;
-    float radiusPx = R * frame.proj[1][1] * 0.5 * frame.viewport.y / depth;
+    float radiusPx = R * framePixelsPerUnit(depth);
     float falloffMul = ssao.params.y / R, falloffAdd = ssao.params.z;
     // The first step lands at least ~1.3 px away: sampling the pixel itself gives a zero delta
     // (NaN direction) and self-occlusion lines (XeGTAO minS; HBAO "first step >= 1 px").

@@ -35,7 +35,7 @@ void main() {
     float depth = -P.z;
     float R = aoRadius(ssao.aoCommon, depth);
     // The radius projected to G-buffer pixels, clamped (a close-up would march the whole screen).
-    float radiusPx = min(R * frame.proj[1][1] * 0.5 * frame.viewport.y / depth, ssao.params.y);
+    float radiusPx = min(R * framePixelsPerUnit(depth), ssao.params.y);
     int dirs = ssao.modes.x, steps = ssao.modes.y;
     // Steps of at least a pixel, the first one pixel out: never the pixel itself (no self-
     // occlusion lines), every step a new texel.

@@ -21,16 +21,9 @@ bool hasFlag(int f) { return (ssao.modes.w & f) != 0; }
 
 // View-space position at uv; w = 0 where there is no geometry (sky).
 vec4 viewPosition(vec2 uv) {
-    if (hasFlag(KERNEL_FLAG_POS_FROM_DEPTH)) {
-        float d = texture(gDepth, uv).r;
-        if (d >= 1.0) return vec4(0.0);
-        // Seed 000: z_ndc = 2d - 1, distance = 2nf / (f + n - z_ndc (f - n)).
-        float n = frame.clip.x, f = frame.clip.y;
-        float dist = 2.0 * n * f / (f + n - (d * 2.0 - 1.0) * (f - n));
-        // Seed 001: position = viewRay * depth, the ray through the pixel at unit distance.
-        vec2 ndc = uv * 2.0 - 1.0;
-        vec3 ray = vec3(ndc.x * frame.invProj[0][0], ndc.y * frame.invProj[1][1], -1.0);
-        return vec4(ray * dist, 1.0);
+    if (hasFlag(KERNEL_FLAG_POS_FROM_DEPTH)) { // seeds 000 and 001: depth buffer -> distance -> ray
+        float dist = frameLinearDepth(texture(gDepth, uv).r);
+        return dist > 0.0 ? vec4(frameViewPosition(uv, dist), 1.0) : vec4(0.0);
     }
     return texture(gPosition, uv);
 }
@@ -39,8 +32,9 @@ vec4 viewPosition(vec2 uv) {
 float sampleOcclusion(vec3 P, vec3 S, float radius, int set) {
     float bias = ssao.params.x * radius; // a fraction of the radius: scales with the scene
     vec4 clip = frame.proj * vec4(S, 1.0);
-    // Behind the eye (w <= 0) the divide flips the sample across the screen: no pixel to read.
-    if (clip.w <= 1e-5 * frame.clip.x) {
+    // Behind the eye (w <= 0) the divide flips the sample across the screen: no pixel to read
+    // (orthographic: w = 1, every sample projects).
+    if (!frameOrthographic() && clip.w <= 1e-5 * frame.clip.x) {
         INSPECT_TAP(S, vec2(0.0), SSAO_TAP_BEHIND_EYE, 0.0, set);
         return 0.0;
     }

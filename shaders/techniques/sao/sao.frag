@@ -35,7 +35,7 @@ void main() {
     vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(SAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
     float depth = -P.z;
     float R = aoRadius(ssao.aoCommon, depth);
-    float radiusPx = R * frame.proj[1][1] * 0.5 * frame.viewport.y / depth;
+    float radiusPx = R * framePixelsPerUnit(depth);
     float spin = hasFlag(SAO_FLAG_NOISE) ? aoNoise(ssao.aoCommon, gl_FragCoord.xy).x * TWO_PI : 0.0;
     int n = ssao.modes.x;
     float occlusion = 0.0;

@@ -49,11 +49,11 @@ void main() {
     }
     vec3 P = P4.xyz;
     vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(VBAO_FLAG_NORMAL_UNORM));
-    vec3 V = normalize(-P);
+    vec3 V = frameViewVector(P);
     float depth = -P.z;
     // Binary visibility within R, as the reference defines it: no falloff, no radius multiplier.
     float R = aoRadius(ssao.aoCommon, depth);
-    float radiusPx = R * frame.proj[1][1] * 0.5 * frame.viewport.y / depth;
+    float radiusPx = R * framePixelsPerUnit(depth);
     float thickness = ssao.params.x * R;
     float minS = ssao.params.z / max(radiusPx, 1e-6); // first step >= ~1.3 px: no self-occlusion
     int slices = ssao.modes.x, steps = ssao.modes.y;
