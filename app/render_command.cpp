@@ -117,16 +117,17 @@ int runRender(const RenderOptions& o) {
     RunInfo info;
     info.sceneName = scene.name;
     info.triangles = scene.triangleCount();
+    info.sceneOrigin = scene.origin;
     info.style.fit = o.fitRange;
     info.style.falseColor = o.falseColor;
     Camera cam;
     if (!o.camera.empty()) {
         Camera base = scene.camera.value_or(frameBounds(scene.bounds));
         applyCameraOptions(base, o.clip, o.projection, o.depth); // "inf" far needs reversed depth
-        cam = parseCamera(o.camera, base);
+        cam = parseCamera(o.camera, base, scene.origin); // file coordinates
         info.cameraSource = "--camera";
     } else if (preset.camera) { // the preset's camera bookmark
-        cam = *preset.camera;
+        cam = cameraToScene(*preset.camera, scene); // presets hold file coordinates
         info.cameraSource = "preset";
     } else if (scene.camera) {
         cam = *scene.camera;

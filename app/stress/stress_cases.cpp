@@ -25,21 +25,22 @@ std::string sci(double v) {
 }
 } // namespace
 
-Scene transformScene(const Scene& s, double scale, const glm::dvec3& offset) {
+Scene transformScene(const Scene& s, double scale, const glm::dvec3& offset, bool sceneOrigin) {
     Scene out = s;
-    for (Vertex& v : out.vertices)
-        v.position = glm::vec3(glm::dvec3(v.position) * scale + offset);
-    if (out.camera) *out.camera = transformCamera(*out.camera, scale, offset);
+    std::vector<glm::dvec3> world(s.vertices.size());
+    for (size_t i = 0; i < world.size(); ++i)
+        world[i] = s.toWorld(s.vertices[i].position) * scale + offset;
+    out.setWorldPositions(world, sceneOrigin); // a new origin near the moved scene, as the glTF loader picks it
+    if (out.camera) *out.camera = transformCamera(*out.camera, s, out, scale, offset);
     for (auto& [name, c] : out.cameras)
-        c = transformCamera(c, scale, offset);
-    out.computeBounds();
+        c = transformCamera(c, s, out, scale, offset);
     return out;
 }
 
-Camera transformCamera(const Camera& c, double scale, const glm::dvec3& offset) {
+Camera transformCamera(const Camera& c, const Scene& from, const Scene& to, double scale, const glm::dvec3& offset) {
     Camera out = c;
-    out.eye = glm::vec3(glm::dvec3(c.eye) * scale + offset);
-    out.target = glm::vec3(glm::dvec3(c.target) * scale + offset);
+    out.eye = to.toScene(from.toWorld(c.eye) * scale + offset);
+    out.target = to.toScene(from.toWorld(c.target) * scale + offset);
     out.nearZ = float(double(c.nearZ) * scale);
     out.farZ = float(double(c.farZ) * scale);
     return out;
@@ -85,9 +86,15 @@ std::vector<StressCase> stressCases(const std::string& technique) {
         c.scale = s, c.invariant = true;
         cases.push_back(c);
     }
-    for (double t : {1e3, 1e4, 1e5, 1e6}) {
+    for (double t : {1e3, 1e4, 1e5, 1e6, 1e7}) {
         StressCase c{"translate", "+" + sci(t)};
         c.offset = glm::dvec3(t, 0.5 * t, -0.25 * t), c.invariant = true;
+        cases.push_back(c);
+    }
+    // The same without the scene's double-precision origin: what float positions alone lose.
+    for (double t : {1e5, 1e6}) {
+        StressCase c{"translate", "+" + sci(t) + ", float positions (no scene origin)"};
+        c.offset = glm::dvec3(t, 0.5 * t, -0.25 * t), c.compared = true, c.sceneOrigin = false;
         cases.push_back(c);
     }
     // G-buffer precision.

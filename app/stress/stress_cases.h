@@ -20,6 +20,7 @@ struct StressCase {
     std::string variant; // e.g. "1e-4", "x1000", "gtao.steps=32"
     double scale = 1.0;              // the scene and the camera scaled about the origin ...
     glm::dvec3 offset{0.0};          // ... then moved by this (scene units)
+    bool sceneOrigin = true;         // false: float positions in file coordinates (no Scene::origin)
     float nearZ = 0.0f, farZ = 0.0f; // > 0: fixed clip planes, x the scene's diagonal (else fitted); far may be inf
     std::optional<DepthMode> depth;       // unset: the default's
     std::optional<Projection> projection; // unset: perspective
@@ -32,8 +33,11 @@ struct StressCase {
 // Every case for a technique (its own rows at their limits included).
 std::vector<StressCase> stressCases(const std::string& technique);
 
-// The scene scaled about the origin then translated (positions in double, then stored as float).
-Scene transformScene(const Scene& s, double scale, const glm::dvec3& offset);
-Camera transformCamera(const Camera& c, double scale, const glm::dvec3& offset);
+// The scene scaled about the file's origin then translated, in double; the result picks its own
+// origin (Scene::setWorldPositions) as a glTF file placed there would.
+Scene transformScene(const Scene& s, double scale, const glm::dvec3& offset, bool sceneOrigin = true);
+// A camera of `from` (scene frame) moved alike into the frame of `to`.
+Camera transformCamera(const Camera& c, const Scene& from, const Scene& to, double scale,
+                       const glm::dvec3& offset);
 
 } // namespace ssao

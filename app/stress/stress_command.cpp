@@ -114,11 +114,11 @@ int runStress(const StressOptions& o) {
                 try {
                     const bool moves = sc.scale != 1.0 || sc.offset != glm::dvec3(0.0);
                     Scene moved;
-                    if (moves) moved = transformScene(base, sc.scale, sc.offset);
+                    if (moves) moved = transformScene(base, sc.scale, sc.offset, sc.sceneOrigin);
                     const Scene& scene = moves ? moved : base;
                     if (moves || transformed) r.setScene(scene);
                     transformed = moves;
-                    Camera c = transformCamera(cam0, sc.scale, sc.offset);
+                    Camera c = transformCamera(cam0, base, scene, sc.scale, sc.offset);
                     c.clip = ClipMode::Fit;
                     if (sc.camera) sc.camera(c, scene);
                     if (sc.nearZ > 0.0f) {

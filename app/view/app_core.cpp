@@ -57,7 +57,8 @@ AppCore::AppCore(const AppOptions& o)
         scene = loadScene(spec);
     }
     adoptScene(std::move(*scene), spec, false);
-    if (loaded_.camera) camera_.reset(*loaded_.camera, scene_->bounds.radius(), scene_->bounds.center());
+    if (loaded_.camera)
+        camera_.reset(cameraToScene(*loaded_.camera, *scene_), scene_->bounds.radius(), scene_->bounds.center());
     if (o.projection) camera_.setProjection(*o.projection);
     if (o.depth) camera_.setDepth(*o.depth);
     shaderTime_ = renderer_->shaders().newestSourceTime();
@@ -152,7 +153,8 @@ bool AppCore::openPreset(const std::string& nameOrPath) {
         loaded_ = p;
         settings_ = p.settings;
         if (s) adoptScene(std::move(*s), *p.scene, false);
-        if (p.camera) camera_.reset(*p.camera, scene_->bounds.radius(), scene_->bounds.center());
+        if (p.camera)
+            camera_.reset(cameraToScene(*p.camera, *scene_), scene_->bounds.radius(), scene_->bounds.center());
         return "preset " + p.name + " loaded" + (s ? " with its scene " + scene_->name : "") + "; " +
                radiusNote();
     });
@@ -180,7 +182,7 @@ bool AppCore::savePreset(const std::string& name) {
             p.keys.insert(row.key); // a saved preset is complete: it fixes every parameter
         p.scene = sceneSpec_;
         if (fullSize_.first > 0) p.size = fullSize_; // the size when still, not the reduced one while moving
-        p.camera = camera_.camera();                 // the camera as a bookmark
+        p.camera = cameraToFile(camera_.camera(), *scene_); // a bookmark, in the file's coordinates
         const std::string path = store_.save(p);
         loaded_ = p;
         return "saved preset " + name + " to " + path;

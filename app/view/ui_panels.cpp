@@ -92,7 +92,7 @@ void sceneSection(AppCore& app) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Float depth stored as 1 at near, 0 at far: even precision over any far/near\n"
                           "ratio, so a file's own 0.05 .. 1e6 planes no longer z-fight.");
-    const Camera& c = cc.camera();
+    const Camera c = cameraToFile(cc.camera(), sc); // what --camera and presets take
     const Camera& e = app.renderer().camera();
     ImGui::TextDisabled("eye %.4g %.4g %.4g  target %.4g %.4g %.4g", c.eye.x, c.eye.y, c.eye.z, c.target.x,
                         c.target.y, c.target.z);

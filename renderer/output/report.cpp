@@ -135,7 +135,12 @@ nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& 
     const Camera& c = r.camera();
     m["scene"] = {
         {"name", info.sceneName}, {"triangles", info.triangles}, {"diagonal", 2.0f * r.sceneRadius()}};
-    m["camera"] = cameraToJson(c);
+    if (info.sceneOrigin != glm::dvec3(0.0))
+        m["scene"]["origin"] = {info.sceneOrigin.x, info.sceneOrigin.y, info.sceneOrigin.z};
+    Camera fileCamera = c; // in the file's coordinates, as --camera and presets take it
+    fileCamera.eye = glm::vec3(info.sceneOrigin + glm::dvec3(c.eye));
+    fileCamera.target = glm::vec3(info.sceneOrigin + glm::dvec3(c.target));
+    m["camera"] = cameraToJson(fileCamera);
     m["camera"]["source"] = info.cameraSource;
     m["size"] = {r.width(), r.height()};
     m["gl_renderer"] = info.glRenderer;

@@ -13,6 +13,7 @@ namespace ssao {
 struct RunInfo {
     std::string sceneName;
     size_t triangles = 0;
+    glm::dvec3 sceneOrigin{0.0}; // Scene::origin: metrics.json gives the camera in file coordinates
     std::string cameraSource; // "file", "builtin", "framed", "preset" or "--camera"
     std::string glRenderer;
     std::string glPlatform;

@@ -102,8 +102,8 @@ void validateCamera(const Camera& c) {
     }
 }
 
-Camera parseCamera(const std::string& text, const Camera& base) {
-    std::vector<float> v;
+Camera parseCamera(const std::string& text, const Camera& base, const glm::dvec3& origin) {
+    std::vector<double> v;
     std::stringstream ss(text);
     std::string tok;
     while (std::getline(ss, tok, ',')) {
@@ -114,20 +114,20 @@ Camera parseCamera(const std::string& text, const Camera& base) {
         }
         if (!parseDecimal(tok, d)) throw Error("--camera: '" + tok + "' is not a number");
         if (!std::isfinite(float(d))) throw Error("--camera: '" + tok + "' is not a finite number");
-        v.push_back(float(d));
+        v.push_back(d);
     }
     if (!(v.size() == 6 || v.size() == 9 || v.size() == 10 || v.size() == 12))
         throw Error(
             "--camera: expected 6, 9, 10 or 12 numbers (eye, target[, up[, fov[, near, far]]]), got " +
             std::to_string(v.size()));
     Camera c = base;
-    c.eye = {v[0], v[1], v[2]};
-    c.target = {v[3], v[4], v[5]};
-    if (v.size() >= 9) c.up = {v[6], v[7], v[8]};
-    if (v.size() >= 10) c.fovYDeg = v[9];
+    c.eye = glm::vec3(glm::dvec3(v[0], v[1], v[2]) - origin);
+    c.target = glm::vec3(glm::dvec3(v[3], v[4], v[5]) - origin);
+    if (v.size() >= 9) c.up = glm::vec3(v[6], v[7], v[8]);
+    if (v.size() >= 10) c.fovYDeg = float(v[9]);
     if (v.size() >= 12) { // explicit planes are used as given
-        c.nearZ = v[10];
-        c.farZ = v[11];
+        c.nearZ = float(v[10]);
+        c.farZ = float(v[11]);
         c.clip = ClipMode::Fixed;
     }
     validateCamera(c);

@@ -60,7 +60,9 @@ Camera frameBounds(const Bounds& b);
 
 // Parses "ex,ey,ez,tx,ty,tz[,ux,uy,uz[,fov[,near,far]]]" (far may be "inf" with reversed depth).
 // Throws ssao::Error naming the problem.
-Camera parseCamera(const std::string& text, const Camera& base);
+// The numbers are file coordinates; eye and target come back relative to `origin` (Scene::origin),
+// subtracted in double.
+Camera parseCamera(const std::string& text, const Camera& base, const glm::dvec3& origin = glm::dvec3(0.0));
 
 // Throws when the camera would produce NaN matrices (zero direction, near <= 0, far <= near...)
 // or a depth range the depth buffer cannot resolve (standard depth: far/near above

@@ -195,25 +195,32 @@ std::vector<uint32_t> toTriangleList(const std::vector<uint32_t>& in, int mode) 
     return out;
 }
 
-glm::mat4 localMatrix(const tinygltf::Node& n) {
+// In double: a node 1e6 units from the origin keeps its mesh's sub-millimetre detail until the
+// positions are made relative to the scene's origin (Scene::setWorldPositions).
+glm::dmat4 localMatrix(const tinygltf::Node& n) {
     if (n.matrix.size() == 16) {
-        glm::mat4 m;
+        glm::dmat4 m;
         for (int i = 0; i < 16; ++i)
-            glm::value_ptr(m)[i] = float(n.matrix[i]);
+            glm::value_ptr(m)[i] = n.matrix[i];
         return m;
     }
-    glm::mat4 m(1.0f);
+    glm::dmat4 m(1.0);
     if (n.translation.size() == 3)
-        m = glm::translate(m, glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
+        m = glm::translate(m, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
     if (n.rotation.size() == 4)
-        m *= glm::mat4_cast(glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]),
-                                      float(n.rotation[2])));
-    if (n.scale.size() == 3) m = glm::scale(m, glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
+        m *= glm::mat4_cast(glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]));
+    if (n.scale.size() == 3) m = glm::scale(m, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
     return m;
 }
 
-void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, const glm::mat4& world, Scene& s,
-                     const std::string& what) {
+bool finite3(const glm::dvec3& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+// Appends the primitive's triangles; positions go to `world` (file coordinates, double), one per
+// vertex, to be made relative to the scene's origin once every mesh is in.
+void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, const glm::dmat4& world, Scene& s,
+                     std::vector<glm::dvec3>& worldPos, const std::string& what) {
     auto posIt = p.attributes.find("POSITION");
     if (posIt == p.attributes.end()) throw Error(what + ": primitive has no POSITION");
     Vec3Reader pos = vec3Accessor(m, posIt->second, what + " POSITION");
@@ -226,8 +233,8 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
         throw Error(what + ": the scene expands past the budget of " + std::to_string(budget) +
                     " triangles (raise it with ssaolab --max-triangles N)");
 
-    const glm::mat3 normalMat = glm::transpose(glm::inverse(glm::mat3(world)));
-    const bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
+    const glm::mat3 normalMat = glm::mat3(glm::transpose(glm::inverse(glm::dmat3(world))));
+    const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
     Draw d;
     d.firstIndex = uint32_t(s.indices.size());
     if (p.material >= 0 && p.material < int(m.materials.size())) {
@@ -240,13 +247,14 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
         Vec3Reader nrm = vec3Accessor(m, nrmIt->second, what + " NORMAL");
         if (nrm.count != pos.count) throw Error(what + ": NORMAL count differs from POSITION count");
         for (size_t i = 0; i < pos.count; ++i) {
-            glm::vec3 wp = glm::vec3(world * glm::vec4(pos[i], 1.0f));
-            if (!std::isfinite(wp.x) || !std::isfinite(wp.y) || !std::isfinite(wp.z))
+            const glm::dvec3 wp = glm::dvec3(world * glm::dvec4(glm::dvec3(pos[i]), 1.0));
+            if (!finite3(wp) || !finite3(glm::dvec3(glm::vec3(wp))))
                 throw Error(what + ": POSITION " + std::to_string(i) + " is not finite");
             glm::vec3 n = normalMat * nrm[i];
             float len = glm::length(n);
             n = (len > 1e-20f && std::isfinite(len)) ? n / len : glm::vec3(0, 1, 0);
-            s.vertices.push_back({wp, n});
+            s.vertices.push_back({glm::vec3(0.0f), n});
+            worldPos.push_back(wp);
         }
         for (size_t t = 0; t + 2 < idx.size(); t += 3) {
             uint32_t a = idx[t], b = idx[t + 1], c = idx[t + 2];
@@ -257,20 +265,20 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
         // No normals: flat normals per face (glTF spec: "client implementations MUST calculate flat
         // normals").
         for (size_t t = 0; t + 2 < idx.size(); t += 3) {
-            glm::vec3 p0 = glm::vec3(world * glm::vec4(pos[idx[t]], 1.0f));
-            glm::vec3 p1 = glm::vec3(world * glm::vec4(pos[idx[t + 1]], 1.0f));
-            glm::vec3 p2 = glm::vec3(world * glm::vec4(pos[idx[t + 2]], 1.0f));
-            for (const glm::vec3& q : {p0, p1, p2})
-                if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
+            auto at = [&](uint32_t i) { return glm::dvec3(world * glm::dvec4(glm::dvec3(pos[i]), 1.0)); };
+            glm::dvec3 p0 = at(idx[t]), p1 = at(idx[t + 1]), p2 = at(idx[t + 2]);
+            for (const glm::dvec3& q : {p0, p1, p2})
+                if (!finite3(q) || !finite3(glm::dvec3(glm::vec3(q))))
                     throw Error(what + ": a POSITION is not finite");
             if (mirrored) std::swap(p1, p2);
-            glm::vec3 n = glm::cross(p1 - p0, p2 - p0);
-            float len = glm::length(n);
-            n = len > 1e-30f ? n / len : glm::vec3(0, 1, 0);
+            glm::dvec3 nd = glm::cross(p1 - p0, p2 - p0);
+            const double len = glm::length(nd);
+            const glm::vec3 n = len > 1e-30 && std::isfinite(len) ? glm::vec3(nd / len) : glm::vec3(0, 1, 0);
             uint32_t v0 = uint32_t(s.vertices.size());
-            s.vertices.push_back({p0, n});
-            s.vertices.push_back({p1, n});
-            s.vertices.push_back({p2, n});
+            for (const glm::dvec3& q : {p0, p1, p2}) {
+                s.vertices.push_back({glm::vec3(0.0f), n});
+                worldPos.push_back(q);
+            }
             s.indices.insert(s.indices.end(), {v0, v0 + 1, v0 + 2});
         }
     }
@@ -278,8 +286,9 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
     if (d.indexCount) s.draws.push_back(d);
 }
 
+// The camera in file coordinates (made relative to the scene's origin by the caller).
 std::optional<Camera> cameraFromNode(const tinygltf::Model& m, const tinygltf::Node& n,
-                                     const glm::mat4& world) {
+                                     const glm::dmat4& world, glm::dvec3& eyeOut) {
     const auto& c = m.cameras[n.camera];
     if (c.type != "perspective") {
         std::fprintf(stderr, "note: glTF camera '%s' is %s; framing the scene instead\n", c.name.c_str(),
@@ -287,10 +296,10 @@ std::optional<Camera> cameraFromNode(const tinygltf::Model& m, const tinygltf::N
         return std::nullopt;
     }
     Camera cam;
-    cam.eye = glm::vec3(world * glm::vec4(0, 0, 0, 1));
-    glm::vec3 fwd = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
-    cam.target = cam.eye + fwd; // a direction only: placeOrbitTarget() puts the target in the scene
-    cam.up = glm::normalize(glm::vec3(world * glm::vec4(0, 1, 0, 0)));
+    eyeOut = glm::dvec3(world * glm::dvec4(0, 0, 0, 1));
+    cam.eye = glm::vec3(0.0f);
+    cam.target = glm::vec3(glm::normalize(glm::dvec3(world * glm::dvec4(0, 0, -1, 0)))); // a direction
+    cam.up = glm::vec3(glm::normalize(glm::dvec3(world * glm::dvec4(0, 1, 0, 0))));
     cam.fovYDeg = float(glm::degrees(c.perspective.yfov));
     cam.nearZ = float(c.perspective.znear);
     cam.farZ = c.perspective.zfar > 0.0 ? float(c.perspective.zfar) : 0.0f; // 0 = infinite, fixed up later
@@ -373,7 +382,9 @@ Scene loadGltf(const std::string& path) {
     std::vector<char> onPath(model.nodes.size(), 0);
     size_t visits = 0;
     constexpr size_t kMaxVisits = 1000000;
-    std::function<void(int, const glm::mat4&, int)> visit = [&](int ni, const glm::mat4& parent, int depth) {
+    std::vector<glm::dvec3> worldPos;   // per vertex, file coordinates
+    std::vector<glm::dvec3> cameraEyes; // per entry of s.cameras, file coordinates
+    std::function<void(int, const glm::dmat4&, int)> visit = [&](int ni, const glm::dmat4& parent, int depth) {
         if (ni < 0 || ni >= int(model.nodes.size()))
             throw Error("glTF " + path + ": node index " + std::to_string(ni) + " does not exist");
         if (onPath[size_t(ni)])
@@ -383,20 +394,21 @@ Scene loadGltf(const std::string& path) {
             throw Error("glTF " + path + ": more than 1 million node instances (shared nodes multiply)");
         onPath[size_t(ni)] = 1;
         const auto& n = model.nodes[ni];
-        glm::mat4 world = parent * localMatrix(n);
+        const glm::dmat4 world = parent * localMatrix(n);
         if (n.mesh >= 0) {
             if (n.mesh >= int(model.meshes.size()))
                 throw Error("glTF " + path + ": node refers to missing mesh");
             const auto& mesh = model.meshes[n.mesh];
             for (const auto& p : mesh.primitives)
-                appendPrimitive(model, p, world, s, "glTF mesh '" + mesh.name + "'");
+                appendPrimitive(model, p, world, s, worldPos, "glTF mesh '" + mesh.name + "'");
         }
         if (n.camera >= 0 && n.camera < int(model.cameras.size())) {
-            if (auto cam = cameraFromNode(model, n, world)) {
+            glm::dvec3 eye;
+            if (auto cam = cameraFromNode(model, n, world, eye)) {
                 std::string name = !n.name.empty() ? n.name : model.cameras[n.camera].name;
                 s.cameras.emplace_back(name.empty() ? "camera " + std::to_string(s.cameras.size()) : name,
                                        *cam);
-                if (!s.camera) s.camera = cam;
+                cameraEyes.push_back(eye);
             }
         }
         for (int c : n.children)
@@ -404,9 +416,16 @@ Scene loadGltf(const std::string& path) {
         onPath[size_t(ni)] = 0;
     };
     for (int r : roots)
-        visit(r, glm::mat4(1.0f), 0);
+        visit(r, glm::dmat4(1.0), 0);
     if (s.indices.empty()) throw Error("glTF " + path + " has no triangles to render");
-    s.computeBounds();
+    s.setWorldPositions(worldPos);
+    for (size_t i = 0; i < s.cameras.size(); ++i) { // eye and target in the scene frame
+        Camera& c = s.cameras[i].second;
+        const glm::vec3 dir = c.target;
+        c.eye = s.toScene(cameraEyes[i]);
+        c.target = c.eye + dir;
+    }
+    if (!s.cameras.empty()) s.camera = s.cameras.front().second;
     if (!s.bounds.valid() || !std::isfinite(s.bounds.radius()))
         throw Error("glTF " + path + " has non-finite positions");
     if (!(s.bounds.radius() > 0.0f))

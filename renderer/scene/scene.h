@@ -1,5 +1,11 @@
 // CPU scene: world-space triangles (instances flattened), grouped into draws by material.
-// The same data feeds the GL renderer and, later, the Embree reference tracer.
+// The same data feeds the GL renderer and the Embree reference tracer.
+//
+// Positions are stored relative to `origin`, a double-precision point near the scene: a scene
+// placed 1e6 units from the file's origin would otherwise keep its vertices 1/16 unit apart
+// (float's spacing at 1e6) and its view matrix would cancel two large numbers. Everything inside
+// the renderer (vertices, bounds, cameras) is in this scene frame; only what the user reads or
+// writes (--camera, preset cameras, metrics.json) is in the file's coordinates.
 #pragma once
 #include "scene/camera.h"
 
@@ -13,7 +19,7 @@
 namespace ssao {
 
 struct Vertex {
-    glm::vec3 position; // world space (scene units: metres for glTF, mm for the CAD scenes)
+    glm::vec3 position; // scene frame: file coordinates - Scene::origin (metres for glTF, mm for CAD)
     glm::vec3 normal;   // world space, unit length
 };
 
@@ -43,10 +49,23 @@ struct Scene {
     Bounds bounds;
     std::optional<Camera> camera; // the file's first camera, or a built-in scene's designed view
     std::vector<std::pair<std::string, Camera>> cameras; // every perspective camera of the file, named
+    glm::dvec3 origin{0.0}; // file coordinates of the scene frame's origin
 
     size_t triangleCount() const { return indices.size() / 3; }
     void computeBounds();
+    // Sets every vertex position from file coordinates: picks the origin (the bounds' centre when
+    // the scene lies farther than its own size from the file's origin, else 0), stores positions
+    // relative to it and computes the bounds. `world` has one entry per vertex. rebase = false
+    // keeps the origin at 0 (float positions in file coordinates: what stress compares against).
+    void setWorldPositions(const std::vector<glm::dvec3>& world, bool rebase = true);
+    glm::dvec3 toWorld(const glm::vec3& p) const { return origin + glm::dvec3(p); }
+    glm::vec3 toScene(const glm::dvec3& p) const { return glm::vec3(p - origin); }
 };
+
+// A camera between the file's coordinates (what --camera, presets and metrics.json hold) and the
+// scene frame (what the renderer draws with).
+Camera cameraToScene(const Camera& fileCamera, const Scene& s);
+Camera cameraToFile(const Camera& sceneCamera, const Scene& s);
 
 // What a scene may expand to once instances are flattened (a 1.5 KB file can list one 65k-vertex
 // accessor in thousands of primitives). Loading a scene past it is a clear error naming the budget;

@@ -67,11 +67,34 @@ TEST(Gltf, Uint8IndicesNodeTransformMaterialAndFlatNormals) {
     ASSERT_EQ(s.draws.size(), 1u);
     EXPECT_EQ(s.draws[0].baseColor, glm::vec4(0.5f, 0.25f, 1.0f, 1.0f));
     for (auto& v : s.vertices) {
-        EXPECT_FLOAT_EQ(v.position.y, 2.0f); // node translation applied
+        EXPECT_DOUBLE_EQ(s.toWorld(v.position).y, 2.0); // node translation applied (file coordinates)
         // No NORMAL: flat normal of the counter-clockwise face (0,0,0),(1,0,0),(0,0,-1) is +y.
         EXPECT_NEAR(v.normal.y, 1.0f, 1e-6f);
     }
     EXPECT_FALSE(s.camera.has_value());
+}
+
+TEST(Gltf, AMeshFarFromTheOriginKeepsItsDetailInTheSceneFrame) {
+    // The triangle (0,0,0),(1e-3,0,0),(0,0,-1e-3) translated 1e6 units: as float file coordinates
+    // its corners would be 1/16 unit apart (one point); relative to the scene's double-precision
+    // origin they keep their millimetre.
+    std::string text = triangleGltf();
+    const std::string from = "\"translation\":[0,2,0]";
+    ASSERT_NE(text.find(from), std::string::npos);
+    text.replace(text.find(from), from.size(), "\"translation\":[1000000,2,-500000],\"scale\":[0.001,0.001,0.001]");
+    const Scene s = loadGltf(writeTemp("far_tri.gltf", text));
+    EXPECT_NEAR(s.origin.x, 1e6, 1.0);
+    EXPECT_NEAR(s.origin.z, -5e5, 1.0);
+    EXPECT_NEAR(2.0f * s.bounds.radius(), std::sqrt(2.0f) * 1e-3f, 1e-7f);
+    for (const Vertex& v : s.vertices)
+        EXPECT_LT(glm::length(v.position), 1e-3f); // small numbers: full float precision
+    EXPECT_NEAR(s.toWorld(s.vertices[1].position).x - s.toWorld(s.vertices[0].position).x, 1e-3, 1e-9);
+    // --camera takes file coordinates; the renderer gets them relative to the origin.
+    Camera base;
+    const Camera c = parseCamera("1000000,2.01,-499999.99,1000000,2,-500000", base, s.origin);
+    EXPECT_NEAR(c.eye.y, 2.01f - float(s.origin.y), 1e-6f);
+    EXPECT_NEAR(glm::length(c.eye - c.target), std::sqrt(2e-4f), 1e-6f); // not 1/16-unit steps
+    EXPECT_NEAR(cameraToFile(c, s).eye.x, 1e6f, 0.1f);
 }
 
 TEST(Gltf, RequiredDracoIsAClearError) {
