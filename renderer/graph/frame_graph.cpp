@@ -220,6 +220,8 @@ FrameReport FrameGraph::execute(const FrameInfo& frame, gl::ShaderLibrary& shade
         std::string key = base + n.settingsKey;
         if (n.decl.scene) key += "|scene" + std::to_string(frame.sceneVersion);
         if (n.decl.camera) key += cameraKey(*frame.camera);
+        // Noise rotated per temporal frame: a pass last run at frame 7 is stale once temporal is off.
+        if (n.decl.frameIndex) key += "|t" + std::to_string(frame.temporalFrame);
         if (const uint64_t ext = n.pass->externalVersion()) key += "|ext" + std::to_string(ext);
         for (const auto& r : n.decl.reads)
             key += "|" + r + "@" + std::to_string(get(r).version);

@@ -39,6 +39,7 @@ struct PassDecl {
     std::vector<ResourceDesc> writes;
     std::vector<std::string> groups; // parameter-table groups whose values key this pass
     bool scene = false, camera = false;
+    bool frameIndex = false; // its noise follows the temporal frame index (frame.clip.w)
 };
 
 class PassBuilder {
@@ -49,6 +50,7 @@ class PassBuilder {
     void settings(const std::string& group) { d_.groups.push_back(group); }
     void usesScene() { d_.scene = true; }
     void usesCamera() { d_.camera = true; }
+    void usesFrameIndex() { d_.frameIndex = true; }
 
   private:
     PassDecl& d_;

@@ -16,7 +16,8 @@ void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
     const bool bilateral = s.denoise.kind == DenoiseKind::Bilateral;
     tmp.scale = bilateral ? 1.0f : resolutionScale(s.ao.resolution);
     tmp.internal = true;
-    if (bilateral || s.temporal.enabled) b.read("gbuffer.depth");
+    if (bilateral || s.temporal.enabled || s.skip.sky) b.read("gbuffer.depth");
+    b.settings("skip");
     if (bilateral) b.read("gbuffer.normal");
     if (s.temporal.enabled) {
         b.settings("temporal");
@@ -42,11 +43,12 @@ void DenoisePass::separable(PassContext& ctx) {
                       out = branch().res("ao.denoised");
     const bool upsample = ctx.size(tmp) != ctx.size(out);
     glUseProgram(ctx.shaders.program("passes/fullscreen.vert", "passes/denoise.frag"));
+    if (ctx.settings.skip.sky) ctx.in("gbuffer.depth").bind(SSAO_TEX_LINEAR_DEPTH);
     for (int dir = 0; dir < 2; ++dir) {
         if (!ubo_[dir])
             ubo_[dir] =
                 gl::UniformBuffer(sizeof(gpu::DenoiseConstants), name() + (dir ? ".y" : ".x") + ".constants");
-        const gpu::DenoiseConstants c = packDenoiseConstants(ctx.settings.denoise, dir);
+        const gpu::DenoiseConstants c = packDenoiseConstants(ctx.settings.denoise, dir, dir == 1 && ctx.settings.skip.sky);
         ubo_[dir].upload(&c, sizeof c);
         ubo_[dir].bind(SSAO_UBO_DENOISE);
         ctx.in(dir == 0 ? raw : tmp).bind(SSAO_TEX_AO);

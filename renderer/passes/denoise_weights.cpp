@@ -5,7 +5,7 @@
 
 namespace ssao {
 
-gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int direction) {
+gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int direction, bool skipSky) {
     gpu::DenoiseConstants c{};
     int count = 0;
     if (d.kind == DenoiseKind::Box4) {
@@ -35,7 +35,7 @@ gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int directi
     } else {
         c.offsetsWeights[count++] = {0.0f, 1.0f, 0.0f, 0.0f};
     }
-    c.taps = {count, direction, 0, 0};
+    c.taps = {count, direction, skipSky ? SSAO_DENOISE_SKIP_SKY : 0, 0};
     return c;
 }
 

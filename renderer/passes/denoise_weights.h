@@ -9,7 +9,9 @@ namespace ssao {
 // Direction 0 = x, 1 = y. Box4 → taps -2..1, weight 1/4 (seed 004); Box4Centred → taps at
 // -1.5, -0.5, 0.5, 1.5 (read bilinearly: the DenoisePass binds a linear sampler); gaussian → taps -r..r at
 // `spacing` pixels, weights exp(-i²/(2σ²)) normalised; none → the centre tap (a copy).
-gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int direction);
+// skipSky: this pass returns 1 on sky pixels without filtering (only the last pass: the x pass's
+// values at sky pixels feed the y pass's neighbours).
+gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int direction, bool skipSky = false);
 
 // Bilateral: taps = (half-width clamped to 8, unused, flags, unused); offsetsWeights[0] =
 // (sigma, depth sharpness, normal power, unused). Flags: SSAO_DENOISE_NORMAL_UNORM.

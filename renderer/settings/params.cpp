@@ -79,6 +79,12 @@ std::vector<Param> coreRows() {
                  "alone (as an engine without a normal target must), using on each axis the neighbour with the "
                  "smaller depth difference so silhouettes do not bend the normal.",
                  ({{"gbuffer", NormalSource::GBuffer}, {"depth", NormalSource::Depth}})),
+        BOOL_ROW("ao.adaptive", "Adaptive samples", ao.adaptive,
+                 "ASSAO/CACAO-style: pixels whose radius covers only a few pixels (far away) take fewer "
+                 "samples - at most one per pixel of radius along a march, one per ~4 pixels of the disc "
+                 "for area samplers. Faster on distant geometry; the error change is measured in "
+                 "docs/benchmarks.md. (The kernel's samples are a fixed set: it keeps them all.)")
+            .onlyWhen("ao.technique", {"sao", "hbao", "gtao", "vbao"}),
         // ---- Denoise --------------------------------------------------------------------------
         ENUM_ROW("denoise.kind", "Denoise", denoise.kind, DenoiseKind,
                  "Removes the sampling noise: none, 4x4 box (seed 004: taps -2..+1, shifted half a pixel), "
@@ -126,6 +132,15 @@ std::vector<Param> coreRows() {
                   "Intensity of the one point light at the camera (0 shows ambient * AO only)."),
         BOOL_ROW("composite.ao", "Apply AO", composite.useAo,
                  "Multiply the ambient term by AO; off shows the same frame without AO."),
+        // ---- Skips: work the frame does not need ----------------------------------------------
+        BOOL_ROW("skip.sky", "Skip sky", skip.sky,
+                 "AO and the denoiser's last pass return at once where there is no geometry (off: sky "
+                 "pixels run the full estimate, then are discarded - same image, to measure the saving)."),
+        BOOL_ROW("skip.cull", "Frustum culling", skip.cull,
+                 "The G-buffer pass does not draw meshes whose bounding box lies outside the view."),
+        BOOL_ROW("skip.unused_targets", "Skip unused targets", skip.unusedTargets,
+                 "The G-buffer writes only the targets that the technique, the denoiser, the composite or a "
+                 "shown buffer reads (e.g. no albedo while only AO is shown)."),
     };
     return rows;
 }

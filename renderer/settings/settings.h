@@ -30,6 +30,9 @@ struct AoSettings {
     float power = 1.0f;        // AO = visibility^power (seed 001; XeGTAO FinalValuePower)
     AoResolution resolution = AoResolution::Full;
     NormalSource normals = NormalSource::GBuffer; // depth: reconstructed from positions (no normal target)
+    // ASSAO/CACAO-style: a pixel whose radius spans few pixels takes fewer samples (no more than
+    // one per pixel of radius along a march; area samplers one per ~4 pixels of the disc).
+    bool adaptive = false;
 };
 
 struct DenoiseSettings {
@@ -56,12 +59,21 @@ struct CompositeSettings {
     bool useAo = true;    // false: the same image without AO (N8AO-style on/off compare)
 };
 
+// Work a frame does not need, skipped; each switch exists so the saving can be measured against
+// the same frame without it (`ssaolab skips`, docs/benchmarks.md). Exact: the image is the same.
+struct SkipSettings {
+    bool sky = true;           // AO and the denoiser's last pass return at once on sky pixels
+    bool cull = true;          // G-buffer: meshes whose bounds lie outside the view are not drawn
+    bool unusedTargets = true; // G-buffer: targets no pass or view reads are not written
+};
+
 struct Settings : TechniqueSettings {
     GBufferSettings gbuffer;
     AoSettings ao;
     DenoiseSettings denoise;
     TemporalSettings temporal;
     CompositeSettings composite;
+    SkipSettings skip;
 };
 
 } // namespace ssao

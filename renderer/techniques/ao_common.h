@@ -21,6 +21,9 @@ float worldRadius(const AoSettings& s, float sceneDiagonal, float depth, float u
 // The radius in pixels of the G-buffer at view depth `depth`.
 float radiusInPixels(const AoSettings& s, float sceneDiagonal, float depth, float unitsPerPixel);
 
-gpu::AoCommon packAoCommon(const AoSettings& s, float sceneDiagonal, float unitsPerPixel, glm::ivec2 target);
+// skipSky: SkipSettings::sky (flags.x; a uniform, not a shader variant, so geometry pixels run the
+// very same code either way and the skip stays bit-exact).
+gpu::AoCommon packAoCommon(const AoSettings& s, float sceneDiagonal, float unitsPerPixel, glm::ivec2 target,
+                           bool skipSky = true);
 
 } // namespace ssao

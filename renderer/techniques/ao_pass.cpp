@@ -20,8 +20,10 @@ void AoPass::declarePositionsNormals(PassBuilder& b, const Settings& s, const ch
     b.write(rawOutput(s));
     b.settings("ao");
     b.settings(group);
+    b.settings("skip");
     b.usesScene();  // scene-relative radius
     b.usesCamera(); // projection: the radius in pixels
+    b.usesFrameIndex(); // noise
 }
 
 void AoPass::bindPositionsNormals(PassContext& ctx) const {
@@ -34,7 +36,8 @@ gpu::AoCommon AoPass::common(PassContext& ctx) const {
     const glm::mat4 proj = f.camera->projection(float(f.width) / float(f.height));
     // A radius in pixels means displayed pixels, also while the app renders reduced.
     const float upp = unitsPerPixelAtUnitDepth(proj, f.height) * f.displayScale;
-    return packAoCommon(ctx.settings.ao, 2.0f * f.sceneRadius, upp, ctx.size(branch().res("ao.raw")));
+    return packAoCommon(ctx.settings.ao, 2.0f * f.sceneRadius, upp, ctx.size(branch().res("ao.raw")),
+                        ctx.settings.skip.sky);
 }
 
 void AoPass::bindShared(PassContext& ctx, const gpu::AoCommon& c) {

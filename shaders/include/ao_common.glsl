@@ -58,3 +58,29 @@ vec3 aoNormal(AoCommon_ c, sampler2D positions, sampler2D normals, vec2 uv, vec3
     float l2 = dot(N, N);
     return l2 > 1e-12 ? N * inversesqrt(l2) : vec3(0.0, 0.0, 1.0);
 }
+
+// Sky pixels (no geometry: position w = 0) are unoccluded. With skip.sky (common.flags.x = 1, the
+// default) they return 1 at once; without, they run the whole estimate on a stand-in surface facing
+// the camera two scene radii away and AO_RESULT discards it: the same image, and the time shows
+// what the skip saves (`ssaolab skips`). A uniform, not a shader variant: geometry pixels run the
+// same compiled code either way (two variants may round a multiply-add differently and flip a
+// sample's depth test).
+#define AO_SKY_EARLY_OUT(P4, uv)                                                                   \
+    bool aoSky = P4.w == 0.0;                                                                      \
+    if (aoSky && ssao.aoCommon.flags.x != 0.0) {                                                   \
+        oAO = 1.0;                                                                                 \
+        INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);                           \
+        return;                                                                                    \
+    }                                                                                              \
+    if (aoSky) P4 = vec4(frameViewPosition(uv, 2.0 * frame.clip.z), 1.0);
+#define AO_RESULT(v) (aoSky ? max((v), 1.0) : (v))
+
+// Adaptive sample counts (ao.adaptive, common.flags.y; ASSAO/CACAO-style): a march needs no more
+// than one step per pixel of radius, an area sampler about one sample per 4 pixels of the disc.
+int aoAdaptiveSteps(AoCommon_ c, int steps, float radiusPx) {
+    return c.flags.y != 0.0 ? clamp(int(ceil(radiusPx)), min(steps, 2), steps) : steps;
+}
+int aoAdaptiveSamples(AoCommon_ c, int samples, float radiusPx) {
+    return c.flags.y != 0.0 ? clamp(int(ceil(0.785398 * radiusPx * radiusPx)), min(samples, 4), samples)
+                            : samples; // pi r^2 / 4
+}

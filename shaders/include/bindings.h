@@ -28,6 +28,7 @@
 #define SSAO_MAX_DENOISE_TAPS 65 // 2*32+1 taps of a 1-D kernel
 #define SSAO_BILATERAL_MAX_HALF_WIDTH 8 // the bilateral's 2-D window: at most 17x17
 #define SSAO_DENOISE_NORMAL_UNORM 1     // bilateral: normals stored as (n+1)/2
+#define SSAO_DENOISE_SKIP_SKY 2         // separable, last pass: sky pixels return 1 unfiltered
 #define SSAO_INSPECT_MAX_TAPS 1024
 
 // Radius modes as the shaders see them (scene mode is resolved to world units on the CPU).
@@ -85,6 +86,7 @@ SSAO_STRUCT AoCommon_ {
     vec4 shape;  // x: power, y: noise kind (SSAO_NOISE_*), z: normal source (SSAO_NORMALS_*),
                  // w: position-pyramid offset: taps d pixels away read MIP log2(d) - w (0 = no pyramid)
     vec4 target; // AO target width, height, 1/width, 1/height (pixels)
+    vec4 flags;  // x: 1 = sky pixels return at once (skip.sky), y: 1 = adaptive sample counts, z, w: 0
 };
 
 SSAO_STRUCT DenoiseConstants_ {
@@ -111,7 +113,7 @@ using DenoiseConstants = DenoiseConstants_;
 using InspectHeader = InspectHeader_;
 using InspectTap = InspectTap_;
 static_assert(sizeof(FrameConstants) == 3 * 64 + 3 * 16, "std140 layout");
-static_assert(sizeof(AoCommon) == 3 * 16, "std140 layout");
+static_assert(sizeof(AoCommon) == 4 * 16, "std140 layout");
 static_assert(sizeof(DenoiseConstants) == 16 + SSAO_MAX_DENOISE_TAPS * 16, "std140 layout");
 static_assert(sizeof(InspectHeader) == 4 * 16 && sizeof(InspectTap) == 2 * 16, "std430 layout");
 } // namespace ssao::gpu

@@ -8,11 +8,17 @@
 
 layout(std140, binding = SSAO_UBO_DENOISE) uniform DenoiseBlock { DenoiseConstants_ denoise; };
 layout(binding = SSAO_TEX_AO) uniform sampler2D aoIn;
+layout(binding = SSAO_TEX_LINEAR_DEPTH) uniform sampler2D gDepth; // read with SSAO_DENOISE_SKIP_SKY
 
 in vec2 vUv;
 layout(location = 0) out float oAO;
 
 void main() {
+    // The last pass writes nothing a later pass filters: sky pixels (no surface to shade) skip it.
+    if ((denoise.taps.z & SSAO_DENOISE_SKIP_SKY) != 0 && !(textureLod(gDepth, vUv, 0.0).r > 0.0)) {
+        oAO = 1.0;
+        return;
+    }
     vec2 texel = 1.0 / vec2(textureSize(aoIn, 0));
     vec2 dir = denoise.taps.y == 0 ? vec2(texel.x, 0.0) : vec2(0.0, texel.y);
     float sum = 0.0;

@@ -1,10 +1,11 @@
 // Every value of every parameter: finite, in [0,1], and it changes the image it claims to change
-// (a mode with no effect is a bug). The list comes from the parameter table, so a new row is
+// (a mode with no effect is a bug) - except the skip switches, which must change nothing. The list comes from the parameter table, so a new row is
 // swept without editing this file.
 #include "gl_fixture.h"
 
 #include "scene/scene.h"
 
+#include <cmath>
 #include <set>
 
 using namespace ssao;
@@ -34,7 +35,7 @@ std::vector<double> valuesToTry(const Param& p) {
 }
 
 struct Images {
-    Image gbuffer, raw, ao, composite;
+    Image gbuffer, raw, ao, composite, mask;
 };
 Images renderImages(Renderer& r, const Settings& s) {
     r.setSettings(s);
@@ -44,10 +45,21 @@ Images renderImages(Renderer& r, const Settings& s) {
     Image g = readBack(r.texture("gbuffer.position"), 3), n = readBack(r.texture("gbuffer.normal"), 3);
     g.data.insert(g.data.end(), n.data.begin(), n.data.end());
     return {g, readBack(r.texture("ao.raw"), 1), readBack(r.texture("ao.denoised"), 1),
-            readBack(r.texture("composite"), 3)};
+            readBack(r.texture("composite"), 3), readBack(r.texture("gbuffer.position"), 4).channel(3)};
 }
+
 bool differ(const Image& a, const Image& b) {
     return a.width != b.width || a.data != b.data;
+}
+double maxAbsDiff(const Image& a, const Image& b, const Image* mask = nullptr) {
+    if (a.width != b.width || a.height != b.height || a.channels != b.channels) return INFINITY;
+    double worst = 0.0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+            for (int c = 0; c < a.channels; ++c)
+                if (!mask || mask->at(x, y) != 0.0f)
+                    worst = std::max(worst, double(std::abs(a.at(x, y, c) - b.at(x, y, c))));
+    return worst;
 }
 } // namespace
 
@@ -80,6 +92,13 @@ TEST_F(Modes, EveryValueOfEveryParameterIsFiniteAndChangesTheImage) {
             // same AO), the denoise group filters; every other group changes the AO itself.
             if (movingOnly.count(p.key)) {
                 // finite and in range is all a still frame can check
+            } else if (p.group() == "skip") {
+                // A skip is exact: the same image, only less work (to float rounding: another shader
+                // variant may contract a multiply-add differently).
+                EXPECT_EQ(maxAbsDiff(out.gbuffer, ref.gbuffer), 0.0) << what << " changed the G-buffer";
+                EXPECT_LT(maxAbsDiff(out.raw, ref.raw), 1e-6) << what << " changed the raw AO";
+                EXPECT_LT(maxAbsDiff(out.ao, ref.ao, &ref.mask), 1e-6) << what << " changed the AO";
+                EXPECT_LT(maxAbsDiff(out.composite, ref.composite), 1e-5) << what << " changed the composite";
             } else if (limits.count(p.key))
                 changedLimit += differ(out.raw, ref.raw) || differ(out.ao, ref.ao);
             else if (p.group() == "gbuffer")

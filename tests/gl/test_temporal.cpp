@@ -6,6 +6,7 @@
 #include "output/reference_report.h"
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace ssao;
@@ -46,6 +47,23 @@ TEST_F(Temporal, EightFramesLowerTheErrorThenTheFrameStaysStill) {
     std::printf("GTAO without a spatial denoiser on CornellBox: RMSE %.4f one frame, %.4f after 8\n", rmse[0],
                 rmse[1]);
     EXPECT_LT(rmse[1], rmse[0] - 0.002);
+}
+
+TEST_F(Temporal, TurningItOffRunsTheAoAgainWithFrameZerosNoise) {
+    // The AO pass's key lacked the frame index: after accumulating, temporal off kept the raw AO of
+    // the last frame's noise (a different image from a fresh render of the same settings).
+    const Scene scene = loadScene("builtin:showcase");
+    auto fresh = makeRenderer(scene, temporalSettings(false), 160, 90);
+    fresh->render();
+    const Image expected = readBack(fresh->texture("ao.raw"), 1);
+    auto r = makeRenderer(scene, temporalSettings(true), 160, 90);
+    do
+        r->render();
+    while (r->accumulating());
+    r->setSettings(temporalSettings(false));
+    const FrameReport f = r->render();
+    EXPECT_NE(std::find(f.ran().begin(), f.ran().end(), "ao"), f.ran().end());
+    EXPECT_EQ(meanAbsDiff(readBack(r->texture("ao.raw"), 1), expected), 0.0);
 }
 
 TEST_F(Temporal, AccumulationIsDeterministic) {

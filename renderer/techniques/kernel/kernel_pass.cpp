@@ -11,8 +11,10 @@ void KernelPass::setup(PassBuilder& b, const Settings& s) const {
     b.write(rawOutput(s));
     b.settings("ao");
     b.settings("kernel");
+    b.settings("skip");
     b.usesScene();  // scene-relative radius
     b.usesCamera(); // screen-space radius, projection
+    b.usesFrameIndex(); // the noise tile's shift
 }
 
 std::string KernelPass::prepare(PassContext& ctx) {

@@ -27,11 +27,7 @@ bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
 void main() {
     vec2 uv0 = aoPixelUv(vUv); // the G-buffer texel this AO pixel stands for
     vec4 P4 = texture(gPosition, uv0);
-    if (P4.w == 0.0) { // sky: unoccluded, no work spent
-        oAO = 1.0;
-        INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
-        return;
-    }
+    AO_SKY_EARLY_OUT(P4, uv0) // sky: unoccluded, no work spent (ao_common.glsl)
     vec3 P = P4.xyz;
     vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(GTAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
     vec3 V = frameViewVector(P);
@@ -45,7 +41,7 @@ void main() {
     // The first step lands at least ~1.3 px away: sampling the pixel itself gives a zero delta
     // (NaN direction) and self-occlusion lines (XeGTAO minS; HBAO "first step >= 1 px").
     float minS = ssao.params2.y / max(radiusPx, 1e-6);
-    int slices = ssao.modes.x, steps = ssao.modes.y;
+    int slices = ssao.modes.x, steps = aoAdaptiveSteps(ssao.aoCommon, ssao.modes.y, radiusPx); // ao.adaptive
     vec2 noise = vec2(0.5);
     if (hasFlag(GTAO_FLAG_NOISE)) noise = aoNoise(ssao.aoCommon, gl_FragCoord.xy);
 
@@ -100,6 +96,6 @@ void main() {
         visibility += projNLen * (iarc0 + iarc1);
     }
     visibility /= float(slices);
-    oAO = aoFinish(ssao.aoCommon, visibility);
+    oAO = AO_RESULT(aoFinish(ssao.aoCommon, visibility));
     INSPECT_RESULT(true, P, N, 1.0 - visibility, float(slices), R, oAO);
 }

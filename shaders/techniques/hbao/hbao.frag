@@ -25,18 +25,14 @@ bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
 void main() {
     vec2 uv0 = aoPixelUv(vUv); // the G-buffer texel this AO pixel stands for
     vec4 P4 = texture(gPosition, uv0);
-    if (P4.w == 0.0) { // sky: unoccluded, no work spent
-        oAO = 1.0;
-        INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
-        return;
-    }
+    AO_SKY_EARLY_OUT(P4, uv0) // sky: unoccluded, no work spent (ao_common.glsl)
     vec3 P = P4.xyz;
     vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(HBAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
     float depth = -P.z;
     float R = aoRadius(ssao.aoCommon, depth);
     // The radius projected to G-buffer pixels, clamped (a close-up would march the whole screen).
     float radiusPx = min(R * framePixelsPerUnit(depth), ssao.params.y);
-    int dirs = ssao.modes.x, steps = ssao.modes.y;
+    int dirs = ssao.modes.x, steps = aoAdaptiveSteps(ssao.aoCommon, ssao.modes.y, radiusPx); // ao.adaptive
     // Steps of at least a pixel, the first one pixel out: never the pixel itself (no self-
     // occlusion lines), every step a new texel.
     float stepPx = max(radiusPx / float(steps + 1), 1.0);
@@ -77,6 +73,6 @@ void main() {
     }
     // Each direction's occlusion is at most 1 - bias; normalise so a fully closed pixel reads 0.
     float norm = float(dirs) * (1.0 - ssao.params.x);
-    oAO = aoFinish(ssao.aoCommon, 1.0 - occlusion / norm);
+    oAO = AO_RESULT(aoFinish(ssao.aoCommon, 1.0 - occlusion / norm));
     INSPECT_RESULT(true, P, N, occlusion, norm, R, oAO);
 }

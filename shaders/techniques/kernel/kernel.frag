@@ -76,11 +76,7 @@ float accumulate(vec3 P, mat3 TBN, float radius, int first, int count, int set) 
 
 void main() {
     vec4 P = viewPosition(vUv);
-    if (P.w == 0.0) { // sky: unoccluded, and no work spent on it
-        oAO = 1.0;
-        INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
-        return;
-    }
+    AO_SKY_EARLY_OUT(P, vUv) // sky: unoccluded, no work spent (ao_common.glsl)
     vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, vUv, P.xyz, hasFlag(KERNEL_FLAG_NORMAL_UNORM)); // G-buffer or from depth
 
     // Temporal accumulation shifts the 4x4 tile by a texel pattern per frame (16 arrangements), so
@@ -98,6 +94,6 @@ void main() {
         occ += accumulate(P.xyz, TBN, radius, KERNEL_MAX_SAMPLES, n, 1);
         total *= 2.0;
     }
-    oAO = aoFinish(ssao.aoCommon, 1.0 - occ / total);
+    oAO = AO_RESULT(aoFinish(ssao.aoCommon, 1.0 - occ / total));
     INSPECT_RESULT(true, P.xyz, N, occ, total, radius, oAO);
 }

@@ -26,18 +26,14 @@ bool hasFlag(int f) { return (ssao.modes.y & f) != 0; }
 void main() {
     vec2 uv0 = aoPixelUv(vUv); // the G-buffer texel this AO pixel stands for
     vec4 P4 = texture(gPosition, uv0);
-    if (P4.w == 0.0) { // sky: unoccluded, no work spent
-        oAO = 1.0;
-        INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
-        return;
-    }
+    AO_SKY_EARLY_OUT(P4, uv0) // sky: unoccluded, no work spent (ao_common.glsl)
     vec3 P = P4.xyz;
     vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(SAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
     float depth = -P.z;
     float R = aoRadius(ssao.aoCommon, depth);
     float radiusPx = R * framePixelsPerUnit(depth);
     float spin = hasFlag(SAO_FLAG_NOISE) ? aoNoise(ssao.aoCommon, gl_FragCoord.xy).x * TWO_PI : 0.0;
-    int n = ssao.modes.x;
+    int n = aoAdaptiveSamples(ssao.aoCommon, ssao.modes.x, radiusPx); // ao.adaptive: fewer where the disc is small
     float occlusion = 0.0;
     for (int i = 0; i < n; ++i) {
         float alpha = (float(i) + 0.5) / float(n);
@@ -60,6 +56,7 @@ void main() {
         occlusion += term;
         INSPECT_TAP(Q.xyz, uv, term > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN, term, 0);
     }
-    oAO = aoFinish(ssao.aoCommon, 1.0 - occlusion);
+    occlusion *= float(ssao.modes.x) / float(n); // params.y holds 2 sigma / modes.x (pack.cpp)
+    oAO = AO_RESULT(aoFinish(ssao.aoCommon, 1.0 - occlusion));
     INSPECT_RESULT(true, P, N, occlusion, 1.0, R, oAO);
 }

@@ -42,11 +42,7 @@ float edgeAngle(int e, float n) { return n - HALF_PI + float(e) * (PI / float(VB
 void main() {
     vec2 uv0 = aoPixelUv(vUv); // the G-buffer texel this AO pixel stands for
     vec4 P4 = texture(gPosition, uv0);
-    if (P4.w == 0.0) { // sky: unoccluded, no work spent
-        oAO = 1.0;
-        INSPECT_RESULT(false, vec3(0.0), vec3(0.0), 0.0, 1.0, 0.0, 1.0);
-        return;
-    }
+    AO_SKY_EARLY_OUT(P4, uv0) // sky: unoccluded, no work spent (ao_common.glsl)
     vec3 P = P4.xyz;
     vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(VBAO_FLAG_NORMAL_UNORM));
     vec3 V = frameViewVector(P);
@@ -56,7 +52,7 @@ void main() {
     float radiusPx = R * framePixelsPerUnit(depth);
     float thickness = ssao.params.x * R;
     float minS = ssao.params.z / max(radiusPx, 1e-6); // first step >= ~1.3 px: no self-occlusion
-    int slices = ssao.modes.x, steps = ssao.modes.y;
+    int slices = ssao.modes.x, steps = aoAdaptiveSteps(ssao.aoCommon, ssao.modes.y, radiusPx); // ao.adaptive
     vec2 noise = hasFlag(VBAO_FLAG_NOISE) ? aoNoise(ssao.aoCommon, gl_FragCoord.xy) : vec2(0.5);
 
     float visibility = 0.0;
@@ -110,6 +106,6 @@ void main() {
         visibility += projNLen * max(open, 0.0);
     }
     visibility /= float(slices);
-    oAO = aoFinish(ssao.aoCommon, visibility);
+    oAO = AO_RESULT(aoFinish(ssao.aoCommon, visibility));
     INSPECT_RESULT(true, P, N, 1.0 - visibility, float(slices), R, oAO);
 }
