@@ -233,6 +233,11 @@ std::optional<PixelInspection> Renderer::inspect(int branch, glm::ivec2 pixel) {
     return out;
 }
 
+void Renderer::setWanted(std::optional<std::set<std::string>> buffers) {
+    if (buffers) buffers->insert("gbuffer.depth");
+    graph_.setWanted(std::move(buffers));
+}
+
 RadiusInfo Renderer::radiusAtCentre() const {
     RadiusInfo ri;
     ri.sceneDiagonal = 2.0f * sceneRadius();

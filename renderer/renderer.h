@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,10 @@ class Renderer {
     // (passes/reference_pass.h), uploaded when `buffers` has a new version; null (the default, and
     // headless) takes them out of the graph.
     void setReferenceBuffers(std::shared_ptr<const ReferenceBuffers> buffers);
+    // The buffers read after render() (shown, saved, judged); nullopt (the default) = all. Passes
+    // that feed none of them are culled, and the G-buffer leaves out targets nothing reads
+    // (skip.unused_targets). gbuffer.depth is always kept (radiusAtCentre reads it).
+    void setWanted(std::optional<std::set<std::string>> buffers);
     // Forces every pass to run on the next frame (e.g. for timing all passes).
     void invalidate() { graph_.invalidate(); }
 

@@ -215,8 +215,32 @@ FrameReport FrameGraph::execute(const FrameInfo& frame, gl::ShaderLibrary& shade
     std::vector<gl::GpuTimer*> timers;
     const std::string base = std::to_string(frame.width) + "x" + std::to_string(frame.height) + "@" +
                              std::to_string(frame.displayScale);
-    for (Compiled& n : nodes_) {
+    // Demand: walk back from what is wanted; a pass is live when something needed is its output.
+    std::vector<char> live(nodes_.size(), 1);
+    needed_.clear();
+    if (wanted_) {
+        for (const auto& w : *wanted_)
+            needed_.insert(resolve(w));
+        for (size_t i = nodes_.size(); i-- > 0;) {
+            bool l = false;
+            for (const auto& w : nodes_[i].decl.writes)
+                l = l || needed_.count(w.name) > 0;
+            live[i] = l;
+            if (l)
+                for (const auto& r : nodes_[i].decl.reads)
+                    needed_.insert(resolve(r));
+        }
+    }
+    for (size_t i = 0; i < nodes_.size(); ++i) {
+        Compiled& n = nodes_[i];
         const std::string& name = n.pass->name();
+        if (!live[i]) {
+            PassReport culled{name};
+            culled.culled = true;
+            report.passes.push_back(culled);
+            timers.push_back(nullptr);
+            continue;
+        }
         std::string key = base + n.settingsKey;
         if (n.decl.scene) key += "|scene" + std::to_string(frame.sceneVersion);
         if (n.decl.camera) key += cameraKey(*frame.camera);
@@ -229,16 +253,27 @@ FrameReport FrameGraph::execute(const FrameInfo& frame, gl::ShaderLibrary& shade
             key += "|w:" + w.name + "#" + std::to_string(get(w.name).generation);
         PassReport pr{name};
         auto it = keys_.find(name);
-        if (it == keys_.end() || it->second != key) {
+        // Also re-run when an output it left unwritten (nobody wanted it then) is needed now.
+        bool missing = false;
+        if (it != keys_.end())
+            for (const auto& w : n.decl.writes)
+                missing = missing || (needed(w.name) && !written_[name].count(w.name));
+        if (it == keys_.end() || it->second != key || missing) {
             gl::GpuTimer& t = timers_[name];
             keys_.erase(name); // a pass that throws half-way has no valid output: run it again next time
+            unwritten_.clear();
             {
                 PassScope scope(t, name);
                 PassContext ctx(*this, *n.settings, frame, shaders, tri, name);
                 n.pass->execute(ctx);
             }
-            for (const auto& w : n.decl.writes)
+            std::set<std::string>& written = written_[name];
+            written.clear();
+            for (const auto& w : n.decl.writes) {
                 resources_.at(w.name).version = nextVersion_++;
+                if (!unwritten_.count(w.name)) written.insert(w.name);
+            }
+            pr.counters = n.pass->counters();
             keys_[name] = std::move(key);
             pr.ran = true;
             timers.push_back(&t);
@@ -345,6 +380,14 @@ void PassContext::bindOutputs(const std::vector<std::string>& names) const {
         if (!declared(graph_.declaration(pass_), n))
             throw Error("pass '" + pass_ + "' writes '" + n + "' without declaring it");
     graph_.bindOutputs(pass_, names);
+}
+
+bool PassContext::needed(const std::string& output) const {
+    return graph_.needed(output);
+}
+
+void PassContext::leaveUnwritten(const std::string& output) const {
+    graph_.leaveUnwritten(output);
 }
 
 glm::ivec2 PassContext::size(const std::string& name) const {

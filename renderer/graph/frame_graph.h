@@ -11,6 +11,8 @@
 
 #include <map>
 #include <memory>
+#include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -19,7 +21,9 @@ namespace ssao {
 struct PassReport {
     std::string name;
     bool ran = false;
+    bool culled = false; // not run: nothing wanted reads its outputs (FrameGraph::setWanted)
     double gpuMs = -1.0; // GL_TIME_ELAPSED of this frame's run; -1 when skipped
+    std::vector<std::pair<std::string, double>> counters; // Pass::counters() of this frame's run
 };
 
 struct FrameReport {
@@ -43,6 +47,11 @@ class FrameGraph {
                         const gl::FullscreenTriangle& tri);
     // Forgets every pass key: the next execute() runs every pass.
     void invalidate() { keys_.clear(); }
+    // The resources read from outside the graph (shown, written to disk, judged); nullopt = every
+    // resource. A pass none of whose outputs is wanted, directly or through the passes that read
+    // them, is culled; PassContext::needed() tells a pass which of its outputs are.
+    void setWanted(std::optional<std::set<std::string>> wanted) { wanted_ = std::move(wanted); }
+    const std::optional<std::set<std::string>>& wanted() const { return wanted_; }
 
     // Pure ordering (testable without GL): the node indices in execution order.
     static std::vector<size_t> order(const std::vector<std::string>& names,
@@ -61,6 +70,8 @@ class FrameGraph {
 
     // Used by PassContext.
     void bindOutputs(const std::string& pass, const std::vector<std::string>& names);
+    bool needed(const std::string& resource) const { return !wanted_ || needed_.count(resolve(resource)) > 0; }
+    void leaveUnwritten(const std::string& resource) { unwritten_.insert(resolve(resource)); }
 
   private:
     struct Compiled {
@@ -74,6 +85,9 @@ class FrameGraph {
     std::map<std::string, std::string> aliases_;
     std::map<std::string, Resource> resources_;
     std::map<std::string, std::string> keys_;     // pass name → key of its last run
+    std::map<std::string, std::set<std::string>> written_; // pass name → outputs its last run wrote
+    std::optional<std::set<std::string>> wanted_;
+    std::set<std::string> needed_, unwritten_; // during execute()
     std::map<std::string, gl::GpuTimer> timers_;  // pass name → timer
     std::map<std::string, gl::Framebuffer> fbos_; // "pass|out1|out2" → framebuffer
     std::map<std::string, std::vector<unsigned>> fboGenerations_;

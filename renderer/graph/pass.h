@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ssao {
@@ -87,6 +88,11 @@ class PassContext {
     // Binds a framebuffer with these outputs as colour attachments 0..n-1 (a depth-format output
     // becomes the depth attachment) and sets the viewport to their size.
     void bindOutputs(const std::vector<std::string>& names) const;
+    // Whether anything reads this output this frame (a live pass or a consumer outside the graph:
+    // FrameGraph::setWanted). A pass may leave an output nobody needs unwritten and say so; the
+    // graph runs it again when that output is wanted.
+    bool needed(const std::string& output) const;
+    void leaveUnwritten(const std::string& output) const;
     glm::ivec2 size(const std::string& name) const;
     void drawFullscreen() const;
 
@@ -110,6 +116,8 @@ class Pass {
     // Data from outside the graph that the pass's output depends on (a CPU image it uploads): the
     // graph re-runs the pass when this changes, as it does for a changed input. 0 = none.
     virtual uint64_t externalVersion() const { return 0; }
+    // What the last run did, for metrics.json (e.g. draws culled): name → value.
+    virtual std::vector<std::pair<std::string, double>> counters() const { return {}; }
     // The sample inspector: re-runs the pass's own shader for one pixel of its output, compiled
     // with INSPECT, and returns what it recorded. Passes without taps return false.
     virtual bool inspect(PassContext& ctx, glm::ivec2 pixel, PixelInspection& out) {

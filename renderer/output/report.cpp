@@ -2,6 +2,7 @@
 
 #include "display/view_painter.h"
 #include "output/image.h"
+#include "output/skip_report.h"
 #include "settings/params.h"
 #include "settings/preset.h"
 #include "util/atomic_file.h"
@@ -148,6 +149,7 @@ nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& 
     m["settings"] = toJson(r.settings());
     m["passes"] = r.graph().passOrder();
     m["passes_run"] = firstFrame.ran();
+    m["skips"] = skipCounters(r, firstFrame);
     m["gpu_ms"] = timing;
     writeFileAtomically(path("metrics.json"), m.dump(2) + "\n");
     return m;

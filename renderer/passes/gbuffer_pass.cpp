@@ -3,6 +3,8 @@
 #include "gl/shader_library.h"
 #include "scene/gpu_scene.h"
 
+#include <algorithm>
+
 namespace ssao {
 
 GLenum glFormat(TargetFormat f) {
@@ -32,18 +34,45 @@ void GBufferPass::setup(PassBuilder& b, const Settings& s) const {
     b.write(describe("gbuffer.zbuffer", GL_DEPTH_COMPONENT32F, 1, Display::Scalar,
                      "hardware depth in [0,1] (non-linear, 1 at near when reversed; seed 001 reconstructs positions from it)"));
     b.settings("gbuffer");
+    b.settings("skip"); // culling and unused targets
     b.usesScene();
     b.usesCamera();
 }
 
+namespace {
+// The colour targets in gbuffer.frag's order, with the define that makes it write each.
+struct Target {
+    const char* name;
+    const char* define;
+};
+constexpr Target kTargets[] = {{"gbuffer.position", "WRITE_POSITION"},
+                               {"gbuffer.normal", "WRITE_NORMAL"},
+                               {"gbuffer.albedo", "WRITE_ALBEDO"},
+                               {"gbuffer.depth", "WRITE_DEPTH"}};
+} // namespace
+
 void GBufferPass::execute(PassContext& ctx) {
-    ctx.bindOutputs(
-        {"gbuffer.position", "gbuffer.normal", "gbuffer.albedo", "gbuffer.depth", "gbuffer.zbuffer"});
+    const SkipSettings& skip = ctx.settings.skip;
+    // Targets no live pass and no consumer reads are neither bound nor computed (skip.unused_targets).
+    std::vector<std::string> outputs;
+    gl::Defines defs;
+    written_.clear();
+    for (const Target& t : kTargets) {
+        if (skip.unusedTargets && !ctx.needed(t.name)) {
+            ctx.leaveUnwritten(t.name);
+            continue;
+        }
+        defs.push_back({t.define, std::to_string(outputs.size())}); // its colour attachment
+        outputs.push_back(t.name);
+        written_.push_back(t.name);
+    }
+    outputs.push_back("gbuffer.zbuffer"); // the depth test needs it
+    ctx.bindOutputs(outputs);
     GLint fbo = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
     const float zero[4] = {0, 0, 0, 0};
-    for (int i = 0; i < 4; ++i)
-        glClearNamedFramebufferfv(GLuint(fbo), GL_COLOR, i, zero); // w = 0: sky
+    for (size_t i = 0; i + 1 < outputs.size(); ++i)
+        glClearNamedFramebufferfv(GLuint(fbo), GL_COLOR, GLint(i), zero); // w = 0: sky
     // Reversed depth (scene/camera.h): z_ndc in [0, 1] written as is, 1 at near, cleared to 0 (far)
     // and tested with GREATER; the other passes draw with the default clip control.
     const bool reversed = ctx.frame.camera->depth == DepthMode::Reversed;
@@ -57,15 +86,29 @@ void GBufferPass::execute(PassContext& ctx) {
         }
     } restoreClip{reversed};
 
-    gl::Defines defs;
     if (ctx.settings.gbuffer.normalFormat == TargetFormat::RGBA8) defs.push_back({"NORMAL_UNORM", "1"});
     glUseProgram(ctx.shaders.program("passes/gbuffer.vert", "passes/gbuffer.frag", defs));
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(reversed ? GL_GREATER : GL_LESS);
     glDisable(GL_CULL_FACE); // glTF doubleSided and CAD winding: shade what is visible
-    ctx.frame.scene->draw(0);
+    const FrameInfo& f = ctx.frame;
+    const glm::mat4 viewProj = f.camera->projection(float(f.width) / float(f.height)) * f.camera->view();
+    // Location 0 is uBaseColor; without the albedo target it is compiled out (-1: ignored).
+    const bool albedo = std::find(outputs.begin(), outputs.end(), "gbuffer.albedo") != outputs.end();
+    stats_ = f.scene->draw(albedo ? 0 : -1, skip.cull ? &viewProj : nullptr, reversed);
     glDisable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
+}
+
+std::vector<std::pair<std::string, double>> GBufferPass::counters() const {
+    std::vector<std::pair<std::string, double>> c = {
+        {"draws", double(stats_.draws)},
+        {"draws_culled", double(stats_.culled)},
+        {"triangles", double(stats_.triangles)},
+        {"triangles_culled", double(stats_.trianglesCulled)},
+        {"targets_written", double(written_.size())},
+        {"targets_skipped", double(4 - written_.size())}};
+    return c;
 }
 
 } // namespace ssao

@@ -4,7 +4,28 @@
 
 namespace ssao {
 
+bool outsideFrustum(const Bounds& box, const glm::mat4& viewProj, bool zeroToOneDepth) {
+    // Counts, per clip plane, the corners outside it: x < -w, x > w, y < -w, y > w, near, far.
+    int out[6] = {0, 0, 0, 0, 0, 0};
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 p((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                          (i & 4) ? box.max.z : box.min.z);
+        const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
+        out[0] += c.x < -c.w, out[1] += c.x > c.w;
+        out[2] += c.y < -c.w, out[3] += c.y > c.w;
+        out[4] += zeroToOneDepth ? c.z > c.w : c.z < -c.w; // nearer than near (reversed: z_ndc > 1)
+        out[5] += zeroToOneDepth ? c.z < 0.0f : c.z > c.w; // beyond far
+    }
+    for (int k : out)
+        if (k == 8) return true;
+    return false;
+}
+
 GpuScene::GpuScene(const Scene& scene) : draws_(scene.draws), radius_(scene.bounds.radius()) {
+    drawBounds_.resize(draws_.size());
+    for (size_t d = 0; d < draws_.size(); ++d)
+        for (uint32_t i = draws_[d].firstIndex; i < draws_[d].firstIndex + draws_[d].indexCount; ++i)
+            drawBounds_[d].add(scene.vertices[scene.indices[i]].position);
     GLuint ids[2];
     glCreateBuffers(2, ids);
     vbo_ = gl::BufferHandle(ids[0]);
@@ -30,13 +51,23 @@ GpuScene::GpuScene(const Scene& scene) : draws_(scene.draws), radius_(scene.boun
     gl::label(GL_VERTEX_ARRAY, vao, "scene");
 }
 
-void GpuScene::draw(GLint colorLocation) const {
+DrawStats GpuScene::draw(GLint colorLocation, const glm::mat4* cullViewProj, bool zeroToOneDepth) const {
+    DrawStats st;
     glBindVertexArray(vao_.id());
-    for (const auto& d : draws_) {
+    for (size_t i = 0; i < draws_.size(); ++i) {
+        const Draw& d = draws_[i];
+        if (cullViewProj && outsideFrustum(drawBounds_[i], *cullViewProj, zeroToOneDepth)) {
+            ++st.culled;
+            st.trianglesCulled += d.indexCount / 3;
+            continue;
+        }
         glUniform4fv(colorLocation, 1, &d.baseColor.x);
         glDrawElements(GL_TRIANGLES, GLsizei(d.indexCount), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(size_t(d.firstIndex) * sizeof(uint32_t)));
+        ++st.draws;
+        st.triangles += d.indexCount / 3;
     }
+    return st;
 }
 
 } // namespace ssao

@@ -16,7 +16,7 @@ ResourceDesc AoPass::rawOutput(const Settings& s) const {
 
 void AoPass::declarePositionsNormals(PassBuilder& b, const Settings& s, const char* group) const {
     b.read("gbuffer.position");
-    b.read("gbuffer.normal");
+    if (s.ao.normals == NormalSource::GBuffer) b.read("gbuffer.normal"); // else rebuilt from positions
     b.write(rawOutput(s));
     b.settings("ao");
     b.settings(group);
@@ -28,7 +28,7 @@ void AoPass::declarePositionsNormals(PassBuilder& b, const Settings& s, const ch
 
 void AoPass::bindPositionsNormals(PassContext& ctx) const {
     ctx.in("gbuffer.position").bind(SSAO_TEX_POSITION);
-    ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
+    if (ctx.settings.ao.normals == NormalSource::GBuffer) ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
 }
 
 gpu::AoCommon AoPass::common(PassContext& ctx) const {

@@ -2,9 +2,13 @@
 // meshes outside the view, G-buffer targets nobody reads, and passes whose inputs did not change.
 #include "gl_fixture.h"
 
+#include "scene/gpu_scene.h"
 #include "scene/scene.h"
 
 #include <cmath>
+#include <functional>
+#include <map>
+#include <set>
 
 using namespace ssao;
 using namespace ssaotest;
@@ -46,4 +50,142 @@ TEST_F(Skips, SkyPixelsCostNothingAndSkippingThemChangesNoGeometryPixel) {
         EXPECT_EQ(maxAbsDiff(with.aoRaw, without.aoRaw), 0.0) << tech;
         EXPECT_EQ(maxAbsDiff(with.ao, without.ao, &mask), 0.0) << tech;
     }
+}
+
+namespace {
+std::set<std::string> ranSet(const FrameReport& f) {
+    const auto v = f.ran();
+    return {v.begin(), v.end()};
+}
+} // namespace
+
+TEST_F(Skips, EachChangeReRunsOnlyThePassesThatDependOnIt) {
+    // camera -> everything; an AO setting -> AO and after; a denoise setting -> denoise and after;
+    // a composite setting -> composite; nothing (a view switch, an idle frame) -> nothing. The
+    // incremental frame equals a frame where every pass is forced.
+    const Scene scene = loadScene("builtin:showcase");
+    Settings s = defaultSettings();
+    auto r = makeRenderer(scene, s, 160, 90);
+    r->render();
+    struct Change {
+        const char* what;
+        std::function<void()> apply;
+        std::set<std::string> expect;
+    };
+    Camera moved = sceneCamera(scene);
+    moved.eye += glm::vec3(0.1f, 0.0f, 0.0f);
+    const std::vector<Change> changes = {
+        {"camera", [&] { r->setCamera(moved); }, {"gbuffer", "ao", "denoise", "composite"}},
+        {"ao.power", [&] { s.ao.power = 1.5f, r->setSettings(s); }, {"ao", "denoise", "composite"}},
+        {"denoise.kind", [&] { s.denoise.kind = DenoiseKind::Gaussian, r->setSettings(s); }, {"denoise", "composite"}},
+        {"composite.light", [&] { s.composite.light = 0.3f, r->setSettings(s); }, {"composite"}},
+        {"nothing", [] {}, {}},
+    };
+    for (const Change& c : changes) {
+        c.apply();
+        EXPECT_EQ(ranSet(r->render()), c.expect) << c.what;
+        const Image incremental = readBack(r->texture("composite"), 3);
+        r->invalidate();
+        EXPECT_EQ(r->render().ran().size(), 4u);
+        EXPECT_EQ(maxAbsDiff(readBack(r->texture("composite"), 3), incremental), 0.0) << c.what;
+    }
+}
+
+TEST_F(Skips, MeshesOutsideTheViewAreNotDrawn) {
+    // ReciprocatingSaw close up: most parts lie outside the view. Culling counts them and changes
+    // no pixel of the G-buffer.
+    const std::string path = std::string(SSAOLAB_SCENES_DIR) + "/ReciprocatingSaw/ReciprocatingSaw.gltf";
+    const Scene scene = loadScene(path);
+    Camera close = sceneCamera(scene);
+    close.eye = close.eye + 0.8f * (close.target - close.eye);
+    Settings s = defaultSettings();
+    auto r = makeRenderer(scene, s, 240, 135, close);
+    r->render();
+    const Rendered culled = readAll(*r);
+    std::map<std::string, double> on;
+    for (const auto& [k, v] : r->graph().pass("gbuffer")->counters())
+        on[k] = v;
+    s.skip.cull = false;
+    r->setSettings(s);
+    r->render();
+    const Rendered all = readAll(*r);
+    std::map<std::string, double> off;
+    for (const auto& [k, v] : r->graph().pass("gbuffer")->counters())
+        off[k] = v;
+    std::printf("saw close up: %g of %g draws culled (%g of %g triangles)\n", on["draws_culled"],
+                on["draws"] + on["draws_culled"], on["triangles_culled"], on["triangles"] + on["triangles_culled"]);
+    EXPECT_EQ(off["draws_culled"], 0.0);
+    EXPECT_EQ(on["draws"] + on["draws_culled"], off["draws"]);
+    EXPECT_GT(on["draws_culled"], 0.25 * off["draws"]);
+    EXPECT_EQ(maxAbsDiff(culled.position, all.position), 0.0);
+    EXPECT_EQ(maxAbsDiff(culled.normal, all.normal), 0.0);
+    EXPECT_EQ(maxAbsDiff(culled.ao, all.ao), 0.0);
+}
+
+TEST_F(Skips, FrustumTestKeepsWhatTouchesTheViewInEveryLens) {
+    // A unit box in front of the camera is kept, one behind it, beside it or past the far plane is
+    // culled: in both depth mappings and both projections.
+    for (Projection p : {Projection::Perspective, Projection::Orthographic})
+        for (DepthMode d : {DepthMode::Standard, DepthMode::Reversed}) {
+            Camera c;
+            c.eye = {0, 0, 0}, c.target = {0, 0, -1}, c.nearZ = 0.5f, c.farZ = 50.0f;
+            c.projectionKind = p, c.depth = d;
+            const glm::mat4 vp = c.projection(1.0f) * c.view();
+            auto box = [](glm::vec3 centre) {
+                Bounds b;
+                b.add(centre - glm::vec3(0.5f));
+                b.add(centre + glm::vec3(0.5f));
+                return b;
+            };
+            const bool z01 = d == DepthMode::Reversed;
+            const std::string what = std::string(projectionName(p)) + " " + depthModeName(d);
+            EXPECT_FALSE(outsideFrustum(box({0, 0, -10}), vp, z01)) << what;
+            EXPECT_FALSE(outsideFrustum(box({0, 0, -50}), vp, z01)) << what; // straddles far
+            EXPECT_TRUE(outsideFrustum(box({0, 0, 10}), vp, z01)) << what;   // behind
+            EXPECT_TRUE(outsideFrustum(box({0, 0, -60}), vp, z01)) << what;  // past far
+            EXPECT_TRUE(outsideFrustum(box({500, 0, -10}), vp, z01)) << what; // beside
+        }
+}
+
+TEST_F(Skips, TargetsAndPassesNothingWantsAreSkippedAndComeBackWhenWanted) {
+    const Scene scene = loadScene("builtin:showcase");
+    Settings s = defaultSettings();
+    auto r = makeRenderer(scene, s, 160, 90);
+    r->render();
+    const Image aoAll = readBack(r->texture("ao.denoised"), 1);
+    const Image albedo = readBack(r->texture("gbuffer.albedo"), 3);
+    // Only the AO is wanted (what `bench` judges): no composite, no albedo target.
+    r->setWanted(std::set<std::string>{"ao.denoised"});
+    r->invalidate();
+    const FrameReport f = r->render();
+    EXPECT_EQ(ranSet(f), (std::set<std::string>{"gbuffer", "ao", "denoise"}));
+    bool compositeCulled = false;
+    for (const auto& p : f.passes)
+        compositeCulled = compositeCulled || (p.name == "composite" && p.culled);
+    EXPECT_TRUE(compositeCulled);
+    std::map<std::string, double> c;
+    for (const auto& [k, v] : r->graph().pass("gbuffer")->counters())
+        c[k] = v;
+    EXPECT_EQ(c["targets_written"], 3.0); // position, normal, linear depth
+    EXPECT_EQ(maxAbsDiff(readBack(r->texture("ao.denoised"), 1), aoAll), 0.0);
+    // Normals from depth: the normal target goes too (the box denoiser reads none).
+    s.ao.normals = NormalSource::Depth;
+    r->setSettings(s);
+    EXPECT_FALSE(ranSet(r->render()).count("gbuffer")); // needing less is no reason to run again
+    r->invalidate();
+    r->render();
+    for (const auto& [k, v] : r->graph().pass("gbuffer")->counters())
+        c[k] = v;
+    EXPECT_EQ(c["targets_written"], 2.0);
+    // Wanting everything again re-runs the G-buffer for the targets it left out.
+    s.ao.normals = NormalSource::GBuffer;
+    r->setSettings(s);
+    r->setWanted(std::nullopt);
+    const FrameReport again = r->render();
+    EXPECT_TRUE(ranSet(again).count("gbuffer"));
+    EXPECT_TRUE(ranSet(again).count("composite"));
+    EXPECT_EQ(maxAbsDiff(readBack(r->texture("gbuffer.albedo"), 3), albedo), 0.0);
+    EXPECT_EQ(maxAbsDiff(readBack(r->texture("ao.denoised"), 1), aoAll), 0.0);
+    // An idle frame runs nothing.
+    EXPECT_TRUE(r->render().ran().empty());
 }

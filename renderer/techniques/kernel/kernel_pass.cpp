@@ -7,7 +7,7 @@ namespace ssao {
 
 void KernelPass::setup(PassBuilder& b, const Settings& s) const {
     b.read(s.kernel.positionSource == PositionSource::Depth ? "gbuffer.zbuffer" : "gbuffer.position");
-    b.read("gbuffer.normal");
+    if (s.ao.normals == NormalSource::GBuffer) b.read("gbuffer.normal"); // else rebuilt from positions
     b.write(rawOutput(s));
     b.settings("ao");
     b.settings("kernel");
@@ -37,7 +37,7 @@ std::string KernelPass::prepare(PassContext& ctx) {
         ctx.in("gbuffer.zbuffer").bind(SSAO_TEX_DEPTH);
     else
         ctx.in("gbuffer.position").bind(SSAO_TEX_POSITION);
-    ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
+    if (s.ao.normals == NormalSource::GBuffer) ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
     noise_.bind(KERNEL_TEX_NOISE);
     return "techniques/kernel/kernel.frag";
 }

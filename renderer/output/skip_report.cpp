@@ -1,0 +1,79 @@
+#include "output/skip_report.h"
+
+#include "output/image.h"
+#include "settings/params.h"
+#include "techniques/ao_common.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ssao {
+
+namespace {
+// The technique's per-pixel count the adaptive rule reduces, and whether it is a march (steps,
+// one per pixel of radius) or an area sampler (one per ~4 pixels of the disc).
+struct Count {
+    int full = 0;
+    bool march = true;
+};
+Count fullCount(const Settings& s) {
+    const std::string& t = s.ao.technique;
+    const bool area = t == "sao";
+    const Param* p = findParam(t + (area ? ".samples" : ".steps"));
+    if (!p || t == "kernel") return {};
+    return {int(p->get(s)), !area};
+}
+} // namespace
+
+double adaptiveShare(const Settings& s, float radiusPx) {
+    const Count c = fullCount(s);
+    if (!s.ao.adaptive || c.full <= 0) return 1.0;
+    const double r = std::max(double(radiusPx), 0.0);
+    const int n = c.march ? std::clamp(int(std::ceil(r)), std::min(c.full, 2), c.full)
+                          : std::clamp(int(std::ceil(0.785398 * r * r)), std::min(c.full, 4), c.full);
+    return double(n) / double(c.full);
+}
+
+nlohmann::json skipCounters(const Renderer& r, const FrameReport& frame) {
+    nlohmann::json j;
+    std::vector<std::string> ran, clean, culled;
+    for (const auto& p : frame.passes)
+        (p.ran ? ran : p.culled ? culled : clean).push_back(p.name);
+    j["passes"] = {{"ran", ran}, {"clean", clean}, {"culled", culled}};
+    const Settings& s = r.settings();
+    j["settings"] = {{"sky", s.skip.sky}, {"cull", s.skip.cull}, {"unused_targets", s.skip.unusedTargets},
+                     {"adaptive", s.ao.adaptive}};
+    if (const Pass* g = r.graph().pass("gbuffer")) {
+        nlohmann::json gb = nlohmann::json::object();
+        for (const auto& [k, v] : g->counters())
+            gb[k] = v == std::floor(v) ? nlohmann::json(int64_t(v)) : nlohmann::json(v);
+        j["gbuffer"] = gb;
+    }
+    // Sky and adaptive: from the linear depth (0 = sky), at the G-buffer's resolution.
+    const Image depth = readBack(r.texture("gbuffer.depth"), 1);
+    const Camera& cam = r.camera();
+    const glm::mat4 proj = cam.projection(float(r.width()) / float(std::max(r.height(), 1)));
+    const float upp = unitsPerPixelAtUnitDepth(proj, r.height());
+    const float diag = 2.0f * r.sceneRadius();
+    size_t sky = 0, geo = 0;
+    double share = 0.0;
+    for (float z : depth.data) {
+        if (!(z > 0.0f)) {
+            ++sky;
+            continue;
+        }
+        ++geo;
+        const float depthScale = cam.orthographic() ? 1.0f : z;
+        share += adaptiveShare(s, radiusInPixels(s.ao, diag, depthScale, upp));
+    }
+    const size_t all = depth.data.size();
+    j["sky"] = {{"pixels", sky}, {"share", all ? double(sky) / double(all) : 0.0},
+                {"note", s.skip.sky ? "AO and the denoiser's last pass return at once on these pixels"
+                                    : "skip.sky off: these pixels run the full estimate"}};
+    j["adaptive"] = {{"enabled", s.ao.adaptive},
+                     {"mean_sample_share", geo ? share / double(geo) : 1.0},
+                     {"note", "mean share of the technique's full sample count taken per geometry pixel"}};
+    return j;
+}
+
+} // namespace ssao
