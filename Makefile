@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build run test screenshot goldens bench presets stress fuzz test-sanitize clean
+.PHONY: deps configure build run test screenshot goldens bench skips presets stress fuzz test-sanitize clean
 
 deps:
 	@bash .ci/install-deps.sh
@@ -44,6 +44,11 @@ goldens: build
 SCENES ?= ../shared/scenes
 bench: build
 	@bash .ci/bench.sh $(BUILD) $(SCENES)
+
+# docs/benchmarks.md "Skipped work": each skip of unneeded work against the same frame without it
+# (`ssaolab skips`; ~15 minutes on llvmpipe), then the page reassembled.
+skips: build
+	@bash .ci/skips.sh $(BUILD) $(SCENES)
 
 presets: build
 	@bash .ci/tune-presets.sh $(BUILD) $(SCENES)

@@ -52,5 +52,16 @@ MD
   echo "Per scene: ![per scene](bench/pareto_by_scene.png)"
   echo
   echo "Raw data: [results.csv](bench/results.csv), [summary.csv](bench/summary.csv), [results.json](bench/results.json)."
+  if [ -f "$OUT/skips.md" ]; then
+    echo
+    echo "## Skipped work (\`ssaolab skips\`)"
+    echo
+    echo "Regenerate this section alone with \`make skips\` (it runs \`.ci/skips.sh\`)."
+    if [ -f docs/skips-discussion.md ]; then echo; cat docs/skips-discussion.md; fi
+    echo
+    cat "$OUT/skips.md"
+    echo
+    echo "Raw data: [skips.json](bench/skips.json)."
+  fi
 } > docs/benchmarks.md
 echo "wrote docs/benchmarks.md"

@@ -1,6 +1,7 @@
 // ssaolab command line: `view` (window), `render` (headless), `params` (the parameter table).
 // Without a subcommand: the window when there is a display, else a headless render into out/.
 #include "bench/bench_command.h"
+#include "bench/skips_command.h"
 #include "bench/tune_command.h"
 #include "render_command.h"
 #include "scene/builtin_scenes.h"
@@ -64,6 +65,11 @@ int main(int argc, char** argv) {
     CLI::App* tune = app.add_subcommand(
         "tune", "fit one technique's parameters to the ray-traced reference; report held-out views; save JSON");
     ssao::addTuneOptions(*tune, to);
+    ssao::SkipsOptions ko;
+    CLI::App* skips = app.add_subcommand(
+        "skips", "work a scene does not need, skipped and measured: each skip against the same frame "
+                 "without it (dirty passes, sky, adaptive samples, culling, unused targets)");
+    ssao::addSkipsOptions(*skips, ko);
     ssao::StressOptions so;
     CLI::App* stress = app.add_subcommand(
         "stress", "numerical stability: every technique under extreme projections, scales, placements, "
@@ -112,6 +118,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("bench")) return ssao::runBench(bo);
         if (app.got_subcommand("tune")) return ssao::runTune(to);
         if (app.got_subcommand("stress")) return ssao::runStress(so);
+        if (app.got_subcommand("skips")) return ssao::runSkips(ko);
         if (app.got_subcommand("view") || (!app.got_subcommand("render") && ssao::haveDisplay())) {
             ssao::parseSizeOption(windowSize, wo.width, wo.height); // strict, and within render's budget
             if (wo.width < 200 || wo.height < 150)

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <filesystem>
 
 namespace ssao {
@@ -79,6 +80,7 @@ int runBench(const BenchOptions& o) {
                               {"radius_scene", o.radiusScene}};
     Renderer r(shaderRoot());
     r.setSize(w, h);
+    r.setWanted(std::set<std::string>{"ao.denoised"}); // what is judged: no composite, no albedo
     const size_t total = scenes.size() * size_t(o.views) * sweep.configs.size();
     if (!o.quiet)
         std::printf("bench: %zu configurations x %zu scenes x %d views at %dx%d on %s\n",

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -110,6 +111,7 @@ int runTune(const TuneOptions& o) {
     gl::HeadlessContext ctx;
     Renderer r(shaderRoot());
     r.setSize(w, h);
+    r.setWanted(std::set<std::string>{"ao.denoised"}); // what is judged: no composite, no albedo
     std::vector<View> views;
     std::vector<std::unique_ptr<ReferenceProvider>> providers;
     for (size_t si = 0; si < scenes.size(); ++si) {

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <filesystem>
 
 namespace ssao {
@@ -86,6 +87,7 @@ int runStress(const StressOptions& o) {
     gl::HeadlessContext ctx;
     Renderer r(shaderRoot());
     r.setSize(w, h);
+    r.setWanted(std::set<std::string>{"ao.raw", "ao.denoised"}); // what is judged: no composite, no albedo
     StressRun run;
     run.size = o.size;
     run.tolerance = o.tolerance;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <set>
 
 namespace ssao {
 
@@ -65,6 +66,18 @@ void AppCore::renderIfNeeded(int viewW, int viewH) {
         r.setSettings(settings_);
         r.setSettingsB(settingsB());
         r.setReferenceBuffers(reference_.buffers());
+        // What is on screen is all the frame needs: a single AO view culls the composite and the
+        // G-buffer targets only it reads. The error evaluation reads the denoised AO of each chain.
+        if (viewMode == ViewMode::Grid) {
+            r.setWanted(std::nullopt);
+        } else {
+            std::set<std::string> wanted = {"ao.denoised", "b.ao.denoised"};
+            if (viewMode == ViewMode::Single)
+                wanted.insert(r.graph().find(enlarged) ? enlarged : "composite");
+            else
+                wanted.insert({splitBuffer, "b." + splitBuffer});
+            r.setWanted(wanted);
+        }
         FrameReport rep = r.render(); // cheap when nothing changed: no pass runs
         if (r.accumulating()) poke(); // temporal accumulation: keep drawing until its frames are in
         // The reference after the frame: a trace starts from the view as just rendered (its radius

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -411,6 +412,51 @@ TEST(Cli, TuneFitsTheReferenceAndSavesAPresetThatRenders) {
                            outDir("tuned"));
     EXPECT_EQ(again.exitCode, 0) << again.err;
     expectCleanFailure(ssaolab("tune --technique nope"), "nope");
+}
+
+TEST(Cli, SkipsMeasuresEverySkipAgainstTheSameFrameWithoutIt) {
+    // `ssaolab skips` at a small size: a row per skip and dependency, exact skips change nothing,
+    // the dirty rows re-run only the passes downstream of the change, and skips.md is written.
+    const std::string out = outDir("skips");
+    CliRun r = ssaolab("skips --quiet --size 96x54 --frames 1 --reference-rays 16 --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(slurp(out + "/skips.json"), nullptr, false);
+    ASSERT_FALSE(j.is_discarded());
+    std::map<std::string, int> count;
+    for (const auto& row : j["rows"]) {
+        const std::string skip = row["skip"];
+        ++count[skip];
+        EXPECT_GT(row["without_ms"].get<double>(), 0.0) << row.dump();
+        if (skip != "adaptive") {
+            EXPECT_EQ(row["error_change"].get<double>(), 0.0) << row.dump();
+        }
+        if (skip == "dirty") {
+            const auto ran = row["extra"]["passes_run"];
+            const std::string v = row["variant"];
+            if (v.rfind("camera", 0) == 0) {
+                EXPECT_EQ(ran.size(), 4u);
+            }
+            if (v.rfind("AO setting", 0) == 0) {
+                EXPECT_EQ(ran, nlohmann::json({"ao", "denoise", "composite"}));
+            }
+            if (v.rfind("denoise", 0) == 0) {
+                EXPECT_EQ(ran, nlohmann::json({"denoise", "composite"}));
+            }
+            if (v.rfind("composite", 0) == 0) {
+                EXPECT_EQ(ran, nlohmann::json({"composite"}));
+            }
+            if (v.rfind("view switch", 0) == 0) {
+                EXPECT_TRUE(ran.empty());
+                EXPECT_EQ(row["with_ms"].get<double>(), 0.0); // idle: no GPU work at all
+            }
+        }
+    }
+    EXPECT_EQ(count["dirty"], 5);
+    EXPECT_EQ(count["sky"], 5);
+    EXPECT_EQ(count["adaptive"], 12);
+    EXPECT_EQ(count["cull"], 2);
+    EXPECT_EQ(count["targets"], 6);
+    EXPECT_NE(slurp(out + "/skips.md").find("#### Frustum culling"), std::string::npos);
 }
 
 TEST(CliHostile, EveryAssimpTestModelRendersOrFailsWithOneLine) {

@@ -1,0 +1,121 @@
+#include "bench/skips_report.h"
+
+#include "util/atomic_file.h"
+#include "util/error.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+namespace ssao {
+
+namespace {
+std::string num(double v, const char* fmt = "%.2f") {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, fmt, v);
+    return buf;
+}
+std::string ratio(const SkipRow& r) {
+    return r.without > 0 ? num(r.ratio(), "%.2fx") : "-";
+}
+// "0" for bit-exact, else the largest difference.
+std::string change(double d) {
+    return d == 0.0 ? "0 (exact)" : num(d, "%.2g");
+}
+std::string joined(const nlohmann::json& list) {
+    std::string s;
+    for (const auto& v : list)
+        s += (s.empty() ? "" : ", ") + v.get<std::string>();
+    return s.empty() ? "none" : s;
+}
+template <class F> void rows(std::ostringstream& md, const SkipsRun& run, const std::string& skip, F line) {
+    for (const auto& r : run.rows)
+        if (r.skip == skip) md << line(r) << "\n";
+}
+} // namespace
+
+std::string skipsMarkdown(const SkipsRun& run) {
+    std::ostringstream md;
+    md << "Measured by `ssaolab skips` at " << run.facts.value("size", std::string("?")) << ", median of "
+       << run.facts.value("frames", 0) << " frames per variant, the variants alternating frame by frame on "
+       << run.facts.value("gl_renderer", std::string("?"))
+       << ". \"with\" is the frame with the skip, \"without\" the same frame with it switched off (skip.* "
+          "settings) or, for dirty passes, with every pass forced; ratio = with / without. The output "
+          "change is the largest difference of the judged buffer over geometry pixels (0: bit-exact), "
+          "or for adaptive sampling the change in RMSE against the ray-traced reference.\n";
+
+    md << "\n#### Dirty passes: what each change re-runs\n\n"
+          "| scene | change | passes run | GPU ms with | every pass forced | ratio | wall ms with / forced | output change |\n"
+          "|---|---|---|---:|---:|---:|---:|---|\n";
+    rows(md, run, "dirty", [](const SkipRow& r) {
+        return "| " + r.scene + " | " + r.variant + " | " + joined(r.extra["passes_run"]) + " | " + num(r.with) +
+               " | " + num(r.without) + " | " + ratio(r) + " | " + num(r.wallWith, "%.1f") + " / " +
+               num(r.wallWithout, "%.1f") + " | " + change(r.errorChange) + " |";
+    });
+
+    md << "\n#### Sky pixels: AO and the denoiser's last pass return at once\n\n"
+          "| scene | sky share | technique | AO + denoise ms with | without | ratio | geometry share | output change |\n"
+          "|---|---:|---|---:|---:|---:|---:|---|\n";
+    rows(md, run, "sky", [](const SkipRow& r) {
+        const double sky = r.extra.value("sky_share", 0.0);
+        return "| " + r.scene + " | " + num(100.0 * sky, "%.0f %%") + " | " + r.variant + " | " + num(r.with) +
+               " | " + num(r.without) + " | " + ratio(r) + " | " + num(1.0 - sky, "%.2f") + " | " +
+               change(r.errorChange) + " |";
+    });
+
+    md << "\n#### Adaptive sample count (ao.adaptive): fewer samples where the radius spans few pixels\n\n"
+          "| scene | view | technique | samples taken | AO ms adaptive | full | ratio | RMSE adaptive | full | change |\n"
+          "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    rows(md, run, "adaptive", [](const SkipRow& r) {
+        return "| " + r.scene + " | " + r.view + " | " + r.variant + " | " +
+               num(100.0 * r.extra.value("sample_share", 1.0), "%.0f %%") + " | " + num(r.with) + " | " +
+               num(r.without) + " | " + ratio(r) + " | " + num(r.extra.value("rmse_with", 0.0), "%.4f") + " | " +
+               num(r.extra.value("rmse_without", 0.0), "%.4f") + " | " + num(r.errorChange, "%+.4f") + " |";
+    });
+
+    md << "\n#### Frustum culling in the G-buffer pass\n\n"
+          "| scene | view | draws culled | triangles culled | G-buffer ms with | without | ratio | wall ms with / without | output change |\n"
+          "|---|---|---:|---:|---:|---:|---:|---:|---|\n";
+    rows(md, run, "cull", [](const SkipRow& r) {
+        const double d = r.extra.value("draws", 0.0), dc = r.extra.value("draws_culled", 0.0);
+        const double t = r.extra.value("triangles", 0.0), tc = r.extra.value("triangles_culled", 0.0);
+        return "| " + r.scene + " | " + r.view + " | " + num(dc, "%.0f") + " of " + num(d + dc, "%.0f") + " | " +
+               num(tc, "%.0f") + " of " + num(t + tc, "%.0f") + " | " + num(r.with) + " | " + num(r.without) +
+               " | " + ratio(r) + " | " + num(r.wallWith, "%.1f") + " / " + num(r.wallWithout, "%.1f") + " | " +
+               change(r.errorChange) + " |";
+    });
+
+    md << "\n#### G-buffer targets nothing reads\n\n"
+          "| scene | view | case | colour targets written | G-buffer ms with | all 4 written | ratio | output change |\n"
+          "|---|---|---|---:|---:|---:|---:|---|\n";
+    rows(md, run, "targets", [](const SkipRow& r) {
+        return "| " + r.scene + " | " + r.view + " | " + r.variant + " | " +
+               num(r.extra.value("targets_written", 4.0), "%.0f") + " | " + num(r.with) + " | " + num(r.without) +
+               " | " + ratio(r) + " | " + change(r.errorChange) + " |";
+    });
+    return md.str();
+}
+
+void writeSkipsFiles(const SkipsRun& run, const std::string& dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw Error("cannot create " + dir + ": " + ec.message());
+    nlohmann::json j = {{"facts", run.facts}, {"rows", nlohmann::json::array()}};
+    for (const auto& r : run.rows)
+        j["rows"].push_back({{"skip", r.skip},
+                             {"scene", r.scene},
+                             {"view", r.view},
+                             {"variant", r.variant},
+                             {"measured", r.measured},
+                             {"with_ms", r.with},
+                             {"without_ms", r.without},
+                             {"ratio", r.ratio()},
+                             {"wall_with_ms", r.wallWith},
+                             {"wall_without_ms", r.wallWithout},
+                             {"error_change", r.errorChange},
+                             {"extra", r.extra}});
+    writeFileAtomically(dir + "/skips.json", j.dump(2) + "\n");
+    writeFileAtomically(dir + "/skips.md", skipsMarkdown(run));
+}
+
+} // namespace ssao
