@@ -217,14 +217,16 @@ void adaptiveRows(Context& c, ReferenceProvider& provider, const Camera& cam, co
     const float radius = r.radiusAtCentre().world;
     const ReferenceImage ref =
         provider.get(r.camera(), r.width(), r.height(), {radius, c.o.referenceRays, ReferenceVariant::Visibility});
-    for (const std::string tech : {"sao", "hbao", "gtao", "vbao"}) {
+    for (const std::string tech : {"sao", "hbao", "gtao", "vbao"})
+      for (const float px : {2.0f, 4.0f}) {
         Settings full = probe;
         full.ao.technique = tech;
         Settings adaptive = full;
         adaptive.ao.adaptive = true;
+        adaptive.ao.adaptivePx = px;
         const AbResult ab = compare(
             r, adaptive, full, c.o.frames, [](const FrameTime& t) { return t.sum({"ao"}); }, "ao.denoised");
-        SkipRow row{"adaptive", c.scene, view, tech, "AO GPU ms"};
+        SkipRow row{"adaptive", c.scene, view, tech + ", " + std::to_string(int(px)) + " px/sample", "AO GPU ms"};
         row.with = ab.a, row.without = ab.b, row.wallWith = ab.wallA, row.wallWithout = ab.wallB;
         double rmse[2];
         for (int i = 0; i < 2; ++i) {
@@ -238,7 +240,7 @@ void adaptiveRows(Context& c, ReferenceProvider& provider, const Camera& cam, co
         row.extra["rmse_with"] = rmse[0], row.extra["rmse_without"] = rmse[1];
         row.extra["sample_share"] = k["adaptive"]["mean_sample_share"];
         c.run.rows.push_back(row);
-    }
+      }
 }
 
 void gbufferRows(Context& c, const Camera& cam, const std::string& view) {

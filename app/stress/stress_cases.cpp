@@ -1,5 +1,6 @@
 #include "stress/stress_cases.h"
 
+#include "scene/view_fit.h"
 #include "settings/params.h"
 
 #include <cmath>
@@ -54,10 +55,12 @@ std::vector<StressCase> stressCases(const std::string& technique) {
     // the report shows); reversed-Z float depth must draw what the fitted planes draw.
     for (DepthMode d : {DepthMode::Standard, DepthMode::Reversed}) {
         const std::string mode = std::string(", ") + depthModeName(d);
+        // Invariant when the planes enclose the scene (far >= 10 diagonals: a far plane of one
+        // diagonal clips CornellBox, whose camera stands farther than that, and changes its AO).
         auto planes = [&](const std::string& axis, const std::string& variant, float n, float f) {
             StressCase c{axis, variant + mode};
             c.nearZ = n, c.farZ = f, c.depth = d;
-            c.compared = true, c.invariant = d == DepthMode::Reversed;
+            c.compared = true, c.invariant = d == DepthMode::Reversed && f >= 10.0f;
             cases.push_back(c);
         };
         for (double n : {1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1})
@@ -140,6 +143,15 @@ std::vector<StressCase> stressCases(const std::string& technique) {
             cam.up = glm::vec3(0, 1, 0);
         };
         cases.push_back(g);
+        StressCase on{"camera", "on a surface"}; // the eye on the first surface along the view ray
+        on.camera = [](Camera& cam, const Scene& s) {
+            const glm::vec3 d = glm::normalize(cam.target - cam.eye);
+            if (const auto hit = firstHit(s, cam.eye, d)) {
+                cam.eye += d * *hit;
+                cam.target = cam.eye + d * glm::length(cam.target - cam.eye);
+            }
+        };
+        cases.push_back(on);
         StressCase a{"camera", "looking away"};
         a.camera = [](Camera& cam, const Scene& s) {
             const glm::vec3 d = glm::normalize(s.bounds.center() - cam.eye);
@@ -147,6 +159,30 @@ std::vector<StressCase> stressCases(const std::string& technique) {
             cam.target = cam.eye - d;
         };
         cases.push_back(a);
+    }
+    // Geometry: zero-area triangles (must change nothing), normals of zero or non-unit length
+    // (renormalised, or replaced by the face's own: finite either way).
+    {
+        StressCase deg{"geometry", "10 % more triangles, all degenerate"};
+        deg.invariant = true;
+        deg.geometry = [](Scene& s) {
+            const size_t n = s.indices.size() / 3, first = s.indices.size();
+            for (size_t t = 0; t < n; t += 10) { // (a, a, b) and (a, b, midpoint-free line): zero area
+                const uint32_t a = s.indices[3 * t], b = s.indices[3 * t + 1];
+                s.indices.insert(s.indices.end(), {a, a, b, b, b, b});
+            }
+            s.draws.push_back({uint32_t(first), uint32_t(s.indices.size() - first), glm::vec4(1.0f)});
+        };
+        cases.push_back(deg);
+        for (float k : {0.0f, 1e-6f, 1e6f}) {
+            StressCase c{"geometry", k == 0.0f ? "every 3rd normal zero" : "normals x " + sci(k)};
+            c.invariant = k != 0.0f, c.compared = k == 0.0f;
+            c.geometry = [k](Scene& s) {
+                for (size_t i = 0; i < s.vertices.size(); ++i)
+                    if (k != 0.0f || i % 3 == 0) s.vertices[i].normal *= k;
+            };
+            cases.push_back(c);
+        }
     }
     return cases;
 }

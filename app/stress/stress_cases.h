@@ -16,7 +16,7 @@
 namespace ssao {
 
 struct StressCase {
-    std::string axis;    // "near", "far", "scale", "translate", "gbuffer", "limits", "camera"
+    std::string axis;    // "near", "far", "projection", "scale", "translate", "gbuffer", "limits", "camera", "geometry"
     std::string variant; // e.g. "1e-4", "x1000", "gtao.steps=32"
     double scale = 1.0;              // the scene and the camera scaled about the origin ...
     glm::dvec3 offset{0.0};          // ... then moved by this (scene units)
@@ -26,6 +26,7 @@ struct StressCase {
     std::optional<Projection> projection; // unset: perspective
     std::function<void(Settings&)> settings;            // null: unchanged
     std::function<void(Camera&, const Scene&)> camera;  // null: the scene's view
+    std::function<void(Scene&)> geometry;               // null: the scene as loaded
     bool invariant = false; // AO must match the benign render (within the stated RMSE)
     bool compared = false;  // the RMSE against the benign render is reported, not required
 };

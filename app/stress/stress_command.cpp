@@ -114,9 +114,10 @@ int runStress(const StressOptions& o) {
                 row.invariant = sc.invariant;
                 row.compared = sc.compared;
                 try {
-                    const bool moves = sc.scale != 1.0 || sc.offset != glm::dvec3(0.0);
+                    const bool moves = sc.scale != 1.0 || sc.offset != glm::dvec3(0.0) || sc.geometry;
                     Scene moved;
                     if (moves) moved = transformScene(base, sc.scale, sc.offset, sc.sceneOrigin);
+                    if (sc.geometry) sc.geometry(moved);
                     const Scene& scene = moves ? moved : base;
                     if (moves || transformed) r.setScene(scene);
                     transformed = moves;

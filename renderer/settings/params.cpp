@@ -80,11 +80,15 @@ std::vector<Param> coreRows() {
                  "smaller depth difference so silhouettes do not bend the normal.",
                  ({{"gbuffer", NormalSource::GBuffer}, {"depth", NormalSource::Depth}})),
         BOOL_ROW("ao.adaptive", "Adaptive samples", ao.adaptive,
-                 "ASSAO/CACAO-style: pixels whose radius covers only a few pixels (far away) take fewer "
-                 "samples - at most one per pixel of radius along a march, one per ~4 pixels of the disc "
-                 "for area samplers. Faster on distant geometry; the error change is measured in "
-                 "docs/benchmarks.md. (The kernel's samples are a fixed set: it keeps them all.)")
+                 "ASSAO/CACAO-style: pixels whose radius spans few pixels (far away, or a small radius) "
+                 "take fewer samples - a march one step per 'pixels per sample' of radius, an area sampler "
+                 "one tap per its square of the disc. Time saved and error change: docs/benchmarks.md. "
+                 "(The kernel's samples are a fixed set: it keeps them all.)")
             .onlyWhen("ao.technique", {"sao", "hbao", "gtao", "vbao"}),
+        FLOAT_ROW("ao.adaptive_px", "Pixels per sample", ao.adaptivePx, 1.0, 32.0, "pixels",
+                  "Adaptive samples: radius in pixels each march step (or each tap's square of the disc) "
+                  "covers before the count is cut; 1 keeps every step that lands on a new pixel.")
+            .onlyWhen("ao.adaptive", {"true"}),
         // ---- Denoise --------------------------------------------------------------------------
         ENUM_ROW("denoise.kind", "Denoise", denoise.kind, DenoiseKind,
                  "Removes the sampling noise: none, 4x4 box (seed 004: taps -2..+1, shifted half a pixel), "

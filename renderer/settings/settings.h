@@ -30,9 +30,11 @@ struct AoSettings {
     float power = 1.0f;        // AO = visibility^power (seed 001; XeGTAO FinalValuePower)
     AoResolution resolution = AoResolution::Full;
     NormalSource normals = NormalSource::GBuffer; // depth: reconstructed from positions (no normal target)
-    // ASSAO/CACAO-style: a pixel whose radius spans few pixels takes fewer samples (no more than
-    // one per pixel of radius along a march; area samplers one per ~4 pixels of the disc).
+    // ASSAO/CACAO-style: a pixel whose radius spans few pixels takes fewer samples: a march one
+    // step per adaptivePx pixels of radius, an area sampler one tap per adaptivePx^2 pixels of the
+    // disc, never below 2 steps / 4 taps nor above the technique's own count.
     bool adaptive = false;
+    float adaptivePx = 4.0f;
 };
 
 struct DenoiseSettings {

@@ -39,7 +39,7 @@ gpu::AoCommon packAoCommon(const AoSettings& s, float sceneDiagonal, float units
                 float(screen ? SSAO_RADIUS_SCREEN : SSAO_RADIUS_WORLD), s.radiusPx};
     c.shape = {s.power, float(SSAO_NOISE_NONE), float(int(s.normals)), 0.0f}; // noise, pyramid: the technique
     c.target = {float(target.x), float(target.y), 1.0f / float(target.x), 1.0f / float(target.y)};
-    c.flags = {skipSky ? 1.0f : 0.0f, s.adaptive ? 1.0f : 0.0f, 0.0f, 0.0f};
+    c.flags = {skipSky ? 1.0f : 0.0f, s.adaptive ? std::max(s.adaptivePx, 1.0f) : 0.0f, 0.0f, 0.0f};
     return c;
 }
 

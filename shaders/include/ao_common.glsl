@@ -75,12 +75,14 @@ vec3 aoNormal(AoCommon_ c, sampler2D positions, sampler2D normals, vec2 uv, vec3
     if (aoSky) P4 = vec4(frameViewPosition(uv, 2.0 * frame.clip.z), 1.0);
 #define AO_RESULT(v) (aoSky ? max((v), 1.0) : (v))
 
-// Adaptive sample counts (ao.adaptive, common.flags.y; ASSAO/CACAO-style): a march needs no more
-// than one step per pixel of radius, an area sampler about one sample per 4 pixels of the disc.
+// Adaptive sample counts (ao.adaptive; common.flags.y = pixels per sample, 0 = off; ASSAO/CACAO-
+// style): a march takes one step per flags.y pixels of radius, an area sampler one tap per flags.y^2
+// pixels of the disc; never below 2 steps / 4 taps nor above the technique's count.
 int aoAdaptiveSteps(AoCommon_ c, int steps, float radiusPx) {
-    return c.flags.y != 0.0 ? clamp(int(ceil(radiusPx)), min(steps, 2), steps) : steps;
+    return c.flags.y > 0.0 ? clamp(int(ceil(radiusPx / c.flags.y)), min(steps, 2), steps) : steps;
 }
 int aoAdaptiveSamples(AoCommon_ c, int samples, float radiusPx) {
-    return c.flags.y != 0.0 ? clamp(int(ceil(0.785398 * radiusPx * radiusPx)), min(samples, 4), samples)
-                            : samples; // pi r^2 / 4
+    float px = c.flags.y;
+    return px > 0.0 ? clamp(int(ceil(3.14159265 * radiusPx * radiusPx / (px * px))), min(samples, 4), samples)
+                    : samples;
 }

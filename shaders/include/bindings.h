@@ -86,7 +86,7 @@ SSAO_STRUCT AoCommon_ {
     vec4 shape;  // x: power, y: noise kind (SSAO_NOISE_*), z: normal source (SSAO_NORMALS_*),
                  // w: position-pyramid offset: taps d pixels away read MIP log2(d) - w (0 = no pyramid)
     vec4 target; // AO target width, height, 1/width, 1/height (pixels)
-    vec4 flags;  // x: 1 = sky pixels return at once (skip.sky), y: 1 = adaptive sample counts, z, w: 0
+    vec4 flags;  // x: 1 = sky pixels return at once (skip.sky), y: adaptive samples' pixels per sample (0 = off), z, w: 0
 };
 
 SSAO_STRUCT DenoiseConstants_ {
