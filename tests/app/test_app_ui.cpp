@@ -229,6 +229,46 @@ TEST_F(AppUi, DraggingTheViewOrbitsTheCamera) {
     EXPECT_EQ(ui_->app().lastReport().ran().size(), 4u); // a camera move re-renders everything
 }
 
+TEST_F(AppUi, CameraPanelSwitchesTheLensAndAViewOfTheAoAloneCullsTheComposite) {
+    ui_->settle();
+    ui_->click("tab#Scene & camera");
+    ui_->frame();
+    ui_->click("camera#orthographic");
+    ui_->click("camera#depth_standard");
+    ui_->frames(2);
+    const Camera& rendered = ui_->app().renderer().camera();
+    EXPECT_TRUE(rendered.orthographic());
+    EXPECT_EQ(rendered.depth, DepthMode::Standard);
+    const Image mask = readBack(ui_->app().renderer().texture("gbuffer.position"), 4).channel(3);
+    EXPECT_GT(stats(mask).mean, 0.2); // the orthographic view still frames the scene
+    // "Reset view" keeps the lens the user chose.
+    ui_->app().resetCamera();
+    ui_->frames(2);
+    EXPECT_TRUE(ui_->app().renderer().camera().orthographic());
+    ui_->click("camera#perspective");
+    ui_->click("camera#depth_reversed");
+    ui_->frames(2);
+    EXPECT_FALSE(ui_->app().renderer().camera().orthographic());
+    EXPECT_EQ(ui_->app().renderer().camera().depth, DepthMode::Reversed);
+
+    // A single view of the raw AO: the composite is not run (culled), the grid brings it back.
+    ui_->app().viewMode = ViewMode::Single;
+    ui_->app().enlarged = "ao.raw";
+    ui_->app().settings().ao.power = 1.3f;
+    ui_->app().poke();
+    ui_->frames(3);
+    const FrameReport& single = ui_->app().lastReport();
+    bool culled = false;
+    for (const auto& p : single.passes)
+        culled = culled || (p.name == "composite" && p.culled);
+    EXPECT_TRUE(culled);
+    ui_->app().viewMode = ViewMode::Grid;
+    ui_->app().poke();
+    ui_->frames(2);
+    const auto ran = ui_->app().lastReport().ran();
+    EXPECT_NE(std::find(ran.begin(), ran.end(), "composite"), ran.end());
+}
+
 TEST_F(AppUi, IdleFramesRenderNothing) {
     ui_->settle(); // let hover/input settle
     ui_->frames(4);
