@@ -1,5 +1,7 @@
 // Small helpers shared by every test binary: files under the build's test tmp folder.
 #pragma once
+#include "util/error.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -8,6 +10,16 @@
 #include <vector>
 
 namespace ssaotest {
+
+// The message of the ssao::Error `f` throws ("" when it throws none).
+template <class F> std::string errorOf(F&& f) {
+    try {
+        f();
+    } catch (const ssao::Error& e) {
+        return e.what();
+    }
+    return "";
+}
 
 // Writes `text` to SSAOLAB_TEST_TMP/name (binary) and returns the path.
 inline std::string writeTemp(const std::string& name, const std::string& text) {

@@ -28,6 +28,10 @@ std::string joined(const nlohmann::json& list) {
         s += (s.empty() ? "" : ", ") + v.get<std::string>();
     return s.empty() ? "none" : s;
 }
+// A table's title, header and alignment row.
+void table(std::ostringstream& md, const std::string& title, const std::string& header, const std::string& align) {
+    md << "\n#### " << title << "\n\n" << header << "\n" << align << "\n";
+}
 template <class F> void rows(std::ostringstream& md, const SkipsRun& run, const std::string& skip, F line) {
     for (const auto& r : run.rows)
         if (r.skip == skip) md << line(r) << "\n";
@@ -44,18 +48,18 @@ std::string skipsMarkdown(const SkipsRun& run) {
           "change is the largest difference of the judged buffer over geometry pixels (0: bit-exact), "
           "or for adaptive sampling the change in RMSE against the ray-traced reference.\n";
 
-    md << "\n#### Dirty passes: what each change re-runs\n\n"
-          "| scene | change | passes run | GPU ms with | every pass forced | ratio | wall ms with / forced | output change |\n"
-          "|---|---|---|---:|---:|---:|---:|---|\n";
+    table(md, "Dirty passes: what each change re-runs",
+          "| scene | change | passes run | GPU ms with | every pass forced | ratio | wall ms with / forced | output change |",
+          "|---|---|---|---:|---:|---:|---:|---|");
     rows(md, run, "dirty", [](const SkipRow& r) {
         return "| " + r.scene + " | " + r.variant + " | " + joined(r.extra["passes_run"]) + " | " + num(r.with) +
                " | " + num(r.without) + " | " + ratio(r) + " | " + num(r.wallWith, "%.1f") + " / " +
                num(r.wallWithout, "%.1f") + " | " + change(r.errorChange) + " |";
     });
 
-    md << "\n#### Sky pixels: AO and the denoiser's last pass return at once\n\n"
-          "| scene | sky share | technique | AO + denoise ms with | without | ratio | geometry share | output change |\n"
-          "|---|---:|---|---:|---:|---:|---:|---|\n";
+    table(md, "Sky pixels: AO and the denoiser's last pass return at once",
+          "| scene | sky share | technique | AO + denoise ms with | without | ratio | geometry share | output change |",
+          "|---|---:|---|---:|---:|---:|---:|---|");
     rows(md, run, "sky", [](const SkipRow& r) {
         const double sky = r.extra.value("sky_share", 0.0);
         return "| " + r.scene + " | " + num(100.0 * sky, "%.0f %%") + " | " + r.variant + " | " + num(r.with) +
@@ -63,9 +67,9 @@ std::string skipsMarkdown(const SkipsRun& run) {
                change(r.errorChange) + " |";
     });
 
-    md << "\n#### Adaptive sample count (ao.adaptive): fewer samples where the radius spans few pixels\n\n"
-          "| scene | view | technique | samples taken | AO ms adaptive | full | ratio | RMSE adaptive | full | change |\n"
-          "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    table(md, "Adaptive sample count (ao.adaptive): fewer samples where the radius spans few pixels",
+          "| scene | view | technique | samples taken | AO ms adaptive | full | ratio | RMSE adaptive | full | change |",
+          "|---|---|---|---:|---:|---:|---:|---:|---:|---:|");
     rows(md, run, "adaptive", [](const SkipRow& r) {
         return "| " + r.scene + " | " + r.view + " | " + r.variant + " | " +
                num(100.0 * r.extra.value("sample_share", 1.0), "%.0f %%") + " | " + num(r.with) + " | " +
@@ -73,9 +77,9 @@ std::string skipsMarkdown(const SkipsRun& run) {
                num(r.extra.value("rmse_without", 0.0), "%.4f") + " | " + num(r.errorChange, "%+.4f") + " |";
     });
 
-    md << "\n#### Frustum culling in the G-buffer pass\n\n"
-          "| scene | view | draws culled | triangles culled | G-buffer ms with | without | ratio | wall ms with / without | output change |\n"
-          "|---|---|---:|---:|---:|---:|---:|---:|---|\n";
+    table(md, "Frustum culling in the G-buffer pass",
+          "| scene | view | draws culled | triangles culled | G-buffer ms with | without | ratio | wall ms with / without | output change |",
+          "|---|---|---:|---:|---:|---:|---:|---:|---|");
     rows(md, run, "cull", [](const SkipRow& r) {
         const double d = r.extra.value("draws", 0.0), dc = r.extra.value("draws_culled", 0.0);
         const double t = r.extra.value("triangles", 0.0), tc = r.extra.value("triangles_culled", 0.0);
@@ -85,9 +89,9 @@ std::string skipsMarkdown(const SkipsRun& run) {
                change(r.errorChange) + " |";
     });
 
-    md << "\n#### G-buffer targets nothing reads\n\n"
-          "| scene | view | case | colour targets written | G-buffer ms with | all 4 written | ratio | output change |\n"
-          "|---|---|---|---:|---:|---:|---:|---|\n";
+    table(md, "G-buffer targets nothing reads",
+          "| scene | view | case | colour targets written | G-buffer ms with | all 4 written | ratio | output change |",
+          "|---|---|---|---:|---:|---:|---:|---|");
     rows(md, run, "targets", [](const SkipRow& r) {
         return "| " + r.scene + " | " + r.view + " | " + r.variant + " | " +
                num(r.extra.value("targets_written", 4.0), "%.0f") + " | " + num(r.with) + " | " + num(r.without) +

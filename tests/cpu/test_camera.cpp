@@ -4,6 +4,8 @@
 #include "settings/preset.h"
 #include "util/error.h"
 
+#include "test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +13,7 @@
 #include <string>
 
 using namespace ssao;
+using ssaotest::errorOf;
 
 namespace {
 // z_ndc of the view-space point (0, 0, z).
@@ -21,14 +24,6 @@ float ndcDepth(const glm::mat4& p, float z) {
 glm::vec2 ndcXY(const glm::mat4& p, glm::vec3 v) {
     const glm::vec4 c = p * glm::vec4(v, 1.0f);
     return glm::vec2(c) / c.w;
-}
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
 }
 } // namespace
 

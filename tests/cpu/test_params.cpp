@@ -12,18 +12,8 @@
 #include <set>
 
 using namespace ssao;
+using ssaotest::errorOf;
 using ssaotest::writeTemp;
-
-namespace {
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
-} // namespace
 
 TEST(ParamTable, KeysUniqueDefaultsInRangeAndDocumented) {
     std::set<std::string> keys;

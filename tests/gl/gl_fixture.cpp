@@ -82,6 +82,17 @@ double meanAbsDiff(const ssao::Image& a, const ssao::Image& b) {
     return a.data.empty() ? 0.0 : sum / double(a.data.size());
 }
 
+double maxAbsDiff(const ssao::Image& a, const ssao::Image& b, const ssao::Image* mask) {
+    if (a.width != b.width || a.height != b.height || a.channels != b.channels) return INFINITY;
+    double worst = 0.0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+            for (int c = 0; c < a.channels; ++c)
+                if (!mask || mask->at(x, y) != 0.0f)
+                    worst = std::max(worst, double(std::abs(a.at(x, y, c) - b.at(x, y, c))));
+    return worst;
+}
+
 ::testing::AssertionResult finiteInRange(const ssao::Image& img, float lo, float hi) {
     long bad = 0, out = 0;
     float mn = INFINITY, mx = -INFINITY;

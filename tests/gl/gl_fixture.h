@@ -39,6 +39,8 @@ Rendered render(const std::string& scene, const ssao::Settings& s, int w, int h,
 // Mean of `img` over the frame's geometry pixels (position.w = 1).
 double geometryMean(const Rendered& r, const ssao::Image& img);
 double meanAbsDiff(const ssao::Image& a, const ssao::Image& b);
+// The largest |a - b| (over the pixels where `mask` is non-zero, when given); inf if sizes differ.
+double maxAbsDiff(const ssao::Image& a, const ssao::Image& b, const ssao::Image* mask = nullptr);
 // Checks a float image: no NaN/inf anywhere and every value in [lo, hi].
 ::testing::AssertionResult finiteInRange(const ssao::Image& img, float lo, float hi);
 

@@ -51,16 +51,6 @@ Images renderImages(Renderer& r, const Settings& s) {
 bool differ(const Image& a, const Image& b) {
     return a.width != b.width || a.data != b.data;
 }
-double maxAbsDiff(const Image& a, const Image& b, const Image* mask = nullptr) {
-    if (a.width != b.width || a.height != b.height || a.channels != b.channels) return INFINITY;
-    double worst = 0.0;
-    for (int y = 0; y < a.height; ++y)
-        for (int x = 0; x < a.width; ++x)
-            for (int c = 0; c < a.channels; ++c)
-                if (!mask || mask->at(x, y) != 0.0f)
-                    worst = std::max(worst, double(std::abs(a.at(x, y, c) - b.at(x, y, c))));
-    return worst;
-}
 } // namespace
 
 TEST_F(Modes, EveryValueOfEveryParameterIsFiniteAndChangesTheImage) {

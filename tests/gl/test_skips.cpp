@@ -15,23 +15,6 @@ using namespace ssaotest;
 
 namespace {
 class Skips : public GlTest {};
-
-double maxAbsDiff(const Image& a, const Image& b, const Image* mask = nullptr) {
-    if (a.width != b.width || a.height != b.height || a.channels != b.channels) return INFINITY;
-    double worst = 0.0;
-    for (int y = 0; y < a.height; ++y)
-        for (int x = 0; x < a.width; ++x)
-            for (int c = 0; c < a.channels; ++c)
-                if (!mask || mask->at(x, y) != 0.0f)
-                    worst = std::max(worst, double(std::abs(a.at(x, y, c) - b.at(x, y, c))));
-    return worst;
-}
-
-double passMs(const FrameReport& f, const std::string& name) {
-    for (const auto& p : f.passes)
-        if (p.name == name) return p.gpuMs;
-    return -1.0;
-}
 } // namespace
 
 TEST_F(Skips, SkyPixelsCostNothingAndSkippingThemChangesNoGeometryPixel) {
