@@ -148,7 +148,7 @@ void Renderer::buildGraph() {
             same = same && da.groups == db.groups && da.reads.size() == db.reads.size() &&
                    da.writes.size() == db.writes.size();
             for (size_t g = 0; same && g < db.groups.size(); ++g)
-                same = ja.at(db.groups[g]) == jb.at(db.groups[g]);
+                same = FrameGraph::keyedSettings(ja, db.groups[g]) == FrameGraph::keyedSettings(jb, db.groups[g]);
             for (size_t r = 0; same && r < db.reads.size(); ++r) {
                 auto it = aliases.find(db.reads[r]);
                 same = (it != aliases.end() ? it->second : db.reads[r]) == da.reads[r];

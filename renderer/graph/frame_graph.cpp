@@ -26,6 +26,20 @@ std::vector<std::string> FrameReport::ran() const {
     return out;
 }
 
+nlohmann::json FrameGraph::keyedSettings(const nlohmann::json& effective, const std::string& name) {
+    // "group" keys a pass on every row of the group, "group.row" on that row alone.
+    const size_t dot = name.find('.');
+    const std::string group = name.substr(0, dot);
+    if (!effective.contains(group)) throw Error("reads unknown settings group '" + group + "'");
+    if (dot == std::string::npos) return effective.at(group);
+    if (!findParam(name)) throw Error("reads unknown parameter '" + name + "'");
+    return effective.at(group).value(name.substr(dot + 1), nlohmann::json()); // absent: does not apply
+}
+
+bool FrameGraph::covers(const std::string& name, const std::string& key) {
+    return name == key || (name.find('.') == std::string::npos && key.rfind(name + ".", 0) == 0);
+}
+
 PassDecl FrameGraph::declare(const Pass& p, const Settings& s) {
     PassDecl d;
     PassBuilder b(d);
@@ -128,9 +142,11 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
         if (js == json.end()) js = json.emplace(nodes[i].settings, toEffectiveJson(*nodes[i].settings)).first;
         std::string settingsKey;
         for (const auto& g : decls[i].groups) {
-            if (!js->second.contains(g))
-                throw Error("pass '" + names[i] + "' reads unknown settings group '" + g + "'");
-            settingsKey += "|" + g + "=" + js->second.at(g).dump();
+            try {
+                settingsKey += "|" + g + "=" + keyedSettings(js->second, g).dump();
+            } catch (const Error& e) {
+                throw Error("pass '" + names[i] + "' " + e.what());
+            }
         }
         nodes_.push_back({nodes[i].pass, nodes[i].settings, decls[i], settingsKey});
         order_.push_back(names[i]);

@@ -57,6 +57,11 @@ class FrameGraph {
     static std::vector<size_t> order(const std::vector<std::string>& names,
                                      const std::vector<PassDecl>& decls);
     static PassDecl declare(const Pass& p, const Settings& s);
+    // The part of effective settings JSON (toEffectiveJson) a declared name keys on: a whole group
+    // ("ao") or one row ("skip.sky"; null when the row does not apply). Throws on an unknown name.
+    static nlohmann::json keyedSettings(const nlohmann::json& effective, const std::string& name);
+    // Whether a declared name covers the parameter `key` ("ao" covers "ao.power"; "skip.sky" only itself).
+    static bool covers(const std::string& name, const std::string& key);
 
     const std::vector<std::string>& passOrder() const { return order_; }
     // Resources in the order their producers run; internal ones only when asked.

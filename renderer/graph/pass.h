@@ -38,7 +38,7 @@ struct Branch {
 struct PassDecl {
     std::vector<std::string> reads;
     std::vector<ResourceDesc> writes;
-    std::vector<std::string> groups; // parameter-table groups whose values key this pass
+    std::vector<std::string> groups; // parameter-table groups (or "group.row") whose values key this pass
     bool scene = false, camera = false;
     bool frameIndex = false; // its noise follows the temporal frame index (frame.clip.w)
 };
@@ -48,6 +48,8 @@ class PassBuilder {
     explicit PassBuilder(PassDecl& d) : d_(d) {}
     void read(const std::string& resource) { d_.reads.push_back(resource); }
     void write(ResourceDesc desc) { d_.writes.push_back(std::move(desc)); }
+    // A parameter-table group ("ao": the pass re-runs when any of its rows changes), or one row of
+    // it ("skip.sky": only that row).
     void settings(const std::string& group) { d_.groups.push_back(group); }
     void usesScene() { d_.scene = true; }
     void usesCamera() { d_.camera = true; }

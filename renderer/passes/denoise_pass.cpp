@@ -17,7 +17,7 @@ void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
     tmp.scale = bilateral ? 1.0f : resolutionScale(s.ao.resolution);
     tmp.internal = true;
     if (bilateral || s.temporal.enabled || s.skip.sky) b.read("gbuffer.depth");
-    b.settings("skip");
+    b.settings("skip.sky"); // its last pass skips sky pixels
     if (bilateral) b.read("gbuffer.normal");
     if (s.temporal.enabled) {
         b.settings("temporal");

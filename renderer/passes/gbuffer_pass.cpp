@@ -34,7 +34,8 @@ void GBufferPass::setup(PassBuilder& b, const Settings& s) const {
     b.write(describe("gbuffer.zbuffer", GL_DEPTH_COMPONENT32F, 1, Display::Scalar,
                      "hardware depth in [0,1] (non-linear, 1 at near when reversed; seed 001 reconstructs positions from it)"));
     b.settings("gbuffer");
-    b.settings("skip"); // culling and unused targets
+    b.settings("skip.cull");
+    b.settings("skip.unused_targets");
     b.usesScene();
     b.usesCamera();
 }

@@ -20,7 +20,7 @@ void AoPass::declarePositionsNormals(PassBuilder& b, const Settings& s, const ch
     b.write(rawOutput(s));
     b.settings("ao");
     b.settings(group);
-    b.settings("skip");
+    b.settings("skip.sky");
     b.usesScene();  // scene-relative radius
     b.usesCamera(); // projection: the radius in pixels
     b.usesFrameIndex(); // noise

@@ -62,6 +62,8 @@ TEST_F(Skips, EachChangeReRunsOnlyThePassesThatDependOnIt) {
         {"ao.power", [&] { s.ao.power = 1.5f, r->setSettings(s); }, {"ao", "denoise", "composite"}},
         {"denoise.kind", [&] { s.denoise.kind = DenoiseKind::Gaussian, r->setSettings(s); }, {"denoise", "composite"}},
         {"composite.light", [&] { s.composite.light = 0.3f, r->setSettings(s); }, {"composite"}},
+        // A pass keyed on one row of a group ("skip.sky") ignores the group's other rows.
+        {"skip.sky", [&] { s.skip.sky = false, r->setSettings(s); }, {"ao", "denoise", "composite"}},
         {"nothing", [] {}, {}},
     };
     for (const Change& c : changes) {

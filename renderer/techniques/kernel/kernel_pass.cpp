@@ -11,7 +11,7 @@ void KernelPass::setup(PassBuilder& b, const Settings& s) const {
     b.write(rawOutput(s));
     b.settings("ao");
     b.settings("kernel");
-    b.settings("skip");
+    b.settings("skip.sky");
     b.usesScene();  // scene-relative radius
     b.usesCamera(); // screen-space radius, projection
     b.usesFrameIndex(); // the noise tile's shift
