@@ -162,7 +162,8 @@ const RadiusInfo& AppCore::radiusInfo() {
 
 std::vector<float> AppCore::valueAt(const std::string& buffer, glm::ivec2 pixel) {
     const Resource* res = renderer_->graph().find(buffer);
-    if (!res || pixel.x < 0 || pixel.y < 0) return {};
+    // A buffer the current view does not need was not computed this frame: show nothing, not stale data.
+    if (!res || pixel.x < 0 || pixel.y < 0 || !renderer_->graph().current(buffer)) return {};
     CachedValue& c = values_[buffer];
     if (c.pixel == pixel && c.version == res->version && c.generation == res->generation) return c.values;
     const Renderer& r = *renderer_;

@@ -80,7 +80,7 @@ void inspectorSection(AppCore& app) {
         if (!prefix.empty() && app.renderer().graph().find(prefix + name)) name = prefix + name;
         const std::vector<float> v =
             referenceEmptyReason(app, name).empty() ? app.valueAt(name, px) : std::vector<float>{};
-        std::string text = v.empty() ? "         -" : ""; // no reference of this view yet
+        std::string text = v.empty() ? "         -" : ""; // no reference yet, or not computed in this view
         for (float x : v) {
             char buf[24];
             std::snprintf(buf, sizeof buf, "%10.4g", x);

@@ -52,6 +52,9 @@ class FrameGraph {
     // them, is culled; PassContext::needed() tells a pass which of its outputs are.
     void setWanted(std::optional<std::set<std::string>> wanted) { wanted_ = std::move(wanted); }
     const std::optional<std::set<std::string>>& wanted() const { return wanted_; }
+    // Whether the resource holds this frame's content: the last execute() needed it. One nothing
+    // wanted (a culled pass's output, a target left unwritten) may hold an older frame's.
+    bool current(const std::string& resource) const { return needed(resource); }
 
     // Pure ordering (testable without GL): the node indices in execution order.
     static std::vector<size_t> order(const std::vector<std::string>& names,

@@ -262,11 +262,15 @@ TEST_F(AppUi, CameraPanelSwitchesTheLensAndAViewOfTheAoAloneCullsTheComposite) {
     for (const auto& p : single.passes)
         culled = culled || (p.name == "composite" && p.culled);
     EXPECT_TRUE(culled);
+    // The pixel readout shows nothing for what this view did not compute, not an older frame's values.
+    EXPECT_TRUE(ui_->app().valueAt("composite", {10, 10}).empty());
+    EXPECT_FALSE(ui_->app().valueAt("ao.raw", {10, 10}).empty());
     ui_->app().viewMode = ViewMode::Grid;
     ui_->app().poke();
     ui_->frames(2);
     const auto ran = ui_->app().lastReport().ran();
     EXPECT_NE(std::find(ran.begin(), ran.end(), "composite"), ran.end());
+    EXPECT_FALSE(ui_->app().valueAt("composite", {10, 10}).empty());
 }
 
 TEST_F(AppUi, IdleFramesRenderNothing) {
