@@ -61,37 +61,36 @@ void sceneSection(AppCore& app) {
         ImGui::SameLine();
     }
     ImGui::NewLine();
-    int clip = cc.camera().clip == ClipMode::Fit ? 0 : 1;
-    ImGui::TextUnformatted("Clip planes");
-    ImGui::SameLine();
-    if (ImGui::RadioButton("fit to scene", &clip, 0)) cc.setClip(ClipMode::Fit), app.poke();
-    rememberRect(app, "camera#clip_fit");
-    ImGui::SameLine();
-    if (ImGui::RadioButton("camera's own", &clip, 1)) cc.setClip(ClipMode::Fixed), app.poke();
-    rememberRect(app, "camera#clip_fixed");
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "The planes the camera came with (a glTF file's znear/zfar); a far/near ratio of 1e7\n"
-            "makes the depth test z-fight into false AO.");
-    int proj = cc.camera().orthographic() ? 1 : 0;
-    ImGui::TextUnformatted("Projection ");
-    ImGui::SameLine();
-    if (ImGui::RadioButton("perspective", &proj, 0)) cc.setProjection(Projection::Perspective), app.poke();
-    rememberRect(app, "camera#perspective");
-    ImGui::SameLine();
-    if (ImGui::RadioButton("orthographic", &proj, 1)) cc.setProjection(Projection::Orthographic), app.poke();
-    rememberRect(app, "camera#orthographic");
-    int depth = cc.camera().depth == DepthMode::Reversed ? 1 : 0;
-    ImGui::TextUnformatted("Depth      ");
-    ImGui::SameLine();
-    if (ImGui::RadioButton("standard", &depth, 0)) cc.setDepth(DepthMode::Standard), app.poke();
-    rememberRect(app, "camera#depth_standard");
-    ImGui::SameLine();
-    if (ImGui::RadioButton("reversed-Z", &depth, 1)) cc.setDepth(DepthMode::Reversed), app.poke();
-    rememberRect(app, "camera#depth_reversed");
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Float depth stored as 1 at near, 0 at far: even precision over any far/near\n"
-                          "ratio, so a file's own 0.05 .. 1e6 planes no longer z-fight.");
+    // One row of two choices; returns the one clicked this frame (-1: none). The second button's
+    // tooltip explains the non-default choice.
+    auto choice = [&](const char* label, int current, const char* a, const char* keyA, const char* b,
+                      const char* keyB, const char* tip) {
+        int v = current, clicked = -1;
+        ImGui::TextUnformatted(label);
+        ImGui::SameLine();
+        if (ImGui::RadioButton(a, &v, 0)) clicked = 0;
+        rememberRect(app, keyA);
+        ImGui::SameLine();
+        if (ImGui::RadioButton(b, &v, 1)) clicked = 1;
+        rememberRect(app, keyB);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+        if (clicked >= 0) app.poke();
+        return clicked;
+    };
+    const int clip = choice("Clip planes", cc.camera().clip == ClipMode::Fit ? 0 : 1, "fit to scene",
+                            "camera#clip_fit", "camera's own", "camera#clip_fixed",
+                            "The planes the camera came with (a glTF file's znear/zfar); with standard depth a\n"
+                            "far/near ratio of 1e7 makes the depth test z-fight into false AO.");
+    if (clip >= 0) cc.setClip(clip == 0 ? ClipMode::Fit : ClipMode::Fixed);
+    const int proj = choice("Projection ", cc.camera().orthographic() ? 1 : 0, "perspective", "camera#perspective",
+                            "orthographic", "camera#orthographic",
+                            "Parallel rays; the view spans what the field of view sees at the target's distance.");
+    if (proj >= 0) cc.setProjection(proj == 0 ? Projection::Perspective : Projection::Orthographic);
+    const int depth = choice("Depth      ", cc.camera().depth == DepthMode::Reversed ? 1 : 0, "standard",
+                             "camera#depth_standard", "reversed-Z", "camera#depth_reversed",
+                             "Float depth stored as 1 at near, 0 at far: even precision over any far/near\n"
+                             "ratio, so a file's own 0.05 .. 1e6 planes no longer z-fight.");
+    if (depth >= 0) cc.setDepth(depth == 0 ? DepthMode::Standard : DepthMode::Reversed);
     const Camera c = cameraToFile(cc.camera(), sc); // what --camera and presets take
     const Camera& e = app.renderer().camera();
     ImGui::TextDisabled("eye %.4g %.4g %.4g  target %.4g %.4g %.4g", c.eye.x, c.eye.y, c.eye.z, c.target.x,
