@@ -181,7 +181,8 @@ ErrorMetrics computeErrorMetrics(const MetricsInput& in, const MetricsOptions& o
     const double nan = std::numeric_limits<double>::quiet_NaN();
     ErrorMetrics e;
     e.pixels = long(n);
-    auto geo = [&](size_t i) { return in.geometry == nullptr || in.geometry[i] > 0.0f; };
+    auto excluded = [&](size_t i) { return in.exclude != nullptr && in.exclude[i] > 0.0f; };
+    auto geo = [&](size_t i) { return (in.geometry == nullptr || in.geometry[i] > 0.0f) && !excluded(i); };
 
     // Non-finite test values become 1.0 (unoccluded, what an R8 target shows) for every metric.
     std::vector<float> test(n), srgbTest(n), srgbRef(n);
@@ -189,6 +190,10 @@ ErrorMetrics computeErrorMetrics(const MetricsInput& in, const MetricsOptions& o
         const bool finite = std::isfinite(in.test[i]);
         e.nonFinite += finite ? 0 : 1;
         test[i] = finite ? in.test[i] : 1.0f;
+        if (excluded(i)) {
+            ++e.excludedPixels;
+            test[i] = in.reference[i];
+        }
         srgbTest[i] = linearToSrgb(test[i]);
         srgbRef[i] = linearToSrgb(in.reference[i]);
     }

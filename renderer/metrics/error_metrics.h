@@ -16,6 +16,10 @@ struct MetricsInput {
     // split (rmseEdge = rmseInterior = NaN, edgePixels = interiorPixels = 0).
     const float* depth = nullptr;
     const float* referenceStdErr = nullptr; // per-pixel standard error of the reference (null = 0)
+    // >0 where the reference itself is ambiguous (ReferenceImage::ambiguous): such a pixel is left
+    // out of every metric (its test value counts as equal to the reference in the whole-frame
+    // PSNR and SSIM). Null = none.
+    const float* exclude = nullptr;
 };
 
 struct MetricsOptions {
@@ -28,6 +32,7 @@ struct MetricsOptions {
 
 struct ErrorMetrics {
     long pixels = 0, geometryPixels = 0, edgePixels = 0, interiorPixels = 0;
+    long excludedPixels = 0; // geometry pixels left out (MetricsInput::exclude); not in geometryPixels
     // Test pixels (over the whole frame) that are NaN or ±inf. Every metric treats such a value as
     // 1.0 (unoccluded: what an R8 target would show, white), so the other numbers stay finite.
     long nonFinite = 0;

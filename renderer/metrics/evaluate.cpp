@@ -27,6 +27,7 @@ Evaluation evaluate(const Image& ao, const ReferenceImage& ref, const MetricsOpt
     in.geometry = ref.geometry.data();
     in.depth = ref.depth.data();
     in.referenceStdErr = ref.stdErr.data();
+    if (ref.ambiguous.size() == ref.ao.size()) in.exclude = ref.ambiguous.data();
     e.metrics = computeErrorMetrics(in, opt);
     return e;
 }
@@ -69,17 +70,20 @@ nlohmann::json metricsJson(const ErrorMetrics& m, const ReferenceImage& ref, con
             {"ssim", num(m.ssim)},
             {"nonfinite", m.nonFinite},
             {"pixels", {{"all", m.pixels}, {"geometry", m.geometryPixels}, {"edge", m.edgePixels},
-                        {"interior", m.interiorPixels}}},
+                        {"interior", m.interiorPixels}, {"ambiguous", m.excludedPixels}}},
             {"reference",
              {{"definition", kReferenceDefinition},
               {"variant", variantName(s.variant)},
               {"radius", s.radius},
               {"rays_per_pixel", ref.samples},
+              {"ambiguous_pixels", ref.ambiguousPixels()},
               {"noise_rms", num(m.referenceNoise)},
               {"trace_seconds", ref.seconds},
               {"mrays_per_second", ref.raysPerSecond() * 1e-6}}},
             {"notes", "geometry pixels are the reference's primary hits; bias = mean(test - reference), + = "
-                      "too bright; edge = within 3 px of a depth discontinuity; PSNR and SSIM on sRGB-encoded AO"}};
+                      "too bright; edge = within 3 px of a depth discontinuity; PSNR and SSIM on sRGB-encoded AO; "
+                      "ambiguous = pixels where a surface lies within a few float ULPs of the reference's ray "
+                      "origin (coincident faces: the truth is decided by rounding), left out of every metric"}};
 }
 
 } // namespace ssao

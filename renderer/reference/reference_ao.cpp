@@ -92,6 +92,7 @@ ReferenceTracer::ReferenceTracer(const EmbreeScene& scene, const Camera& camera,
     hits_.assign(n, Hit{});
     depth_.assign(n, 0.0f);
     geometry_.assign(n, 0.0f);
+    ambiguous_.assign(n, 0.0f);
     unoccluded_.assign(n, 0u);
     if (settings.variant == ReferenceVariant::Obscurance) {
         sumW_.assign(n, 0.0);
@@ -145,8 +146,31 @@ ReferenceTracer::ReferenceTracer(const EmbreeScene& scene, const Camera& camera,
             const float nLen = glm::length(n);
             n = nLen > 1e-10f ? n / nLen : ng; // interpolated normals are shorter than 1
             if (glm::dot(n, ng) < 0.0f) n = -n; // as the G-buffer: shade the side we see
-            const glm::vec3 o = offsetRayOrigin(p, ng);
+            float scale = 0.0f;
+            for (int k = 0; k < 3; ++k) {
+                const glm::vec3 a = glm::abs(sc.vertices[tri[k]].position);
+                scale = std::max({scale, a.x, a.y, a.z});
+            }
+            const glm::vec3 o = offsetRayOrigin(backOffTowardEye(p, -glm::vec3(d), scale), ng);
             hits_[i] = Hit{o.x, o.y, o.z, n.x, n.y, n.z};
+            // Coincident faces: a short probe along the geometric and the shading normal (the
+            // shortest way to a parallel twin) that hits within a few ULPs - of the hit's own
+            // coordinates or of the primary distance, whichever is coarser: a camera far away
+            // orders two faces closer than its ULPs at random, and the offset above clears only
+            // the hit's.
+            const float coarse = std::max(scale, rh.ray.tfar);
+            for (const glm::vec3& dir : {ng, n}) {
+                alignas(16) RTCRay probe{};
+                probe.org_x = o.x, probe.org_y = o.y, probe.org_z = o.z;
+                probe.dir_x = dir.x, probe.dir_y = dir.y, probe.dir_z = dir.z;
+                probe.tnear = 0.0f;
+                probe.tfar = coincidenceDistance(coarse);
+                probe.mask = 0xffffffffu;
+                RTCIntersectContext near;
+                rtcInitIntersectContext(&near);
+                rtcOccluded1(scene.handle(), &near, &probe);
+                if (probe.tfar < 0.0f) ambiguous_[i] = 1.0f; // Embree sets tfar = -inf on a hit
+            }
             depth_[i] = float(double(rh.ray.tfar) * cosFwd);
             geometry_[i] = 1.0f;
         }
@@ -244,6 +268,7 @@ ReferenceImage ReferenceTracer::image() const {
     img.samples = done_;
     img.depth = depth_;
     img.geometry = geometry_;
+    img.ambiguous = ambiguous_;
     img.seconds = seconds_;
     img.aoRays = rays_;
     const size_t n = geometry_.size();
@@ -267,6 +292,13 @@ ReferenceImage ReferenceTracer::image() const {
         img.stdErr[i] = float(std::sqrt(var / N));
     }
     return img;
+}
+
+long ReferenceImage::ambiguousPixels() const {
+    long n = 0;
+    for (float a : ambiguous)
+        n += a > 0.0f ? 1 : 0;
+    return n;
 }
 
 ReferenceImage traceReference(const EmbreeScene& scene, const Camera& camera, int width, int height,

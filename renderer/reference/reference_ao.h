@@ -39,6 +39,11 @@ struct ReferenceImage {
     std::vector<float> stdErr;     // per-pixel standard error of the estimate (sky = 0)
     std::vector<float> depth;      // primary hit's linear view depth (scene units), sky = 0
     std::vector<float> geometry;   // 1 where the primary ray hit, else 0
+    // 1 where the truth itself is ambiguous: a surface passes within a few float ULPs of the
+    // secondary rays' origin (two faces in one place, ray_offset.h), so whether it occludes is
+    // decided by rounding. Error metrics leave these pixels out and say how many (MetricsInput).
+    std::vector<float> ambiguous;
+    long ambiguousPixels() const;
     double seconds = 0;            // tracing wall time (AO rays)
     long long aoRays = 0;          // AO rays traced
     double raysPerSecond() const { return seconds > 0 ? double(aoRays) / seconds : 0.0; }
@@ -70,7 +75,7 @@ class ReferenceTracer {
     int width_, height_;
     ReferenceSettings settings_;
     std::vector<Hit> hits_;
-    std::vector<float> depth_, geometry_;
+    std::vector<float> depth_, geometry_, ambiguous_;
     std::vector<uint32_t> unoccluded_; // visibility: rays that escaped
     std::vector<double> sumW_, sumW2_; // obscurance: sum of weights and of squares
     int done_ = 0;

@@ -88,13 +88,15 @@ std::optional<ReferenceImage> loadCachedReference(const ReferenceKey& key, const
         img.seconds = meta.at("seconds").get<double>();
         img.aoRays = meta.at("ao_rays").get<long long>();
         const size_t n = size_t(px.width) * px.height;
-        for (auto* v : {&img.ao, &img.stdErr, &img.depth, &img.geometry})
+        for (auto* v : {&img.ao, &img.stdErr, &img.depth, &img.geometry, &img.ambiguous})
             v->resize(n);
         for (size_t i = 0; i < n; ++i) {
             img.ao[i] = px.data[4 * i];
             img.stdErr[i] = px.data[4 * i + 1];
             img.depth[i] = px.data[4 * i + 2];
-            img.geometry[i] = px.data[4 * i + 3];
+            const float a = px.data[4 * i + 3]; // 0 sky, 1 geometry, 2 ambiguous geometry
+            img.geometry[i] = a > 0.5f ? 1.0f : 0.0f;
+            img.ambiguous[i] = a > 1.5f ? 1.0f : 0.0f;
         }
         return img;
     } catch (const std::exception&) {
@@ -111,14 +113,15 @@ bool storeCachedReference(const ReferenceKey& key, const ReferenceImage& img, co
             px.data[4 * i] = img.ao[i];
             px.data[4 * i + 1] = img.stdErr[i];
             px.data[4 * i + 2] = img.depth[i];
-            px.data[4 * i + 3] = img.geometry[i];
+            px.data[4 * i + 3] =
+                img.geometry[i] + (i < img.ambiguous.size() && img.ambiguous[i] > 0.0f ? 1.0f : 0.0f);
         }
         const std::string tmp = stem.string() + ".tmp" + std::to_string(::getpid()); // per process
         writeExr(px, tmp + ".exr");
         {
             nlohmann::json meta = {{"key", key.text()},        {"samples", img.samples},
                                    {"seconds", img.seconds},    {"ao_rays", img.aoRays},
-                                   {"channels", "R=ao G=stderr B=depth A=geometry"}};
+                                   {"channels", "R=ao G=stderr B=depth A=geometry (2 = ambiguous)"}};
             std::ofstream(tmp + ".json") << meta.dump(2) << "\n";
         }
         fs::rename(tmp + ".exr", stem.string() + ".exr");

@@ -13,7 +13,8 @@
 namespace ssao {
 
 // Bumped whenever the reference's definition or sampling changes (old cache entries then miss).
-constexpr const char* kReferenceDefinition = "xegtao-v1";
+// v2: hits backed off toward the eye (creases of interpenetrating solids), ambiguous pixels.
+constexpr const char* kReferenceDefinition = "xegtao-v2";
 
 // FNV-1a over the triangles' positions, normals and indices.
 uint64_t sceneContentHash(const Scene& scene);

@@ -116,10 +116,32 @@ Scene corner() {
     return s;
 }
 
+// Three 0.1-thick slabs that pass through each other as CornellBox's walls do: each ends at the
+// mid-plane of the others, so the visible floor/wall crease lies inside the other slab's volume
+// to within rounding. Floor y in [-0.05, 0.05] over x, z in [0, 4]; back wall z in [-0.05, 0.05];
+// left wall x in [-0.05, 0.05]; the inner corner at (0.05, 0.05, 0.05). The designed camera looks
+// at the floor/back-wall crease from its bisecting plane with `up` normal to the plane through the
+// eye and the crease, so the crease projects onto the centre row of any odd-height image: those
+// pixel centres hit the crease exactly (CornellBox's diagonal creases do the same by symmetry).
+// Closed forms (R well under the slabs' 4 units): AO 0.5 on a straight crease and
+// 1 - (acos a - a sqrt(1 - a^2)) / pi at distance d from it, a = min(d / R, 1).
+Scene slabs() {
+    Scene s;
+    Builder b(s);
+    b.begin(kFloor);
+    b.box({0.0f, -0.05f, 0.0f}, {4.0f, 0.05f, 4.0f});
+    b.begin(kWall);
+    b.box({0.0f, 0.0f, -0.05f}, {4.0f, 4.0f, 0.05f}); // back wall
+    b.box({-0.05f, 0.0f, 0.0f}, {0.05f, 4.0f, 4.0f}); // left wall
+    b.flush();
+    s.camera = Camera{{3.5f, 1.55f, 1.55f}, {2.0f, 0.05f, 0.05f}, {0.0f, 1.0f, -1.0f}, 50.0f, 0.1f, 20.0f};
+    return s;
+}
+
 } // namespace
 
 std::vector<std::string> builtinSceneNames() {
-    return {"showcase", "plane", "corner"};
+    return {"showcase", "plane", "corner", "slabs"};
 }
 
 Scene makeBuiltinScene(const std::string& name) {
@@ -130,6 +152,8 @@ Scene makeBuiltinScene(const std::string& name) {
         s = plane();
     else if (name == "corner")
         s = corner();
+    else if (name == "slabs")
+        s = slabs();
     else {
         std::string list;
         for (auto& n : builtinSceneNames())

@@ -1,7 +1,9 @@
 // The ray-traced reference against closed forms (XeGTAO's definition: cosine-weighted binary
 // visibility within R), its determinism across threads and batches, and its disk cache.
+#include "metrics/error_metrics.h"
 #include "reference/reference_cache.h"
 #include "reference/sampling.h"
+#include "scene/builtin_scenes.h"
 #include "util/error.h"
 
 #include <gtest/gtest.h>
@@ -168,6 +170,99 @@ TEST(Reference, InsideAClosedBoxSmallerThanRIsFullyOccluded) {
         sum += img.ao[i] * img.ao[i];
     }
     EXPECT_LT(std::sqrt(sum / img.ao.size()), 0.01); // no ray leaks through edges or corners
+}
+
+TEST(Reference, CreasesOfInterpenetratingSlabsMatchTheClosedForm) {
+    // builtin:slabs: slabs that pass through each other (as CornellBox's walls), seen so that the
+    // centre row's pixel centres land exactly on the floor/back-wall crease. Before the hits were
+    // backed off toward the eye, that row started every AO ray inside the other slab: AO 0.00.
+    const Scene s = makeBuiltinScene("slabs");
+    EmbreeScene rt(s);
+    const Camera cam = *s.camera;
+    const float R = 0.4f;
+    const int w = 161, h = 121; // odd height: the centre row is the crease
+    const ReferenceImage img = traceReference(rt, cam, w, h, {R, 1024});
+    EXPECT_EQ(img.ambiguousPixels(), 0);
+    double creaseSum = 0, creaseWorst = 0, beside = 0;
+    long creaseN = 0, besideN = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * w + x;
+            if (img.geometry[i] == 0.0f) continue;
+            const glm::vec3 p = hitPosition(cam, w, h, x, y, img.depth[i]);
+            // Away from the left wall and the slabs' far ends, the crease is a straight 90° wedge.
+            if (p.x < 0.05f + R + 0.05f || p.x > 4.0f - R - 0.05f || p.y > 4.0f - R || p.z > 4.0f - R) continue;
+            const bool floor = std::abs(p.y - 0.05f) < 1e-3f, wall = std::abs(p.z - 0.05f) < 1e-3f;
+            ASSERT_TRUE(floor || wall) << x << "," << y;
+            const double ao = img.ao[i];
+            if (y == h / 2) {
+                creaseSum += ao;
+                creaseWorst = std::max(creaseWorst, std::abs(ao - 0.5));
+                ++creaseN;
+                continue;
+            }
+            const double d = std::max(0.0f, floor ? p.z - 0.05f : p.y - 0.05f);
+            beside += (ao - wallClosedForm(d, R)) * (ao - wallClosedForm(d, R));
+            ++besideN;
+        }
+    ASSERT_GT(creaseN, w / 3);
+    ASSERT_GT(besideN, w * h / 3);
+    const double creaseMean = creaseSum / creaseN, besideRmse = std::sqrt(beside / besideN);
+    std::printf("slabs crease: mean AO %.4f (worst |AO - 0.5| %.4f) over %ld pixels; beside it RMSE %.4f "
+                "over %ld pixels (1024 rays)\n",
+                creaseMean, creaseWorst, creaseN, besideRmse, besideN);
+    EXPECT_NEAR(creaseMean, 0.5, 0.02);
+    EXPECT_LT(creaseWorst, 0.05); // each crease pixel, 1024 stratified rays
+    EXPECT_LT(besideRmse, 0.02);
+}
+
+TEST(Reference, CoincidentFacesAreCountedAndLeftOutOfTheMetrics) {
+    // Two unit floors 1e-4 apart (a face drawn twice), seen from 3000 units: the primary ray's
+    // rounding (ULPs of its length: 2.4e-4) cannot order them, and the back-off toward the eye
+    // (ULPs of the coordinates, ~1) does not clear the twin, so where the ray takes the lower one
+    // every AO ray hits the twin just above (AO 0): a dash the geometry does not decide.
+    Scene s;
+    const float t = 1e-4f;
+    quad(s, {-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1});
+    quad(s, {-1, t, -1}, {-1, t, 1}, {1, t, 1}, {1, t, -1});
+    s.draws.push_back({0, uint32_t(s.indices.size()), glm::vec4(1)});
+    s.computeBounds();
+    EmbreeScene rt(s);
+    Camera cam = lookDown({0.0f, 0, 0.0f}, 3000.0f, 1.0f);
+    cam.nearZ = 100.0f;
+    cam.farZ = 5000.0f;
+    const int w = 256, h = 192;
+    const ReferenceImage img = traceReference(rt, cam, w, h, {0.5f, 16});
+    long dark = 0, darkFlagged = 0, openFlagged = 0, geo = 0;
+    for (size_t i = 0; i < img.ao.size(); ++i) {
+        if (img.geometry[i] == 0.0f) continue;
+        ++geo;
+        const bool flagged = img.ambiguous[i] > 0.0f;
+        if (img.ao[i] < 0.5f) {
+            ++dark;
+            darkFlagged += flagged;
+        } else {
+            openFlagged += flagged;
+        }
+    }
+    std::printf("coincident floors: %ld of %ld pixels dark, %ld of them flagged; %ld open pixels flagged\n",
+                dark, geo, darkFlagged, openFlagged);
+    ASSERT_GT(dark, 0) << "the test needs the rounding to pick the lower face somewhere";
+    EXPECT_EQ(darkFlagged, dark);          // every dash is counted...
+    EXPECT_EQ(img.ambiguousPixels(), dark + openFlagged);
+    EXPECT_LT(openFlagged, geo / 10);      // ...and little else
+    // The metrics leave them out: an all-white estimate (the truth for a floor) is then exact.
+    const std::vector<float> white(img.ao.size(), 1.0f);
+    MetricsInput in{w, h, white.data(), img.ao.data(), img.geometry.data(), img.depth.data()};
+    in.exclude = img.ambiguous.data();
+    const ErrorMetrics m = computeErrorMetrics(in);
+    EXPECT_EQ(m.excludedPixels, img.ambiguousPixels());
+    EXPECT_EQ(m.geometryPixels + m.excludedPixels, geo);
+    EXPECT_NEAR(m.rmse, 0.0, 1e-6);
+    // An open plane near the camera has none.
+    const Scene one = floorScene(false);
+    EmbreeScene rt1(one);
+    EXPECT_EQ(traceReference(rt1, lookDown({3, 0, -2}, 5.0f), 48, 32, {1.0f, 16}).ambiguousPixels(), 0);
 }
 
 TEST(Reference, BitIdenticalAcrossThreadCountsAndBatches) {
