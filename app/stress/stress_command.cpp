@@ -88,6 +88,13 @@ int runStress(const StressOptions& o) {
     Renderer r(shaderRoot());
     r.setSize(w, h);
     r.setWanted(std::set<std::string>{"ao.raw", "ao.denoised"}); // what is judged: no composite, no albedo
+    // A second renderer on an open plane (AO 1 by definition) for the cases that change settings.
+    const Scene plane = loadScene("builtin:plane");
+    Renderer planeRenderer(shaderRoot());
+    planeRenderer.setSize(w, h);
+    planeRenderer.setWanted(std::set<std::string>{"ao.raw", "ao.denoised"});
+    planeRenderer.setScene(plane);
+    planeRenderer.setCamera(*plane.camera);
     StressRun run;
     run.size = o.size;
     run.tolerance = o.tolerance;
@@ -144,6 +151,14 @@ int runStress(const StressOptions& o) {
                     row.mean = st.count ? st.mean : 1.0;
                     row.geometry = st.count;
                     if (sc.invariant || sc.compared) compare(f, benign, row.rmse, row.coverage);
+                    if (sc.settings) {
+                        planeRenderer.setSettings(cs);
+                        const Frame pf = renderFrame(planeRenderer);
+                        countBad(pf.raw, row.nonFinite, row.outside);
+                        countBad(pf.ao, row.nonFinite, row.outside);
+                        row.planeMean = stats(pf.ao, &pf.mask).mean;
+                        row.unphysical = unphysicalReason(cs);
+                    }
                     row.status = "ok";
                 } catch (const Error& e) {
                     row.status = "refused";
@@ -157,9 +172,9 @@ int runStress(const StressOptions& o) {
     writeStressFiles(run, o.out);
     const StressVerdict v = verdict(run);
     std::printf("stress: %zu cases, %ld non-finite and %ld out-of-range values, %d invariance cases over RMSE %g, "
-                "%d refused by a guard; wrote %s/{stress.json,stability.md}\n",
-                run.rows.size(), v.nonFinite, v.outside, v.invarianceFailures, o.tolerance, v.refused,
-                o.out.c_str());
+                "%d settings that darken an open plane, %d refused by a guard; wrote %s/{stress.json,stability.md}\n",
+                run.rows.size(), v.nonFinite, v.outside, v.invarianceFailures, o.tolerance, v.planeFailures,
+                v.refused, o.out.c_str());
     return v.ok() ? 0 : 1;
 }
 

@@ -21,6 +21,7 @@ StressVerdict verdict(const StressRun& run) {
         v.outside += r.outside;
         if (r.status == "refused") ++v.refused;
         if (r.status == "ok" && r.invariant && r.rmse > run.tolerance) ++v.invarianceFailures;
+        if (r.status == "ok" && r.planeFails()) ++v.planeFailures;
     }
     return v;
 }
@@ -47,6 +48,11 @@ std::string cell(const StressRow& r, double tolerance) {
         std::snprintf(buf, sizeof buf, r.geometry ? "%.3f" : "%.3f (empty)", r.mean);
         s = buf;
     }
+    if (r.planeMean >= 0.0 && r.planeMean < 0.99) { // an open plane darkened: flagged unless by design
+        std::snprintf(buf, sizeof buf, r.unphysical.empty() ? "; **plane %.3f**" : "; plane %.3f (by design)",
+                      r.planeMean);
+        s += buf;
+    }
     return s;
 }
 } // namespace
@@ -56,13 +62,17 @@ std::string stabilityMarkdown(const StressRun& run) {
     const StressVerdict v = verdict(run);
     md << "Every technique under every case at " << run.size << ": " << run.rows.size() << " renders, "
        << v.nonFinite << " non-finite and " << v.outside << " out-of-range values, " << v.invarianceFailures
-       << " invariance cases above RMSE " << run.tolerance << ", " << v.refused
+       << " invariance cases above RMSE " << run.tolerance << ", " << v.planeFailures
+       << " settings that darken an open plane below 0.99, " << v.refused
        << " cases refused by a guard with a clear error.\n\n"
        << "Cells: the mean denoised AO over geometry (\"(empty)\": no geometry in view), with the RMSE "
           "against the benign render (fitted planes) for standard-depth planes; for the cases that must "
           "not change AO (scale, translate, reversed-depth planes) the RMSE alone, in bold above the "
           "tolerance, with the share of pixels whose coverage moved; NaN/inf or out-of-range counts when "
-          "there are any; \"refused\" where a guard stops the case (messages below).\n";
+          "there are any; \"refused\" where a guard stops the case (messages below). Every case that "
+          "changes settings is also rendered on an open plane (builtin:plane, AO 1): a mean below 0.99 is "
+          "shown as \"plane\" and fails the run, unless the technique declares the setting unphysical by "
+          "design (a seed's artefact, reasons below).\n";
     std::vector<std::string> scenes, techs, axes;
     auto addUnique = [](std::vector<std::string>& v, const std::string& s) {
         if (std::find(v.begin(), v.end(), s) == v.end()) v.push_back(s);
@@ -98,6 +108,17 @@ std::string stabilityMarkdown(const StressRun& run) {
                 md << "\n";
             }
         }
+    std::map<std::string, std::string> byDesign;
+    for (const auto& r : run.rows)
+        if (!r.unphysical.empty() && r.planeMean >= 0.0 && r.planeMean < 0.99)
+            byDesign[r.unphysical] += (byDesign[r.unphysical].find(r.technique + " " + r.variant) == std::string::npos
+                                           ? (byDesign[r.unphysical].empty() ? "" : ", ") + r.technique + " " + r.variant
+                                           : "");
+    if (!byDesign.empty()) {
+        md << "\n### Unphysical by design\n\n";
+        for (const auto& [why, where] : byDesign)
+            md << "- " << why << " (" << where << ")\n";
+    }
     if (!refusals.empty()) {
         md << "\n### Refused cases\n\n";
         for (const auto& [msg, where] : refusals)
@@ -116,7 +137,8 @@ void writeStressFiles(const StressRun& run, const std::string& dir) {
                              {"variant", r.variant}, {"status", r.status}, {"message", r.message},
                              {"invariant", r.invariant}, {"compared", r.compared}, {"nonfinite", r.nonFinite}, {"outside", r.outside},
                              {"geometry_pixels", r.geometry}, {"mean", r.mean}, {"rmse", r.rmse},
-                             {"coverage_moved", r.coverage}});
+                             {"coverage_moved", r.coverage}, {"plane_mean", r.planeMean},
+                             {"unphysical", r.unphysical}});
     writeFileAtomically(dir + "/stress.json", j.dump(2) + "\n");
     writeFileAtomically(dir + "/stability.md", stabilityMarkdown(run));
 }

@@ -25,4 +25,9 @@ const TechniqueInfo& findTechnique(const std::string& id) {
     throw Error("unknown AO technique '" + id + "' (known: " + known + ")");
 }
 
+std::string unphysicalReason(const Settings& s) {
+    const TechniqueInfo& t = findTechnique(s.ao.technique);
+    return t.unphysical ? t.unphysical(s) : std::string();
+}
+
 } // namespace ssao

@@ -23,7 +23,14 @@ struct TechniqueInfo {
     // (a helper image only that pass reads, like the position pyramid, stays inside it; one that
     // several passes share would be a pass of its own, wired by declarations).
     std::function<std::vector<std::unique_ptr<Pass>>(const Branch&)> makePasses;
+    // Why these settings are unphysical by design (a seed article's artefact a preset reproduces on
+    // purpose), or "" when the technique must hold the physics with them: an open plane unoccluded,
+    // a corner darkening toward the wall (tests/gl/test_physics_limits.cpp, `ssaolab stress`).
+    std::function<std::string(const Settings&)> unphysical;
 };
+
+// TechniqueInfo::unphysical of `s`'s technique ("" when it has none).
+std::string unphysicalReason(const Settings& s);
 
 // makePasses for a technique that is one pass of type P (every technique so far).
 template <class P> std::function<std::vector<std::unique_ptr<Pass>>(const Branch&)> onePass() {

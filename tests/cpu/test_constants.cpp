@@ -26,11 +26,15 @@ TEST(PackKernel, ModesFlagsAndParameters) {
     s.kernel.depthTest = DepthTest::Fragment;
     s.kernel.positionSource = PositionSource::Depth;
     s.kernel.noise = Noise::None;
+    s.kernel.ownTexel = OwnTexel::Test;
     auto c = packKernelConstants(s.kernel, common(), /*normalUnorm=*/true);
     EXPECT_EQ(c.modes.x, 17);
     EXPECT_EQ(c.modes.y, KERNEL_RANGE_HARD);
     EXPECT_EQ(c.modes.z, KERNEL_DEPTHTEST_FRAGMENT);
     EXPECT_EQ(c.modes.w, KERNEL_FLAG_POS_FROM_DEPTH | KERNEL_FLAG_NORMAL_UNORM);
+    s.kernel.ownTexel = OwnTexel::Open;
+    EXPECT_EQ(packKernelConstants(s.kernel, common(), true).modes.w,
+              KERNEL_FLAG_POS_FROM_DEPTH | KERNEL_FLAG_NORMAL_UNORM | KERNEL_FLAG_OWN_TEXEL_OPEN);
     EXPECT_FLOAT_EQ(c.params.x, 0.05f);
     EXPECT_GT(c.params.y, 0.0f);             // range-check floor: |dz| = 0 never divides by zero
     EXPECT_FLOAT_EQ(c.noiseScale.x, 160.0f); // AO target / 4: one noise tile per 4x4 pixels

@@ -1,6 +1,7 @@
 // Every AO technique against physics: finite and in [0,1] everywhere, an open plane unoccluded,
 // and a floor beside a wall against the closed form of cosine-weighted visibility within R,
 //   AO(d) = 1 - (acos a - a sqrt(1 - a^2)) / pi,  a = min(d / R, 1).
+#include "closed_form.h"
 #include "gl_fixture.h"
 
 #include "metrics/evaluate.h"
@@ -17,11 +18,6 @@ using namespace ssaotest;
 namespace {
 class Techniques : public GlTest {};
 
-double closedForm(double d, double R) {
-    const double a = std::min(d / R, 1.0);
-    return 1.0 - (std::acos(a) - a * std::sqrt(1.0 - a * a)) / M_PI;
-}
-
 Settings forTechnique(const std::string& id) {
     Settings s = defaultSettings();
     s.ao.technique = id;
@@ -30,35 +26,6 @@ Settings forTechnique(const std::string& id) {
     return s;
 }
 
-// RMSE of the denoised AO along the floor of builtin:corner (centre column) against the closed
-// form, over 5 cm bins from the wall to 2 R.
-double cornerRmse(const std::string& id, const Settings& s) {
-    const int w = 320, h = 240;
-    Rendered r = render("builtin:corner", s, w, h);
-    const glm::mat4 invView = glm::inverse(r.camera.view());
-    const glm::vec3 up = glm::normalize(glm::mat3(r.camera.view()) * glm::vec3(0, 1, 0));
-    std::map<int, std::pair<double, int>> bins;
-    for (int y = h - 1; y >= 0; --y)
-        for (int x = w / 2 - 8; x <= w / 2 + 8; ++x) {
-            if (r.position.at(x, y, 3) == 0.0f) continue;
-            glm::vec3 n(r.normal.at(x, y, 0), r.normal.at(x, y, 1), r.normal.at(x, y, 2));
-            if (glm::dot(n, up) < 0.99f) continue; // the wall
-            const glm::vec3 pw = glm::vec3(invView * glm::vec4(r.position.at(x, y, 0), r.position.at(x, y, 1),
-                                                               r.position.at(x, y, 2), 1.0f));
-            const float d = pw.z + 2.0f; // wall face at z = -2
-            if (d > 2.0f * s.ao.radius) continue;
-            auto& b = bins[int(d / 0.05f)];
-            b.first += r.ao.at(x, y);
-            b.second += 1;
-        }
-    double se = 0;
-    for (auto& [bin, acc] : bins) {
-        const double e = acc.first / acc.second - closedForm((bin + 0.5) * 0.05, s.ao.radius);
-        se += e * e;
-    }
-    EXPECT_GE(bins.size(), 30u) << id;
-    return std::sqrt(se / double(bins.size()));
-}
 } // namespace
 
 TEST_F(Techniques, EveryTechniqueIsFiniteOpenOnAPlaneAndNearTheClosedFormBesideAWall) {
@@ -73,7 +40,7 @@ TEST_F(Techniques, EveryTechniqueIsFiniteOpenOnAPlaneAndNearTheClosedFormBesideA
         const double planeMean = geometryMean(plane, plane.ao);
         Rendered show = render("builtin:showcase", s, 200, 120);
         ASSERT_TRUE(finiteInRange(show.aoRaw, 0.0f, 1.0f)) << t.id;
-        const double rmse = cornerRmse(t.id, s);
+        const double rmse = cornerRmse(s);
         std::printf("%-8s plane AO %.4f; floor beside a wall: RMSE %.4f against the closed form\n",
                     t.id.c_str(), planeMean, rmse);
         EXPECT_GE(planeMean, 0.95) << t.id;
@@ -145,13 +112,13 @@ TEST_F(Techniques, NormalsFromDepthAndThePositionPyramidKeepTheAnswer) {
     for (const char* id : {"sao", "hbao", "gtao", "vbao", "kernel"}) {
         Settings s = forTechnique(id);
         s.ao.radius = 1.5f; // far taps reach the pyramid's coarser levels (>= 16 px)
-        const double base = cornerRmse(id, s);
+        const double base = cornerRmse(s);
         Settings d = s;
         d.ao.normals = NormalSource::Depth;
         Rendered plane = render("builtin:plane", d, 160, 120);
         EXPECT_TRUE(finiteInRange(plane.aoRaw, 0.0f, 1.0f)) << id;
         EXPECT_GE(geometryMean(plane, plane.ao), 0.95) << id;
-        const double fromDepth = cornerRmse(id, d);
+        const double fromDepth = cornerRmse(d);
         Rendered a = render("builtin:showcase", s, 200, 120), b = render("builtin:showcase", d, 200, 120);
         EXPECT_TRUE(finiteInRange(b.aoRaw, 0.0f, 1.0f)) << id;
         const double showDiff = std::abs(geometryMean(a, a.ao) - geometryMean(b, b.ao));
@@ -162,7 +129,7 @@ TEST_F(Techniques, NormalsFromDepthAndThePositionPyramidKeepTheAnswer) {
         if (std::string(id) == "kernel") continue; // no pyramid: its taps are projected 3-D points
         Settings p = s;
         p.sao.pyramid = p.hbao.pyramid = p.gtao.pyramid = p.vbao.pyramid = true;
-        const double mips = cornerRmse(id, p);
+        const double mips = cornerRmse(p);
         std::printf("%-6s corner RMSE: full resolution taps %.4f, pyramid %.4f\n", id, base, mips);
         EXPECT_LT(std::abs(mips - base), 0.02) << id;
     }

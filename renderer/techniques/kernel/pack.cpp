@@ -20,6 +20,7 @@ gpu::KernelConstants packKernelConstants(const KernelSettings& s, const gpu::AoC
     if (s.positionSource == PositionSource::Depth) flags |= KERNEL_FLAG_POS_FROM_DEPTH;
     if (s.offscreen == Offscreen::Clamp) flags |= KERNEL_FLAG_OFFSCREEN_CLAMP;
     if (normalUnorm) flags |= KERNEL_FLAG_NORMAL_UNORM;
+    if (s.ownTexel == OwnTexel::Open) flags |= KERNEL_FLAG_OWN_TEXEL_OPEN;
     const int range = s.rangeCheck == RangeCheck::Smoothstep ? KERNEL_RANGE_SMOOTHSTEP
                       : s.rangeCheck == RangeCheck::Hard     ? KERNEL_RANGE_HARD
                                                              : KERNEL_RANGE_OFF;

@@ -45,15 +45,34 @@ std::vector<Param> kernelParams() {
             "kernel.offscreen", "Off-screen samples", kernel.offscreen, Offscreen,
             "Samples projecting outside the screen: skip (count as open) or clamp to the edge texel (seeds).",
             ({{"skip", Offscreen::Skip}, {"clamp", Offscreen::Clamp}})),
+        ENUM_ROW("kernel.own_texel", "Own-texel samples", kernel.ownTexel, OwnTexel,
+                 "A sample that projects into its own pixel's texel compares the surface with itself, half a "
+                 "pixel off: open counts it as unoccluded (no acne at small radii or bias); test tests it like "
+                 "any other sample (the seeds: self-occlusion acne where the bias is too small).",
+                 ({{"open", OwnTexel::Open}, {"test", OwnTexel::Test}})),
     };
+}
+
+// The seeds' artefacts, kept selectable on purpose (the seed presets reproduce them).
+std::string kernelUnphysical(const Settings& s) {
+    if (s.kernel.shape == KernelShape::Sphere)
+        return "the Crytek sphere kernel: half its samples start below any surface (seed 000's false occlusion)";
+    if (s.kernel.bias == 0.0f)
+        return "no bias: samples just above a surface compare with the depth of a texel up to half a pixel away "
+               "(seed 000's self-occlusion acne, which the bias exists to remove)";
+    if (s.kernel.depthTest == DepthTest::Fragment)
+        return "seed 003's test against the pixel's own depth: a surface sloping away reads as occluded";
+    return "";
 }
 } // namespace
 
 TechniqueInfo kernelTechnique() {
-    return {"kernel", "Kernel SSAO (seeds)",
-            "N samples in a hemisphere (or sphere) kernel tested against depth: Crytek 2007, Chapman 2013, "
-            "LearnOpenGL",
-            kernelParams, onePass<KernelPass>()};
+    TechniqueInfo t{"kernel", "Kernel SSAO (seeds)",
+                    "N samples in a hemisphere (or sphere) kernel tested against depth: Crytek 2007, Chapman "
+                    "2013, LearnOpenGL",
+                    kernelParams, onePass<KernelPass>()};
+    t.unphysical = kernelUnphysical;
+    return t;
 }
 
 } // namespace ssao

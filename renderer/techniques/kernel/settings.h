@@ -11,6 +11,7 @@ enum class DepthTest { Sample, Fragment };
 enum class Noise { Tex4x4, None };
 enum class PositionSource { GBuffer, Depth };
 enum class Offscreen { Skip, Clamp };
+enum class OwnTexel { Open, Test }; // a sample reading its own pixel's texel: open, or tested (the seeds)
 
 struct KernelSettings {
     KernelShape shape = KernelShape::Hemisphere;
@@ -23,6 +24,7 @@ struct KernelSettings {
     int seed = 0; // kernel + noise RNG seed
     PositionSource positionSource = PositionSource::GBuffer;
     Offscreen offscreen = Offscreen::Skip;
+    OwnTexel ownTexel = OwnTexel::Open;
 };
 
 } // namespace ssao

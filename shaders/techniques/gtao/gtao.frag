@@ -45,7 +45,7 @@ void main() {
     vec2 noise = vec2(0.5);
     if (hasFlag(GTAO_FLAG_NOISE)) noise = aoNoise(ssao.aoCommon, gl_FragCoord.xy);
 
-    float visibility = 0.0;
+    float visibility = 0.0, openSum = 0.0;
     for (int slice = 0; slice < slices; ++slice) {
         AoSlice sl = aoSlice((float(slice) + noise.x) / float(slices) * PI, V, N);
         vec2 omega = sl.omega;
@@ -74,7 +74,8 @@ void main() {
                     INSPECT_TAP(S.xyz, uv, SSAO_TAP_OPEN, 0.0, slice);
                     continue;
                 }
-                float shc = dot(delta / dist, V);
+                vec3 inSlice = aoSliceDelta(sl, delta); // the angle in the slice plane (slice.glsl)
+                float shc = dot(inSlice, V) / max(length(inSlice), 1e-30);
                 // Thin-occluder heuristic: depth differences count (1 + t) times in the falloff.
                 float falloffBase = length(vec3(delta.xy, delta.z * (1.0 + ssao.params2.x)));
                 float w = clamp(falloffBase * falloffMul + falloffAdd, 0.0, 1.0);
@@ -94,8 +95,9 @@ void main() {
         float iarc0 = (cosNorm + 2.0 * h0 * sinN - cos(2.0 * h0 - n)) * 0.25;
         float iarc1 = (cosNorm + 2.0 * h1 * sinN - cos(2.0 * h1 - n)) * 0.25;
         visibility += projNLen * (iarc0 + iarc1);
+        openSum += projNLen * (cosNorm + n * sinN); // the same with both horizons on the tangent plane
     }
-    visibility /= float(slices);
+    visibility = aoSliceRatio(visibility, openSum);
     oAO = AO_RESULT(aoFinish(ssao.aoCommon, visibility));
     INSPECT_RESULT(true, P, N, 1.0 - visibility, float(slices), R, oAO);
 }

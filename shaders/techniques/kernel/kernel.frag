@@ -44,6 +44,15 @@ float sampleOcclusion(vec3 P, vec3 S, float radius, int set) {
         INSPECT_TAP(S, uv, SSAO_TAP_OFFSCREEN, 0.0, set);
         return 0.0;
     }
+    // A sample that reads the pixel's own texel compares the surface with itself, displaced: on a
+    // plane seen at an angle a sample above it lands behind the texel's point and reads as occluded
+    // (acne at any radius under a pixel or two; bias 0). The surface cannot occlude itself: open
+    // (kernel.own_texel = open; the seeds test it like any other sample).
+    if (hasFlag(KERNEL_FLAG_OWN_TEXEL_OPEN) && !offscreen &&
+        all(equal(floor(uv * frame.viewport.xy), floor(vUv * frame.viewport.xy)))) {
+        INSPECT_TAP(S, uv, SSAO_TAP_OPEN, 0.0, set);
+        return 0.0;
+    }
     vec4 Q = viewPosition(uv); // texture clamp-to-edge does the seeds' clamping
     if (Q.w == 0.0) { // sky occludes nothing
         INSPECT_TAP(S, uv, SSAO_TAP_SKY, 0.0, set);

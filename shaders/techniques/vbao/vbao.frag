@@ -55,7 +55,7 @@ void main() {
     int slices = ssao.modes.x, steps = aoAdaptiveSteps(ssao.aoCommon, ssao.modes.y, radiusPx); // ao.adaptive
     vec2 noise = hasFlag(VBAO_FLAG_NOISE) ? aoNoise(ssao.aoCommon, gl_FragCoord.xy) : vec2(0.5);
 
-    float visibility = 0.0;
+    float visibility = 0.0, openSum = 0.0;
     for (int slice = 0; slice < slices; ++slice) {
         AoSlice sl = aoSlice((float(slice) + noise.x) / float(slices) * PI, V, N);
         vec2 omega = sl.omega;
@@ -82,9 +82,10 @@ void main() {
                     INSPECT_TAP(S.xyz, uv, SSAO_TAP_OPEN, 0.0, slice);
                     continue;
                 }
-                vec3 back = front + normalize(S.xyz) * thickness; // along the view ray through S
+                front = aoSliceDelta(sl, front); // the angles in the slice plane (slice.glsl)
+                vec3 back = front + normalize(P + front) * thickness; // along the view ray through it
                 float sgn = side == 0 ? 1.0 : -1.0; // side 0 at positive angles from V
-                float hFront = sgn * safeAcos(dot(front / dist, V));
+                float hFront = sgn * safeAcos(dot(normalize(front), V));
                 float hBack = sgn * safeAcos(dot(normalize(back), V));
                 int a = sectorEdge(min(hFront, hBack), n), b = sectorEdge(max(hFront, hBack), n);
                 uint bits = b - a >= 32 ? 0xFFFFFFFFu : ((1u << uint(b - a)) - 1u) << uint(a);
@@ -95,6 +96,7 @@ void main() {
         }
         // Open measure of the whole hemisphere minus that of each run of hidden sectors.
         float open = arcG(n + HALF_PI, n, cosN, sinN) - arcG(n - HALF_PI, n, cosN, sinN);
+        openSum += projNLen * open;
         uint m = mask;
         for (int guard = 0; guard < VBAO_SECTORS && m != 0u; ++guard) {
             int a = findLSB(m);
@@ -105,7 +107,7 @@ void main() {
         }
         visibility += projNLen * max(open, 0.0);
     }
-    visibility /= float(slices);
+    visibility = aoSliceRatio(visibility, openSum);
     oAO = AO_RESULT(aoFinish(ssao.aoCommon, visibility));
     INSPECT_RESULT(true, P, N, 1.0 - visibility, float(slices), R, oAO);
 }
