@@ -159,19 +159,20 @@ int runTune(const TuneOptions& o) {
         return n ? mse / n : 0.0;
     };
 
-    // Physics before numbers: a candidate that darkens an open plane (builtin:plane in its own view,
-    // R at the same fraction of its diagonal) is refused whatever it scores - a bias of 0 or a
-    // darkening power fits the error by shading everything (tests/gl/test_physics_limits.cpp holds
-    // the shipped presets to the same 0.99).
+    // Physics before numbers: a candidate that darkens an open plane is refused whatever it
+    // scores - a bias of 0 or a darkening power fits the error by shading everything. The plane is
+    // judged as tests/gl/test_physics_limits.cpp judges the shipped presets: builtin:plane in its
+    // own view at 160x90 with R = 1 (about 17 pixels), mean AO >= 0.99.
     const Scene plane = loadScene("builtin:plane");
-    const float planeRadius = o.radiusScene * 2.0f * plane.bounds.radius();
+    Renderer planeRenderer(shaderRoot());
+    planeRenderer.setSize(160, 90);
+    planeRenderer.setWanted(std::set<std::string>{"ao.denoised"});
+    planeRenderer.setScene(plane);
+    planeRenderer.setCamera(*plane.camera);
     auto darkensOpenPlane = [&](const std::vector<Knob>& ks) {
-        r.setScene(plane);
-        currentScene = size_t(-1);
-        r.setCamera(*plane.camera);
-        r.setSettings(settingsWith(ks, planeRadius));
-        r.render();
-        const Image ao = readBack(r.texture("ao.denoised"), 1);
+        planeRenderer.setSettings(settingsWith(ks, 1.0f));
+        planeRenderer.render();
+        const Image ao = readBack(planeRenderer.texture("ao.denoised"), 1);
         double sum = 0;
         for (float v : ao.data)
             sum += v; // the plane fills its view
