@@ -5,6 +5,7 @@
 #include "passes/composite_pass.h"
 #include "passes/denoise_pass.h"
 #include "passes/gbuffer_pass.h"
+#include "passes/position_pyramid_pass.h"
 #include "scene/view_fit.h"
 #include "settings/params.h"
 #include "techniques/ao_common.h"
@@ -12,7 +13,6 @@
 #include "util/error.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
-#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <typeinfo>
@@ -72,13 +72,14 @@ void Renderer::setCamera(const Camera& camera) {
 
 void Renderer::setSettings(const Settings& settings) {
     findTechnique(settings.ao.technique); // an unknown id fails here, naming the known ones
+    validateSettings(settings);           // every range, once: the packing functions trust it
     if (settings == settings_) return;
     settings_ = settings;
     graphStale_ = true;
 }
 
 void Renderer::setSettingsB(std::optional<Settings> settings) {
-    if (settings) findTechnique(settings->ao.technique);
+    if (settings) findTechnique(settings->ao.technique), validateSettings(*settings);
     if (settings.has_value() == settingsB_.has_value() && (!settings || *settings == *settingsB_)) return;
     settingsB_ = std::move(settings);
     graphStale_ = true;
@@ -109,7 +110,7 @@ Pass& Renderer::passFor(const std::string& key, const std::function<std::unique_
     return *slot;
 }
 
-std::vector<Pass*> Renderer::techniquePasses(const Branch& b, const Settings& s) {
+std::vector<Pass*> Renderer::techniquePasses(const Chain& b, const Settings& s) {
     const TechniqueInfo& t = findTechnique(s.ao.technique);
     auto& owned = techniquePasses_[b.prefix + t.id];
     if (owned.empty()) owned = t.makePasses(b);
@@ -119,47 +120,59 @@ std::vector<Pass*> Renderer::techniquePasses(const Branch& b, const Settings& s)
     return out;
 }
 
+std::vector<Pass*> Renderer::chainPasses(const Chain& c, const Settings& s) {
+    std::vector<Pass*> passes = techniquePasses(c, s);
+    passes.push_back(&passFor(c.prefix + "denoise", [&] { return std::make_unique<DenoisePass>(c); }));
+    passes.push_back(&passFor(c.prefix + "composite", [&] { return std::make_unique<CompositePass>(c); }));
+    return passes;
+}
+
+std::vector<bool> Renderer::sharedWithChainA(std::map<std::string, std::string>* aliases) {
+    // A pass of chain B whose type, config and (resolved) inputs equal its chain-A counterpart's
+    // computes the same image: its outputs alias A's instead of running. Configs are compared for
+    // this frame; render() compares again every frame, so a later frame that tells them apart (a
+    // radius in scene units against one in world units, on another scene) rebuilds the graph.
+    const std::vector<Pass*> a = chainPasses(Chain::a(), settings_), b = chainPasses(Chain::b(), *settingsB_);
+    std::map<std::string, std::string> local;
+    std::map<std::string, std::string>& alias = aliases ? *aliases : local;
+    std::vector<bool> shared(b.size(), false);
+    const bool sameShape = a.size() == b.size(); // another technique may have another number of passes
+    for (size_t i = 0; i < b.size() && sameShape; ++i) {
+        if (typeid(*a[i]) != typeid(*b[i])) continue;
+        const PassDecl da = FrameGraph::declare(*a[i], settings_), db = FrameGraph::declare(*b[i], *settingsB_);
+        bool same = da.reads.size() == db.reads.size() && da.writes.size() == db.writes.size() &&
+                    a[i]->configure(settings_, frame_) == b[i]->configure(*settingsB_, frame_);
+        for (size_t r = 0; same && r < db.reads.size(); ++r) {
+            auto it = alias.find(db.reads[r]);
+            same = (it != alias.end() ? it->second : db.reads[r]) == da.reads[r];
+        }
+        for (size_t w = 0; same && w < db.writes.size(); ++w)
+            same = db.writes[w].format == da.writes[w].format && db.writes[w].scale == da.writes[w].scale;
+        if (!same) continue;
+        shared[i] = true;
+        for (size_t w = 0; w < db.writes.size(); ++w)
+            alias[db.writes[w].name] = da.writes[w].name;
+    }
+    return shared;
+}
+
 void Renderer::buildGraph() {
     std::vector<FrameGraph::Node> nodes;
     std::map<std::string, std::string> aliases;
     nodes.push_back({&passFor("gbuffer", [] { return std::make_unique<GBufferPass>(); }), &settings_});
-    auto chain = [&](const Branch& b, const Settings& s) {
-        std::vector<Pass*> passes = techniquePasses(b, s);
-        passes.push_back(&passFor(b.prefix + "denoise", [&] { return std::make_unique<DenoisePass>(b); }));
-        passes.push_back(
-            &passFor(b.prefix + "composite", [&] { return std::make_unique<CompositePass>(b); }));
-        return passes;
-    };
-    const std::vector<Pass*> a = chain(Branch::a(), settings_);
-    for (Pass* p : a)
+    // The position pyramid, shared by both chains, when a chain's technique reads it.
+    if (usesPyramid(settings_) || (settingsB_ && usesPyramid(*settingsB_)))
+        nodes.push_back({&passFor("position_mips", [] { return std::make_unique<PositionPyramidPass>(); }),
+                         &settings_}); // the G-buffer's formats are chain A's
+    for (Pass* p : chainPasses(Chain::a(), settings_))
         nodes.push_back({p, &settings_});
     if (referenceOn_) nodes.push_back({&referencePass_, &settings_}); // chain A's; reads nothing
+    sharedB_.clear();
     if (settingsB_) {
-        // A pass of chain B whose settings groups and (resolved) inputs equal its chain-A
-        // counterpart's would compute the same image: its outputs alias A's instead of running.
-        const nlohmann::json ja = toEffectiveJson(settings_), jb = toEffectiveJson(*settingsB_);
-        const std::vector<Pass*> b = chain(Branch::b(), *settingsB_);
-        const bool sameShape = a.size() == b.size(); // another technique may have another number of passes
-        for (size_t i = 0; i < b.size(); ++i) {
-            bool same = sameShape && typeid(*a[i]) == typeid(*b[i]);
-            PassDecl da, db;
-            if (same)
-                da = FrameGraph::declare(*a[i], settings_), db = FrameGraph::declare(*b[i], *settingsB_);
-            same = same && da.groups == db.groups && da.reads.size() == db.reads.size() &&
-                   da.writes.size() == db.writes.size();
-            for (size_t g = 0; same && g < db.groups.size(); ++g)
-                same = FrameGraph::keyedSettings(ja, db.groups[g]) == FrameGraph::keyedSettings(jb, db.groups[g]);
-            for (size_t r = 0; same && r < db.reads.size(); ++r) {
-                auto it = aliases.find(db.reads[r]);
-                same = (it != aliases.end() ? it->second : db.reads[r]) == da.reads[r];
-            }
-            if (same) {
-                for (size_t w = 0; w < db.writes.size(); ++w)
-                    aliases[db.writes[w].name] = da.writes[w].name;
-            } else {
-                nodes.push_back({b[i], &*settingsB_});
-            }
-        }
+        sharedB_ = sharedWithChainA(&aliases);
+        const std::vector<Pass*> b = chainPasses(Chain::b(), *settingsB_);
+        for (size_t i = 0; i < b.size(); ++i)
+            if (!sharedB_[i]) nodes.push_back({b[i], &*settingsB_});
     }
     graph_.compile(nodes, aliases, width_, height_);
     graphStale_ = false;
@@ -170,8 +183,8 @@ FrameReport Renderer::render() {
     if (width_ <= 0) throw Error("renderer: no size set");
     effective_ = effectiveCamera(camera_, bounds_);
     // Temporal accumulation: a settings/size/scene change drops the history, a camera change only
-    // restarts the count (the history is reprojected); while counting, every pass re-runs with a
-    // new frame index (new noise).
+    // restarts the count (the history is reprojected); while counting, the frame index advances and
+    // every pass whose config holds it (AO noise, the accumulation) re-runs.
     int frameIndex = 0;
     bool reset = true;
     if (settings_.temporal.enabled) {
@@ -185,22 +198,19 @@ FrameReport Renderer::render() {
         temporalCamera_ = c;
         temporalSize_ = {width_, height_};
         temporalScene_ = sceneVersion_;
-        if (temporalFrame_ < settings_.temporal.frames) {
-            graph_.invalidate();
-            frameIndex = temporalFrame_++;
-        } else {
-            frameIndex = temporalFrame_ - 1;
-        }
+        frameIndex = temporalFrame_ < settings_.temporal.frames ? temporalFrame_++ : temporalFrame_ - 1;
     } else {
         temporalFrame_ = 0;
         temporalSettings_.reset();
     }
-    const gpu::FrameConstants fc = packFrameConstants(effective_, width_, height_, sceneRadius(), frameIndex);
-    frameUbo_.upload(&fc, sizeof fc);
-    frameUbo_.bind(SSAO_UBO_FRAME);
-    if (graphStale_) buildGraph(); // only when settings, chain B, the size or the reference changed
     frame_ = FrameInfo{scene_.get(), sceneVersion_, sceneRadius(), &effective_, width_,
                        height_,      displayScale_, frameIndex,    reset};
+    frame_.constants = packFrameConstants(effective_, width_, height_, sceneRadius(), frameIndex);
+    frameUbo_.upload(&frame_.constants, sizeof frame_.constants);
+    frameUbo_.bind(SSAO_UBO_FRAME);
+    // Only when settings, chain B, the size or the reference changed - or this frame tells apart
+    // chain-B passes that were shared (or shares ones that were not).
+    if (graphStale_ || (settingsB_ && sharedWithChainA(nullptr) != sharedB_)) buildGraph();
     return graph_.execute(frame_, shaders_, triangle_);
 }
 
@@ -211,23 +221,23 @@ bool Renderer::accumulating() const {
 std::vector<const Resource*> Renderer::buffers() const {
     std::vector<const Resource*> out;
     for (const Resource* r : graph_.resources())
-        if (r->desc.name.rfind(Branch::b().prefix, 0) != 0) out.push_back(r);
+        if (r->desc.name.rfind(Chain::b().prefix, 0) != 0) out.push_back(r);
     return out;
 }
 
 std::optional<PixelInspection> Renderer::inspect(int branch, glm::ivec2 pixel) {
-    const Branch b = branch == 1 ? Branch::b() : Branch::a();
+    const Chain b = branch == 1 ? Chain::b() : Chain::a();
     // Chain B's AO may be an alias of A's: inspect the pass that really produced it.
     const Resource* ao = graph_.find(b.res("ao.raw"));
     if (!ao || !frame_.scene || graphStale_) return std::nullopt; // render() first
     Pass* p = graph_.pass(ao->producer);
-    const Settings* s = graph_.settingsOf(ao->producer);
-    if (!p || !s || pixel.x < 0 || pixel.y < 0 || pixel.x >= width_ || pixel.y >= height_)
+    const ConfigKey* config = graph_.lastConfig(ao->producer); // what its last run drew with
+    if (!p || !config || pixel.x < 0 || pixel.y < 0 || pixel.x >= width_ || pixel.y >= height_)
         return std::nullopt;
     const glm::ivec2 aoPixel(mapPixel(pixel.x, width_, ao->width()),
                              mapPixel(pixel.y, height_, ao->height()));
     frameUbo_.bind(SSAO_UBO_FRAME);
-    PassContext ctx(graph_, *s, frame_, shaders_, triangle_, ao->producer);
+    PassContext ctx(graph_, *config, frame_.scene, shaders_, triangle_, ao->producer);
     PixelInspection out;
     if (!p->inspect(ctx, aoPixel, out)) return std::nullopt;
     return out;

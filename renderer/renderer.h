@@ -10,6 +10,7 @@
 
 #include "../shaders/include/bindings.h"
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -78,6 +79,9 @@ class Renderer {
     unsigned sceneVersion() const { return sceneVersion_; }
 
     const FrameGraph& graph() const { return graph_; }
+    // What the last render() drew from (camera, size, frame constants): the passes' configs are
+    // pure functions of it and the settings.
+    const FrameInfo& frame() const { return frame_; }
     // The texture of a resource ("gbuffer.depth", "ao.raw", "b.composite", ...); throws if unknown.
     const gl::Texture2D& texture(const std::string& resource) const { return graph_.get(resource).texture; }
     const Resource& resource(const std::string& name) const { return graph_.get(name); }
@@ -96,7 +100,11 @@ class Renderer {
 
   private:
     void buildGraph();
-    std::vector<Pass*> techniquePasses(const Branch& b, const Settings& s);
+    std::vector<Pass*> techniquePasses(const Chain& c, const Settings& s);
+    std::vector<Pass*> chainPasses(const Chain& c, const Settings& s); // technique, denoise, composite
+    // Per chain-B pass: whether it equals chain A's this frame (its outputs then alias A's); fills
+    // `aliases` when given.
+    std::vector<bool> sharedWithChainA(std::map<std::string, std::string>* aliases);
     Pass& passFor(const std::string& key, const std::function<std::unique_ptr<Pass>()>& make);
 
     gl::ShaderLibrary shaders_;
@@ -123,6 +131,7 @@ class Renderer {
     std::map<std::string, std::unique_ptr<Pass>> passes_; // kept across rebuilds (they own GL state)
     ReferencePass referencePass_;
     bool referenceOn_ = false;
+    std::vector<bool> sharedB_; // sharedWithChainA() when the graph was built
     std::map<std::string, std::vector<std::unique_ptr<Pass>>> techniquePasses_; // by chain + technique
 };
 

@@ -2,18 +2,21 @@
 
 #include "util/error.h"
 
+#include <algorithm>
+
 namespace ssao::gl {
 
-Texture2D::Texture2D(int width, int height, GLenum internalFormat, const std::string& name)
-    : w_(width), h_(height), fmt_(internalFormat) {
+Texture2D::Texture2D(int width, int height, GLenum internalFormat, const std::string& name, int levels)
+    : w_(width), h_(height), levels_(std::max(levels, 1)), fmt_(internalFormat) {
     if (width <= 0 || height <= 0) throw Error("texture '" + name + "' has an empty size");
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &id);
     h_id_ = TextureHandle(id);
-    glTextureStorage2D(id, 1, internalFormat, width, height);
+    glTextureStorage2D(id, levels_, internalFormat, width, height);
     // Point sampling everywhere: G-buffer data must not be interpolated across edges
-    // (XeGTAO: "linear filtering of depth causes unwanted interpolation").
+    // (XeGTAO: "linear filtering of depth causes unwanted interpolation"), nor across levels.
     setFilter(GL_NEAREST);
+    if (levels_ > 1) glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
     setWrap(GL_CLAMP_TO_EDGE);
     label(GL_TEXTURE, id, name);
 }
@@ -56,13 +59,13 @@ Framebuffer::Framebuffer(const std::vector<const Texture2D*>& colors, const Text
     for (size_t i = 0; i < colors.size(); ++i) {
         glNamedFramebufferTexture(id, GLenum(GL_COLOR_ATTACHMENT0 + i), colors[i]->id(), 0);
         bufs.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
-        w_ = colors[i]->width();
-        h2_ = colors[i]->height();
+        width_ = colors[i]->width();
+        height_ = colors[i]->height();
     }
     if (depth) {
         glNamedFramebufferTexture(id, GL_DEPTH_ATTACHMENT, depth->id(), 0);
-        w_ = depth->width();
-        h2_ = depth->height();
+        width_ = depth->width();
+        height_ = depth->height();
     }
     glNamedFramebufferDrawBuffers(id, GLsizei(bufs.size()), bufs.data());
     GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
@@ -71,9 +74,22 @@ Framebuffer::Framebuffer(const std::vector<const Texture2D*>& colors, const Text
     label(GL_FRAMEBUFFER, id, name);
 }
 
+Framebuffer::Framebuffer(const Texture2D& color, int level, const std::string& name)
+    : width_(std::max(color.width() >> level, 1)), height_(std::max(color.height() >> level, 1)) {
+    if (level < 0 || level >= color.levels()) throw Error("framebuffer '" + name + "': no such MIP level");
+    GLuint id = 0;
+    glCreateFramebuffers(1, &id);
+    h_ = FramebufferHandle(id);
+    glNamedFramebufferTexture(id, GL_COLOR_ATTACHMENT0, color.id(), level);
+    const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw Error("framebuffer '" + name + "' is incomplete (status 0x" + hex(status) + ")");
+    label(GL_FRAMEBUFFER, id, name);
+}
+
 void Framebuffer::bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, id());
-    glViewport(0, 0, w_, h2_);
+    glViewport(0, 0, width_, height_);
 }
 
 void RenderTarget::ensure(int width, int height, GLenum internalFormat, const std::string& name) {

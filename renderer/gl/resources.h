@@ -13,8 +13,10 @@ namespace ssao::gl {
 class Texture2D {
   public:
     Texture2D() = default;
-    Texture2D(int width, int height, GLenum internalFormat, const std::string& name);
+    // `levels` > 1: a MIP chain (level i is max(1, size >> i)), sampled nearest within a level.
+    Texture2D(int width, int height, GLenum internalFormat, const std::string& name, int levels = 1);
     int width() const { return w_; }
+    int levels() const { return levels_; }
     int height() const { return h_; }
     GLenum format() const { return fmt_; }
     GLuint id() const { return h_id_.id(); }
@@ -29,7 +31,7 @@ class Texture2D {
 
   private:
     TextureHandle h_id_;
-    int w_ = 0, h_ = 0;
+    int w_ = 0, h_ = 0, levels_ = 1;
     GLenum fmt_ = 0;
 };
 
@@ -38,13 +40,15 @@ class Framebuffer {
     Framebuffer() = default;
     // colour attachments in order (location 0..n-1); depth may be null.
     Framebuffer(const std::vector<const Texture2D*>& colors, const Texture2D* depth, const std::string& name);
+    // One colour attachment: MIP `level` of `color` (the viewport is that level's size).
+    Framebuffer(const Texture2D& color, int level, const std::string& name);
     GLuint id() const { return h_.id(); }
     void bind() const;
     explicit operator bool() const { return bool(h_); }
 
   private:
     FramebufferHandle h_;
-    int w_ = 0, h2_ = 0;
+    int width_ = 0, height_ = 0; // of the attachments: the viewport bind() sets
 };
 
 // One colour texture with its framebuffer: the output of a full-screen pass.

@@ -26,18 +26,9 @@ std::vector<std::string> FrameReport::ran() const {
     return out;
 }
 
-nlohmann::json FrameGraph::keyedSettings(const nlohmann::json& effective, const std::string& name) {
-    // "group" keys a pass on every row of the group, "group.row" on that row alone.
-    const size_t dot = name.find('.');
-    const std::string group = name.substr(0, dot);
-    if (!effective.contains(group)) throw Error("reads unknown settings group '" + group + "'");
-    if (dot == std::string::npos) return effective.at(group);
-    if (!findParam(name)) throw Error("reads unknown parameter '" + name + "'");
-    return effective.at(group).value(name.substr(dot + 1), nlohmann::json()); // absent: does not apply
-}
-
-bool FrameGraph::covers(const std::string& name, const std::string& key) {
-    return name == key || (name.find('.') == std::string::npos && key.rfind(name + ".", 0) == 0);
+gpu::FrameConstants withoutFrameIndex(gpu::FrameConstants c) {
+    c.clip.w = 0.0f;
+    return c;
 }
 
 PassDecl FrameGraph::declare(const Pass& p, const Settings& s) {
@@ -132,23 +123,10 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
             r = resolve(r);
     }
     const std::vector<size_t> idx = order(names, decls);
-    // Each distinct settings block serialised once, rows that do not apply left out: a pass's key
-    // holds exactly what its output depends on.
-    std::map<const Settings*, nlohmann::json> json;
     nodes_.clear();
     order_.clear();
     for (size_t i : idx) {
-        auto js = json.find(nodes[i].settings);
-        if (js == json.end()) js = json.emplace(nodes[i].settings, toEffectiveJson(*nodes[i].settings)).first;
-        std::string settingsKey;
-        for (const auto& g : decls[i].groups) {
-            try {
-                settingsKey += "|" + g + "=" + keyedSettings(js->second, g).dump();
-            } catch (const Error& e) {
-                throw Error("pass '" + names[i] + "' " + e.what());
-            }
-        }
-        nodes_.push_back({nodes[i].pass, nodes[i].settings, decls[i], settingsKey});
+        nodes_.push_back({nodes[i].pass, nodes[i].settings, decls[i]});
         order_.push_back(names[i]);
     }
     // Allocate (or keep) every declared resource; free the ones no pass writes any more.
@@ -159,9 +137,12 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
             const int rw = scaledSize(w, d.scale), rh = scaledSize(h, d.scale);
             Resource& r = resources_[d.name];
             r.producer = n.pass->name();
+            int levels = 1;
+            while (levels < d.levels && std::max(rw, rh) >> levels > 0)
+                ++levels;
             if (!r.texture || r.texture.width() != rw || r.texture.height() != rh ||
-                r.texture.format() != d.format) {
-                r.texture = gl::Texture2D(rw, rh, d.format, d.name);
+                r.texture.format() != d.format || r.texture.levels() != levels) {
+                r.texture = gl::Texture2D(rw, rh, d.format, d.name, levels);
                 r.generation = nextGeneration_++;
                 r.version = 0;
             }
@@ -197,16 +178,6 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
 }
 
 namespace {
-std::string cameraKey(const Camera& c) {
-    char buf[400];
-    std::snprintf(buf, sizeof buf, "|cam%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%a,%d,%d", c.eye.x, c.eye.y, c.eye.z,
-                  c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDeg, c.nearZ, c.farZ,
-                  int(c.projectionKind), int(c.depth));
-    return buf;
-}
-} // namespace
-
-namespace {
 // Ends the timer query and the debug group even when a pass throws (e.g. a shader variant that
 // does not compile after a hot reload), so the next frame starts from a clean GL state.
 struct PassScope {
@@ -229,8 +200,6 @@ FrameReport FrameGraph::execute(const FrameInfo& frame, gl::ShaderLibrary& shade
                                 const gl::FullscreenTriangle& tri) {
     FrameReport report;
     std::vector<gl::GpuTimer*> timers;
-    const std::string base = std::to_string(frame.width) + "x" + std::to_string(frame.height) + "@" +
-                             std::to_string(frame.displayScale);
     // Demand: walk back from what is wanted; a pass is live when something needed is its output.
     std::vector<char> live(nodes_.size(), 1);
     needed_.clear();
@@ -257,16 +226,14 @@ FrameReport FrameGraph::execute(const FrameInfo& frame, gl::ShaderLibrary& shade
             timers.push_back(nullptr);
             continue;
         }
-        std::string key = base + n.settingsKey;
-        if (n.decl.scene) key += "|scene" + std::to_string(frame.sceneVersion);
-        if (n.decl.camera) key += cameraKey(*frame.camera);
-        // Noise rotated per temporal frame: a pass last run at frame 7 is stale once temporal is off.
-        if (n.decl.frameIndex) key += "|t" + std::to_string(frame.temporalFrame);
-        if (const uint64_t ext = n.pass->externalVersion()) key += "|ext" + std::to_string(ext);
+        // Its config (the pass's pure function of the settings and the frame) and the state of
+        // everything it reads and writes.
+        RunKey key{n.pass->configure(*n.settings, frame), {}};
         for (const auto& r : n.decl.reads)
-            key += "|" + r + "@" + std::to_string(get(r).version);
+            key.inputs.push_back(get(r).version);
         for (const auto& w : n.decl.writes)
-            key += "|w:" + w.name + "#" + std::to_string(get(w.name).generation);
+            key.inputs.push_back(get(w.name).generation);
+        key.inputs.push_back(n.pass->externalVersion());
         PassReport pr{name};
         auto it = keys_.find(name);
         // Also re-run when an output it left unwritten (nobody wanted it then) is needed now.
@@ -274,13 +241,13 @@ FrameReport FrameGraph::execute(const FrameInfo& frame, gl::ShaderLibrary& shade
         if (it != keys_.end())
             for (const auto& w : n.decl.writes)
                 missing = missing || (needed(w.name) && !written_[name].count(w.name));
-        if (it == keys_.end() || it->second != key || missing) {
+        if (it == keys_.end() || !(it->second == key) || missing) {
             gl::GpuTimer& t = timers_[name];
             keys_.erase(name); // a pass that throws half-way has no valid output: run it again next time
             unwritten_.clear();
             {
                 PassScope scope(t, name);
-                PassContext ctx(*this, *n.settings, frame, shaders, tri, name);
+                PassContext ctx(*this, key.config, frame.scene, shaders, tri, name);
                 n.pass->execute(ctx);
             }
             std::set<std::string>& written = written_[name];
@@ -334,6 +301,11 @@ Pass* FrameGraph::pass(const std::string& name) const {
     for (const Compiled& n : nodes_)
         if (n.pass->name() == name) return n.pass;
     return nullptr;
+}
+
+const ConfigKey* FrameGraph::lastConfig(const std::string& pass) const {
+    auto it = keys_.find(pass);
+    return it == keys_.end() ? nullptr : &it->second.config;
 }
 
 const Settings* FrameGraph::settingsOf(const std::string& pass) const {

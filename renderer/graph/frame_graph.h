@@ -1,13 +1,12 @@
 // The frame graph: passes declare what they read and write (graph/pass.h); compile() orders them
 // so producers run first and allocates every resource at its declared size; execute() runs a pass
-// only when its key changed — the settings groups it reads, the scene and camera if it uses them,
-// the base size, the versions of the resources it reads and of its external data. A missing
-// producer, two producers of one resource or a cycle is an ssao::Error naming the resource.
+// only when its key changed — its config (graph/pass_config.h: derived from the settings and the
+// frame by the pass's own pure function), the versions of the resources it reads, the generations
+// of those it writes and the version of its external data. A missing producer, two producers of
+// one resource or a cycle is an ssao::Error naming the resource.
 #pragma once
 #include "gl/resources.h"
 #include "graph/pass.h"
-
-#include <nlohmann/json.hpp>
 
 #include <map>
 #include <memory>
@@ -60,11 +59,6 @@ class FrameGraph {
     static std::vector<size_t> order(const std::vector<std::string>& names,
                                      const std::vector<PassDecl>& decls);
     static PassDecl declare(const Pass& p, const Settings& s);
-    // The part of effective settings JSON (toEffectiveJson) a declared name keys on: a whole group
-    // ("ao") or one row ("skip.sky"; null when the row does not apply). Throws on an unknown name.
-    static nlohmann::json keyedSettings(const nlohmann::json& effective, const std::string& name);
-    // Whether a declared name covers the parameter `key` ("ao" covers "ao.power"; "skip.sky" only itself).
-    static bool covers(const std::string& name, const std::string& key);
 
     const std::vector<std::string>& passOrder() const { return order_; }
     // Resources in the order their producers run; internal ones only when asked.
@@ -74,6 +68,8 @@ class FrameGraph {
     const PassDecl* declaration(const std::string& pass) const;
     Pass* pass(const std::string& name) const;
     const Settings* settingsOf(const std::string& pass) const;
+    // The config the pass's last run used (for the inspector's replay); null before its first run.
+    const ConfigKey* lastConfig(const std::string& pass) const;
     std::string resolve(const std::string& name) const;
 
     // Used by PassContext.
@@ -86,13 +82,18 @@ class FrameGraph {
         Pass* pass;
         const Settings* settings;
         PassDecl decl;
-        std::string settingsKey; // the groups it reads, serialised at compile time
+    };
+    // What a pass's output was made from: its config and the state of everything it reads.
+    struct RunKey {
+        ConfigKey config;
+        std::vector<uint64_t> inputs; // read versions, write generations, external version
+        bool operator==(const RunKey& o) const { return config == o.config && inputs == o.inputs; }
     };
     std::vector<Compiled> nodes_; // in execution order
     std::vector<std::string> order_;
     std::map<std::string, std::string> aliases_;
     std::map<std::string, Resource> resources_;
-    std::map<std::string, std::string> keys_;     // pass name → key of its last run
+    std::map<std::string, RunKey> keys_;          // pass name → key of its last run
     std::map<std::string, std::set<std::string>> written_; // pass name → outputs its last run wrote
     std::optional<std::set<std::string>> wanted_;
     std::set<std::string> needed_, unwritten_; // during execute()

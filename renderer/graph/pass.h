@@ -1,11 +1,14 @@
 // A pass is a small class with declared inputs and outputs. setup() declares, for the current
-// settings, which resources it reads and writes, which parameter groups it depends on and whether
-// it reads the scene or the camera; the frame graph orders passes from those declarations and
-// re-runs a pass only when one of them changed (filament's frame graph, reduced to our needs).
+// settings, which resources it reads and writes; configure() derives its config from the settings
+// and the frame (graph/pass_config.h). The frame graph orders passes from the declarations and
+// re-runs a pass only when its config or its inputs changed (filament's frame graph, reduced).
 #pragma once
 #include "graph/inspection.h"
+#include "graph/pass_config.h"
 #include "graph/resource.h"
 #include "settings/settings.h"
+
+#include "../../shaders/include/bindings.h"
 
 #include <glm/glm.hpp>
 
@@ -27,20 +30,18 @@ struct Camera;
 
 // Which AO chain a pass belongs to: A (the main one, unprefixed names) or B (the split view's
 // second chain, names prefixed "b."). Both share the G-buffer.
-struct Branch {
+struct Chain {
     int index = 0;
     std::string prefix; // "" or "b."
     std::string res(const std::string& name) const { return prefix + name; }
-    static Branch a() { return {0, ""}; }
-    static Branch b() { return {1, "b."}; }
+    static Chain a() { return {0, ""}; }
+    static Chain b() { return {1, "b."}; }
 };
 
+// The graph's topology: what a pass reads and writes for the current settings.
 struct PassDecl {
     std::vector<std::string> reads;
     std::vector<ResourceDesc> writes;
-    std::vector<std::string> groups; // parameter-table groups (or "group.row") whose values key this pass
-    bool scene = false, camera = false;
-    bool frameIndex = false; // its noise follows the temporal frame index (frame.clip.w)
 };
 
 class PassBuilder {
@@ -48,18 +49,13 @@ class PassBuilder {
     explicit PassBuilder(PassDecl& d) : d_(d) {}
     void read(const std::string& resource) { d_.reads.push_back(resource); }
     void write(ResourceDesc desc) { d_.writes.push_back(std::move(desc)); }
-    // A parameter-table group ("ao": the pass re-runs when any of its rows changes), or one row of
-    // it ("skip.sky": only that row).
-    void settings(const std::string& group) { d_.groups.push_back(group); }
-    void usesScene() { d_.scene = true; }
-    void usesCamera() { d_.camera = true; }
-    void usesFrameIndex() { d_.frameIndex = true; }
 
   private:
     PassDecl& d_;
 };
 
-// What the frame is drawn from (the camera has its fitted clip planes).
+// What the frame is drawn from (the camera has its fitted clip planes). Passes read it only
+// through their config (graph/pass_config.h).
 struct FrameInfo {
     const GpuScene* scene = nullptr;
     unsigned sceneVersion = 0;
@@ -73,18 +69,24 @@ struct FrameInfo {
     // whether the history must be dropped entirely (settings, size or scene changed).
     int temporalFrame = 0;
     bool temporalReset = true;
+    // The frame constant block bound at SSAO_UBO_FRAME for every pass (Renderer::render).
+    gpu::FrameConstants constants{};
 };
 
-// Handed to execute(): the pass's settings, inputs and outputs by the names it declared.
+// The frame constants a pass's shaders read when they do not read the temporal frame index
+// (clip.w): the G-buffer and the composite must not re-run for every accumulated frame.
+gpu::FrameConstants withoutFrameIndex(gpu::FrameConstants c);
+
+// Handed to execute(): the pass's config, inputs and outputs by the names it declared.
 class PassContext {
   public:
-    PassContext(FrameGraph& g, const Settings& s, const FrameInfo& f, gl::ShaderLibrary& sh,
+    PassContext(FrameGraph& g, const ConfigKey& config, const GpuScene* scene, gl::ShaderLibrary& sh,
                 const gl::FullscreenTriangle& tri, const std::string& pass)
-        : settings(s), frame(f), shaders(sh), graph_(g), triangle_(tri), pass_(pass) {}
-    const Settings& settings;
-    const FrameInfo& frame;
+        : shaders(sh), graph_(g), config_(config), scene_(scene), triangle_(tri), pass_(pass) {}
     gl::ShaderLibrary& shaders;
 
+    const ConfigKey& config() const { return config_; }
+    const GpuScene* scene() const { return scene_; } // what the G-buffer draws (its version is in its config)
     const gl::Texture2D& in(const std::string& name) const;
     const ResourceDesc& desc(const std::string& name) const;
     // Binds a framebuffer with these outputs as colour attachments 0..n-1 (a depth-format output
@@ -100,20 +102,26 @@ class PassContext {
 
   private:
     FrameGraph& graph_;
+    const ConfigKey& config_;
+    const GpuScene* scene_;
     const gl::FullscreenTriangle& triangle_;
     std::string pass_;
 };
 
 class Pass {
   public:
-    Pass(std::string name, Branch branch) : name_(std::move(name)), branch_(std::move(branch)) {}
+    Pass(std::string name, Chain chain) : name_(std::move(name)), chain_(std::move(chain)) {}
     virtual ~Pass() = default;
     Pass(const Pass&) = delete;
     Pass& operator=(const Pass&) = delete;
 
-    const std::string& name() const { return name_; } // unique in the graph ("ssao", "b.ssao")
-    const Branch& branch() const { return branch_; }
+    const std::string& name() const { return name_; } // unique in the graph ("ao", "b.ao")
+    const Chain& chain() const { return chain_; }
+    // The topology for these settings: what it reads and writes.
     virtual void setup(PassBuilder& b, const Settings& s) const = 0;
+    // Its config for these settings and this frame (pure); the graph re-runs the pass when it, the
+    // versions of what it reads or its external data change, and at no other time.
+    virtual ConfigKey configure(const Settings& s, const FrameInfo& f) const = 0;
     virtual void execute(PassContext& ctx) = 0;
     // Data from outside the graph that the pass's output depends on (a CPU image it uploads): the
     // graph re-runs the pass when this changes, as it does for a changed input. 0 = none.
@@ -129,7 +137,19 @@ class Pass {
 
   private:
     std::string name_;
-    Branch branch_;
+    Chain chain_;
+};
+
+// A pass with a typed config: config() is the pure function, run() gets its result.
+template <class Config> class ConfiguredPass : public Pass {
+  public:
+    using Pass::Pass;
+    virtual Config config(const Settings& s, const FrameInfo& f) const = 0;
+    ConfigKey configure(const Settings& s, const FrameInfo& f) const final { return ConfigKey::of(config(s, f)); }
+    void execute(PassContext& ctx) final { run(ctx, ctx.config().as<Config>()); }
+
+  protected:
+    virtual void run(PassContext& ctx, const Config& c) = 0;
 };
 
 } // namespace ssao

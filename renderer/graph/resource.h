@@ -28,6 +28,7 @@ struct ResourceDesc {
     std::string unit;      // of the values, e.g. "scene units"
     std::string help;      // one line for tooltips and the README
     bool internal = false; // scratch data (ping-pong): not listed, written or reported
+    int levels = 1;        // > 1: a MIP chain of at most this many levels (fewer when the size runs out)
     // Stored value → meaning: value * decodeScale + decodeOffset ((n+1)/2 normals: 2, -1).
     float decodeScale = 1.0f, decodeOffset = 0.0f;
 };

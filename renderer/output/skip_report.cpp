@@ -3,42 +3,12 @@
 #include "output/image.h"
 #include "settings/params.h"
 #include "techniques/ao_common.h"
-#include "techniques/gtao/pack.h"
+#include "techniques/technique.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace ssao {
-
-namespace {
-// The technique's per-pixel count the adaptive rule reduces, and whether it is a march (steps,
-// one per pixel of radius) or an area sampler (one per ~4 pixels of the disc).
-struct Count {
-    int full = 0;
-    bool march = true;
-};
-Count fullCount(const Settings& s) {
-    const std::string& t = s.ao.technique;
-    if (t == "gtao") { // its quality presets set the steps
-        int slices = 0, steps = 0;
-        gtaoSlicesSteps(s.gtao, slices, steps);
-        return {steps, true};
-    }
-    const bool area = t == "sao";
-    const Param* p = findParam(t + (area ? ".samples" : ".steps"));
-    if (!p || t == "kernel") return {};
-    return {int(p->get(s)), !area};
-}
-} // namespace
-
-double adaptiveShare(const Settings& s, float radiusPx) {
-    const Count c = fullCount(s);
-    if (!s.ao.adaptive || c.full <= 0) return 1.0;
-    const double r = std::max(double(radiusPx), 0.0), px = std::max(double(s.ao.adaptivePx), 1.0);
-    const int n = c.march ? std::clamp(int(std::ceil(r / px)), std::min(c.full, 2), c.full)
-                          : std::clamp(int(std::ceil(3.14159265 * r * r / (px * px))), std::min(c.full, 4), c.full);
-    return double(n) / double(c.full);
-}
 
 nlohmann::json skipCounters(const Renderer& r, const FrameReport& frame) {
     nlohmann::json j;

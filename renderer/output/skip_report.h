@@ -13,9 +13,4 @@ namespace ssao {
 // gbuffer.depth for the sky and adaptive counts.
 nlohmann::json skipCounters(const Renderer& r, const FrameReport& frame);
 
-// The share of its full sample count a pixel at view depth `depth` takes with ao.adaptive: the
-// shaders' aoAdaptiveSteps / aoAdaptiveSamples (ao_common.glsl), in C++ (1 without adaptive or for
-// the kernel, which keeps its fixed sample set).
-double adaptiveShare(const Settings& s, float radiusPx);
-
 } // namespace ssao

@@ -10,17 +10,24 @@ void CompositePass::setup(PassBuilder& b, const Settings& s) const {
     b.read("gbuffer.position");
     b.read("gbuffer.normal");
     b.read("gbuffer.albedo");
-    if (s.composite.useAo) b.read(branch().res("ao.denoised")); // AO off: the AO chain is not needed
-    b.write(describe(branch().res("composite"), GL_RGBA8, 3, Display::Color,
+    if (s.composite.useAo) b.read(chain().res("ao.denoised")); // AO off: the AO chain is not needed
+    b.write(describe(chain().res("composite"), GL_RGBA8, 3, Display::Color,
                      "the lit frame: ambient * albedo * AO + one point light, display gamma"));
-    b.settings("composite");
-    b.usesScene(); // light placement in scene radii
 }
 
-void CompositePass::execute(PassContext& ctx) {
-    const CompositeSettings& c = ctx.settings.composite;
+CompositeConfig CompositePass::config(const Settings& s, const FrameInfo& f) const {
+    CompositeConfig c{};
+    c.frame = withoutFrameIndex(f.constants);
+    c.ambient = s.composite.ambient;
+    c.light = s.composite.light;
+    c.useAo = s.composite.useAo;
+    c.normalUnorm = s.gbuffer.normalFormat == TargetFormat::RGBA8;
+    return c;
+}
+
+void CompositePass::run(PassContext& ctx, const CompositeConfig& c) {
     gl::Defines defs;
-    if (ctx.desc("gbuffer.normal").format == GL_RGBA8) defs.push_back({"NORMAL_UNORM", "1"});
+    if (c.normalUnorm) defs.push_back({"NORMAL_UNORM", "1"});
     GLuint prog = ctx.shaders.program("passes/fullscreen.vert", "passes/composite.frag", defs);
     glUseProgram(prog);
     glProgramUniform2f(prog, 0, c.ambient, c.light);
@@ -29,10 +36,10 @@ void CompositePass::execute(PassContext& ctx) {
     ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
     ctx.in("gbuffer.albedo").bind(SSAO_TEX_ALBEDO);
     if (c.useAo)
-        ctx.in(branch().res("ao.denoised")).bind(SSAO_TEX_AO);
+        ctx.in(chain().res("ao.denoised")).bind(SSAO_TEX_AO);
     else
         glBindTextureUnit(SSAO_TEX_AO, 0);
-    ctx.bindOutputs({branch().res("composite")});
+    ctx.bindOutputs({chain().res("composite")});
     ctx.drawFullscreen();
 }
 

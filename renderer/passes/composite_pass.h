@@ -4,11 +4,23 @@
 
 namespace ssao {
 
-class CompositePass final : public Pass {
+SSAO_CONFIG_BEGIN
+struct CompositeConfig {
+    gpu::FrameConstants frame; // the light's placement in scene radii (without the frame index)
+    float ambient, light;
+    int32_t useAo;       // reads the chain's ao.denoised
+    int32_t normalUnorm; // normals stored as (n+1)/2
+};
+SSAO_CONFIG_END
+
+class CompositePass final : public ConfiguredPass<CompositeConfig> {
   public:
-    explicit CompositePass(const Branch& b) : Pass(b.res("composite"), b) {}
+    explicit CompositePass(const Chain& c) : ConfiguredPass(c.res("composite"), c) {}
     void setup(PassBuilder& b, const Settings& s) const override;
-    void execute(PassContext& ctx) override;
+    CompositeConfig config(const Settings& s, const FrameInfo& f) const override;
+
+  private:
+    void run(PassContext& ctx, const CompositeConfig& c) override;
 };
 
 } // namespace ssao

@@ -4,58 +4,66 @@
 #include "passes/denoise_weights.h"
 #include "techniques/ao_common.h"
 
-#include <algorithm>
-
 namespace ssao {
 
 void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
-    b.read(branch().res("ao.raw"));
+    b.read(chain().res("ao.raw"));
     ResourceDesc tmp =
-        describe(branch().res("denoise.tmp"), GL_R32F, 1, Display::Unit, "x pass of the denoiser");
+        describe(chain().res("denoise.tmp"), GL_R32F, 1, Display::Unit, "x pass of the denoiser");
     // The bilateral's passes all run at full resolution (its first pass upsamples jointly).
     const bool bilateral = s.denoise.kind == DenoiseKind::Bilateral;
     tmp.scale = bilateral ? 1.0f : resolutionScale(s.ao.resolution);
     tmp.internal = true;
     if (bilateral || s.temporal.enabled || s.skip.sky) b.read("gbuffer.depth");
-    b.settings("skip.sky"); // its last pass skips sky pixels
     if (bilateral) b.read("gbuffer.normal");
-    if (s.temporal.enabled) {
-        b.settings("temporal");
-        b.usesCamera(); // reprojection
-    }
     b.write(tmp);
-    b.write(describe(branch().res("ao.denoised"), GL_R32F, 1, Display::Unit,
+    b.write(describe(chain().res("ao.denoised"), GL_R32F, 1, Display::Unit,
                      "AO after the denoise stage, at full resolution (what the composite uses)"));
-    b.settings("denoise");
 }
 
-void DenoisePass::execute(PassContext& ctx) {
+DenoiseConfig DenoisePass::config(const Settings& s, const FrameInfo& f) const {
+    DenoiseConfig c{};
+    const DenoiseSettings& d = s.denoise;
+    c.bilateral = d.kind == DenoiseKind::Bilateral;
+    c.skipSky = s.skip.sky;
+    if (c.bilateral) {
+        c.passes = d.passes;
+        c.x = packBilateralConstants(d, s.gbuffer.normalFormat == TargetFormat::RGBA8);
+    } else {
+        c.bilinearTaps = d.kind == DenoiseKind::Box4Centred;
+        c.x = packDenoiseConstants(d, 0);
+        c.y = packDenoiseConstants(d, 1, s.skip.sky); // the last pass skips sky pixels
+    }
+    c.temporal = temporalConfig(s, f);
+    return c;
+}
+
+void DenoisePass::run(PassContext& ctx, const DenoiseConfig& c) {
     if (!linear_) linear_ = gl::Sampler(GL_LINEAR, GL_CLAMP_TO_EDGE, name() + ".upsample");
-    if (ctx.settings.denoise.kind == DenoiseKind::Bilateral)
-        bilateral(ctx);
+    if (c.bilateral)
+        bilateral(ctx, c);
     else
-        separable(ctx);
-    if (ctx.settings.temporal.enabled) temporal_.run(ctx, branch().res("ao.denoised"), name());
+        separable(ctx, c);
+    if (c.temporal.enabled) temporal_.run(ctx, c.temporal, chain().res("ao.denoised"), name());
 }
 
-void DenoisePass::separable(PassContext& ctx) {
-    const std::string raw = branch().res("ao.raw"), tmp = branch().res("denoise.tmp"),
-                      out = branch().res("ao.denoised");
+void DenoisePass::separable(PassContext& ctx, const DenoiseConfig& c) {
+    const std::string raw = chain().res("ao.raw"), tmp = chain().res("denoise.tmp"),
+                      out = chain().res("ao.denoised");
     const bool upsample = ctx.size(tmp) != ctx.size(out);
     glUseProgram(ctx.shaders.program("passes/fullscreen.vert", "passes/denoise.frag"));
-    if (ctx.settings.skip.sky) ctx.in("gbuffer.depth").bind(SSAO_TEX_LINEAR_DEPTH);
+    if (c.skipSky) ctx.in("gbuffer.depth").bind(SSAO_TEX_LINEAR_DEPTH);
     for (int dir = 0; dir < 2; ++dir) {
         if (!ubo_[dir])
             ubo_[dir] =
                 gl::UniformBuffer(sizeof(gpu::DenoiseConstants), name() + (dir ? ".y" : ".x") + ".constants");
-        const gpu::DenoiseConstants c = packDenoiseConstants(ctx.settings.denoise, dir, dir == 1 && ctx.settings.skip.sky);
-        ubo_[dir].upload(&c, sizeof c);
+        const gpu::DenoiseConstants& k = dir == 0 ? c.x : c.y;
+        ubo_[dir].upload(&k, sizeof k);
         ubo_[dir].bind(SSAO_UBO_DENOISE);
         ctx.in(dir == 0 ? raw : tmp).bind(SSAO_TEX_AO);
         // Reduced-resolution AO is brought to full size bilinearly by the y pass; the centred box
         // reads between texels in both passes.
-        const bool centred = ctx.settings.denoise.kind == DenoiseKind::Box4Centred;
-        if ((dir == 1 && upsample) || centred)
+        if ((dir == 1 && upsample) || c.bilinearTaps)
             linear_.bind(SSAO_TEX_AO);
         else
             gl::Sampler::unbind(SSAO_TEX_AO);
@@ -65,20 +73,18 @@ void DenoisePass::separable(PassContext& ctx) {
     gl::Sampler::unbind(SSAO_TEX_AO);
 }
 
-void DenoisePass::bilateral(PassContext& ctx) {
-    const std::string raw = branch().res("ao.raw"), tmp = branch().res("denoise.tmp"),
-                      out = branch().res("ao.denoised");
+void DenoisePass::bilateral(PassContext& ctx, const DenoiseConfig& c) {
+    const std::string raw = chain().res("ao.raw"), tmp = chain().res("denoise.tmp"),
+                      out = chain().res("ao.denoised");
     if (!ubo_[0]) ubo_[0] = gl::UniformBuffer(sizeof(gpu::DenoiseConstants), name() + ".x.constants");
-    const bool unorm = ctx.desc("gbuffer.normal").format == GL_RGBA8;
-    const gpu::DenoiseConstants c = packBilateralConstants(ctx.settings.denoise, unorm);
-    ubo_[0].upload(&c, sizeof c);
+    ubo_[0].upload(&c.x, sizeof c.x);
     ubo_[0].bind(SSAO_UBO_DENOISE);
     ctx.in("gbuffer.depth").bind(SSAO_TEX_LINEAR_DEPTH);
     ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
     gl::Sampler::unbind(SSAO_TEX_AO);
     glUseProgram(ctx.shaders.program("passes/fullscreen.vert", "passes/denoise_bilateral.frag"));
     // Alternate targets so the last pass lands in ao.denoised: n = 3 is raw → out → tmp → out.
-    const int n = std::clamp(ctx.settings.denoise.passes, 1, 3);
+    const int n = c.passes;
     std::string input = raw;
     for (int i = 0; i < n; ++i) {
         const std::string target = (n - 1 - i) % 2 == 0 ? out : tmp;

@@ -17,7 +17,7 @@ gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int directi
         for (int i = 0; i < 4; ++i)
             c.offsetsWeights[count++] = {float(i) - 1.5f, 0.25f, 0.0f, 0.0f};
     } else if (d.kind == DenoiseKind::Gaussian) {
-        const int r = std::clamp(d.halfWidth, 0, (SSAO_MAX_DENOISE_TAPS - 1) / 2);
+        const int r = d.halfWidth; // 0..32 = (SSAO_MAX_DENOISE_TAPS - 1) / 2: the table's range
         float sum = 0.0f;
         for (int i = -r; i <= r; ++i) {
             float w = std::exp(-float(i * i) / (2.0f * d.sigma * d.sigma));
@@ -41,10 +41,11 @@ gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int directi
 
 gpu::DenoiseConstants packBilateralConstants(const DenoiseSettings& d, bool normalUnorm) {
     gpu::DenoiseConstants c{};
-    c.taps = {std::clamp(d.halfWidth, 0, SSAO_BILATERAL_MAX_HALF_WIDTH), 0,
-              normalUnorm ? SSAO_DENOISE_NORMAL_UNORM : 0, 0};
+    // The bilateral's 2-D window is at most 17x17: a wider half-width (the gaussian's rows allow 32)
+    // is the bilateral's own limit, not a range check.
+    c.taps = {std::min(d.halfWidth, SSAO_BILATERAL_MAX_HALF_WIDTH), 0, normalUnorm ? SSAO_DENOISE_NORMAL_UNORM : 0, 0};
     // Normal term cos^8: 0.5 at ~25 degrees, so creases split while curved surfaces stay smooth.
-    c.offsetsWeights[0] = {std::max(d.sigma, 0.1f), std::max(d.sharpness, 0.0f), 8.0f, 0.0f};
+    c.offsetsWeights[0] = {d.sigma, d.sharpness, 8.0f, 0.0f};
     return c;
 }
 

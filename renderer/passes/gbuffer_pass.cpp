@@ -33,11 +33,16 @@ void GBufferPass::setup(PassBuilder& b, const Settings& s) const {
                      "scene units"));
     b.write(describe("gbuffer.zbuffer", GL_DEPTH_COMPONENT32F, 1, Display::Scalar,
                      "hardware depth in [0,1] (non-linear, 1 at near when reversed; seed 001 reconstructs positions from it)"));
-    b.settings("gbuffer");
-    b.settings("skip.cull");
-    b.settings("skip.unused_targets");
-    b.usesScene();
-    b.usesCamera();
+}
+
+GBufferConfig GBufferPass::config(const Settings& s, const FrameInfo& f) const {
+    GBufferConfig c{};
+    c.frame = withoutFrameIndex(f.constants);
+    c.normalUnorm = s.gbuffer.normalFormat == TargetFormat::RGBA8;
+    c.cull = s.skip.cull;
+    c.skipUnused = s.skip.unusedTargets;
+    c.sceneVersion = f.sceneVersion;
+    return c;
 }
 
 namespace {
@@ -52,14 +57,13 @@ constexpr Target kTargets[] = {{"gbuffer.position", "WRITE_POSITION"},
                                {"gbuffer.depth", "WRITE_DEPTH"}};
 } // namespace
 
-void GBufferPass::execute(PassContext& ctx) {
-    const SkipSettings& skip = ctx.settings.skip;
+void GBufferPass::run(PassContext& ctx, const GBufferConfig& c) {
     // Targets no live pass and no consumer reads are neither bound nor computed (skip.unused_targets).
     std::vector<std::string> outputs;
     gl::Defines defs;
     written_.clear();
     for (const Target& t : kTargets) {
-        if (skip.unusedTargets && !ctx.needed(t.name)) {
+        if (c.skipUnused && !ctx.needed(t.name)) {
             ctx.leaveUnwritten(t.name);
             continue;
         }
@@ -76,7 +80,7 @@ void GBufferPass::execute(PassContext& ctx) {
         glClearNamedFramebufferfv(GLuint(fbo), GL_COLOR, GLint(i), zero); // w = 0: sky
     // Reversed depth (scene/camera.h): z_ndc in [0, 1] written as is, 1 at near, cleared to 0 (far)
     // and tested with GREATER; the other passes draw with the default clip control.
-    const bool reversed = ctx.frame.camera->depth == DepthMode::Reversed;
+    const bool reversed = c.frame.camera.y != 0.0f;
     const float clearDepth = reversed ? 0.0f : 1.0f;
     glClearNamedFramebufferfv(GLuint(fbo), GL_DEPTH, 0, &clearDepth);
     if (reversed) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -87,16 +91,15 @@ void GBufferPass::execute(PassContext& ctx) {
         }
     } restoreClip{reversed};
 
-    if (ctx.settings.gbuffer.normalFormat == TargetFormat::RGBA8) defs.push_back({"NORMAL_UNORM", "1"});
+    if (c.normalUnorm) defs.push_back({"NORMAL_UNORM", "1"});
     glUseProgram(ctx.shaders.program("passes/gbuffer.vert", "passes/gbuffer.frag", defs));
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(reversed ? GL_GREATER : GL_LESS);
     glDisable(GL_CULL_FACE); // glTF doubleSided and CAD winding: shade what is visible
-    const FrameInfo& f = ctx.frame;
-    const glm::mat4 viewProj = f.camera->projection(float(f.width) / float(f.height)) * f.camera->view();
+    const glm::mat4 viewProj = c.frame.proj * c.frame.view;
     // Location 0 is uBaseColor; without the albedo target it is compiled out (-1: ignored).
     const bool albedo = std::find(outputs.begin(), outputs.end(), "gbuffer.albedo") != outputs.end();
-    stats_ = f.scene->draw(albedo ? 0 : -1, skip.cull ? &viewProj : nullptr, reversed);
+    stats_ = ctx.scene()->draw(albedo ? 0 : -1, c.cull ? &viewProj : nullptr, reversed);
     glDisable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
 }

@@ -6,16 +6,27 @@
 
 namespace ssao {
 
-class GBufferPass final : public Pass {
+SSAO_CONFIG_BEGIN
+struct GBufferConfig {
+    gpu::FrameConstants frame; // view, projection, depth mapping (without the temporal frame index)
+    int32_t normalUnorm;       // normals stored as (n+1)/2 (the rgba8 format's shader variant)
+    int32_t cull;              // skip.cull: draws outside the view are not issued
+    int32_t skipUnused;        // skip.unused_targets: targets nothing reads are not written
+    uint32_t sceneVersion;     // what it draws
+};
+SSAO_CONFIG_END
+
+class GBufferPass final : public ConfiguredPass<GBufferConfig> {
   public:
-    GBufferPass() : Pass("gbuffer", Branch::a()) {}
+    GBufferPass() : ConfiguredPass("gbuffer", Chain::a()) {}
     void setup(PassBuilder& b, const Settings& s) const override;
-    void execute(PassContext& ctx) override;
+    GBufferConfig config(const Settings& s, const FrameInfo& f) const override;
     // draws, draws_culled, triangles, triangles_culled, targets_written, targets_skipped
     std::vector<std::pair<std::string, double>> counters() const override;
     const std::vector<std::string>& written() const { return written_; }
 
   private:
+    void run(PassContext& ctx, const GBufferConfig& c) override;
     DrawStats stats_;
     std::vector<std::string> written_; // colour targets the last run wrote
 };

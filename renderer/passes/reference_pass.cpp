@@ -33,7 +33,7 @@ void upload(const gl::Texture2D& tex, const std::vector<float>& src, int sw, int
 }
 } // namespace
 
-void ReferencePass::execute(PassContext& ctx) {
+void ReferencePass::run(PassContext& ctx, const NoConfig&) {
     const ReferenceBuffers* b = buffers_.get();
     const gl::Texture2D& ao = ctx.in("reference.ao");
     const gl::Texture2D& error = ctx.in("reference.error");

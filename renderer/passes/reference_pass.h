@@ -19,15 +19,16 @@ struct ReferenceBuffers {
     uint64_t version = 0;      // > 0; a new value for new contents
 };
 
-class ReferencePass final : public Pass {
+class ReferencePass final : public ConfiguredPass<NoConfig> {
   public:
-    ReferencePass() : Pass("reference", Branch::a()) {}
+    ReferencePass() : ConfiguredPass("reference", Chain::a()) {}
     void setBuffers(std::shared_ptr<const ReferenceBuffers> b) { buffers_ = std::move(b); }
     void setup(PassBuilder& b, const Settings& s) const override;
-    void execute(PassContext& ctx) override;
+    NoConfig config(const Settings&, const FrameInfo&) const override { return {}; } // its images alone
     uint64_t externalVersion() const override { return buffers_ ? buffers_->version : 0; }
 
   private:
+    void run(PassContext& ctx, const NoConfig& c) override;
     std::shared_ptr<const ReferenceBuffers> buffers_;
 };
 

@@ -1,7 +1,6 @@
 #include "passes/temporal_accumulator.h"
 
 #include "gl/shader_library.h"
-#include "scene/camera.h"
 
 #include "../../shaders/include/bindings.h"
 
@@ -9,7 +8,19 @@
 
 namespace ssao {
 
-void TemporalAccumulator::run(PassContext& ctx, const std::string& ao, const std::string& passName) {
+TemporalConfig temporalConfig(const Settings& s, const FrameInfo& f) {
+    TemporalConfig c{};
+    if (!s.temporal.enabled) return c;
+    c.frame = f.constants;
+    c.enabled = 1;
+    c.reset = f.temporalReset;
+    c.frames = float(s.temporal.frames);
+    c.depthTolerance = s.temporal.depthTolerance;
+    return c;
+}
+
+void TemporalAccumulator::run(PassContext& ctx, const TemporalConfig& c, const std::string& ao,
+                              const std::string& passName) {
     const glm::ivec2 size = ctx.size(ao);
     const int next = 1 - current_;
     for (auto& h : history_) {
@@ -19,11 +30,9 @@ void TemporalAccumulator::run(PassContext& ctx, const std::string& ao, const std
         glTextureParameteri(h.texture().id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(h.texture().id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
-    const FrameInfo& f = ctx.frame;
-    const glm::mat4 view = f.camera->view();
-    const glm::mat4 viewProj = f.camera->projection(float(f.width) / float(f.height)) * view;
-    const bool reset = !valid_ || f.temporalReset;
-    const TemporalSettings& t = ctx.settings.temporal;
+    const glm::mat4 view = c.frame.view;
+    const glm::mat4 viewProj = c.frame.proj * view;
+    const bool reset = !valid_ || c.reset;
 
     // 1: blend into the next history.
     GLuint prog = ctx.shaders.program("passes/fullscreen.vert", "passes/temporal.frag");
@@ -32,7 +41,7 @@ void TemporalAccumulator::run(PassContext& ctx, const std::string& ao, const std
     glProgramUniformMatrix4fv(prog, 1, 1, GL_FALSE, glm::value_ptr(prevView_));
     const glm::mat4 invView = glm::inverse(view);
     glProgramUniformMatrix4fv(prog, 2, 1, GL_FALSE, glm::value_ptr(invView));
-    glProgramUniform4f(prog, 3, reset ? 1.0f : 0.0f, float(std::max(t.frames, 1)), t.depthTolerance, 0.0f);
+    glProgramUniform4f(prog, 3, reset ? 1.0f : 0.0f, c.frames, c.depthTolerance, 0.0f);
     ctx.in(ao).bind(SSAO_TEX_AO);
     ctx.in("gbuffer.depth").bind(SSAO_TEX_LINEAR_DEPTH);
     history_[current_].texture().bind(SSAO_TEX_HISTORY);

@@ -12,10 +12,23 @@
 
 namespace ssao {
 
+SSAO_CONFIG_BEGIN
+// What accumulation depends on (part of the denoise pass's config; all 0 when off).
+struct TemporalConfig {
+    gpu::FrameConstants frame; // this frame's camera (reprojection) and frame index (new noise each)
+    int32_t enabled;
+    int32_t reset; // drop the history (settings, size or scene changed)
+    float frames;  // running mean over this many frames
+    float depthTolerance;
+};
+SSAO_CONFIG_END
+
+TemporalConfig temporalConfig(const Settings& s, const FrameInfo& f);
+
 class TemporalAccumulator {
   public:
     // `ao`: the resource holding this frame's denoised AO, overwritten with the accumulated one.
-    void run(PassContext& ctx, const std::string& ao, const std::string& passName);
+    void run(PassContext& ctx, const TemporalConfig& c, const std::string& ao, const std::string& passName);
 
   private:
     gl::RenderTarget history_[2];

@@ -2,7 +2,6 @@
 
 #include "settings/param_rows.h"
 #include "settings/preset.h"
-#include "techniques/technique.h"
 #include "util/error.h"
 
 #include <nlohmann/json.hpp>
@@ -22,17 +21,25 @@ Param techniqueRow() {
     Param t;
     t.key = "ao.technique", t.label = "Technique", t.type = T::Enum;
     t.help = "The AO estimator; each technique adds its own parameters below.";
-    for (const auto& info : techniques())
+    for (const auto& info : registeredTechniques())
         t.choices.push_back(info.id);
     t.min = 0, t.max = double(t.choices.size() - 1);
     t.get = [](const Settings& s) {
-        const auto& list = techniques();
+        const auto& list = registeredTechniques();
         for (size_t i = 0; i < list.size(); ++i)
             if (list[i].id == s.ao.technique) return double(i);
-        return 0.0;
+        return 0.0; // not a registered technique: Renderer::setSettings refuses it by name
     };
-    t.set = [](Settings& s, double v) { s.ao.technique = techniques().at(size_t(v)).id; };
+    t.set = [](Settings& s, double v) { s.ao.technique = registeredTechniques().at(size_t(v)).id; };
     return t;
+}
+
+// The techniques that take ao.adaptive.
+std::vector<std::string> adaptiveTechniques() {
+    std::vector<std::string> ids;
+    for (const auto& info : registeredTechniques())
+        if (info.adaptive) ids.push_back(info.id);
+    return ids;
 }
 
 std::vector<Param> coreRows() {
@@ -84,7 +91,7 @@ std::vector<Param> coreRows() {
                  "take fewer samples - a march one step per 'pixels per sample' of radius, an area sampler "
                  "one tap per its square of the disc. Time saved and error change: docs/benchmarks.md. "
                  "(The kernel's samples are a fixed set: it keeps them all.)")
-            .onlyWhen("ao.technique", {"sao", "hbao", "gtao", "vbao"}),
+            .onlyWhen("ao.technique", adaptiveTechniques()),
         FLOAT_ROW("ao.adaptive_px", "Pixels per sample", ao.adaptivePx, 1.0, 32.0, "pixels",
                   "Adaptive samples: radius in pixels each march step (or each tap's square of the disc) "
                   "covers before the count is cut; 1 keeps every step that lands on a new pixel.")
@@ -156,8 +163,8 @@ std::vector<Param> buildTable() {
     while (at != table.end() && at->group() != "denoise")
         ++at;
     std::vector<Param> tech;
-    for (const auto& info : techniques())
-        for (Param p : info.params()) {
+    for (const auto& info : registeredTechniques())
+        for (Param p : info.rows) {
             p.when.insert(p.when.begin(), Param::Condition{"ao.technique", {info.id}});
             tech.push_back(std::move(p));
         }
@@ -174,13 +181,20 @@ double parseNumber(const Param& p, const std::string& text) {
     return v;
 }
 
-void checkAndSet(const Param& p, Settings& s, double v, const std::string& shown) {
+void checkValue(const Param& p, double v, const std::string& shown) {
     if (!std::isfinite(v)) throw Error(p.key + ": value " + shown + " is not finite");
     if (p.type == T::Int && v != std::floor(v))
         throw Error(p.key + ": value " + shown + " is not an integer");
-    if (v < p.min || v > p.max)
+    // A float row holds a float: compare at its precision (1e-4 stored is 0.000099999997).
+    const bool below = p.type == T::Float ? float(v) < float(p.min) : v < p.min;
+    const bool above = p.type == T::Float ? float(v) > float(p.max) : v > p.max;
+    if (below || above)
         throw Error(p.key + ": value " + shown + " is out of range [" + p.format(p.min) + ", " +
                     p.format(p.max) + "]" + (p.unit.empty() ? "" : " " + p.unit));
+}
+
+void checkAndSet(const Param& p, Settings& s, double v, const std::string& shown) {
+    checkValue(p, v, shown);
     p.set(s, v);
 }
 
@@ -287,6 +301,14 @@ void setParam(Settings& s, const std::string& key, const std::string& text) {
         throw Error(key + ": '" + text + "' is not one of " + choiceList(*p));
     default:
         checkAndSet(*p, s, parseNumber(*p, text), text);
+    }
+}
+
+void validateSettings(const Settings& s) {
+    for (const Param& p : paramTable()) {
+        if (!p.applies(s)) continue;
+        const double v = p.get(s);
+        if (p.type == T::Float || p.type == T::Int) checkValue(p, v, p.format(v));
     }
 }
 

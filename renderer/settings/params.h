@@ -44,6 +44,15 @@ struct Param {
     Param& onlyWhen(const std::string& key, std::vector<std::string> values);
 };
 
+// What the settings need of the AO techniques, supplied by their registry
+// (techniques/registry.cpp): the settings include no technique code.
+struct TechniqueRows {
+    std::string id;          // the value of ao.technique
+    std::vector<Param> rows; // its rows ("id.*"); the table adds "applies while ao.technique = id"
+    bool adaptive = false;   // it takes ao.adaptive (a march or tap count the rule cuts)
+};
+const std::vector<TechniqueRows>& registeredTechniques();
+
 const std::vector<Param>& paramTable();
 const Param* findParam(const std::string& key);
 
@@ -55,6 +64,10 @@ Settings defaultSettings();
 void setParam(Settings& s, const std::string& key, const std::string& text);
 // `--set key=value`.
 void applyAssignment(Settings& s, const std::string& assignment);
+// Every row that applies holds a finite value within its range (an integer for integer rows, a
+// known choice for enums): the one place ranges are checked - the packing functions trust it.
+// Throws ssao::Error naming the first key that does not. Renderer::setSettings calls it.
+void validateSettings(const Settings& s);
 
 // JSON: {"ao": {"radius": 0.5, ...}, ...}. Presets are patches over defaults; toJson writes
 // every key, so write → read round-trips exactly.

@@ -32,14 +32,14 @@ float radiusInPixels(const AoSettings& s, float sceneDiagonal, float depth, floa
 }
 
 gpu::AoCommon packAoCommon(const AoSettings& s, float sceneDiagonal, float unitsPerPixel, glm::ivec2 target,
-                           bool skipSky) {
+                           bool skipSky, bool normalUnorm) {
     gpu::AoCommon c{};
     const bool screen = s.radiusMode == RadiusMode::Screen;
     c.radius = {screen ? 0.0f : worldRadius(s, sceneDiagonal, 1.0f, unitsPerPixel), unitsPerPixel,
                 float(screen ? SSAO_RADIUS_SCREEN : SSAO_RADIUS_WORLD), s.radiusPx};
-    c.shape = {s.power, float(SSAO_NOISE_NONE), float(int(s.normals)), 0.0f}; // noise, pyramid: the technique
+    c.estimator = {s.power, float(SSAO_NOISE_NONE), float(int(s.normals)), 0.0f}; // noise, pyramid: the technique
     c.target = {float(target.x), float(target.y), 1.0f / float(target.x), 1.0f / float(target.y)};
-    c.flags = {skipSky ? 1.0f : 0.0f, s.adaptive ? std::max(s.adaptivePx, 1.0f) : 0.0f, 0.0f, 0.0f};
+    c.flags = {skipSky ? 1.0f : 0.0f, s.adaptive ? s.adaptivePx : 0.0f, normalUnorm ? 1.0f : 0.0f, 0.0f};
     return c;
 }
 

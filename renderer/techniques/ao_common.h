@@ -9,6 +9,10 @@
 
 namespace ssao {
 
+// The first step of a march lands at least this far from the pixel, in pixels (XeGTAO's minS; HBAO's
+// "first step >= 1 px"): sampling the pixel itself gives a zero delta and self-occlusion lines.
+constexpr float kMinFirstStepPx = 1.3f;
+
 // Scene units covered by one pixel at unit view depth, for a G-buffer `heightPx` tall (an
 // orthographic projection: at every depth). `depth` below is the pixel's view distance under
 // perspective and 1 under orthographic projection (shaders: frameDepthScale).
@@ -22,8 +26,9 @@ float worldRadius(const AoSettings& s, float sceneDiagonal, float depth, float u
 float radiusInPixels(const AoSettings& s, float sceneDiagonal, float depth, float unitsPerPixel);
 
 // skipSky: SkipSettings::sky (flags.x; a uniform, not a shader variant, so geometry pixels run the
-// very same code either way and the skip stays bit-exact).
+// very same code either way and the skip stays bit-exact). normalUnorm: the G-buffer stores normals
+// as (n+1)/2 (flags.z). The noise kind and the pyramid offset (estimator.y, .w) are the technique's.
 gpu::AoCommon packAoCommon(const AoSettings& s, float sceneDiagonal, float unitsPerPixel, glm::ivec2 target,
-                           bool skipSky = true);
+                           bool skipSky = true, bool normalUnorm = false);
 
 } // namespace ssao

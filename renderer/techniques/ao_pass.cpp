@@ -1,81 +1,77 @@
 #include "techniques/ao_pass.h"
 
 #include "gl/shader_library.h"
+#include "passes/position_pyramid_pass.h"
 #include "scene/camera.h"
 #include "techniques/ao_common.h"
 #include "techniques/noise/blue_noise.h"
 
 namespace ssao {
 
-ResourceDesc AoPass::rawOutput(const Settings& s) const {
-    ResourceDesc out = describe(branch().res("ao.raw"), GL_R32F, 1, Display::Unit,
+ResourceDesc aoRawOutput(const Chain& chain, const Settings& s) {
+    ResourceDesc out = describe(chain.res("ao.raw"), GL_R32F, 1, Display::Unit,
                                 "AO of the technique before denoising (1 = open, 0 = fully occluded)");
     out.scale = resolutionScale(s.ao.resolution);
     return out;
 }
 
-void AoPass::declarePositionsNormals(PassBuilder& b, const Settings& s, const char* group) const {
-    b.read("gbuffer.position");
-    if (s.ao.normals == NormalSource::GBuffer) b.read("gbuffer.normal"); // else rebuilt from positions
-    b.write(rawOutput(s));
-    b.settings("ao");
-    b.settings(group);
-    b.settings("skip.sky");
-    b.usesScene();  // scene-relative radius
-    b.usesCamera(); // projection: the radius in pixels
-    b.usesFrameIndex(); // noise
-}
-
-void AoPass::bindPositionsNormals(PassContext& ctx) const {
-    ctx.in("gbuffer.position").bind(SSAO_TEX_POSITION);
-    if (ctx.settings.ao.normals == NormalSource::GBuffer) ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
-}
-
-gpu::AoCommon AoPass::common(PassContext& ctx) const {
-    const FrameInfo& f = ctx.frame;
-    const glm::mat4 proj = f.camera->projection(float(f.width) / float(f.height));
+gpu::AoCommon aoCommonFor(const Settings& s, const FrameInfo& f, AoNoise noise, float pyramidOffset) {
     // A radius in pixels means displayed pixels, also while the app renders reduced.
-    const float upp = unitsPerPixelAtUnitDepth(proj, f.height) * f.displayScale;
-    return packAoCommon(ctx.settings.ao, 2.0f * f.sceneRadius, upp, ctx.size(branch().res("ao.raw")),
-                        ctx.settings.skip.sky);
+    const float upp = unitsPerPixelAtUnitDepth(f.constants.proj, f.height) * f.displayScale;
+    const float scale = resolutionScale(s.ao.resolution);
+    const glm::ivec2 target(scaledSize(f.width, scale), scaledSize(f.height, scale));
+    gpu::AoCommon c = packAoCommon(s.ao, 2.0f * f.sceneRadius, upp, target, s.skip.sky,
+                                   s.gbuffer.normalFormat == TargetFormat::RGBA8);
+    packNoise(c, noise);
+    c.estimator.w = pyramidOffset; // taps d px away read MIP log2(d) - this (0: no pyramid)
+    return c;
 }
 
-void AoPass::bindShared(PassContext& ctx, const gpu::AoCommon& c) {
-    if (int(c.shape.y) == SSAO_NOISE_BLUE) {
+AoBindings aoBindings(const Settings& s, AoNoise noise, bool pyramid) {
+    AoBindings b;
+    b.gbufferNormals = s.ao.normals == NormalSource::GBuffer;
+    b.blueNoise = noise == AoNoise::Blue;
+    b.pyramid = pyramid;
+    return b;
+}
+
+void declareAoInputs(PassBuilder& b, const Chain& chain, const Settings& s, const AoBindings& bind,
+                     const std::string& positions) {
+    b.read(positions);
+    if (bind.gbufferNormals) b.read("gbuffer.normal"); // else rebuilt from positions
+    if (bind.pyramid) b.read(PositionPyramidPass::kOutput);
+    b.write(aoRawOutput(chain, s));
+}
+
+void AoShared::bind(PassContext& ctx, const AoBindings& bind, const std::string& pass) {
+    if (bind.gbufferNormals) ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
+    if (bind.blueNoise) {
         if (!blueNoise_) { // made on first use: void and cluster takes a moment (techniques/noise)
-            blueNoise_ = gl::Texture2D(kBlueNoiseSize, kBlueNoiseSize, GL_RG32F, name() + ".blue_noise");
+            blueNoise_ = gl::Texture2D(kBlueNoiseSize, kBlueNoiseSize, GL_RG32F, pass + ".blue_noise");
             blueNoise_.setWrap(GL_REPEAT);
             glTextureSubImage2D(blueNoise_.id(), 0, 0, 0, kBlueNoiseSize, kBlueNoiseSize, GL_RG, GL_FLOAT,
                                 blueNoise64Rg().data());
         }
         blueNoise_.bind(SSAO_TEX_BLUE_NOISE);
     }
-    if (c.shape.w > 0.0f) {
-        pyramid_.build(ctx, ctx.in("gbuffer.position"));
-        pyramid_.bind(SSAO_TEX_POSITION_MIPS);
-    }
+    if (bind.pyramid) ctx.in(PositionPyramidPass::kOutput).bind(SSAO_TEX_POSITION_MIPS);
 }
 
-bool AoPass::normalUnorm(PassContext& ctx) const {
-    return ctx.desc("gbuffer.normal").format == GL_RGBA8;
-}
-
-void AoPass::draw(PassContext& ctx, bool inspect) {
-    const std::string frag = prepare(ctx); // may draw (the position pyramid): outputs bound after
+void AoShared::draw(PassContext& ctx, const Chain& chain, const std::string& shader, bool inspect) {
     gl::Defines defs;
     if (inspect)
         defs.push_back({"INSPECT", "1"});
     else
-        ctx.bindOutputs({branch().res("ao.raw")});
-    glUseProgram(ctx.shaders.program("passes/fullscreen.vert", frag, defs));
+        ctx.bindOutputs({chain.res("ao.raw")});
+    glUseProgram(ctx.shaders.program("passes/fullscreen.vert", shader, defs));
     ctx.drawFullscreen();
 }
 
-bool AoPass::inspect(PassContext& ctx, glm::ivec2 pixel, PixelInspection& out) {
-    const glm::ivec2 size = ctx.size(branch().res("ao.raw"));
+bool AoShared::inspect(PassContext& ctx, const Chain& chain, glm::ivec2 pixel, PixelInspection& out,
+                       const std::function<void()>& drawInspect) {
+    const glm::ivec2 size = ctx.size(chain.res("ao.raw"));
     if (pixel.x < 0 || pixel.y < 0 || pixel.x >= size.x || pixel.y >= size.y) return false;
-    probe_.run(
-        pixel, size, [&] { draw(ctx, true); }, out);
+    probe_.run(pixel, size, drawInspect, out);
     return true;
 }
 

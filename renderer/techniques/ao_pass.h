@@ -1,64 +1,117 @@
 // What every technique's AO pass shares: it writes the chain's ao.raw (R32F at the AO resolution:
 // never 8-bit, which turns a NaN into 1.0 on llvmpipe and hides the bug from every test), draws one
 // fullscreen triangle with its fragment shader, and replays that shader with INSPECT for the
-// sample inspector. A technique's pass supplies its inputs, constants and shader (prepare()).
+// sample inspector. Its config (graph/pass_config.h) is the technique's constant block, the frame
+// block and the shared textures it binds - all derived from the settings by config(), so run()
+// and the inspector use nothing else.
 #pragma once
 #include "graph/inspect_probe.h"
 #include "graph/pass.h"
-#include "techniques/position_pyramid.h"
+#include "techniques/noise/noise.h"
 
 #include "../../shaders/include/bindings.h"
 
+#include <functional>
+#include <string>
+
 namespace ssao {
 
-class AoPass : public Pass {
-  public:
-    explicit AoPass(const Branch& b) : Pass(b.res("ao"), b) {}
-    void execute(PassContext& ctx) override { draw(ctx, false); }
-    bool inspect(PassContext& ctx, glm::ivec2 pixel, PixelInspection& out) override;
+SSAO_CONFIG_BEGIN
+// The CPU choices every AO pass makes, from the settings (never from packed GPU words).
+struct AoBindings {
+    int32_t gbufferNormals = 0; // reads and binds gbuffer.normal (else normals come from positions)
+    int32_t blueNoise = 0;      // binds the blue-noise tile (the technique's noise is `blue`)
+    int32_t pyramid = 0;        // reads and binds gbuffer.position_mips (passes/position_pyramid_pass.h)
+};
 
-  protected:
-    ResourceDesc rawOutput(const Settings& s) const; // the chain's ao.raw
-    // The common declaration of a pass that reads G-buffer positions and normals and the settings
-    // groups "ao" and `group`, and writes ao.raw (horizon techniques: HBAO, GTAO...).
-    void declarePositionsNormals(PassBuilder& b, const Settings& s, const char* group) const;
-    void bindPositionsNormals(PassContext& ctx) const;
-    // This frame's shared constants: radius (in displayed pixels for screen mode), power, target.
-    gpu::AoCommon common(PassContext& ctx) const;
-    bool normalUnorm(PassContext& ctx) const; // the normal target stores (n+1)/2
-    // What the packed constants ask of the shared shader code (include/noise.glsl, position_taps.glsl):
-    // binds the blue-noise tile when shape.y is SSAO_NOISE_BLUE, and builds and binds the position
-    // pyramid when shape.w (its offset) is non-zero.
-    void bindShared(PassContext& ctx, const gpu::AoCommon& c);
-    // Binds the technique's inputs and constants; returns its fragment shader (under shaders/).
-    virtual std::string prepare(PassContext& ctx) = 0;
+// The config of a technique that is one constant block and one shader.
+template <class Constants> struct AoConfig {
+    Constants constants;       // the technique's block, from its pure pack function
+    gpu::FrameConstants frame; // the frame block its shader reads
+    AoBindings bind;
+};
+SSAO_CONFIG_END
+
+// The chain's ao.raw at the AO resolution.
+ResourceDesc aoRawOutput(const Chain& chain, const Settings& s);
+// The shared AO block for these settings and this frame: radius (in displayed pixels for screen
+// mode), power, target size, sky skip, adaptive samples, the G-buffer's normal encoding, and the
+// technique's noise kind and position-pyramid offset (0 = no pyramid).
+gpu::AoCommon aoCommonFor(const Settings& s, const FrameInfo& f, AoNoise noise, float pyramidOffset);
+AoBindings aoBindings(const Settings& s, AoNoise noise, bool pyramid);
+// Declares `positions` (the G-buffer's positions, or the depth buffer it rebuilds them from), the
+// reads AoBindings imply (gbuffer.normal, gbuffer.position_mips) and the ao.raw write.
+void declareAoInputs(PassBuilder& b, const Chain& chain, const Settings& s, const AoBindings& bind,
+                     const std::string& positions);
+
+// GL state an AO pass keeps: the blue-noise tile (made on first use) and the inspector's probe.
+class AoShared {
+  public:
+    // Binds gbuffer.normal, the blue-noise tile and the pyramid as `bind` says.
+    void bind(PassContext& ctx, const AoBindings& bind, const std::string& pass);
+    // Draws `shader` over the chain's ao.raw (or, inspect = true, the INSPECT variant into the probe).
+    static void draw(PassContext& ctx, const Chain& chain, const std::string& shader, bool inspect);
+    bool inspect(PassContext& ctx, const Chain& chain, glm::ivec2 pixel, PixelInspection& out,
+                 const std::function<void()>& drawInspect);
 
   private:
-    void draw(PassContext& ctx, bool inspect);
-    InspectProbe probe_;
-    PositionPyramid pyramid_;
     gl::Texture2D blueNoise_;
+    InspectProbe probe_;
+};
+
+template <class Config> class AoPass : public ConfiguredPass<Config> {
+  public:
+    explicit AoPass(const Chain& c) : ConfiguredPass<Config>(c.res("ao"), c) {}
+    bool inspect(PassContext& ctx, glm::ivec2 pixel, PixelInspection& out) override {
+        const Config c = ctx.config().template as<Config>();
+        return shared_.inspect(ctx, this->chain(), pixel, out, [&] { draw(ctx, c, true); });
+    }
+
+  protected:
+    void run(PassContext& ctx, const Config& c) override { draw(ctx, c, false); }
+    // Binds the technique's inputs and constants; returns its fragment shader (under shaders/).
+    virtual std::string prepare(PassContext& ctx, const Config& c) = 0;
+    AoShared shared_;
+
+  private:
+    void draw(PassContext& ctx, const Config& c, bool inspect) {
+        AoShared::draw(ctx, this->chain(), prepare(ctx, c), inspect);
+    }
 };
 
 // The pass of a technique that is one constant block and one shader over positions and normals
-// (SAO, HBAO, GTAO, visibility bitmask): Traits gives `Constants`, `group`, `shader` and
-// `static Constants pack(const Settings&, const gpu::AoCommon&, bool normalUnorm)`.
-template <class Traits> class OneBlockPass final : public AoPass {
+// (SAO, HBAO, GTAO, visibility bitmask). Module gives:
+//   using Constants;                       its std140 block (shaders/techniques/ID/layout.h)
+//   static constexpr const char* shader;   its fragment shader
+//   static constexpr float pyramidOffset;  kSaoMipOffset or kXeGtaoMipOffset
+//   static AoNoise noise(const Settings&); static bool pyramid(const Settings&);
+//   static Constants pack(const Settings&, const gpu::AoCommon&);   pure, tested
+template <class Module> class OneBlockPass final : public AoPass<AoConfig<typename Module::Constants>> {
+    using Config = AoConfig<typename Module::Constants>;
+
   public:
-    using AoPass::AoPass;
+    using AoPass<Config>::AoPass;
     void setup(PassBuilder& b, const Settings& s) const override {
-        declarePositionsNormals(b, s, Traits::group);
+        declareAoInputs(b, this->chain(), s, aoBindings(s, Module::noise(s), Module::pyramid(s)), "gbuffer.position");
+    }
+    Config config(const Settings& s, const FrameInfo& f) const override {
+        Config c{};
+        const AoNoise noise = Module::noise(s);
+        const bool pyramid = Module::pyramid(s);
+        c.constants = Module::pack(s, aoCommonFor(s, f, noise, pyramid ? Module::pyramidOffset : 0.0f));
+        c.frame = f.constants;
+        c.bind = aoBindings(s, noise, pyramid);
+        return c;
     }
 
   private:
-    std::string prepare(PassContext& ctx) override {
-        if (!ubo_) ubo_ = gl::UniformBuffer(sizeof(typename Traits::Constants), name() + ".constants");
-        const typename Traits::Constants c = Traits::pack(ctx.settings, common(ctx), normalUnorm(ctx));
-        ubo_.upload(&c, sizeof c);
+    std::string prepare(PassContext& ctx, const Config& c) override {
+        if (!ubo_) ubo_ = gl::UniformBuffer(sizeof(c.constants), this->name() + ".constants");
+        ubo_.upload(&c.constants, sizeof c.constants);
         ubo_.bind(SSAO_UBO_AO);
-        bindShared(ctx, c.aoCommon);
-        bindPositionsNormals(ctx);
-        return Traits::shader;
+        ctx.in("gbuffer.position").bind(SSAO_TEX_POSITION);
+        this->shared_.bind(ctx, c.bind, this->name());
+        return Module::shader;
     }
     gl::UniformBuffer ubo_;
 };

@@ -8,6 +8,10 @@
 #include "techniques/vbao/technique.h"
 #include "util/error.h"
 
+#include "../../shaders/include/adaptive.h"
+
+#include <algorithm>
+
 namespace ssao {
 
 const std::vector<TechniqueInfo>& techniques() {
@@ -25,9 +29,36 @@ const TechniqueInfo& findTechnique(const std::string& id) {
     throw Error("unknown AO technique '" + id + "' (known: " + known + ")");
 }
 
+// What the settings need of the techniques (settings/params.h), from the modules.
+const std::vector<TechniqueRows>& registeredTechniques() {
+    static const std::vector<TechniqueRows> rows = [] {
+        std::vector<TechniqueRows> out;
+        for (const auto& t : techniques())
+            out.push_back({t.id, t.params(), bool(t.adaptive)});
+        return out;
+    }();
+    return rows;
+}
+
 std::string unphysicalReason(const Settings& s) {
     const TechniqueInfo& t = findTechnique(s.ao.technique);
     return t.unphysical ? t.unphysical(s) : std::string();
+}
+
+bool usesPyramid(const Settings& s) {
+    const TechniqueInfo& t = findTechnique(s.ao.technique);
+    return t.pyramid && t.pyramid(s);
+}
+
+double adaptiveShare(const Settings& s, float radiusPx) {
+    const TechniqueInfo& t = findTechnique(s.ao.technique);
+    if (!s.ao.adaptive || !t.adaptive) return 1.0;
+    const AdaptiveCount c = t.adaptive(s);
+    if (c.full <= 0) return 1.0;
+    const float r = std::max(radiusPx, 0.0f);
+    const int n = c.march ? gpu::adaptiveSteps(s.ao.adaptivePx, c.full, r)
+                          : gpu::adaptiveSamples(s.ao.adaptivePx, c.full, r);
+    return double(n) / double(c.full);
 }
 
 } // namespace ssao

@@ -1,6 +1,7 @@
-// An AO technique is a module: a folder under renderer/techniques/ with its settings struct,
-// its parameter rows, a pure constants-packing function, its pass (the frame-graph wiring) and
-// its shader under shaders/techniques/. The registry (registry.cpp) lists the modules.
+// An AO technique is a module: a folder under renderer/techniques/ with its settings struct, its
+// parameter rows, a pure constants-packing function, its config and pass (the frame-graph wiring)
+// and its shader under shaders/techniques/; the module declares what it can do (below). The
+// registry (registry.cpp) lists the modules; nothing else outside a technique's folders names it.
 #pragma once
 #include "settings/params.h"
 
@@ -12,31 +13,38 @@
 namespace ssao {
 
 class Pass;
-struct Branch;
+struct Chain;
+
+// The per-pixel count the adaptive rule (ao.adaptive, shaders/include/adaptive.h) cuts: a march's
+// steps per side, or an area sampler's taps.
+struct AdaptiveCount {
+    int full = 0;
+    bool march = true;
+};
 
 struct TechniqueInfo {
     std::string id;      // value of ao.technique, and the group of the technique's rows
     std::string label;   // for the UI
     std::string summary; // one line: what it estimates and where it comes from
     std::function<std::vector<Param>()> params; // rows "id.*"
-    // Its passes for one chain: together they read gbuffer.* and write the chain's ao.raw
-    // (a helper image only that pass reads, like the position pyramid, stays inside it; one that
-    // several passes share would be a pass of its own, wired by declarations).
-    std::function<std::vector<std::unique_ptr<Pass>>(const Branch&)> makePasses;
+    // Its passes for one chain: together they read gbuffer.* and write the chain's ao.raw.
+    std::function<std::vector<std::unique_ptr<Pass>>(const Chain&)> makePasses;
+    // Capabilities. Whether these settings read the position pyramid (passes/position_pyramid_pass.h,
+    // which the renderer then adds); null = never.
+    std::function<bool(const Settings&)> pyramid;
+    // The count ao.adaptive cuts for these settings; null = the technique takes no adaptive count.
+    std::function<AdaptiveCount(const Settings&)> adaptive;
     // Why these settings are unphysical by design (a seed article's artefact a preset reproduces on
     // purpose), or "" when the technique must hold the physics with them: an open plane unoccluded,
     // a corner darkening toward the wall (tests/gl/test_physics_limits.cpp, `ssaolab stress`).
     std::function<std::string(const Settings&)> unphysical;
 };
 
-// TechniqueInfo::unphysical of `s`'s technique ("" when it has none).
-std::string unphysicalReason(const Settings& s);
-
-// makePasses for a technique that is one pass of type P (every technique so far).
-template <class P> std::function<std::vector<std::unique_ptr<Pass>>(const Branch&)> onePass() {
-    return [](const Branch& b) {
+// makePasses for a technique that is one pass of type P.
+template <class P> std::function<std::vector<std::unique_ptr<Pass>>(const Chain&)> onePass() {
+    return [](const Chain& c) {
         std::vector<std::unique_ptr<Pass>> passes;
-        passes.push_back(std::make_unique<P>(b));
+        passes.push_back(std::make_unique<P>(c));
         return passes;
     };
 }
@@ -44,5 +52,13 @@ template <class P> std::function<std::vector<std::unique_ptr<Pass>>(const Branch
 const std::vector<TechniqueInfo>& techniques();
 // Throws ssao::Error listing the known ids.
 const TechniqueInfo& findTechnique(const std::string& id);
+
+// The capabilities of `s`'s technique.
+std::string unphysicalReason(const Settings& s); // "" when it has none
+bool usesPyramid(const Settings& s);
+// The share of the technique's full count that ao.adaptive takes at a pixel whose radius spans
+// `radiusPx` pixels (1 without adaptive or for a technique without a count): what the shaders
+// compute, from the same function (shaders/include/adaptive.h).
+double adaptiveShare(const Settings& s, float radiusPx);
 
 } // namespace ssao

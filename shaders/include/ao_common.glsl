@@ -9,7 +9,7 @@ float aoRadius(AoCommon_ c, float depth) {
 
 // Seed 001's contrast: AO = visibility^power (its 1 - (1 - occ/N)^power is the occlusion).
 float aoFinish(AoCommon_ c, float visibility) {
-    return pow(clamp(visibility, 0.0, 1.0), c.shape.x);
+    return pow(clamp(visibility, 0.0, 1.0), c.estimator.x);
 }
 
 // The G-buffer texel an AO pixel stands for, as a uv at that texel's centre. At half or quarter
@@ -28,13 +28,13 @@ float aoNeighbourGap(vec4 S, vec2 uv, vec3 P) {
     return inside && S.w != 0.0 ? abs(S.z - P.z) : 1e30;
 }
 
-// The pixel's unit view-space normal: decoded from the G-buffer, or (shape.z = SSAO_NORMALS_DEPTH)
+// The pixel's unit view-space normal: decoded from the G-buffer, or (estimator.z = SSAO_NORMALS_DEPTH)
 // reconstructed from the positions alone. The reconstruction takes, on each axis, the neighbour
 // whose depth is closer to the pixel's (the one on the same surface): a naive cross product of
 // screen derivatives mixes the two sides of a silhouette and bends the normal of every edge pixel.
-vec3 aoNormal(AoCommon_ c, sampler2D positions, sampler2D normals, vec2 uv, vec3 P, bool unorm) {
+vec3 aoNormal(AoCommon_ c, sampler2D positions, sampler2D normals, vec2 uv, vec3 P) {
     vec3 N;
-    if (int(c.shape.z) == SSAO_NORMALS_DEPTH) {
+    if (int(c.estimator.z) == SSAO_NORMALS_DEPTH) {
         // Whole texels around the pixel's own texel (see aoPixelUv), never a boundary.
         vec2 t = 1.0 / vec2(textureSize(positions, 0));
         uv = (floor(uv / t - 0.25) + 0.5) * t;
@@ -54,7 +54,7 @@ vec3 aoNormal(AoCommon_ c, sampler2D positions, sampler2D normals, vec2 uv, vec3
         return dot(N, V) < 0.0 ? -N : N; // face the camera, as the G-buffer's normals do
     }
     N = texture(normals, uv).xyz;
-    if (unorm) N = N * 2.0 - 1.0;
+    if (c.flags.z != 0.0) N = N * 2.0 - 1.0; // an RGBA8 target stores (n+1)/2
     float l2 = dot(N, N);
     return l2 > 1e-12 ? N * inversesqrt(l2) : vec3(0.0, 0.0, 1.0);
 }
@@ -75,14 +75,8 @@ vec3 aoNormal(AoCommon_ c, sampler2D positions, sampler2D normals, vec2 uv, vec3
     if (aoSky) P4 = vec4(frameViewPosition(uv, 2.0 * frame.clip.z), 1.0);
 #define AO_RESULT(v) (aoSky ? max((v), 1.0) : (v))
 
-// Adaptive sample counts (ao.adaptive; common.flags.y = pixels per sample, 0 = off; ASSAO/CACAO-
-// style): a march takes one step per flags.y pixels of radius, an area sampler one tap per flags.y^2
-// pixels of the disc; never below 2 steps / 4 taps nor above the technique's count.
-int aoAdaptiveSteps(AoCommon_ c, int steps, float radiusPx) {
-    return c.flags.y > 0.0 ? clamp(int(ceil(radiusPx / c.flags.y)), min(steps, 2), steps) : steps;
-}
-int aoAdaptiveSamples(AoCommon_ c, int samples, float radiusPx) {
-    float px = c.flags.y;
-    return px > 0.0 ? clamp(int(ceil(3.14159265 * radiusPx * radiusPx / (px * px))), min(samples, 4), samples)
-                    : samples;
-}
+// Adaptive sample counts (ao.adaptive; common.flags.y = pixels per sample, 0 = off): the rule of
+// include/adaptive.h, which C++ shares.
+#include "include/adaptive.h"
+int aoAdaptiveSteps(AoCommon_ c, int steps, float radiusPx) { return adaptiveSteps(c.flags.y, steps, radiusPx); }
+int aoAdaptiveSamples(AoCommon_ c, int samples, float radiusPx) { return adaptiveSamples(c.flags.y, samples, radiusPx); }

@@ -35,14 +35,14 @@
 #define SSAO_RADIUS_WORLD 0
 #define SSAO_RADIUS_SCREEN 1
 
-// Per-pixel noise of the horizon techniques (AoCommon.shape.y; techniques/noise/noise.h, same order).
+// Per-pixel noise of the horizon techniques (AoCommon.estimator.y; techniques/noise/noise.h, same order).
 #define SSAO_NOISE_IGN 0   // interleaved gradient noise (Jimenez 2014)
 #define SSAO_NOISE_R2 1    // Roberts' R2 low-discrepancy sequence over the pixel grid (2018)
 #define SSAO_NOISE_BLUE 2  // a 64x64 void-and-cluster blue-noise tile (Ulichney 1993)
 #define SSAO_NOISE_TILE4 3 // a 4x4 tile of random values (the seeds' noise texture)
 #define SSAO_NOISE_NONE 4
 
-// Where the AO passes take normals from (AoCommon.shape.z; settings.h NormalSource, same order).
+// Where the AO passes take normals from (AoCommon.estimator.z; settings.h NormalSource, same order).
 #define SSAO_NORMALS_GBUFFER 0
 #define SSAO_NORMALS_DEPTH 1 // reconstructed from positions, the smaller-difference neighbour per axis
 
@@ -83,10 +83,11 @@ SSAO_STRUCT FrameConstants_ {
 SSAO_STRUCT AoCommon_ {
     vec4 radius; // x: world radius (world and scene modes), y: scene units per pixel at unit
                  // depth (screen mode: radius = y * depth * radiusPx), z: mode, w: radius in pixels
-    vec4 shape;  // x: power, y: noise kind (SSAO_NOISE_*), z: normal source (SSAO_NORMALS_*),
-                 // w: position-pyramid offset: taps d pixels away read MIP log2(d) - w (0 = no pyramid)
-    vec4 target; // AO target width, height, 1/width, 1/height (pixels)
-    vec4 flags;  // x: 1 = sky pixels return at once (skip.sky), y: adaptive samples' pixels per sample (0 = off), z, w: 0
+    vec4 estimator; // x: power, y: noise kind (SSAO_NOISE_*), z: normal source (SSAO_NORMALS_*),
+                    // w: position-pyramid offset: taps d pixels away read MIP log2(d) - w (0 = no pyramid)
+    vec4 target;    // AO target width, height, 1/width, 1/height (pixels)
+    vec4 flags;     // x: 1 = sky pixels return at once (skip.sky), y: adaptive samples' pixels per
+                    // sample (0 = off), z: 1 = normals stored as (n+1)/2 (an RGBA8 target), w: 0
 };
 
 SSAO_STRUCT DenoiseConstants_ {

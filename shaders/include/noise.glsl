@@ -1,5 +1,5 @@
 // Per-pixel noise of the horizon techniques: two values in [0,1) for a pixel, of the kind in
-// AoCommon.shape.y (SSAO_NOISE_*; renderer/techniques/noise/noise.h). Each kind moves with the
+// AoCommon.estimator.y (SSAO_NOISE_*; renderer/techniques/noise/noise.h). Each kind moves with the
 // temporal frame index (frame.clip.w), so accumulated frames average different patterns.
 // Needs frame.glsl and bindings.h.
 
@@ -23,13 +23,16 @@ float aoHash(uvec2 v) {
     return float(v.x >> 8u) * (1.0 / 16777216.0);
 }
 
+// Whether the technique asked for noise at all (none: one fixed pattern, banding).
+bool aoNoiseOn(AoCommon_ c) { return int(c.estimator.y) != SSAO_NOISE_NONE; }
+
 vec2 aoNoise(AoCommon_ c, vec2 fragCoord) {
     float f = frame.clip.w; // temporal frame index (0 without accumulation)
     vec2 p = floor(fragCoord);
     // Golden-ratio steps per frame keep each pixel's sequence over time well spread (Wolfe 2022,
     // animated blue noise): every kind but IGN advances this way.
     vec2 temporalShift = fract(f * vec2(0.61803398875, 0.75487766625));
-    switch (int(c.shape.y)) {
+    switch (int(c.estimator.y)) {
     case SSAO_NOISE_IGN: {
         vec2 q = fragCoord + 5.588238 * f;
         return vec2(aoIgn(q), aoIgn(q + vec2(47.0, 17.0)));

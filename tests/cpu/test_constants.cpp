@@ -27,14 +27,13 @@ TEST(PackKernel, ModesFlagsAndParameters) {
     s.kernel.positionSource = PositionSource::Depth;
     s.kernel.noise = Noise::None;
     s.kernel.ownTexel = OwnTexel::Test;
-    auto c = packKernelConstants(s.kernel, common(), /*normalUnorm=*/true);
+    auto c = packKernelConstants(s.kernel, common());
     EXPECT_EQ(c.modes.x, 17);
     EXPECT_EQ(c.modes.y, KERNEL_RANGE_HARD);
     EXPECT_EQ(c.modes.z, KERNEL_DEPTHTEST_FRAGMENT);
-    EXPECT_EQ(c.modes.w, KERNEL_FLAG_POS_FROM_DEPTH | KERNEL_FLAG_NORMAL_UNORM);
+    EXPECT_EQ(c.modes.w, KERNEL_FLAG_POS_FROM_DEPTH);
     s.kernel.ownTexel = OwnTexel::Open;
-    EXPECT_EQ(packKernelConstants(s.kernel, common(), true).modes.w,
-              KERNEL_FLAG_POS_FROM_DEPTH | KERNEL_FLAG_NORMAL_UNORM | KERNEL_FLAG_OWN_TEXEL_OPEN);
+    EXPECT_EQ(packKernelConstants(s.kernel, common()).modes.w, KERNEL_FLAG_POS_FROM_DEPTH | KERNEL_FLAG_OWN_TEXEL_OPEN);
     EXPECT_FLOAT_EQ(c.params.x, 0.05f);
     EXPECT_GT(c.params.y, 0.0f);             // range-check floor: |dz| = 0 never divides by zero
     EXPECT_FLOAT_EQ(c.noiseScale.x, 160.0f); // AO target / 4: one noise tile per 4x4 pixels
@@ -46,7 +45,7 @@ TEST(PackKernel, ModesFlagsAndParameters) {
 }
 
 TEST(PackKernel, NoiseTilesFollowTheAoResolution) {
-    auto c = packKernelConstants(Settings{}.kernel, common(320, 180), false); // half of 640x360
+    auto c = packKernelConstants(Settings{}.kernel, common(320, 180)); // half of 640x360
     EXPECT_FLOAT_EQ(c.noiseScale.x, 80.0f);
     EXPECT_FLOAT_EQ(c.aoCommon.target.x, 320.0f);
 }
@@ -55,7 +54,7 @@ TEST(PackKernel, SeparableFillsTwoPlaneSets) {
     Settings s = defaultSettings();
     s.kernel.separable = true;
     s.kernel.samples = 64;
-    auto c = packKernelConstants(s.kernel, common(), false);
+    auto c = packKernelConstants(s.kernel, common());
     EXPECT_TRUE(c.modes.w & KERNEL_FLAG_SEPARABLE);
     for (int i = 0; i < 64; ++i) {
         EXPECT_EQ(c.kernel[i].y, 0.0f);
@@ -64,10 +63,10 @@ TEST(PackKernel, SeparableFillsTwoPlaneSets) {
     }
 }
 
-TEST(PackKernel, SampleCountClampedToTheArray) {
+TEST(PackKernel, TheLargestSampleCountFillsTheArray) {
     Settings s = defaultSettings();
     s.kernel.samples = 256;
-    EXPECT_EQ(packKernelConstants(s.kernel, common(), false).modes.x, 256);
+    EXPECT_EQ(packKernelConstants(s.kernel, common()).modes.x, 256);
 }
 
 TEST(AoCommon, RadiusInEachModeInWorldUnitsAndPixels) {
@@ -91,12 +90,15 @@ TEST(AoCommon, RadiusInEachModeInWorldUnitsAndPixels) {
     a.radiusMode = RadiusMode::Scene;
     EXPECT_FLOAT_EQ(packAoCommon(a, diag, upp, {64, 32}).radius.x, 40.0f);
     // The normal source is the shaders' SSAO_NORMALS_*; noise and pyramid are the technique's (none, off).
-    EXPECT_EQ(int(packAoCommon(a, diag, upp, {64, 32}).shape.z), SSAO_NORMALS_GBUFFER);
+    EXPECT_EQ(int(packAoCommon(a, diag, upp, {64, 32}).estimator.z), SSAO_NORMALS_GBUFFER);
     a.normals = NormalSource::Depth;
     const auto d = packAoCommon(a, diag, upp, {64, 32});
-    EXPECT_EQ(int(d.shape.z), SSAO_NORMALS_DEPTH);
-    EXPECT_EQ(int(d.shape.y), SSAO_NOISE_NONE);
-    EXPECT_EQ(d.shape.w, 0.0f);
+    EXPECT_EQ(int(d.estimator.z), SSAO_NORMALS_DEPTH);
+    EXPECT_EQ(int(d.estimator.y), SSAO_NOISE_NONE);
+    EXPECT_EQ(d.estimator.w, 0.0f);
+    // The G-buffer's normal encoding is shared too (flags.z), so no technique defines its own flag.
+    EXPECT_EQ(d.flags.z, 0.0f);
+    EXPECT_EQ(packAoCommon(a, diag, upp, {64, 32}, true, /*normalUnorm=*/true).flags.z, 1.0f);
 }
 
 TEST(AoCommon, UnitsPerPixelMatchTheFieldOfView) {

@@ -2,7 +2,10 @@
 // low-frequency energy (what makes it blue), and the kinds are packed where the shaders read them.
 #include "techniques/noise/blue_noise.h"
 #include "techniques/noise/noise.h"
-#include "techniques/vbao/pack.h"
+#include "passes/position_pyramid_pass.h"
+#include "renderer.h"
+#include "settings/params.h"
+#include "techniques/ao_pass.h"
 
 #include <gtest/gtest.h>
 
@@ -62,31 +65,42 @@ TEST(BlueNoise, TheShadersTextureHasTwoChannelsInTheOpenUnitInterval) {
     EXPECT_NE(t[0], t[1]); // independent patterns
 }
 
-TEST(NoisePack, KindsPyramidAndFlagsGoWhereTheShadersReadThem) {
-    VbaoSettings s;
-    s.slices = 99, s.steps = -3; // clamped to the shader's limits
-    s.thickness = -1.0f;         // no negative depth
-    s.noise = AoNoise::Blue;
-    s.pyramid = true;
-    auto c = packVbaoConstants(s, gpu::AoCommon{}, true);
-    EXPECT_EQ(c.modes.x, VBAO_MAX_SLICES);
-    EXPECT_EQ(c.modes.y, 1);
-    EXPECT_EQ(c.params.x, 0.0f);
-    EXPECT_EQ(int(c.aoCommon.shape.y), SSAO_NOISE_BLUE);
-    EXPECT_GT(c.aoCommon.shape.w, 0.0f); // the pyramid's MIP offset
-    EXPECT_EQ(c.modes.z, VBAO_FLAG_NOISE | VBAO_FLAG_NORMAL_UNORM);
-    s.noise = AoNoise::None;
-    s.pyramid = false;
-    c = packVbaoConstants(s, gpu::AoCommon{}, false);
-    EXPECT_EQ(int(c.aoCommon.shape.y), SSAO_NOISE_NONE);
-    EXPECT_EQ(c.aoCommon.shape.w, 0.0f);
-    EXPECT_EQ(c.modes.z, 0);
+TEST(NoisePack, KindsPyramidAndBindingsGoWhereTheShadersAndTheCpuReadThem) {
+    // The shared block gets the technique's noise kind and pyramid offset (one place for all
+    // techniques); the CPU's choices (the blue tile, the pyramid) come from the settings, not from
+    // the packed words.
+    Settings s = defaultSettings();
+    s.ao.technique = "vbao";
+    s.vbao.noise = AoNoise::Blue;
+    s.vbao.pyramid = true;
+    s.gbuffer.normalFormat = TargetFormat::RGBA8;
+    Camera cam;
+    FrameInfo f;
+    f.camera = &cam;
+    f.width = 64, f.height = 32;
+    f.constants = packFrameConstants(cam, 64, 32, 1.0f);
+    gpu::AoCommon c = aoCommonFor(s, f, s.vbao.noise, kXeGtaoMipOffset);
+    EXPECT_EQ(int(c.estimator.y), SSAO_NOISE_BLUE);
+    EXPECT_FLOAT_EQ(c.estimator.w, kXeGtaoMipOffset); // taps read MIP log2(d) - 3.3
+    EXPECT_EQ(c.flags.z, 1.0f);                       // normals stored as (n+1)/2
+    EXPECT_EQ(c.target.x, 64.0f);
+    AoBindings b = aoBindings(s, s.vbao.noise, true);
+    EXPECT_TRUE(b.blueNoise && b.pyramid && b.gbufferNormals);
+    s.vbao.noise = AoNoise::None;
+    s.ao.normals = NormalSource::Depth;
+    s.ao.resolution = AoResolution::Half;
+    c = aoCommonFor(s, f, s.vbao.noise, 0.0f);
+    EXPECT_EQ(int(c.estimator.y), SSAO_NOISE_NONE);
+    EXPECT_EQ(c.estimator.w, 0.0f);
+    EXPECT_EQ(c.target.x, 32.0f); // the AO target at half resolution
+    b = aoBindings(s, s.vbao.noise, false);
+    EXPECT_FALSE(b.blueNoise || b.pyramid || b.gbufferNormals);
     // Every row choice maps to its SSAO_NOISE_* value.
     const auto choices = aoNoiseChoices();
     ASSERT_EQ(choices.size(), 5u);
     for (const auto& [name, kind] : choices) {
         gpu::AoCommon k{};
         packNoise(k, kind);
-        EXPECT_EQ(int(k.shape.y), int(kind)) << name;
+        EXPECT_EQ(int(k.estimator.y), int(kind)) << name;
     }
 }

@@ -9,6 +9,6 @@ namespace ssao {
 
 // The slices and steps per side a setting means: XeGTAO's quality presets, or the custom rows.
 void gtaoSlicesSteps(const GtaoSettings& s, int& slices, int& steps);
-gpu::GtaoConstants packGtaoConstants(const GtaoSettings& s, const gpu::AoCommon& common, bool normalUnorm);
+gpu::GtaoConstants packGtaoConstants(const GtaoSettings& s, const gpu::AoCommon& common);
 
 } // namespace ssao

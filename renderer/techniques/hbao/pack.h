@@ -7,6 +7,6 @@
 
 namespace ssao {
 
-gpu::HbaoConstants packHbaoConstants(const HbaoSettings& s, const gpu::AoCommon& common, bool normalUnorm);
+gpu::HbaoConstants packHbaoConstants(const HbaoSettings& s, const gpu::AoCommon& common);
 
 } // namespace ssao

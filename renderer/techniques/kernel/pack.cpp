@@ -2,15 +2,13 @@
 
 #include "techniques/kernel/sampling.h"
 
-#include <algorithm>
 
 namespace ssao {
 
-gpu::KernelConstants packKernelConstants(const KernelSettings& s, const gpu::AoCommon& common,
-                                         bool normalUnorm) {
+gpu::KernelConstants packKernelConstants(const KernelSettings& s, const gpu::AoCommon& common) {
     gpu::KernelConstants c{};
     c.aoCommon = common;
-    const int n = std::clamp(s.samples, 1, KERNEL_MAX_SAMPLES);
+    const int n = s.samples; // 1..KERNEL_MAX_SAMPLES: the parameter table's range
     // The |dz| floor keeps radius/|dz| finite when the depths are equal (0/0 → NaN as radius → 0).
     c.params = {s.bias, 1e-4f, 0.0f, 0.0f};
     c.noiseScale = {common.target.x / 4.0f, common.target.y / 4.0f, 0.0f, 0.0f};
@@ -19,7 +17,6 @@ gpu::KernelConstants packKernelConstants(const KernelSettings& s, const gpu::AoC
     if (s.noise == Noise::Tex4x4) flags |= KERNEL_FLAG_NOISE;
     if (s.positionSource == PositionSource::Depth) flags |= KERNEL_FLAG_POS_FROM_DEPTH;
     if (s.offscreen == Offscreen::Clamp) flags |= KERNEL_FLAG_OFFSCREEN_CLAMP;
-    if (normalUnorm) flags |= KERNEL_FLAG_NORMAL_UNORM;
     if (s.ownTexel == OwnTexel::Open) flags |= KERNEL_FLAG_OWN_TEXEL_OPEN;
     const int range = s.rangeCheck == RangeCheck::Smoothstep ? KERNEL_RANGE_SMOOTHSTEP
                       : s.rangeCheck == RangeCheck::Hard     ? KERNEL_RANGE_HARD

@@ -8,9 +8,7 @@
 
 namespace ssao {
 
-// `common` comes from packAoCommon (radius, power, target size); `normalUnorm` when the
-// normal target stores (n+1)/2.
-gpu::KernelConstants packKernelConstants(const KernelSettings& s, const gpu::AoCommon& common,
-                                         bool normalUnorm);
+// `common` comes from packAoCommon (radius, power, target size, the normal encoding).
+gpu::KernelConstants packKernelConstants(const KernelSettings& s, const gpu::AoCommon& common);
 
 } // namespace ssao

@@ -21,7 +21,7 @@ void packNoise(gpu::AoCommon& c, AoNoise n) {
                       int(AoNoise::Blue) == SSAO_NOISE_BLUE && int(AoNoise::Tile4) == SSAO_NOISE_TILE4 &&
                       int(AoNoise::None) == SSAO_NOISE_NONE,
                   "AoNoise follows SSAO_NOISE_*");
-    c.shape.y = float(int(n));
+    c.estimator.y = float(int(n));
 }
 
 } // namespace ssao

@@ -1,5 +1,5 @@
 // The per-pixel noise the horizon techniques (SAO, HBAO, GTAO, visibility bitmask) rotate their
-// directions and offset their steps by: one choice for all of them, packed into AoCommon.shape.y
+// directions and offset their steps by: one choice for all of them, packed into AoCommon.estimator.y
 // and evaluated by shaders/include/noise.glsl. Every kind also moves with the temporal frame index
 // so accumulation averages different patterns.
 #pragma once
@@ -21,7 +21,7 @@ extern const char* const kAoNoiseHelp;
 // Help of the techniques' "pyramid" rows (techniques/position_pyramid.h).
 extern const char* const kPyramidHelp;
 
-// Writes the noise kind into the shared constants (shape.y).
+// Writes the noise kind into the shared constants (estimator.y).
 void packNoise(gpu::AoCommon& c, AoNoise n);
 
 } // namespace ssao

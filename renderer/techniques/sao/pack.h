@@ -7,6 +7,6 @@
 
 namespace ssao {
 
-gpu::SaoConstants packSaoConstants(const SaoSettings& s, const gpu::AoCommon& common, bool normalUnorm);
+gpu::SaoConstants packSaoConstants(const SaoSettings& s, const gpu::AoCommon& common);
 
 } // namespace ssao

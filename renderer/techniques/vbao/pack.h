@@ -7,6 +7,6 @@
 
 namespace ssao {
 
-gpu::VbaoConstants packVbaoConstants(const VbaoSettings& s, const gpu::AoCommon& common, bool normalUnorm);
+gpu::VbaoConstants packVbaoConstants(const VbaoSettings& s, const gpu::AoCommon& common);
 
 } // namespace ssao

@@ -22,28 +22,27 @@ in vec2 vUv;
 layout(location = 0) out float oAO;
 
 
-bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
 
 void main() {
     vec2 uv0 = aoPixelUv(vUv); // the G-buffer texel this AO pixel stands for
     vec4 P4 = texture(gPosition, uv0);
     AO_SKY_EARLY_OUT(P4, uv0) // sky: unoccluded, no work spent (ao_common.glsl)
     vec3 P = P4.xyz;
-    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(GTAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
+    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P); // G-buffer or from depth
     vec3 V = frameViewVector(P);
     float depth = -P.z;
 
     // Search radius (world) and its size in G-buffer pixels: a unit at view depth d spans
     // proj[1][1] * H / (2 d) pixels.
-    float R = aoRadius(ssao.aoCommon, depth) * ssao.params.x;
+    float R = aoRadius(ssao.aoCommon, depth) * ssao.search.x;
     float radiusPx = R * framePixelsPerUnit(depth);
-    float falloffMul = ssao.params.y / R, falloffAdd = ssao.params.z;
+    float falloffMul = ssao.search.y / R, falloffAdd = ssao.search.z;
     // The first step lands at least ~1.3 px away: sampling the pixel itself gives a zero delta
     // (NaN direction) and self-occlusion lines (XeGTAO minS; HBAO "first step >= 1 px").
-    float minS = ssao.params2.y / max(radiusPx, 1e-6);
+    float minS = ssao.thin.y / max(radiusPx, 1e-6);
     int slices = ssao.modes.x, steps = aoAdaptiveSteps(ssao.aoCommon, ssao.modes.y, radiusPx); // ao.adaptive
     vec2 noise = vec2(0.5);
-    if (hasFlag(GTAO_FLAG_NOISE)) noise = aoNoise(ssao.aoCommon, gl_FragCoord.xy);
+    if (aoNoiseOn(ssao.aoCommon)) noise = aoNoise(ssao.aoCommon, gl_FragCoord.xy);
 
     float visibility = 0.0, openSum = 0.0;
     for (int slice = 0; slice < slices; ++slice) {
@@ -54,7 +53,7 @@ void main() {
         float lowCos0 = cos(n + HALF_PI), lowCos1 = cos(n - HALF_PI);
         float hCos0 = lowCos0, hCos1 = lowCos1;
         for (int step = 0; step < steps; ++step) {
-            float s = pow((float(step) + noise.y) / float(steps), ssao.params.w) + minS;
+            float s = pow((float(step) + noise.y) / float(steps), ssao.search.w) + minS;
             // Snap to texel centres: positions are not interpolated (XeGTAO rounds likewise).
             vec2 offsetUv = round(s * radiusPx * omega) * frame.viewport.zw;
             for (int side = 0; side < 2; ++side) {
@@ -77,7 +76,7 @@ void main() {
                 vec3 inSlice = aoSliceDelta(sl, delta); // the angle in the slice plane (slice.glsl)
                 float shc = dot(inSlice, V) / max(length(inSlice), 1e-30);
                 // Thin-occluder heuristic: depth differences count (1 + t) times in the falloff.
-                float falloffBase = length(vec3(delta.xy, delta.z * (1.0 + ssao.params2.x)));
+                float falloffBase = length(vec3(delta.xy, delta.z * (1.0 + ssao.thin.x)));
                 float w = clamp(falloffBase * falloffMul + falloffAdd, 0.0, 1.0);
                 float low = side == 0 ? lowCos0 : lowCos1;
                 shc = mix(low, shc, w); // beyond the radius an occluder fades to the tangent plane

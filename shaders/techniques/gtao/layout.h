@@ -12,15 +12,13 @@ namespace ssao::gpu {
 
 #define GTAO_MAX_SLICES 16
 #define GTAO_MAX_STEPS 32
-#define GTAO_FLAG_NOISE 1         // per-pixel interleaved gradient noise on slice angle and steps
-#define GTAO_FLAG_NORMAL_UNORM 2  // normals stored as (n+1)/2
 
 SSAO_STRUCT GtaoConstants_ {
     AoCommon_ aoCommon; // radius, power, target size (first in every technique's block)
-    vec4 params;  // x: radius multiplier, y/z: falloff mul/add in units of the search radius,
-                  // w: step distribution power
-    vec4 params2; // x: thin-occluder compensation, y: smallest first step (pixels), zw: unused
-    ivec4 modes;  // slices, steps per side, flags, unused
+    vec4 search; // x: radius multiplier, y/z: falloff mul/add in units of the search radius,
+                 // w: step distribution power
+    vec4 thin;   // x: thin-occluder compensation, y: smallest first step (pixels), zw: unused
+    ivec4 modes;  // slices, steps per side, unused, unused
 };
 
 #ifdef __cplusplus

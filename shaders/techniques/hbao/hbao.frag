@@ -20,14 +20,13 @@ layout(location = 0) out float oAO;
 
 const float TWO_PI = 6.28318530717959;
 
-bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
 
 void main() {
     vec2 uv0 = aoPixelUv(vUv); // the G-buffer texel this AO pixel stands for
     vec4 P4 = texture(gPosition, uv0);
     AO_SKY_EARLY_OUT(P4, uv0) // sky: unoccluded, no work spent (ao_common.glsl)
     vec3 P = P4.xyz;
-    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(HBAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
+    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P); // G-buffer or from depth
     float depth = -P.z;
     float R = aoRadius(ssao.aoCommon, depth);
     // The radius projected to G-buffer pixels, clamped (a close-up would march the whole screen).
@@ -37,7 +36,7 @@ void main() {
     // occlusion lines), every step a new texel.
     float stepPx = max(radiusPx / float(steps + 1), 1.0);
     vec2 noise = vec2(0.0, 0.5);
-    if (hasFlag(HBAO_FLAG_NOISE)) noise = aoNoise(ssao.aoCommon, gl_FragCoord.xy);
+    if (aoNoiseOn(ssao.aoCommon)) noise = aoNoise(ssao.aoCommon, gl_FragCoord.xy);
 
     float occlusion = 0.0;
     for (int d = 0; d < dirs; ++d) {

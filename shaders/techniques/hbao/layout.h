@@ -12,13 +12,11 @@ namespace ssao::gpu {
 
 #define HBAO_MAX_DIRECTIONS 32
 #define HBAO_MAX_STEPS 32
-#define HBAO_FLAG_NOISE 1        // per-pixel rotation and step jitter (interleaved gradient noise)
-#define HBAO_FLAG_NORMAL_UNORM 2 // normals stored as (n+1)/2
 
 SSAO_STRUCT HbaoConstants_ {
     AoCommon_ aoCommon; // radius, power, target size (first in every technique's block)
     vec4 params;        // x: tangent bias (sin of the angle), y: max radius in pixels, zw: unused
-    ivec4 modes;        // directions, steps, flags, unused
+    ivec4 modes;        // directions, steps, unused, unused
 };
 
 #ifdef __cplusplus

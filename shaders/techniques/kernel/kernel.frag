@@ -86,7 +86,7 @@ float accumulate(vec3 P, mat3 TBN, float radius, int first, int count, int set) 
 void main() {
     vec4 P = viewPosition(vUv);
     AO_SKY_EARLY_OUT(P, vUv) // sky: unoccluded, no work spent (ao_common.glsl)
-    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, vUv, P.xyz, hasFlag(KERNEL_FLAG_NORMAL_UNORM)); // G-buffer or from depth
+    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, vUv, P.xyz); // G-buffer or from depth
 
     // Temporal accumulation shifts the 4x4 tile by a texel pattern per frame (16 arrangements), so
     // successive frames rotate each pixel's kernel differently (frame index 0 otherwise).

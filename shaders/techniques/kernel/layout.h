@@ -22,7 +22,6 @@ namespace ssao::gpu {
 #define KERNEL_FLAG_NOISE 2
 #define KERNEL_FLAG_POS_FROM_DEPTH 4
 #define KERNEL_FLAG_OFFSCREEN_CLAMP 8 // seeds: clamp-to-edge; else off-screen samples count as open
-#define KERNEL_FLAG_NORMAL_UNORM 16   // normals stored as (n+1)/2
 #define KERNEL_FLAG_OWN_TEXEL_OPEN 32 // a sample reading its own pixel's texel counts as open
 
 SSAO_STRUCT KernelConstants_ {

@@ -11,13 +11,11 @@ namespace ssao::gpu {
 #endif
 
 #define SAO_MAX_SAMPLES 64
-#define SAO_FLAG_NOISE 1        // per-pixel spiral rotation (interleaved gradient noise)
-#define SAO_FLAG_NORMAL_UNORM 2 // normals stored as (n+1)/2
 
 SSAO_STRUCT SaoConstants_ {
     AoCommon_ aoCommon; // radius, power, target size (first in every technique's block)
     vec4 params;        // x: spiral turns, y: 2 intensity / N, z: bias (x R), w: epsilon (x R²)
-    ivec4 modes;        // samples, flags, unused, unused
+    ivec4 modes;        // samples, unused, unused, unused
 };
 
 #ifdef __cplusplus

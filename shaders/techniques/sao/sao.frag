@@ -21,18 +21,17 @@ layout(location = 0) out float oAO;
 
 const float TWO_PI = 6.28318530717959;
 
-bool hasFlag(int f) { return (ssao.modes.y & f) != 0; }
 
 void main() {
     vec2 uv0 = aoPixelUv(vUv); // the G-buffer texel this AO pixel stands for
     vec4 P4 = texture(gPosition, uv0);
     AO_SKY_EARLY_OUT(P4, uv0) // sky: unoccluded, no work spent (ao_common.glsl)
     vec3 P = P4.xyz;
-    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(SAO_FLAG_NORMAL_UNORM)); // G-buffer or from depth
+    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P); // G-buffer or from depth
     float depth = -P.z;
     float R = aoRadius(ssao.aoCommon, depth);
     float radiusPx = R * framePixelsPerUnit(depth);
-    float spin = hasFlag(SAO_FLAG_NOISE) ? aoNoise(ssao.aoCommon, gl_FragCoord.xy).x * TWO_PI : 0.0;
+    float spin = aoNoiseOn(ssao.aoCommon) ? aoNoise(ssao.aoCommon, gl_FragCoord.xy).x * TWO_PI : 0.0;
     int n = aoAdaptiveSamples(ssao.aoCommon, ssao.modes.x, radiusPx); // ao.adaptive: fewer where the disc is small
     float occlusion = 0.0;
     for (int i = 0; i < n; ++i) {

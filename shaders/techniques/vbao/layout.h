@@ -12,13 +12,11 @@ namespace ssao::gpu {
 #define VBAO_MAX_SLICES 16
 #define VBAO_MAX_STEPS 32
 #define VBAO_SECTORS 32          // bits of the per-slice mask (one uint)
-#define VBAO_FLAG_NOISE 1        // per-pixel noise on slice angle and steps (AoCommon.shape.y: kind)
-#define VBAO_FLAG_NORMAL_UNORM 2 // normals stored as (n+1)/2
 
 SSAO_STRUCT VbaoConstants_ {
     AoCommon_ aoCommon; // radius, power, noise, normals, pyramid (first in every technique's block)
     vec4 params;  // x: thickness (x radius), y: step distribution power, z: smallest first step (px), w: unused
-    ivec4 modes;  // slices, steps per side, flags, unused
+    ivec4 modes;  // slices, steps per side, unused, unused
 };
 
 #ifdef __cplusplus

@@ -24,7 +24,6 @@ in vec2 vUv;
 layout(location = 0) out float oAO;
 
 
-bool hasFlag(int f) { return (ssao.modes.z & f) != 0; }
 
 // ∫₀ʰ cos(θ - n)|sin θ| dθ with the sign of h: the cosine-weighted measure between V and angle h
 // in a slice (GTAO's inner integral; weight of [a, b] = G(b) - G(a)).
@@ -44,7 +43,7 @@ void main() {
     vec4 P4 = texture(gPosition, uv0);
     AO_SKY_EARLY_OUT(P4, uv0) // sky: unoccluded, no work spent (ao_common.glsl)
     vec3 P = P4.xyz;
-    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P, hasFlag(VBAO_FLAG_NORMAL_UNORM));
+    vec3 N = aoNormal(ssao.aoCommon, gPosition, gNormal, uv0, P);
     vec3 V = frameViewVector(P);
     float depth = -P.z;
     // Binary visibility within R, as the reference defines it: no falloff, no radius multiplier.
@@ -53,7 +52,7 @@ void main() {
     float thickness = ssao.params.x * R;
     float minS = ssao.params.z / max(radiusPx, 1e-6); // first step >= ~1.3 px: no self-occlusion
     int slices = ssao.modes.x, steps = aoAdaptiveSteps(ssao.aoCommon, ssao.modes.y, radiusPx); // ao.adaptive
-    vec2 noise = hasFlag(VBAO_FLAG_NOISE) ? aoNoise(ssao.aoCommon, gl_FragCoord.xy) : vec2(0.5);
+    vec2 noise = aoNoiseOn(ssao.aoCommon) ? aoNoise(ssao.aoCommon, gl_FragCoord.xy) : vec2(0.5);
 
     float visibility = 0.0, openSum = 0.0;
     for (int slice = 0; slice < slices; ++slice) {

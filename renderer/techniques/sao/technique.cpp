@@ -1,9 +1,10 @@
 // SAO's rows of the parameter table (group "sao"; they apply while ao.technique = sao).
 // Defaults: SaoSettings' initialisers (settings.h).
-#include "settings/param_rows.h"
+#include "passes/position_pyramid_pass.h"
 #include "techniques/sao/pack.h"
-#include "techniques/sao/sao_pass.h"
 #include "techniques/sao/technique.h"
+#include "techniques/one_block.h"
+#include "techniques/shared_rows.h"
 
 namespace ssao {
 
@@ -20,17 +21,29 @@ std::vector<Param> saoParams() {
         FLOAT_ROW("sao.bias", "Bias", sao.bias, 0.0, 0.5, "x radius",
                   "Alchemy AO's beta: an occluder must rise this far (a fraction of the radius) above the "
                   "tangent plane; removes self-occlusion of tessellated surfaces."),
-        ENUM_ROW("sao.noise", "Noise", sao.noise, AoNoise, kAoNoiseHelp, (aoNoiseChoices())),
-        BOOL_ROW("sao.pyramid", "Position MIPs", sao.pyramid, kPyramidHelp),
+        NOISE_ROW("sao.noise", sao.noise),
+        PYRAMID_ROW("sao.pyramid", sao.pyramid),
     };
 }
+
+// What the generic one-block pass needs of SAO (techniques/ao_pass.h).
+struct SaoModule {
+    using Constants = gpu::SaoConstants;
+    static constexpr const char* shader = "techniques/sao/sao.frag";
+    static constexpr float pyramidOffset = kSaoMipOffset;
+    static AoNoise noise(const Settings& s) { return s.sao.noise; }
+    static bool pyramid(const Settings& s) { return s.sao.pyramid; }
+    static Constants pack(const Settings& s, const gpu::AoCommon& c) { return packSaoConstants(s.sao, c); }
+};
 } // namespace
 
 TechniqueInfo saoTechnique() {
-    return {"sao", "SAO / Alchemy AO (McGuire 2011/2012)",
+    TechniqueInfo t = oneBlockTechnique<SaoModule>("sao", "SAO / Alchemy AO (McGuire 2011/2012)",
             "Spiral taps, falloff-weighted obscurance max(0, v.n - bias)/(v.v + eps): McGuire et al. 2011 "
             "(Alchemy AO), McGuire, Mara, Luebke 2012 (SAO)",
-            saoParams, onePass<SaoPass>()};
+                    saoParams);
+    t.adaptive = [](const Settings& s) { return AdaptiveCount{s.sao.samples, false}; }; // taps on a disc
+    return t;
 }
 
 } // namespace ssao

@@ -1,9 +1,11 @@
-// GTAO's rows of the parameter table (group "gtao"; they apply while ao.technique = gtao).
+// GTAO as a module: its rows of the parameter table (group "gtao"; they apply while
+// ao.technique = gtao), what the one-block pass needs and its capabilities.
 // Defaults: GtaoSettings' initialisers (settings.h).
-#include "settings/param_rows.h"
-#include "techniques/gtao/gtao_pass.h"
+#include "passes/position_pyramid_pass.h"
 #include "techniques/gtao/pack.h"
 #include "techniques/gtao/technique.h"
+#include "techniques/one_block.h"
+#include "techniques/shared_rows.h"
 
 namespace ssao {
 
@@ -36,17 +38,33 @@ std::vector<Param> gtaoParams() {
         FLOAT_ROW("gtao.thin_compensation", "Thin occluders", gtao.thinCompensation, 0.0, 0.7, "",
                   "XeGTAO's heuristic: depth differences count (1 + t) times in the falloff, so thin objects "
                   "in front occlude less of what is behind them (0 = off)."),
-        ENUM_ROW("gtao.noise", "Noise", gtao.noise, AoNoise, kAoNoiseHelp, (aoNoiseChoices())),
-        BOOL_ROW("gtao.pyramid", "Position MIPs", gtao.pyramid, kPyramidHelp),
+        NOISE_ROW("gtao.noise", gtao.noise),
+        PYRAMID_ROW("gtao.pyramid", gtao.pyramid),
     };
 }
+
+// What the generic one-block pass needs of GTAO (techniques/ao_pass.h).
+struct GtaoModule {
+    using Constants = gpu::GtaoConstants;
+    static constexpr const char* shader = "techniques/gtao/gtao.frag";
+    static constexpr float pyramidOffset = kXeGtaoMipOffset;
+    static AoNoise noise(const Settings& s) { return s.gtao.noise; }
+    static bool pyramid(const Settings& s) { return s.gtao.pyramid; }
+    static Constants pack(const Settings& s, const gpu::AoCommon& c) { return packGtaoConstants(s.gtao, c); }
+};
 } // namespace
 
 TechniqueInfo gtaoTechnique() {
-    return {"gtao", "GTAO (Jimenez 2016 / XeGTAO)",
+    TechniqueInfo t = oneBlockTechnique<GtaoModule>("gtao", "GTAO (Jimenez 2016 / XeGTAO)",
             "Horizon-based, cosine-weighted visibility integrated analytically per slice: Jimenez et al. "
             "2016, Intel XeGTAO",
-            gtaoParams, onePass<GtaoPass>()};
+                    gtaoParams);
+    t.adaptive = [](const Settings& s) { // its quality presets set the steps
+        int slices = 0, steps = 0;
+        gtaoSlicesSteps(s.gtao, slices, steps);
+        return AdaptiveCount{steps, true};
+    };
+    return t;
 }
 
 } // namespace ssao

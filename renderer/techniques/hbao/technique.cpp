@@ -1,9 +1,10 @@
 // HBAO's rows of the parameter table (group "hbao"; they apply while ao.technique = hbao).
 // Defaults: HbaoSettings' initialisers (settings.h).
-#include "settings/param_rows.h"
-#include "techniques/hbao/hbao_pass.h"
+#include "passes/position_pyramid_pass.h"
 #include "techniques/hbao/pack.h"
 #include "techniques/hbao/technique.h"
+#include "techniques/one_block.h"
+#include "techniques/shared_rows.h"
 
 namespace ssao {
 
@@ -19,17 +20,29 @@ std::vector<Param> hbaoParams() {
                   "self-occlusion of tessellated or noisy surfaces (HBAO's angle bias)."),
         FLOAT_ROW("hbao.max_radius_px", "Max radius", hbao.maxRadiusPx, 2.0, 1024.0, "pixels",
                   "The radius projected to the screen is clamped to this: close-ups stay affordable."),
-        ENUM_ROW("hbao.noise", "Noise", hbao.noise, AoNoise, kAoNoiseHelp, (aoNoiseChoices())),
-        BOOL_ROW("hbao.pyramid", "Position MIPs", hbao.pyramid, kPyramidHelp),
+        NOISE_ROW("hbao.noise", hbao.noise),
+        PYRAMID_ROW("hbao.pyramid", hbao.pyramid),
     };
 }
+
+// What the generic one-block pass needs of HBAO (techniques/ao_pass.h).
+struct HbaoModule {
+    using Constants = gpu::HbaoConstants;
+    static constexpr const char* shader = "techniques/hbao/hbao.frag";
+    static constexpr float pyramidOffset = kSaoMipOffset;
+    static AoNoise noise(const Settings& s) { return s.hbao.noise; }
+    static bool pyramid(const Settings& s) { return s.hbao.pyramid; }
+    static Constants pack(const Settings& s, const gpu::AoCommon& c) { return packHbaoConstants(s.hbao, c); }
+};
 } // namespace
 
 TechniqueInfo hbaoTechnique() {
-    return {"hbao", "HBAO (Bavoil 2008)",
+    TechniqueInfo t = oneBlockTechnique<HbaoModule>("hbao", "HBAO (Bavoil 2008)",
             "Horizon-based: the highest horizon above the tangent plane along D directions, linear falloff: "
             "Bavoil, Sainz, Dimitrov 2008 (seed 002), NVIDIA HBAO+",
-            hbaoParams, onePass<HbaoPass>()};
+                    hbaoParams);
+    t.adaptive = [](const Settings& s) { return AdaptiveCount{s.hbao.steps, true}; };
+    return t;
 }
 
 } // namespace ssao

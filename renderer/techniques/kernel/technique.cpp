@@ -1,4 +1,4 @@
-// Kernel SSAO's rows of the parameter table (group "kernel"; they apply while
+// Kernel SSAO as a module: its rows of the parameter table (group "kernel"; they apply while
 // ao.technique = kernel). Defaults: KernelSettings' initialisers (settings.h).
 #include "settings/param_rows.h"
 #include "techniques/kernel/kernel_pass.h"
@@ -67,11 +67,13 @@ std::string kernelUnphysical(const Settings& s) {
 } // namespace
 
 TechniqueInfo kernelTechnique() {
-    TechniqueInfo t{"kernel", "Kernel SSAO (seeds)",
-                    "N samples in a hemisphere (or sphere) kernel tested against depth: Crytek 2007, Chapman "
-                    "2013, LearnOpenGL",
-                    kernelParams, onePass<KernelPass>()};
-    t.unphysical = kernelUnphysical;
+    TechniqueInfo t;
+    t.id = "kernel", t.label = "Kernel SSAO (seeds)";
+    t.summary = "N samples in a hemisphere (or sphere) kernel tested against depth: Crytek 2007, Chapman 2013, "
+                "LearnOpenGL";
+    t.params = kernelParams;
+    t.makePasses = onePass<KernelPass>();
+    t.unphysical = kernelUnphysical; // no adaptive count (a fixed kernel), no pyramid
     return t;
 }
 

@@ -1,9 +1,10 @@
 // Visibility-bitmask rows of the parameter table (group "vbao"; they apply while
 // ao.technique = vbao). Defaults: VbaoSettings' initialisers (settings.h).
-#include "settings/param_rows.h"
+#include "passes/position_pyramid_pass.h"
 #include "techniques/vbao/pack.h"
 #include "techniques/vbao/technique.h"
-#include "techniques/vbao/vbao_pass.h"
+#include "techniques/one_block.h"
+#include "techniques/shared_rows.h"
 
 namespace ssao {
 
@@ -20,17 +21,29 @@ std::vector<Param> vbaoParams() {
                   "behaves like a horizon (GTAO)."),
         FLOAT_ROW("vbao.distribution_power", "Step distribution", vbao.distributionPower, 0.5, 4.0, "power",
                   "Step k of n lies at (k/n)^p of the radius: >1 samples more densely near the pixel."),
-        ENUM_ROW("vbao.noise", "Noise", vbao.noise, AoNoise, kAoNoiseHelp, (aoNoiseChoices())),
-        BOOL_ROW("vbao.pyramid", "Position MIPs", vbao.pyramid, kPyramidHelp),
+        NOISE_ROW("vbao.noise", vbao.noise),
+        PYRAMID_ROW("vbao.pyramid", vbao.pyramid),
     };
 }
+
+// What the generic one-block pass needs of the visibility bitmask (techniques/ao_pass.h).
+struct VbaoModule {
+    using Constants = gpu::VbaoConstants;
+    static constexpr const char* shader = "techniques/vbao/vbao.frag";
+    static constexpr float pyramidOffset = kXeGtaoMipOffset;
+    static AoNoise noise(const Settings& s) { return s.vbao.noise; }
+    static bool pyramid(const Settings& s) { return s.vbao.pyramid; }
+    static Constants pack(const Settings& s, const gpu::AoCommon& c) { return packVbaoConstants(s.vbao, c); }
+};
 } // namespace
 
 TechniqueInfo vbaoTechnique() {
-    return {"vbao", "Visibility bitmask (Therrien 2023)",
+    TechniqueInfo t = oneBlockTechnique<VbaoModule>("vbao", "Visibility bitmask (Therrien 2023)",
             "GTAO's slices with a 32-sector occlusion bitmask per slice and an assumed thickness: Therrien, "
             "Levesque, Gilet 2023",
-            vbaoParams, onePass<VbaoPass>()};
+                    vbaoParams);
+    t.adaptive = [](const Settings& s) { return AdaptiveCount{s.vbao.steps, true}; };
+    return t;
 }
 
 } // namespace ssao

@@ -1,0 +1,20 @@
+// A technique that is one constant block and one shader (techniques/ao_pass.h OneBlockPass): its
+// registry entry from its Module (ao_pass.h lists what a Module gives).
+#pragma once
+#include "techniques/ao_pass.h"
+#include "techniques/technique.h"
+
+namespace ssao {
+
+template <class Module>
+TechniqueInfo oneBlockTechnique(std::string id, std::string label, std::string summary,
+                                std::function<std::vector<Param>()> params) {
+    TechniqueInfo t;
+    t.id = std::move(id), t.label = std::move(label), t.summary = std::move(summary);
+    t.params = std::move(params);
+    t.makePasses = onePass<OneBlockPass<Module>>();
+    t.pyramid = [](const Settings& s) { return Module::pyramid(s); };
+    return t;
+}
+
+} // namespace ssao
