@@ -10,6 +10,7 @@
 #include "render_command.h"
 #include "scene/scene.h"
 #include "settings/params.h"
+#include "techniques/technique.h"
 #include "util/error.h"
 #include "util/paths.h"
 
@@ -186,7 +187,8 @@ void skyRows(Context& c, const Camera& cam) {
     Renderer& r = c.r;
     r.setWanted(std::set<std::string>{"ao.denoised"});
     r.setCamera(cam);
-    for (const std::string tech : {"kernel", "sao", "hbao", "gtao", "vbao"}) {
+    for (const TechniqueInfo& t : techniques()) {
+        const std::string& tech = t.id;
         Settings on = defaultSettings();
         on.ao.technique = tech;
         Settings off = on;
@@ -217,8 +219,10 @@ void adaptiveRows(Context& c, ReferenceProvider& provider, const Camera& cam, co
     const float radius = r.radiusAtCentre().world;
     const ReferenceImage ref =
         provider.get(r.camera(), r.width(), r.height(), {radius, c.o.referenceRays, ReferenceVariant::Visibility});
-    for (const std::string tech : {"sao", "hbao", "gtao", "vbao"})
+    for (const TechniqueInfo& t : techniques())
       for (const float px : {2.0f, 4.0f}) {
+        if (!t.adaptive) break; // takes no adaptive count
+        const std::string& tech = t.id;
         Settings full = probe;
         full.ao.technique = tech;
         Settings adaptive = full;

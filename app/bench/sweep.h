@@ -19,7 +19,7 @@ struct BenchConfig {
     std::string label;   // "samples=16 denoise=none"; the baseline is "learnopengl (baseline)"
     std::string group;   // the sweep group it came from
     Settings settings;   // before the bench's radius is applied
-    nlohmann::json keys; // {"kernel.samples": 16, ...}: what differs from the base
+    nlohmann::json keys; // {"ao.power": 2, ...}: what differs from the base
     bool baseline = false;
 };
 

@@ -47,7 +47,7 @@ void addTuneOptions(CLI::App& cmd, TuneOptions& o) {
     cmd.add_option("--radius-scene", o.radiusScene, "the reference's R as a fraction of the scene diagonal")
         ->capture_default_str()
         ->check(CLI::Range(0.0001, 0.5));
-    cmd.add_option("--set", o.sets, "KEY=VALUE applied to the start, e.g. vbao.slices=2 (repeatable)");
+    cmd.add_option("--set", o.sets, "KEY=VALUE applied to the start, e.g. TECHNIQUE.steps=4 (repeatable)");
     cmd.add_option("--knob", o.knobs,
                    "fit only this knob (repeatable: a float parameter key or radius_multiplier; default: "
                    "radius_multiplier, ao.power and the technique's float rows)");

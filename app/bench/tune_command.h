@@ -5,6 +5,8 @@
 // Parameters searched: a radius multiplier (the technique's radius = m x the reference's R),
 // ao.power, and every float parameter of the technique's own group that applies (kernel.bias ...).
 #pragma once
+#include "settings/params.h"
+
 #include <string>
 #include <vector>
 
@@ -15,7 +17,7 @@ class App;
 namespace ssao {
 
 struct TuneOptions {
-    std::string technique = "kernel";
+    std::string technique = defaultSettings().ao.technique; // the default settings' technique
     std::string preset;              // starting point (default: the technique's defaults)
     std::vector<std::string> scenes; // default builtin:showcase
     std::string size = "640x360";

@@ -100,10 +100,12 @@ std::vector<StressCase> stressCases(const std::string& technique) {
         c.offset = glm::dvec3(t, 0.5 * t, -0.25 * t), c.compared = true, c.sceneOrigin = false;
         cases.push_back(c);
     }
-    // G-buffer precision.
-    for (const char* a : {"gbuffer.position_format=rgba16f", "gbuffer.normal_format=rgba8",
-                          "gbuffer.normal_format=rgba32f", "kernel.position_source=depth", "ao.normals=depth"}) {
-        if (technique != "kernel" && std::string(a).rfind("kernel.", 0) == 0) continue;
+    // G-buffer precision, and every technique row that chooses where positions come from.
+    std::vector<std::string> precision = {"gbuffer.position_format=rgba16f", "gbuffer.normal_format=rgba8",
+                                          "gbuffer.normal_format=rgba32f", "ao.normals=depth"};
+    for (const Param& p : paramTable())
+        if (p.group() == technique && p.name() == "position_source") precision.push_back(p.key + "=depth");
+    for (const std::string& a : precision) {
         StressCase c{"gbuffer", a};
         const std::string assignment = a;
         c.settings = [assignment](Settings& s) { applyAssignment(s, assignment); };

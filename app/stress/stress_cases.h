@@ -17,7 +17,7 @@ namespace ssao {
 
 struct StressCase {
     std::string axis;    // "near", "far", "projection", "scale", "translate", "gbuffer", "limits", "camera", "geometry"
-    std::string variant; // e.g. "1e-4", "x1000", "gtao.steps=32"
+    std::string variant; // e.g. "1e-4", "x1000", "ao.power=16"
     double scale = 1.0;              // the scene and the camera scaled about the origin ...
     glm::dvec3 offset{0.0};          // ... then moved by this (scene units)
     bool sceneOrigin = true;         // false: float positions in file coordinates (no Scene::origin)

@@ -22,7 +22,7 @@ struct GBufferSettings {
 // What every AO technique shares: which one runs, its radius (in one of three unit systems),
 // the final contrast and the resolution the AO is computed at.
 struct AoSettings {
-    std::string technique = "kernel"; // id of a registered technique (techniques/registry.cpp)
+    std::string technique = kDefaultTechnique; // id of a registered technique (techniques/registry.cpp)
     RadiusMode radiusMode = RadiusMode::Scene;
     float radius = 0.5f;       // world mode: scene units
     float radiusScene = 0.05f; // scene mode: fraction of the scene's bounding-box diagonal

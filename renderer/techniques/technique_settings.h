@@ -9,6 +9,9 @@
 
 namespace ssao {
 
+// The technique a new Settings{} uses.
+constexpr const char* kDefaultTechnique = "kernel";
+
 struct TechniqueSettings {
     KernelSettings kernel;
     GtaoSettings gtao;
