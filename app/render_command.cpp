@@ -1,6 +1,6 @@
 #include "render_command.h"
 
-#include "gl/context.h"
+#include "headless_runner.h"
 #include "output/reference_report.h"
 #include "output/report.h"
 #include "progress_bar.h"
@@ -10,6 +10,7 @@
 #include "settings/preset_store.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "scene/view_fit.h"
 #include "util/paths.h"
 
 #include <CLI/CLI.hpp>
@@ -22,8 +23,8 @@ namespace ssao {
 
 void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--scene", o.scene,
-                   "builtin:showcase|plane|corner, or a .gltf/.glb file (default: the preset's scene, else "
-                   "builtin:showcase)");
+                   "builtin:NAME (showcase, plane, corner, slabs), or a .gltf/.glb file (default: the preset's "
+                   "scene, else builtin:showcase)");
     cmd.add_option(
         "--preset", o.preset,
         "preset JSON file, or a name: the seed presets (e.g. learnopengl), then the ones saved in the app");
@@ -64,8 +65,8 @@ void addLensOptions(CLI::App& cmd, std::string& projection, std::string& depth) 
                    "perspective (default) or orthographic (spans what the fov sees at the target's distance)")
         ->check(CLI::IsMember({"perspective", "orthographic"}));
     cmd.add_option("--depth", depth,
-                   "depth buffer mapping: standard (default) or reversed (reversed-Z float: any far/near, "
-                   "far may be inf)")
+                   "depth buffer mapping: reversed (default: reversed-Z float, any far/near, far may be inf) "
+                   "or standard (OpenGL's [-1, 1])")
         ->check(CLI::IsMember({"standard", "reversed"}));
 }
 
@@ -96,140 +97,166 @@ void parseSizeOption(const std::string& s, int& w, int& h) {
     }
 }
 
-int runRender(const RenderOptions& o) {
-    // Validate everything that needs no GL first, so bad input fails fast with one line.
-    Preset preset;
-    if (!o.preset.empty()) preset = PresetStore::standard(o.presetDir).open(o.preset);
-    int w = 1280, h = 720;
-    if (!o.size.empty())
-        parseSizeOption(o.size, w, h);
-    else if (preset.size)
-        std::tie(w, h) = *preset.size;
-    Settings settings = preset.settings;
-    for (const auto& a : o.sets)
-        applyAssignment(settings, a);
-    const std::string sceneSpec = !o.scene.empty() ? o.scene : preset.scene.value_or("builtin:showcase");
-    if (o.scene.empty() && !preset.scene && preset.camera && !o.quiet)
-        std::fprintf(stderr, "note: preset %s has a camera but no scene; rendering %s\n", preset.name.c_str(),
-                     sceneSpec.c_str());
-    Scene scene = loadScene(sceneSpec);
+namespace {
 
+// Everything a render needs that takes no GL: bad input fails here, in milliseconds, with one line.
+struct RenderJob {
+    int w = 1280, h = 720;
+    Settings settings;
+    Scene scene;
+    Camera camera;
     RunInfo info;
-    info.sceneName = scene.name;
-    info.triangles = scene.triangleCount();
-    info.sceneOrigin = scene.origin;
-    info.style.fit = o.fitRange;
-    info.style.falseColor = o.falseColor;
+};
+
+// The camera: --camera, else the preset's bookmark, else the scene's own, else one framing it.
+Camera chooseCamera(const RenderOptions& o, const Preset& preset, const Scene& scene, const std::string& spec,
+                    std::string& source) {
     Camera cam;
     if (!o.camera.empty()) {
-        Camera base = scene.camera.value_or(frameBounds(scene.bounds));
+        Camera base = defaultCamera(scene);
         applyCameraOptions(base, o.clip, o.projection, o.depth); // "inf" far needs reversed depth
-        cam = parseCamera(o.camera, base, scene.origin); // file coordinates
-        info.cameraSource = "--camera";
-    } else if (preset.camera) { // the preset's camera bookmark
+        cam = parseCamera(o.camera, base, scene.origin);         // file coordinates
+        source = "--camera";
+    } else if (preset.camera) {
         cam = cameraToScene(*preset.camera, scene); // presets hold file coordinates
-        info.cameraSource = "preset";
+        source = "preset";
     } else if (scene.camera) {
         cam = *scene.camera;
-        info.cameraSource = sceneSpec.rfind("builtin:", 0) == 0 ? "builtin" : "file";
+        source = spec.rfind("builtin:", 0) == 0 ? "builtin" : "file";
     } else {
         cam = frameBounds(scene.bounds);
-        info.cameraSource = "framed";
+        source = "framed";
     }
     applyCameraOptions(cam, o.clip, o.projection, o.depth);
     validateCamera(cam);
+    return cam;
+}
 
-    gl::HeadlessContext ctx;
-    gl::installDebugOutput(o.verboseGl);
-    info.glRenderer = ctx.renderer();
-    info.glPlatform = ctx.platform();
-    info.timingFrames = o.timingFrames;
+RenderJob prepareRender(const RenderOptions& o) {
+    RenderJob job;
+    Preset preset;
+    if (!o.preset.empty()) preset = PresetStore::standard(o.presetDir).open(o.preset);
+    if (!o.size.empty())
+        parseSizeOption(o.size, job.w, job.h);
+    else if (preset.size)
+        std::tie(job.w, job.h) = *preset.size;
+    job.settings = preset.settings;
+    for (const auto& a : o.sets)
+        applyAssignment(job.settings, a);
+    validateSettings(job.settings);
+    const std::string spec = !o.scene.empty() ? o.scene : preset.scene.value_or("builtin:showcase");
+    if (o.scene.empty() && !preset.scene && preset.camera && !o.quiet)
+        std::fprintf(stderr, "note: preset %s has a camera but no scene; rendering %s\n", preset.name.c_str(),
+                     spec.c_str());
+    job.scene = loadScene(spec);
+    job.info.sceneName = job.scene.name;
+    job.info.triangles = job.scene.triangleCount();
+    job.info.sceneOrigin = job.scene.origin;
+    job.info.style.fit = o.fitRange;
+    job.info.style.falseColor = o.falseColor;
+    job.info.timingFrames = o.timingFrames;
+    job.camera = chooseCamera(o, preset, job.scene, spec, job.info.cameraSource);
+    return job;
+}
 
-    Renderer r(o.shaderDir.empty() ? shaderRoot() : o.shaderDir);
-    r.setSize(w, h);
-    r.setScene(scene);
-    r.setCamera(cam);
-    r.setSettings(settings);
-    FrameReport first = r.render();
-    while (r.accumulating()) // temporal accumulation: the frames it blends, deterministically
-        first = r.render();
-
-    // Timing: force every pass for `timingFrames` frames and average (the first frame includes JIT).
+// Every pass forced for `frames` frames, averaged per pass (the first frame includes JIT).
+nlohmann::json timePasses(Renderer& r, const FrameReport& first, int frames) {
     nlohmann::json timing = nlohmann::json::object();
     std::vector<double> sums(first.passes.size(), 0.0);
-    for (int f = 0; f < o.timingFrames; ++f) {
+    for (int f = 0; f < frames; ++f) {
         r.invalidate();
-        FrameReport fr = r.render();
-        for (size_t i = 0; i < fr.passes.size(); ++i)
+        const FrameReport fr = r.render();
+        for (size_t i = 0; i < fr.passes.size() && i < sums.size(); ++i)
             sums[i] += fr.passes[i].gpuMs;
     }
     double total = 0;
     for (size_t i = 0; i < first.passes.size(); ++i) {
-        const double ms = sums[i] / o.timingFrames;
+        const double ms = sums[i] / frames;
         timing[first.passes[i].name] = ms;
         total += ms;
     }
     timing["total"] = total;
+    return timing;
+}
 
-    nlohmann::json m = writeOutputs(r, o.out, info, first, timing);
-    char line[512] = "";
-    if (o.reference) {
-        const ReferenceSettings rs =
-            referenceSettingsFor(r, o.referenceRays, parseVariant(o.referenceVariant));
-        ReferenceProvider provider(scene, o.noCache ? std::string() : referenceCacheDir());
-        bool cached = false;
-        ReferenceImage ref;
-        {
-            ProgressBar bar("reference " + std::to_string(w) + "x" + std::to_string(h) + " x " +
-                                std::to_string(rs.samples) + " rays",
-                            !o.quiet);
-            ref = provider.get(
-                r.camera(), w, h, rs, [&](double f) { bar.update(f); }, &cached);
-        }
-        nlohmann::json e = writeReferenceOutputs(r, ref, rs, o.out);
-        e["error"]["reference"]["cached"] = cached;
-        m["error"] = e["error"];
-        m["error_raw"] = e["error_raw"];
-        writeFileAtomically((std::filesystem::path(o.out) / "metrics.json").string(), m.dump(2) + "\n");
-        {
-            const auto& j = m["error"];
-            std::snprintf(
-                line, sizeof line,
-                "reference (%s, R %.4g, %d rays%s): RMSE %.4f, MAE %.4f, bias %+.4f, PSNR %.2f dB "
-                "(geometry, sRGB), %.2f dB full frame, SSIM %.4f; reference noise %.4f\n",
-                rs.variant == ReferenceVariant::Visibility ? "visibility" : "obscurance", rs.radius,
-                rs.samples,
-                cached ? ", cached"
-                       : (", " + std::to_string(int(ref.raysPerSecond() * 1e-6 + 0.5)) + " Mrays/s").c_str(),
-                j["rmse"].get<double>(), j["mae"].get<double>(), j["bias"].get<double>(),
-                j["psnr_geometry_srgb"].get<double>(), j["psnr_full_srgb"].get<double>(),
-                j["ssim"].get<double>(), j["reference"]["noise_rms"].get<double>());
-        }
+// --reference: traces (or loads) the reference, writes its files and the error blocks into `m`;
+// returns the summary line.
+std::string judgeAgainstReference(const RenderOptions& o, Renderer& r, const Scene& scene, nlohmann::json& m) {
+    const ReferenceSettings rs = referenceSettingsFor(r, o.referenceRays, parseVariant(o.referenceVariant));
+    ReferenceProvider provider(scene, o.noCache ? std::string() : referenceCacheDir());
+    bool cached = false;
+    ReferenceImage ref;
+    {
+        ProgressBar bar("reference " + std::to_string(r.width()) + "x" + std::to_string(r.height()) + " x " +
+                            std::to_string(rs.samples) + " rays",
+                        !o.quiet);
+        ref = provider.get(r.camera(), r.width(), r.height(), rs, [&](double f) { bar.update(f); }, &cached);
     }
-    const std::string glErr = gl::pollGlErrors();
-    if (gl::glErrorCount() > 0)
-        throw Error("OpenGL reported " + std::to_string(gl::glErrorCount()) + " error(s) during the run" +
-                    (glErr.empty() ? "" : " (" + glErr + ")"));
-    if (!o.quiet && m["geometry_pixels"].get<long>() == 0)
+    nlohmann::json e = writeReferenceOutputs(r, ref, rs, o.out);
+    e["error"]["reference"]["cached"] = cached;
+    m["error"] = e["error"];
+    m["error_raw"] = e["error_raw"];
+    writeFileAtomically((std::filesystem::path(o.out) / "metrics.json").string(), m.dump(2) + "\n");
+    const auto& j = m["error"];
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "reference (%s, R %.4g, %d rays%s): RMSE %.4f, MAE %.4f, bias %+.4f, PSNR %.2f dB (geometry, "
+                  "sRGB), %.2f dB full frame, SSIM %.4f; reference noise %.4f%s\n",
+                  variantName(rs.variant), rs.radius, rs.samples,
+                  cached ? ", cached"
+                         : (", " + std::to_string(int(ref.raysPerSecond() * 1e-6 + 0.5)) + " Mrays/s").c_str(),
+                  j["rmse"].get<double>(), j["mae"].get<double>(), j["bias"].get<double>(),
+                  j["psnr_geometry_srgb"].get<double>(), j["psnr_full_srgb"].get<double>(), j["ssim"].get<double>(),
+                  j["reference"]["noise_rms"].get<double>(),
+                  ref.ambiguousPixels() ? ("; " + std::to_string(ref.ambiguousPixels()) +
+                                           " ambiguous pixels (coincident faces) left out")
+                                              .c_str()
+                                        : "");
+    return line;
+}
+
+void printRenderSummary(const RenderOptions& o, const RenderJob& job, const std::string& glRenderer,
+                        const FrameReport& first, const nlohmann::json& m, const nlohmann::json& timing,
+                        const std::string& referenceLine) {
+    if (o.quiet) return;
+    if (m["geometry_pixels"].get<long>() == 0)
         std::printf("note: no geometry in view (check --camera): the AO statistics are empty\n");
-    else if (!o.quiet && m["radius"]["pixels_at_centre"].get<double>() < 2.0)
+    else if (m["radius"]["pixels_at_centre"].get<double>() < 2.0)
         std::printf("note: the AO radius is %.2f px at the centre of the view: the AO goes flat grey "
                     "(ao.radius_mode=scene makes the radius follow the scene)\n",
                     m["radius"]["pixels_at_centre"].get<double>());
-    if (!o.quiet) {
-        std::printf(
-            "%s: %dx%d on %s; AO mean %.4f (raw %.4f), darkest 5%% <= %.3f; radius %.4g units = %.1f px at "
-            "the centre; gpu ms:",
-            scene.name.c_str(), w, h, info.glRenderer.c_str(), m["ao"]["mean"].get<double>(),
-            m["ao_raw"]["mean"].get<double>(), m["ao"]["p05"].get<double>(),
-            m["radius"]["world_at_centre"].get<double>(), m["radius"]["pixels_at_centre"].get<double>());
-        for (const auto& p : first.passes) // in graph order, not by name
-            std::printf(" %s %.3f", p.name.c_str(), timing[p.name].get<double>());
-        std::printf(" total %.3f", timing["total"].get<double>());
-        std::printf("\nwrote %s/: one .exr per float buffer, one .png per buffer, metrics.json\n",
-                    o.out.c_str());
-        if (o.reference) std::printf("%s", line);
-    }
+    std::printf("%s: %dx%d on %s; AO mean %.4f (raw %.4f), darkest 5%% <= %.3f; radius %.4g units = %.1f px at "
+                "the centre; gpu ms:",
+                job.scene.name.c_str(), job.w, job.h, glRenderer.c_str(), m["ao"]["mean"].get<double>(),
+                m["ao_raw"]["mean"].get<double>(), m["ao"]["p05"].get<double>(),
+                m["radius"]["world_at_centre"].get<double>(), m["radius"]["pixels_at_centre"].get<double>());
+    for (const auto& p : first.passes) // in graph order, not by name
+        std::printf(" %s %.3f", p.name.c_str(), timing[p.name].get<double>());
+    std::printf(" total %.3f", timing["total"].get<double>());
+    std::printf("\nwrote %s/: one .exr per float buffer, one .png per buffer, metrics.json\n", o.out.c_str());
+    if (o.reference) std::printf("%s", referenceLine.c_str());
+}
+
+} // namespace
+
+int runRender(const RenderOptions& o) {
+    RenderJob job = prepareRender(o);
+    HeadlessRunner run({o.shaderDir, o.verboseGl});
+    job.info.glRenderer = run.glRenderer();
+    job.info.glPlatform = run.glPlatform();
+    std::unique_ptr<Renderer> r = run.makeRenderer(job.w, job.h);
+    r->setScene(job.scene);
+    r->setCamera(job.camera);
+    r->setSettings(job.settings);
+    FrameReport first = r->render();
+    while (r->accumulating()) // temporal accumulation: the frames it blends, deterministically
+        first = r->render();
+    const nlohmann::json timing = timePasses(*r, first, o.timingFrames);
+    run.checkGl("while rendering " + job.scene.name);
+    nlohmann::json m = writeOutputs(*r, o.out, job.info, first, timing);
+    const std::string line = o.reference ? judgeAgainstReference(o, *r, job.scene, m) : "";
+    run.checkGl("while writing the outputs");
+    printRenderSummary(o, job, run.glRenderer(), first, m, timing, line);
     long bad = 0;
     for (auto& [name, b] : m["buffers"].items())
         bad += b["nonfinite"].get<long>();

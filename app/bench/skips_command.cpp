@@ -2,7 +2,7 @@
 
 #include "bench/bench_run.h"
 #include "bench/skips_report.h"
-#include "gl/context.h"
+#include "headless_runner.h"
 #include "metrics/evaluate.h"
 #include "output/image.h"
 #include "output/skip_report.h"
@@ -315,23 +315,18 @@ int runSkips(const SkipsOptions& o) {
     const std::vector<std::string> specs = o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
     std::vector<Scene> scenes;
     for (const auto& s : specs)
-        scenes.push_back(loadScene(s));
-    gl::HeadlessContext ctx;
-    gl::installDebugOutput(false);
-    Renderer r(shaderRoot());
-    r.setSize(w, h);
+        scenes.push_back(loadNamedScene(s));
+    HeadlessRunner runner;
+    std::unique_ptr<Renderer> r = runner.makeRenderer(w, h);
     SkipsRun run;
-    run.facts = runFacts(ctx.renderer());
+    run.facts = runFacts(runner.glRenderer());
     run.facts["size"] = o.size;
     run.facts["frames"] = o.frames;
-    for (size_t i = 0; i < scenes.size(); ++i) {
-        Scene& scene = scenes[i];
-        const std::string name =
-            specs[i].rfind("builtin:", 0) == 0 ? specs[i] : std::filesystem::path(specs[i]).stem().string();
-        r.setScene(scene);
+    for (Scene& scene : scenes) {
+        r->setScene(scene);
         ReferenceProvider provider(scene);
-        Context c{o, r, run, name};
-        const Camera cam = scene.camera.value_or(frameBounds(scene.bounds));
+        Context c{o, *r, run, scene.name};
+        const Camera cam = defaultCamera(scene);
         dirtyRows(c, cam);
         skyRows(c, cam);
         // Where a radius spans few pixels: the default R (5 % of the diagonal) seen from 4x
@@ -341,6 +336,8 @@ int runSkips(const SkipsOptions& o) {
         adaptiveRows(c, provider, cam, "camera, R = 1 % of diagonal", 0.01f);
         gbufferRows(c, cam, "camera");
         gbufferRows(c, moveEye(cam, 0.8f), "close-up (5x nearer)");
+        runner.checkGl("while measuring the skips on " + scene.name);
+        runner.readFinite(*r, "ao.denoised", "on " + scene.name);
     }
     writeSkipsFiles(run, o.out);
     if (!o.quiet) std::printf("skips: %zu rows; wrote %s/{skips.json,skips.md}\n", run.rows.size(), o.out.c_str());

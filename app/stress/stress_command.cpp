@@ -1,6 +1,6 @@
 #include "stress/stress_command.h"
 
-#include "gl/context.h"
+#include "headless_runner.h"
 #include "output/image.h"
 #include "render_command.h"
 #include "renderer.h"
@@ -72,9 +72,74 @@ void compare(const Frame& a, const Frame& b, double& rmse, double& coverage) {
 
 } // namespace
 
+namespace {
+
+// The renderers and the benign frame one technique's cases are compared with.
+struct StressBench {
+    HeadlessRunner& runner;
+    Renderer& r;
+    Renderer& plane; // builtin:plane in its own view: AO 1 by definition
+};
+
+// Renders one case into its row (a guard's refusal is a row too, not a failure of the run).
+StressRow runCase(StressBench& b, const StressCase& sc, const Scene& base, const Camera& cam0, const Settings& s,
+                  const Frame& benign, bool& transformed) {
+    StressRow row;
+    row.axis = sc.axis, row.variant = sc.variant, row.invariant = sc.invariant, row.compared = sc.compared;
+    try {
+        const bool moves = sc.scale != 1.0 || sc.offset != glm::dvec3(0.0) || sc.geometry;
+        Scene moved;
+        if (moves) moved = transformScene(base, sc.scale, sc.offset, sc.sceneOrigin);
+        if (sc.geometry) sc.geometry(moved);
+        const Scene& scene = moves ? moved : base;
+        if (moves || transformed) b.r.setScene(scene);
+        transformed = moves;
+        Camera c = transformCamera(cam0, base, scene, sc.scale, sc.offset);
+        c.clip = ClipMode::Fit;
+        if (sc.camera) sc.camera(c, scene);
+        if (sc.nearZ > 0.0f) {
+            c.clip = ClipMode::Fixed;
+            const double diag = 2.0 * double(scene.bounds.radius());
+            c.nearZ = float(double(sc.nearZ) * diag);
+            c.farZ = float(double(sc.farZ) * diag); // inf stays inf
+        }
+        if (sc.depth) c.depth = *sc.depth;
+        if (sc.projection) c.projectionKind = *sc.projection;
+        validateCamera(c); // a refused camera is a row, not a GL error
+        Settings cs = s;
+        if (sc.settings) sc.settings(cs);
+        b.r.setCamera(c);
+        b.r.setSettings(cs);
+        const Frame f = renderFrame(b.r);
+        countBad(f.raw, row.nonFinite, row.outside);
+        countBad(f.ao, row.nonFinite, row.outside);
+        const Stats st = stats(f.ao, &f.mask);
+        row.mean = st.count ? st.mean : 1.0;
+        row.geometry = st.count;
+        if (sc.invariant || sc.compared) compare(f, benign, row.rmse, row.coverage);
+        if (sc.settings) { // settings cases: an open plane must stay open
+            b.plane.setSettings(cs);
+            const Frame pf = renderFrame(b.plane);
+            countBad(pf.raw, row.nonFinite, row.outside);
+            countBad(pf.ao, row.nonFinite, row.outside);
+            row.planeMean = stats(pf.ao, &pf.mask).mean;
+            row.unphysical = unphysicalReason(cs);
+        }
+        row.status = "ok";
+    } catch (const Error& e) {
+        row.status = "refused";
+        row.message = e.what();
+    }
+    b.runner.checkGl("in stress case " + sc.axis + " " + sc.variant);
+    return row;
+}
+
+} // namespace
+
 int runStress(const StressOptions& o) {
     int w = 0, h = 0;
     parseSizeOption(o.size, w, h);
+    if (!(o.tolerance >= 0.0 && o.tolerance <= 1.0)) throw Error("--tolerance must be a number in [0, 1]");
     std::vector<std::string> techs = o.techniques;
     if (techs.empty())
         for (const auto& t : techniques())
@@ -84,89 +149,39 @@ int runStress(const StressOptions& o) {
     const std::vector<std::string> specs =
         o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
 
-    gl::HeadlessContext ctx;
-    Renderer r(shaderRoot());
-    r.setSize(w, h);
-    r.setWanted(std::set<std::string>{"ao.raw", "ao.denoised"}); // what is judged: no composite, no albedo
-    // A second renderer on an open plane (AO 1 by definition) for the cases that change settings.
-    const Scene plane = loadScene("builtin:plane");
-    Renderer planeRenderer(shaderRoot());
-    planeRenderer.setSize(w, h);
-    planeRenderer.setWanted(std::set<std::string>{"ao.raw", "ao.denoised"});
-    planeRenderer.setScene(plane);
-    planeRenderer.setCamera(*plane.camera);
+    HeadlessRunner runner;
+    std::unique_ptr<Renderer> r = runner.makeRenderer(w, h), plane = runner.makeRenderer(w, h);
+    const std::set<std::string> judged{"ao.raw", "ao.denoised"}; // no composite, no albedo
+    r->setWanted(judged);
+    plane->setWanted(judged);
+    const Scene planeScene = loadScene("builtin:plane");
+    plane->setScene(planeScene);
+    plane->setCamera(*planeScene.camera);
+    StressBench bench{runner, *r, *plane};
     StressRun run;
     run.size = o.size;
     run.tolerance = o.tolerance;
     for (const auto& spec : specs) {
-        Scene base = loadScene(spec);
-        const std::string sceneName =
-            spec.rfind("builtin:", 0) == 0 ? spec : std::filesystem::path(spec).stem().string();
-        const Camera cam0 = base.camera.value_or(frameBounds(base.bounds));
+        const Scene base = loadNamedScene(spec);
+        const Camera cam0 = defaultCamera(base);
         for (const auto& tech : techs) {
             Settings s = defaultSettings();
             s.ao.technique = tech;
-            r.setScene(base);
+            r->setScene(base);
             Camera c0 = cam0;
             c0.clip = ClipMode::Fit;
-            r.setCamera(c0);
-            r.setSettings(s);
-            const Frame benign = renderFrame(r);
+            r->setCamera(c0);
+            r->setSettings(s);
+            const Frame benign = renderFrame(*r);
             const std::vector<StressCase> cases = stressCases(tech);
-            if (!o.quiet) std::fprintf(stderr, "stress: %s %s: %zu cases\n", sceneName.c_str(), tech.c_str(), cases.size());
+            if (!o.quiet) std::fprintf(stderr, "stress: %s %s: %zu cases\n", base.name.c_str(), tech.c_str(), cases.size());
             bool transformed = false;
             for (const StressCase& sc : cases) {
-                StressRow row;
-                row.scene = sceneName, row.technique = tech, row.axis = sc.axis, row.variant = sc.variant;
-                row.invariant = sc.invariant;
-                row.compared = sc.compared;
-                try {
-                    const bool moves = sc.scale != 1.0 || sc.offset != glm::dvec3(0.0) || sc.geometry;
-                    Scene moved;
-                    if (moves) moved = transformScene(base, sc.scale, sc.offset, sc.sceneOrigin);
-                    if (sc.geometry) sc.geometry(moved);
-                    const Scene& scene = moves ? moved : base;
-                    if (moves || transformed) r.setScene(scene);
-                    transformed = moves;
-                    Camera c = transformCamera(cam0, base, scene, sc.scale, sc.offset);
-                    c.clip = ClipMode::Fit;
-                    if (sc.camera) sc.camera(c, scene);
-                    if (sc.nearZ > 0.0f) {
-                        c.clip = ClipMode::Fixed;
-                        const double diag = 2.0 * double(scene.bounds.radius());
-                        c.nearZ = float(double(sc.nearZ) * diag);
-                        c.farZ = float(double(sc.farZ) * diag); // inf stays inf
-                    }
-                    if (sc.depth) c.depth = *sc.depth;
-                    if (sc.projection) c.projectionKind = *sc.projection;
-                    validateCamera(c); // a refused camera is a row, not a GL error
-                    Settings cs = s;
-                    if (sc.settings) sc.settings(cs);
-                    r.setCamera(c);
-                    r.setSettings(cs);
-                    const Frame f = renderFrame(r);
-                    countBad(f.raw, row.nonFinite, row.outside);
-                    countBad(f.ao, row.nonFinite, row.outside);
-                    const Stats st = stats(f.ao, &f.mask);
-                    row.mean = st.count ? st.mean : 1.0;
-                    row.geometry = st.count;
-                    if (sc.invariant || sc.compared) compare(f, benign, row.rmse, row.coverage);
-                    if (sc.settings) {
-                        planeRenderer.setSettings(cs);
-                        const Frame pf = renderFrame(planeRenderer);
-                        countBad(pf.raw, row.nonFinite, row.outside);
-                        countBad(pf.ao, row.nonFinite, row.outside);
-                        row.planeMean = stats(pf.ao, &pf.mask).mean;
-                        row.unphysical = unphysicalReason(cs);
-                    }
-                    row.status = "ok";
-                } catch (const Error& e) {
-                    row.status = "refused";
-                    row.message = e.what();
-                }
+                StressRow row = runCase(bench, sc, base, cam0, s, benign, transformed);
+                row.scene = base.name, row.technique = tech;
                 run.rows.push_back(std::move(row));
             }
-            if (transformed) r.setScene(base);
+            if (transformed) r->setScene(base);
         }
     }
     writeStressFiles(run, o.out);
@@ -175,7 +190,8 @@ int runStress(const StressOptions& o) {
                 "%d settings that darken an open plane, %d refused by a guard; wrote %s/{stress.json,stability.md}\n",
                 run.rows.size(), v.nonFinite, v.outside, v.invarianceFailures, o.tolerance, v.planeFailures,
                 v.refused, o.out.c_str());
-    return v.ok() ? 0 : 1;
+    if (!v.ok()) throw Error("stress found failing cases (see " + o.out + "/stability.md)");
+    return 0;
 }
 
 } // namespace ssao

@@ -24,13 +24,13 @@ struct CliRun {
     std::string out, err;
 };
 
-CliRun ssaolab(const std::string& args) {
+CliRun ssaolab(const std::string& args, const std::string& env = "") {
     std::filesystem::create_directories(SSAOLAB_TEST_TMP);
     // Reference traces are cached inside the build tree, not in the user's ~/.cache.
     ::setenv("SSAOLAB_CACHE_DIR", (std::string(SSAOLAB_TEST_TMP) + "/cache").c_str(), 0);
     const std::string base = std::string(SSAOLAB_TEST_TMP) + "/cli_" + std::to_string(::getpid());
-    const std::string cmd =
-        std::string("'") + SSAOLAB_BINARY + "' " + args + " >" + base + ".out 2>" + base + ".err </dev/null";
+    const std::string cmd = env + (env.empty() ? "" : " ") + std::string("'") + SSAOLAB_BINARY + "' " + args + " >" +
+                            base + ".out 2>" + base + ".err </dev/null";
     int status = std::system(cmd.c_str());
     CliRun r;
     r.signaled = WIFSIGNALED(status);
@@ -53,6 +53,33 @@ void expectCleanFailure(const CliRun& r, const std::string& needle) {
 }
 
 } // namespace
+
+TEST(Cli, EveryHeadlessCommandFailsOnAGlError) {
+    // One headless runner under every command (app/headless_runner.h): a GL error raised during the
+    // run (the runner's test hook) ends each with exit 1 and one `ssaolab: error:` line naming it.
+    const std::string sweep = writeTemp("gl_error_sweep.json", R"({"groups": [{"name": "one", "set": {"ao.technique": "sao"}}]})");
+    const std::string out = outDir("gl_error");
+    const std::vector<std::string> commands = {
+        "render --scene builtin:corner --size 64x36 --timing-frames 1 --quiet --out " + out,
+        "bench --scene builtin:corner --size 64x36 --views 1 --frames 1 --warmup 0 --reference-rays 4 --no-plot "
+        "--quiet --sweep " + sweep + " --out " + out,
+        "tune --technique sao --scene builtin:corner --size 64x36 --views 2 --rounds 1 --grid 3 "
+        "--reference-rays 4 --knob sao.bias --quiet --out " + out + "/tuned.json",
+        "stress --scene builtin:corner --technique sao --size 64x36 --quiet --out " + out,
+        "skips --scene builtin:corner --size 64x36 --frames 1 --reference-rays 4 --quiet --out " + out};
+    for (const std::string& c : commands) {
+        const CliRun r = ssaolab(c, "SSAOLAB_TEST_GL_ERROR=1");
+        EXPECT_FALSE(r.signaled) << c;
+        EXPECT_EQ(r.exitCode, 1) << c << "\n" << r.err;
+        size_t lines = 0;
+        for (size_t at = r.err.find("ssaolab: error: "); at != std::string::npos; at = r.err.find("ssaolab: error: ", at + 1))
+            ++lines;
+        EXPECT_EQ(lines, 1u) << c << "\n" << r.err;
+        EXPECT_NE(r.err.find("ssaolab: error: OpenGL reported"), std::string::npos) << c << "\n" << r.err;
+        // And without the hook the same command runs through.
+        EXPECT_EQ(ssaolab(c).exitCode, 0) << c;
+    }
+}
 
 TEST(Cli, HelpDescribesCommands) {
     CliRun r = ssaolab("--help");

@@ -1,0 +1,58 @@
+#include "headless_runner.h"
+
+#include "scene/view_fit.h"
+#include "util/error.h"
+#include "util/paths.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+namespace ssao {
+
+HeadlessRunner::HeadlessRunner(const Options& o)
+    : shaderDir_(o.shaderDir.empty() ? shaderRoot() : o.shaderDir) {
+    gl::installDebugOutput(o.verboseGl);
+    glRenderer_ = context_.renderer();
+    glPlatform_ = context_.platform();
+    gl::resetGlErrorCount();
+    if (const char* force = std::getenv(kForceGlErrorEnv); force && std::string(force) == "1")
+        glEnable(GL_TEXTURE_2D); // not a capability in a core profile: GL_INVALID_ENUM
+}
+
+std::unique_ptr<Renderer> HeadlessRunner::makeRenderer(int w, int h) const {
+    auto r = std::make_unique<Renderer>(shaderDir_);
+    r->setSize(w, h);
+    return r;
+}
+
+void HeadlessRunner::checkGl(const std::string& during) const {
+    const std::string first = gl::pollGlErrors();
+    const int n = gl::glErrorCount();
+    if (n > 0)
+        throw Error("OpenGL reported " + std::to_string(n) + " error(s) " + during +
+                    (first.empty() ? "" : " (" + first + ")"));
+}
+
+Image HeadlessRunner::readFinite(const Renderer& r, const std::string& buffer, const std::string& during) const {
+    const Resource& res = r.resource(buffer);
+    Image img = readBack(res.texture, res.desc.channels);
+    long bad = 0;
+    for (float v : img.data)
+        bad += std::isfinite(v) ? 0 : 1;
+    if (bad > 0)
+        throw Error(std::to_string(bad) + " non-finite values in " + buffer + " " + during);
+    return img;
+}
+
+Scene loadNamedScene(const std::string& spec) {
+    Scene s = loadScene(spec);
+    if (spec.rfind("builtin:", 0) != 0) s.name = std::filesystem::path(spec).stem().string();
+    return s;
+}
+
+Camera defaultCamera(const Scene& s) {
+    return s.camera.value_or(frameBounds(s.bounds));
+}
+
+} // namespace ssao
