@@ -1,4 +1,5 @@
 #include "headless_runner.h"
+#include "gl/readback.h"
 
 #include "scene/view_fit.h"
 #include "util/error.h"

@@ -1,6 +1,7 @@
 #include "render_command.h"
 
 #include "headless_runner.h"
+#include "display/capture.h"
 #include "output/reference_report.h"
 #include "output/report.h"
 #include "progress_bar.h"
@@ -106,6 +107,7 @@ struct RenderJob {
     Scene scene;
     Camera camera;
     RunInfo info;
+    ViewStyle style; // PNG previews: the same mapping as the app's views
 };
 
 // The camera: --camera, else the preset's bookmark, else the scene's own, else one framing it.
@@ -152,8 +154,8 @@ RenderJob prepareRender(const RenderOptions& o) {
     job.info.sceneName = job.scene.name;
     job.info.triangles = job.scene.triangleCount();
     job.info.sceneOrigin = job.scene.origin;
-    job.info.style.fit = o.fitRange;
-    job.info.style.falseColor = o.falseColor;
+    job.style.fit = o.fitRange;
+    job.style.falseColor = o.falseColor;
     job.info.timingFrames = o.timingFrames;
     job.camera = chooseCamera(o, preset, job.scene, spec, job.info.cameraSource);
     return job;
@@ -181,8 +183,9 @@ nlohmann::json timePasses(Renderer& r, const FrameReport& first, int frames) {
 
 // --reference: traces (or loads) the reference, writes its files and the error blocks into `m`;
 // returns the summary line.
-std::string judgeAgainstReference(const RenderOptions& o, Renderer& r, const Scene& scene, nlohmann::json& m) {
-    const ReferenceSettings rs = referenceSettingsFor(r, o.referenceRays, parseVariant(o.referenceVariant));
+std::string judgeAgainstReference(const RenderOptions& o, const Renderer& r, const FrameCapture& frame,
+                                  const Scene& scene, nlohmann::json& m) {
+    const ReferenceSettings rs = referenceSettingsFor(frame.radius, o.referenceRays, parseVariant(o.referenceVariant));
     ReferenceProvider provider(scene, o.noCache ? std::string() : referenceCacheDir());
     bool cached = false;
     ReferenceImage ref;
@@ -192,7 +195,7 @@ std::string judgeAgainstReference(const RenderOptions& o, Renderer& r, const Sce
                         !o.quiet);
         ref = provider.get(r.camera(), r.width(), r.height(), rs, [&](double f) { bar.update(f); }, &cached);
     }
-    nlohmann::json e = writeReferenceOutputs(r, ref, rs, o.out);
+    nlohmann::json e = writeReferenceOutputs(frame, ref, rs, o.out);
     e["error"]["reference"]["cached"] = cached;
     m["error"] = e["error"];
     m["error_raw"] = e["error_raw"];
@@ -253,8 +256,9 @@ int runRender(const RenderOptions& o) {
         first = r->render();
     const nlohmann::json timing = timePasses(*r, first, o.timingFrames);
     run.checkGl("while rendering " + job.scene.name);
-    nlohmann::json m = writeOutputs(*r, o.out, job.info, first, timing);
-    const std::string line = o.reference ? judgeAgainstReference(o, *r, job.scene, m) : "";
+    const FrameCapture frame = captureFrame(*r, job.style);
+    nlohmann::json m = writeOutputs(frame, o.out, job.info, first, timing);
+    const std::string line = o.reference ? judgeAgainstReference(o, *r, frame, job.scene, m) : "";
     run.checkGl("while writing the outputs");
     printRenderSummary(o, job, run.glRenderer(), first, m, timing, line);
     long bad = 0;

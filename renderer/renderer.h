@@ -7,6 +7,7 @@
 #include "passes/reference_pass.h"
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
+#include "techniques/ao_common.h"
 
 #include "../shaders/include/bindings.h"
 
@@ -30,14 +31,6 @@ void checkRenderSize(int width, int height);
 // `frameIndex`: the temporal accumulation's frame (per-frame noise offsets; 0 otherwise).
 gpu::FrameConstants packFrameConstants(const Camera& cam, int width, int height, float sceneRadius,
                                        int frameIndex = 0);
-
-// The AO radius as it is at the centre of the view (the panel and metrics.json show it).
-struct RadiusInfo {
-    float sceneDiagonal = 0; // scene units
-    float depth = 0;         // view depth at the centre pixel (or of the orbit target over sky)
-    float world = 0;         // radius in scene units there
-    float pixels = 0;        // radius in G-buffer pixels there
-};
 
 class Renderer {
   public:

@@ -1,4 +1,5 @@
 #include "bench/bench_run.h"
+#include "gl/readback.h"
 
 #include "metrics/evaluate.h"
 #include "output/image.h"

@@ -1,10 +1,12 @@
 #include "bench/skips_command.h"
+#include "gl/readback.h"
 
 #include "bench/bench_run.h"
 #include "bench/skips_report.h"
 #include "headless_runner.h"
 #include "metrics/evaluate.h"
 #include "output/image.h"
+#include "display/capture.h"
 #include "output/skip_report.h"
 #include "reference/reference_cache.h"
 #include "render_command.h"
@@ -197,7 +199,8 @@ void skyRows(Context& c, const Camera& cam) {
             r, on, off, c.o.frames, [](const FrameTime& t) { return t.sum({"ao", "denoise"}); }, "ao.denoised");
         r.setSettings(on);
         r.render();
-        const nlohmann::json k = skipCounters(r, r.render());
+        const FrameReport fr = r.render();
+        const nlohmann::json k = skipCounters(captureFrame(r, {}, false), fr);
         SkipRow row{"sky", c.scene, "camera", tech, "AO + denoise GPU ms"};
         row.with = ab.a, row.without = ab.b, row.wallWith = ab.wallA, row.wallWithout = ab.wallB;
         row.errorChange = ab.diff;
@@ -239,7 +242,8 @@ void adaptiveRows(Context& c, ReferenceProvider& provider, const Camera& cam, co
             rmse[i] = evaluate(readBack(r.texture("ao.denoised"), 1), ref).metrics.rmse;
         }
         r.setSettings(adaptive);
-        const nlohmann::json k = skipCounters(r, r.render());
+        const FrameReport fr = r.render();
+        const nlohmann::json k = skipCounters(captureFrame(r, {}, false), fr);
         row.errorChange = rmse[0] - rmse[1];
         row.extra["rmse_with"] = rmse[0], row.extra["rmse_without"] = rmse[1];
         row.extra["sample_share"] = k["adaptive"]["mean_sample_share"];
@@ -259,7 +263,8 @@ void gbufferRows(Context& c, const Camera& cam, const std::string& view) {
     AbResult ab = compare(r, on, off, c.o.frames, gb, "gbuffer.position");
     r.setSettings(on);
     r.invalidate();
-    nlohmann::json k = skipCounters(r, r.render());
+    FrameReport fr = r.render();
+    nlohmann::json k = skipCounters(captureFrame(r, {}, false), fr);
     SkipRow cull{"cull", c.scene, view, "frustum culling", "G-buffer GPU ms"};
     cull.with = ab.a, cull.without = ab.b, cull.wallWith = ab.wallA, cull.wallWithout = ab.wallB;
     cull.errorChange = ab.diff;
@@ -296,7 +301,8 @@ void gbufferRows(Context& c, const Camera& cam, const std::string& view) {
         ab = compare(r, t, all, c.o.frames, gb, "ao.denoised");
         r.setSettings(t);
         r.invalidate();
-        k = skipCounters(r, r.render());
+        fr = r.render();
+        k = skipCounters(captureFrame(r, {}, false), fr);
         SkipRow row{"targets", c.scene, view,
                     depthNormals ? "AO only, normals from depth" : "AO only (no composite: no albedo)",
                     "G-buffer GPU ms"};

@@ -1,4 +1,5 @@
 #include "stress/stress_command.h"
+#include "gl/readback.h"
 
 #include "headless_runner.h"
 #include "output/image.h"

@@ -1,4 +1,5 @@
 #include "view/live_reference.h"
+#include "gl/readback.h"
 
 #include "output/image.h"
 

@@ -1,4 +1,5 @@
 #include "display/view_painter.h"
+#include "gl/readback.h"
 
 #include "gl/shader_library.h"
 

@@ -19,13 +19,6 @@ bool isDepthFormat(GLenum f) {
     return f == GL_DEPTH_COMPONENT32F || f == GL_DEPTH_COMPONENT24 || f == GL_DEPTH_COMPONENT16;
 }
 
-std::vector<std::string> FrameReport::ran() const {
-    std::vector<std::string> out;
-    for (const auto& p : passes)
-        if (p.ran) out.push_back(p.name);
-    return out;
-}
-
 gpu::FrameConstants withoutFrameIndex(gpu::FrameConstants c) {
     c.clip.w = 0.0f;
     return c;

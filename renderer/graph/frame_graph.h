@@ -6,6 +6,7 @@
 // one resource or a cycle is an ssao::Error naming the resource.
 #pragma once
 #include "gl/resources.h"
+#include "graph/frame_report.h"
 #include "graph/pass.h"
 
 #include <map>
@@ -16,19 +17,6 @@
 #include <vector>
 
 namespace ssao {
-
-struct PassReport {
-    std::string name;
-    bool ran = false;
-    bool culled = false; // not run: nothing wanted reads its outputs (FrameGraph::setWanted)
-    double gpuMs = -1.0; // GL_TIME_ELAPSED of this frame's run; -1 when skipped
-    std::vector<std::pair<std::string, double>> counters; // Pass::counters() of this frame's run
-};
-
-struct FrameReport {
-    std::vector<PassReport> passes; // in execution order
-    std::vector<std::string> ran() const;
-};
 
 class FrameGraph {
   public:

@@ -1,6 +1,5 @@
 #include "output/image.h"
 
-#include "gl/resources.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 
@@ -22,17 +21,6 @@ Image Image::channel(int c) const {
     for (size_t i = 0; i < out.data.size(); ++i)
         out.data[i] = data[i * channels + c];
     return out;
-}
-
-Image readBack(const gl::Texture2D& tex, int channels) {
-    Image img{tex.width(), tex.height(), channels, {}};
-    std::vector<float> raw = tex.readFloats(channels);
-    img.data.resize(raw.size());
-    const size_t row = size_t(img.width) * channels;
-    for (int y = 0; y < img.height; ++y)
-        std::copy_n(raw.begin() + ptrdiff_t(size_t(img.height - 1 - y) * row), row,
-                    img.data.begin() + ptrdiff_t(size_t(y) * row));
-    return img;
 }
 
 void writeExr(const Image& img, const std::string& path) {

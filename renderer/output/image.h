@@ -1,13 +1,10 @@
-// Float images read back from GL (rows top-to-bottom), EXR/PNG writers, and statistics.
+// CPU float images (rows top-to-bottom), EXR/PNG writers, and statistics; no GL (a texture is
+// read into one by gl/readback.h).
 #pragma once
 #include <string>
 #include <vector>
 
 namespace ssao {
-
-namespace gl {
-class Texture2D;
-}
 
 struct Image {
     int width = 0, height = 0, channels = 0;
@@ -26,9 +23,6 @@ inline int mapPixel(int p, int from, int to) {
 
 // q-quantile (0..1) of `values` (reordered in place); NaN when empty.
 float quantile(std::vector<float>& values, double q);
-
-// Reads `channels` channels of a texture (flipping GL's bottom-up rows).
-Image readBack(const gl::Texture2D& tex, int channels);
 
 // OpenEXR, 32-bit float channels (1 = Y, 3 = RGB, 4 = RGBA). Throws ssao::Error.
 void writeExr(const Image& img, const std::string& path);

@@ -4,19 +4,19 @@
 
 namespace ssao {
 
-ReferenceSettings referenceSettingsFor(const Renderer& r, int rays, ReferenceVariant variant) {
+ReferenceSettings referenceSettingsFor(const RadiusInfo& radius, int rays, ReferenceVariant variant) {
     ReferenceSettings s;
-    s.radius = r.radiusAtCentre().world;
+    s.radius = radius.world;
     s.samples = rays;
     s.variant = variant;
     return s;
 }
 
-nlohmann::json writeReferenceOutputs(const Renderer& r, const ReferenceImage& ref, const ReferenceSettings& s,
+nlohmann::json writeReferenceOutputs(const FrameCapture& c, const ReferenceImage& ref, const ReferenceSettings& s,
                                      const std::string& dir) {
     auto path = [&](const std::string& f) { return (std::filesystem::path(dir) / f).string(); };
-    const Image ao = readBack(r.texture("ao.denoised"), 1);
-    const Image raw = readBack(r.texture("ao.raw"), 1);
+    const Image& ao = c.get("ao.denoised").values;
+    const Image& raw = c.get("ao.raw").values;
     const Evaluation e = evaluate(ao, ref);
     const Evaluation eRaw = evaluate(raw, ref);
 

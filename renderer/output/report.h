@@ -1,8 +1,7 @@
-// Writes a rendered frame to disk: every buffer of the frame graph as EXR (float buffers) and a
-// PNG preview (the app's display mapping), and metrics.json.
+// Writes a captured frame (output/frame_capture.h) to disk: every buffer as EXR (float buffers)
+// and its PNG preview (the app's display mapping), and metrics.json. No GL: the capture holds it all.
 #pragma once
-#include "display/display_range.h"
-#include "renderer.h"
+#include "output/frame_capture.h"
 
 #include <nlohmann/json.hpp>
 
@@ -18,16 +17,15 @@ struct RunInfo {
     std::string glRenderer;
     std::string glPlatform;
     int timingFrames = 0;
-    ViewStyle style; // PNG previews: the same mapping as the app's views
 };
 
-// Statistics of the current frame: per buffer (size, non-finite count, min/mean/max/p05 over
-// geometry) and the AO summary ("ao": the denoised AO, "ao_raw"), plus the radius in use.
-nlohmann::json frameStatistics(const Renderer& r);
+// Statistics of the frame: per buffer (size, non-finite count, min/mean/max/p05 over geometry) and
+// the AO summary ("ao": the denoised AO, "ao_raw"), plus the radius in use.
+nlohmann::json frameStatistics(const FrameCapture& c);
 
 // Writes NAME.exr for every float buffer, NAME.png for every buffer, and metrics.json into `dir`
 // (created if missing). Returns the metrics.
-nlohmann::json writeOutputs(Renderer& r, const std::string& dir, const RunInfo& info,
+nlohmann::json writeOutputs(const FrameCapture& c, const std::string& dir, const RunInfo& info,
                             const FrameReport& firstFrame, const nlohmann::json& timing);
 
 } // namespace ssao

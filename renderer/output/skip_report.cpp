@@ -10,27 +10,27 @@
 
 namespace ssao {
 
-nlohmann::json skipCounters(const Renderer& r, const FrameReport& frame) {
+nlohmann::json skipCounters(const FrameCapture& c, const FrameReport& frame) {
     nlohmann::json j;
     std::vector<std::string> ran, clean, culled;
     for (const auto& p : frame.passes)
         (p.ran ? ran : p.culled ? culled : clean).push_back(p.name);
     j["passes"] = {{"ran", ran}, {"clean", clean}, {"culled", culled}};
-    const Settings& s = r.settings();
+    const Settings& s = c.settings;
     j["settings"] = {{"sky", s.skip.sky}, {"cull", s.skip.cull}, {"unused_targets", s.skip.unusedTargets},
                      {"adaptive", s.ao.adaptive}};
-    if (const Pass* g = r.graph().pass("gbuffer")) {
+    if (!c.gbufferCounters.empty()) {
         nlohmann::json gb = nlohmann::json::object();
-        for (const auto& [k, v] : g->counters())
+        for (const auto& [k, v] : c.gbufferCounters)
             gb[k] = v == std::floor(v) ? nlohmann::json(int64_t(v)) : nlohmann::json(v);
         j["gbuffer"] = gb;
     }
     // Sky and adaptive: from the linear depth (0 = sky), at the G-buffer's resolution.
-    const Image depth = readBack(r.texture("gbuffer.depth"), 1);
-    const Camera& cam = r.camera();
-    const glm::mat4 proj = cam.projection(float(r.width()) / float(std::max(r.height(), 1)));
-    const float upp = unitsPerPixelAtUnitDepth(proj, r.height());
-    const float diag = 2.0f * r.sceneRadius();
+    const Image& depth = c.get("gbuffer.depth").values;
+    const Camera& cam = c.camera;
+    const glm::mat4 proj = cam.projection(float(c.width) / float(std::max(c.height, 1)));
+    const float upp = unitsPerPixelAtUnitDepth(proj, c.height);
+    const float diag = 2.0f * c.sceneRadius;
     size_t sky = 0, geo = 0;
     double share = 0.0;
     for (float z : depth.data) {

@@ -3,14 +3,14 @@
 // culled outside the view and targets left unwritten; the sky share AO returns at once; and the
 // samples the adaptive count saved.
 #pragma once
-#include "renderer.h"
+#include "output/frame_capture.h"
 
 #include <nlohmann/json.hpp>
 
 namespace ssao {
 
-// `frame`: the report of the frame the counters describe (which passes ran). Reads back
-// gbuffer.depth for the sky and adaptive counts.
-nlohmann::json skipCounters(const Renderer& r, const FrameReport& frame);
+// `frame`: the report of the frame the counters describe (which passes ran); the capture's
+// gbuffer.depth gives the sky and adaptive counts.
+nlohmann::json skipCounters(const FrameCapture& c, const FrameReport& frame);
 
 } // namespace ssao

@@ -9,6 +9,14 @@
 
 namespace ssao {
 
+// The AO radius as it is at the centre of the view (the panel and metrics.json show it).
+struct RadiusInfo {
+    float sceneDiagonal = 0; // scene units
+    float depth = 0;         // view depth at the centre pixel (or of the orbit target over sky)
+    float world = 0;         // radius in scene units there
+    float pixels = 0;        // radius in G-buffer pixels there
+};
+
 // The first step of a march lands at least this far from the pixel, in pixels (XeGTAO's minS; HBAO's
 // "first step >= 1 px"): sampling the pixel itself gives a zero delta and self-occlusion lines.
 constexpr float kMinFirstStepPx = 1.3f;

@@ -3,8 +3,10 @@
 // dragging, what fits on a 900-pixel-high window, rows that do not apply, and views that match
 // the PNG previews.
 #include "gl_fixture.h"
+#include "gl/readback.h"
 #include "ui_driver.h"
 
+#include "display/capture.h"
 #include "output/report.h"
 #include "scene/view_fit.h"
 #include "test_util.h"
@@ -201,7 +203,7 @@ TEST_F(AppUse, ViewsAndPngPreviewsUseOneMapping) {
     const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/views_vs_png";
     fs::remove_all(dir);
     RunInfo info;
-    writeOutputs(r, dir, info, FrameReport{}, nlohmann::json::object());
+    writeOutputs(captureFrame(r), dir, info, FrameReport{}, nlohmann::json::object());
     for (const char* name : {"gbuffer.depth", "gbuffer.position", "gbuffer.normal", "ao.raw", "composite"}) {
         const auto* view = ui_->app().views().find(name);
         ASSERT_NE(view, nullptr) << name;

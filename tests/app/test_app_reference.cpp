@@ -3,6 +3,7 @@
 // buffers, refine to the target, follow the AO, restart when the view changes, stop when turned
 // off, and never hold up the app's destruction. Waits are bounded loops of frames, never timings.
 #include "gl_fixture.h"
+#include "gl/readback.h"
 #include "ui_driver.h"
 
 #include "scene/builtin_scenes.h"

@@ -1,6 +1,7 @@
 // The split view: chain B of the same frame graph (sharing the G-buffer), comparing composites or
 // AO buffers, their signed difference, and a divider that can be dragged.
 #include "gl_fixture.h"
+#include "gl/readback.h"
 #include "ui_driver.h"
 
 #include "test_util.h"

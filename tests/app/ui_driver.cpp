@@ -1,4 +1,5 @@
 #include "ui_driver.h"
+#include "gl/readback.h"
 
 #include "output/image.h"
 

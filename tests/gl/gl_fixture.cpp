@@ -1,4 +1,5 @@
 #include "gl_fixture.h"
+#include "gl/readback.h"
 
 #include "scene/scene.h"
 

@@ -2,6 +2,7 @@
 // G-buffer's do (same pixels covered, same linear depth on interior pixels), and judging a frame
 // against it gives physically sensible numbers.
 #include "gl_fixture.h"
+#include "gl/readback.h"
 
 #include "metrics/evaluate.h"
 #include "output/reference_report.h"
@@ -74,7 +75,7 @@ TEST_F(ReferenceGl, JudgingAFrameGivesSensibleNumbers) {
     auto r = makeRenderer(plane, defaultSettings(), 160, 90);
     r->render();
     EmbreeScene rt(plane);
-    const ReferenceSettings rs = referenceSettingsFor(*r, 64, ReferenceVariant::Visibility);
+    const ReferenceSettings rs = referenceSettingsFor(r->radiusAtCentre(), 64, ReferenceVariant::Visibility);
     const ReferenceImage ref = traceReference(rt, r->camera(), 160, 90, rs);
     long geo = 0;
     for (size_t i = 0; i < ref.ao.size(); ++i)
@@ -96,7 +97,7 @@ TEST_F(ReferenceGl, JudgingAFrameGivesSensibleNumbers) {
     rc->render();
     EmbreeScene rtc(cornell);
     const ReferenceImage refc =
-        traceReference(rtc, rc->camera(), 240, 135, referenceSettingsFor(*rc, 128, ReferenceVariant::Visibility));
+        traceReference(rtc, rc->camera(), 240, 135, referenceSettingsFor(rc->radiusAtCentre(), 128, ReferenceVariant::Visibility));
     const Evaluation ec = evaluate(readBack(rc->texture("ao.denoised"), 1), refc);
     std::printf("CornellBox 240x135 default kernel: RMSE %.4f bias %+.4f PSNR %.2f dB SSIM %.4f, edge %.4f "
                 "interior %.4f\n",

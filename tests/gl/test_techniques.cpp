@@ -2,6 +2,7 @@
 // and a floor beside a wall against the closed form of cosine-weighted visibility within R,
 //   AO(d) = 1 - (acos a - a sqrt(1 - a^2)) / pi,  a = min(d / R, 1).
 #include "closed_form.h"
+#include "gl/readback.h"
 #include "gl_fixture.h"
 
 #include "metrics/evaluate.h"
@@ -62,7 +63,7 @@ TEST_F(Techniques, TheBilateralDenoiserKeepsAoFromCrossingEdges) {
         auto r = makeRenderer(scene, s, 480, 270);
         r->render();
         const ReferenceImage ref = traceReference(rt, r->camera(), 480, 270,
-                                                  referenceSettingsFor(*r, 64, ReferenceVariant::Visibility));
+                                                  referenceSettingsFor(r->radiusAtCentre(), 64, ReferenceVariant::Visibility));
         const Evaluation e = evaluate(readBack(r->texture("ao.denoised"), 1), ref);
         ASSERT_EQ(e.metrics.nonFinite, 0);
         edge[k] = e.metrics.rmseEdge;
@@ -82,7 +83,7 @@ TEST_F(Techniques, TheVisibilityBitmaskBeatsGtaoOnTheReferenceAndThicknessActs) 
         auto r = makeRenderer(scene, s, w, h);
         r->render();
         const ReferenceImage ref =
-            traceReference(rt, r->camera(), w, h, referenceSettingsFor(*r, 64, ReferenceVariant::Visibility));
+            traceReference(rt, r->camera(), w, h, referenceSettingsFor(r->radiusAtCentre(), 64, ReferenceVariant::Visibility));
         const Image ao = readBack(r->texture("ao.denoised"), 1);
         EXPECT_TRUE(finiteInRange(ao, 0.0f, 1.0f));
         const Evaluation e = evaluate(ao, ref);

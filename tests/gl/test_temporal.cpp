@@ -1,6 +1,7 @@
 // Temporal accumulation: frames with new noise blend into a lower-error image, then nothing
 // re-runs; the result is deterministic; moving the camera reprojects the history without ghosts.
 #include "gl_fixture.h"
+#include "gl/readback.h"
 
 #include "metrics/evaluate.h"
 #include "output/reference_report.h"
@@ -39,7 +40,7 @@ TEST_F(Temporal, EightFramesLowerTheErrorThenTheFrameStaysStill) {
         EXPECT_EQ(frames, on ? 8 : 1);
         EXPECT_TRUE(r->render().ran().empty()) << "a converged frame re-runs nothing";
         const ReferenceImage ref = traceReference(
-            rt, r->camera(), 320, 180, referenceSettingsFor(*r, 128, ReferenceVariant::Visibility));
+            rt, r->camera(), 320, 180, referenceSettingsFor(r->radiusAtCentre(), 128, ReferenceVariant::Visibility));
         const Image ao = readBack(r->texture("ao.denoised"), 1);
         ASSERT_TRUE(finiteInRange(ao, 0.0f, 1.0f));
         rmse[on] = evaluate(ao, ref).metrics.rmse;
