@@ -225,8 +225,8 @@ std::vector<const Resource*> Renderer::buffers() const {
     return out;
 }
 
-std::optional<PixelInspection> Renderer::inspect(int branch, glm::ivec2 pixel) {
-    const Chain b = branch == 1 ? Chain::b() : Chain::a();
+std::optional<PixelInspection> Renderer::inspect(int chain, glm::ivec2 pixel) {
+    const Chain b = chain == 1 ? Chain::b() : Chain::a();
     // Chain B's AO may be an alias of A's: inspect the pass that really produced it.
     const Resource* ao = graph_.find(b.res("ao.raw"));
     if (!ao || !frame_.scene || graphStale_) return std::nullopt; // render() first

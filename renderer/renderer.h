@@ -80,9 +80,9 @@ class Renderer {
     const Resource& resource(const std::string& name) const { return graph_.get(name); }
     // Chain A's and the shared buffers in production order (what the grid, EXR/PNG and metrics list).
     std::vector<const Resource*> buffers() const;
-    // GPU sample inspector for chain `branch` (0 = A, 1 = B) at a pixel of the G-buffer resolution
+    // GPU sample inspector for chain `chain` (0 = A, 1 = B) at a pixel of the G-buffer resolution
     // (y from the top); nullopt when the technique records no taps or the pixel is outside.
-    std::optional<PixelInspection> inspect(int branch, glm::ivec2 pixel);
+    std::optional<PixelInspection> inspect(int chain, glm::ivec2 pixel);
 
     // Radius in displayed pixels (see setDisplayScale); reads one texel of gbuffer.depth.
     RadiusInfo radiusAtCentre() const;

@@ -29,11 +29,9 @@ std::string absoluteSpec(const std::string& spec) {
 } // namespace
 
 AppCore::AppCore(const AppOptions& o)
-    : opts_(o), store_(PresetStore::standard(o.userPresetDir)), reference_(o.wake) {
-    if (opts_.shaderDir.empty()) opts_.shaderDir = shaderRoot();
-    renderScale = std::clamp(o.renderScale, 0.25f, 1.0f);
-    interactiveScale = std::clamp(o.interactiveScale, 0.1f, 1.0f);
-    referenceOn = o.reference;
+    : opts_(o), store_(PresetStore::standard(o.userPresetDir)),
+      frames_(o.shaderDir.empty() ? shaderRoot() : o.shaderDir, o.renderScale, o.interactiveScale, o.reference,
+              o.wake) {
     loaded_.name = "defaults";
     // A bad --preset or --scene opens the window anyway, on the defaults and the built-in scene, with
     // the problem in the status line: the user fixes it from the panel instead of reading a log.
@@ -46,7 +44,6 @@ AppCore::AppCore(const AppOptions& o)
         }
     }
     settings_ = loaded_.settings;
-    renderer_ = std::make_unique<Renderer>(opts_.shaderDir);
     std::string spec = !o.scene.empty() ? o.scene : loaded_.scene.value_or("builtin:showcase");
     std::optional<Scene> scene;
     try {
@@ -61,7 +58,6 @@ AppCore::AppCore(const AppOptions& o)
         camera_.reset(cameraToScene(*loaded_.camera, *scene_), scene_->bounds.radius(), scene_->bounds.center());
     if (o.projection) camera_.setProjection(*o.projection);
     if (o.depth) camera_.setDepth(*o.depth);
-    shaderTime_ = renderer_->shaders().newestSourceTime();
     if (!startupError.empty())
         setStatus(startupError + " (showing " + spec + ")", true);
     else
@@ -75,7 +71,7 @@ AppCore::~AppCore() = default;
 void AppCore::setStatus(const std::string& s, bool error) {
     status_ = s;
     statusError_ = error;
-    poke();
+    frames_.keepAwake();
 }
 
 std::string AppCore::radiusNote() const {
@@ -96,14 +92,11 @@ std::string AppCore::radiusNote() const {
 void AppCore::adoptScene(Scene s, const std::string& spec, bool keepCamera) {
     scene_ = std::make_shared<const Scene>(std::move(s));
     sceneSpec_ = absoluteSpec(spec);
-    renderer_->setScene(*scene_);
+    frames_.sceneChanged(*scene_);
     // A radius the preset did not choose follows the scene: a radius tuned by hand for the last
     // scene (e.g. 0.5 m) would make a millimetre model flat grey.
     if (!loaded_.fixesRadius()) resetRadius(settings_);
-    timingFull_ = {};
-    timingInteractive_ = {};
     if (!keepCamera) resetCamera();
-    poke();
 }
 
 // A scene's cameras and the framed view take the lens the user chose (projection, depth mode);
@@ -112,7 +105,7 @@ void AppCore::resetCameraKeepingLens(Camera c) {
     c.projectionKind = camera_.camera().projectionKind;
     c.depth = camera_.camera().depth;
     camera_.reset(c, scene_->bounds.radius(), scene_->bounds.center());
-    poke();
+    frames_.keepAwake();
 }
 
 void AppCore::resetCamera() {
@@ -122,7 +115,7 @@ void AppCore::resetCamera() {
 void AppCore::selectSceneCamera(int index) {
     if (index >= 0 && index < int(scene_->cameras.size()))
         resetCameraKeepingLens(scene_->cameras[size_t(index)].second);
-    poke();
+    frames_.keepAwake();
 }
 
 bool AppCore::attempt(const char* what, const std::function<std::string()>& action) {
@@ -181,7 +174,7 @@ bool AppCore::savePreset(const std::string& name) {
         for (const auto& row : paramTable())
             p.keys.insert(row.key); // a saved preset is complete: it fixes every parameter
         p.scene = sceneSpec_;
-        if (fullSize_.first > 0) p.size = fullSize_; // the size when still, not the reduced one while moving
+        if (frames_.fullSize().first > 0) p.size = frames_.fullSize(); // when still, not the reduced size while moving
         p.camera = cameraToFile(camera_.camera(), *scene_); // a bookmark, in the file's coordinates
         const std::string path = store_.save(p);
         loaded_ = p;
@@ -209,17 +202,17 @@ bool AppCore::unsavedChanges() const {
 }
 
 std::optional<Settings> AppCore::settingsB() {
-    if (viewMode != ViewMode::Split) return std::nullopt;
-    if (splitKind == SplitKind::AoOnOff) {
+    if (view_.mode != ViewMode::Split) return std::nullopt;
+    if (view_.splitKind == SplitKind::AoOnOff) {
         Settings s = settings_;
         s.composite.useAo = false;
         return s;
     }
     // The B preset is read from disk when it is chosen, not on every frame.
-    if (splitPresetB != cachedSplitPreset_) {
-        cachedSplitPreset_ = splitPresetB;
+    if (view_.splitPresetB != cachedSplitPreset_) {
+        cachedSplitPreset_ = view_.splitPresetB;
         try {
-            cachedSplitSettings_ = store_.open(splitPresetB).settings;
+            cachedSplitSettings_ = store_.open(view_.splitPresetB).settings;
         } catch (const std::exception& e) {
             cachedSplitSettings_.reset();
             setStatus(std::string("split view: ") + e.what(), true);
@@ -235,9 +228,25 @@ void AppCore::drawUi() {
     drawControlPanel(*this, ImVec2(0, 0), ImVec2(panelWidth, io.DisplaySize.y));
     drawMainView(*this, ImVec2(panelWidth, 0),
                  ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - infoHeight));
-    drawInfoStrip(*this, ImVec2(panelWidth, io.DisplaySize.y - infoHeight),
+    drawInfoStrip(frames_, inspector_, view_, ImVec2(panelWidth, io.DisplaySize.y - infoHeight),
                   ImVec2(io.DisplaySize.x - panelWidth, infoHeight));
-    if (busyFrames_ > 0) --busyFrames_;
+    frames_.endUiFrame();
+}
+
+void AppCore::renderIfNeeded(int viewW, int viewH) {
+    frames_.render({camera_.camera(), settings_, settingsB(), scene_}, view_, viewW, viewH);
+}
+
+void AppCore::pollShaderReload() {
+    frames_.pollShaderReload();
+    if (frames_.reloadedShaders()) setStatus("shaders reloaded", false);
+}
+
+const std::optional<PixelInspection>& AppCore::inspection() {
+    std::string error;
+    const auto& in = inspector_.inspection(frames_.renderer(), view_, frames_.interacting(), error);
+    if (!error.empty()) frames_.setShaderError(error);
+    return in;
 }
 
 } // namespace ssao

@@ -9,10 +9,10 @@ namespace ssao {
 
 namespace {
 
-void timingSection(AppCore& app) {
-    const AppCore::Timing& full = app.timing(false);
-    const AppCore::Timing& moving = app.timing(true);
-    const auto& order = app.renderer().graph().passOrder();
+void timingSection(FrameDriver& frames, ViewState& view) {
+    const FrameDriver::Timing& full = frames.timing(false);
+    const FrameDriver::Timing& moving = frames.timing(true);
+    const auto& order = frames.renderer().graph().passOrder();
     if (ImGui::BeginTable("timing", 3, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
         char h1[48], h2[48];
         std::snprintf(h1, sizeof h1, "full %dx%d", full.width, full.height);
@@ -26,7 +26,7 @@ void timingSection(AppCore& app) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(name.c_str());
-            const AppCore::Timing* t[2] = {&full, &moving};
+            const FrameDriver::Timing* t[2] = {&full, &moving};
             for (int i = 0; i < 2; ++i) {
                 ImGui::TableNextColumn();
                 const double ms = t[i]->average(name);
@@ -47,39 +47,39 @@ void timingSection(AppCore& app) {
         }
         ImGui::EndTable();
     }
-    rememberRect(app, "timing");
-    std::vector<float> f(app.frameMs().begin(), app.frameMs().end());
+    rememberRect(view, "timing");
+    std::vector<float> f(frames.frameMs().begin(), frames.frameMs().end());
     if (!f.empty()) {
         const float width =
             std::max(ImGui::GetContentRegionAvail().x, 50.0f); // an explicit width: -1 draws nothing
         ImGui::PlotLines("##frame", f.data(), int(f.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(width, 40));
-        rememberRect(app, "timing#plot");
+        rememberRect(view, "timing#plot");
         ImGui::TextDisabled("frame %.1f ms (CPU, UI included)%s", f.back(),
-                            app.renderedInteractive() ? ", reduced resolution while moving" : "");
+                            frames.renderedInteractive() ? ", reduced resolution while moving" : "");
     }
     std::string ran;
-    for (auto& n : app.lastReport().ran())
+    for (auto& n : frames.lastReport().ran())
         ran += n + " ";
     ImGui::TextDisabled("last change re-ran: %s", ran.c_str());
 }
 
-void inspectorSection(AppCore& app) {
-    ImGui::Checkbox("samples at cursor", &app.showSamples);
+void inspectorSection(FrameDriver& frames, Inspector& inspector, ViewState& view) {
+    ImGui::Checkbox("samples at cursor", &view.showSamples);
     ImGui::SameLine();
-    ImGui::Checkbox("pin pixel", &app.pinPixel);
-    rememberRect(app, "inspector");
-    const glm::ivec2 px = app.hoverPixel();
+    ImGui::Checkbox("pin pixel", &view.pinPixel);
+    rememberRect(view, "inspector");
+    const glm::ivec2 px = Inspector::hoverPixel(frames.renderer(), view);
     if (px.x < 0) {
         ImGui::TextDisabled("hover the image to inspect a pixel");
         return;
     }
-    ImGui::Text("pixel %d, %d%s", px.x, px.y, app.hoverBranch ? "  (B)" : "");
-    const std::string prefix = app.hoverBranch ? "b." : "";
-    for (const Resource* r : app.renderer().buffers()) {
+    ImGui::Text("pixel %d, %d%s", px.x, px.y, view.hoverChain ? "  (B)" : "");
+    const std::string prefix = view.hoverChain ? "b." : "";
+    for (const Resource* r : frames.renderer().buffers()) {
         std::string name = r->desc.name;
-        if (!prefix.empty() && app.renderer().graph().find(prefix + name)) name = prefix + name;
+        if (!prefix.empty() && frames.renderer().graph().find(prefix + name)) name = prefix + name;
         const std::vector<float> v =
-            referenceEmptyReason(app, name).empty() ? app.valueAt(name, px) : std::vector<float>{};
+            referenceEmptyReason(frames, name).empty() ? inspector.valueAt(frames.renderer(), name, px) : std::vector<float>{};
         std::string text = v.empty() ? "         -" : ""; // no reference yet, or not computed in this view
         for (float x : v) {
             char buf[24];
@@ -88,7 +88,9 @@ void inspectorSection(AppCore& app) {
         }
         ImGui::Text("%-18s%s", name.c_str(), text.c_str()); // as many values as the buffer has channels
     }
-    const auto& pi = app.inspection();
+    std::string error;
+    const auto& pi = inspector.inspection(frames.renderer(), view, frames.interacting(), error);
+    if (!error.empty()) frames.setShaderError(error);
     if (!pi) {
         ImGui::TextDisabled("the technique records no taps here");
         return;
@@ -110,18 +112,18 @@ void inspectorSection(AppCore& app) {
 
 } // namespace
 
-void drawInfoStrip(AppCore& app, ImVec2 pos, ImVec2 size) {
+void drawInfoStrip(FrameDriver& frames, Inspector& inspector, ViewState& view, ImVec2 pos, ImVec2 size) {
     beginFixedWindow("info", pos, size, ImGuiWindowFlags_NoTitleBar);
     if (ImGui::BeginTable("info", 3, ImGuiTableFlags_BordersInnerV)) {
         ImGui::TableSetupColumn("timing", ImGuiTableColumnFlags_WidthStretch, 0.38f);
         ImGui::TableSetupColumn("reference", ImGuiTableColumnFlags_WidthStretch, 0.22f);
         ImGui::TableSetupColumn("inspector", ImGuiTableColumnFlags_WidthStretch, 0.40f);
         ImGui::TableNextColumn();
-        timingSection(app);
+        timingSection(frames, view);
         ImGui::TableNextColumn();
-        drawReferenceSection(app);
+        drawReferenceSection(frames, view);
         ImGui::TableNextColumn();
-        inspectorSection(app);
+        inspectorSection(frames, inspector, view);
         ImGui::EndTable();
     }
     ImGui::End();

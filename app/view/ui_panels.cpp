@@ -8,9 +8,9 @@
 
 namespace ssao {
 
-void rememberRect(AppCore& app, const std::string& key) {
+void rememberRect(ViewState& view, const std::string& key) {
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    app.widgetRects[key] = ImVec4(a.x, a.y, b.x, b.y);
+    view.widgetRects[key] = ImVec4(a.x, a.y, b.x, b.y);
 }
 
 namespace {
@@ -27,7 +27,7 @@ bool inputText(const char* label, std::string& s, bool enter = false) {
 
 bool tab(AppCore& app, const char* name) {
     const bool open = ImGui::BeginTabItem(name);
-    rememberRect(app, std::string("tab#") + name);
+    rememberRect(app.view(), std::string("tab#") + name);
     return open;
 }
 
@@ -42,7 +42,7 @@ void sceneSection(AppCore& app) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("a .gltf/.glb path; Enter or Open loads it");
     ImGui::SameLine();
     if (ImGui::Button("Open") || enter) app.openScene(path);
-    rememberRect(app, "scene#open");
+    rememberRect(app.view(), "scene#open");
     for (const auto& name : builtinSceneNames()) {
         if (ImGui::SmallButton(name.c_str())) app.openScene("builtin:" + name);
         ImGui::SameLine();
@@ -69,12 +69,12 @@ void sceneSection(AppCore& app) {
         ImGui::TextUnformatted(label);
         ImGui::SameLine();
         if (ImGui::RadioButton(a, &v, 0)) clicked = 0;
-        rememberRect(app, keyA);
+        rememberRect(app.view(), keyA);
         ImGui::SameLine();
         if (ImGui::RadioButton(b, &v, 1)) clicked = 1;
-        rememberRect(app, keyB);
+        rememberRect(app.view(), keyB);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
-        if (clicked >= 0) app.poke();
+        if (clicked >= 0) app.frames().keepAwake();
         return clicked;
     };
     const int clip = choice("Clip planes", cc.camera().clip == ClipMode::Fit ? 0 : 1, "fit to scene",
@@ -118,29 +118,29 @@ void presetSection(AppCore& app) {
             if (e.name == app.loadedPreset().name && app.unsavedChanges()) label += " *";
             if (ImGui::Selectable(label.c_str(), selected == e.name)) selected = e.name;
             if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(0)) app.openPreset(e.name);
-            rememberRect(app, "preset#" + e.name);
+            rememberRect(app.view(), "preset#" + e.name);
         }
         ImGui::EndListBox();
     }
     const PresetEntry* sel = store.find(selected);
     ImGui::BeginDisabled(!sel);
     if (ImGui::Button("Load")) app.openPreset(selected);
-    rememberRect(app, "preset#load");
+    rememberRect(app.view(), "preset#load");
     ImGui::SameLine();
     ImGui::BeginDisabled(!sel || sel->builtin);
-    if (ImGui::Button("Rename to name")) app.renamePreset(selected, app.newPresetName);
-    rememberRect(app, "preset#rename");
+    if (ImGui::Button("Rename to name")) app.renamePreset(selected, app.view().newPresetName);
+    rememberRect(app.view(), "preset#rename");
     ImGui::SameLine();
     if (ImGui::Button("Delete")) app.deletePreset(selected);
-    rememberRect(app, "preset#delete");
+    rememberRect(app.view(), "preset#delete");
     ImGui::EndDisabled();
     ImGui::EndDisabled();
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
-    inputText("name##newpreset", app.newPresetName);
-    rememberRect(app, "preset#name");
+    inputText("name##newpreset", app.view().newPresetName);
+    rememberRect(app.view(), "preset#name");
     ImGui::SameLine();
-    if (ImGui::Button("Save")) app.savePreset(app.newPresetName);
-    rememberRect(app, "preset#save");
+    if (ImGui::Button("Save")) app.savePreset(app.view().newPresetName);
+    rememberRect(app.view(), "preset#save");
     ImGui::TextWrapped("A saved preset keeps the settings, the scene, the view size and the camera; "
                        "`ssaolab render --preset NAME` renders it headless.");
     ImGui::TextDisabled("user presets: %s", store.userDir().c_str());
@@ -166,9 +166,9 @@ void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size) {
     ImGui::TextWrapped("%s", app.status().c_str());
     ImGui::PopStyleColor();
     ImGui::EndChild();
-    if (!app.shaderError().empty()) {
+    if (!app.frames().shaderError().empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.4f, 0.4f, 1));
-        ImGui::TextWrapped("shader error (last good shaders still running):\n%s", app.shaderError().c_str());
+        ImGui::TextWrapped("shader error (last good shaders still running):\n%s", app.frames().shaderError().c_str());
         ImGui::PopStyleColor();
     }
     if (ImGui::BeginTabBar("panel")) {

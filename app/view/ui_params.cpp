@@ -78,7 +78,7 @@ bool paramWidget(AppCore& app, const Param& p, Settings& s) {
         if (ImGui::BeginCombo(label.c_str(), p.choices[size_t(before)].c_str())) {
             for (size_t i = 0; i < p.choices.size(); ++i) {
                 if (ImGui::Selectable(p.choices[i].c_str(), size_t(before) == i)) p.set(s, double(i));
-                rememberRect(app, p.key + "#" + p.choices[i]);
+                rememberRect(app.view(), p.key + "#" + p.choices[i]);
             }
             ImGui::EndCombo();
         }
@@ -86,15 +86,15 @@ bool paramWidget(AppCore& app, const Param& p, Settings& s) {
     }
     }
     // Dragging a slider renders at the interactive scale until it is released (N8AO does this).
-    if (slider && ImGui::IsItemActive()) app.noteInteraction();
-    rememberRect(app, p.key);
+    if (slider && ImGui::IsItemActive()) app.frames().noteInteraction();
+    rememberRect(app.view(), p.key);
     ImGui::EndDisabled();
     tooltip(p, applies);
     ImGui::SameLine();
     ImGui::BeginDisabled(p.isDefault(s) || !applies);
     if (ImGui::Button("R", ImVec2(resetWidth, 0))) p.set(s, p.def);
     ImGui::EndDisabled();
-    rememberRect(app, p.key + "#reset");
+    rememberRect(app.view(), p.key + "#reset");
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("reset to %s", p.format(p.def).c_str());
     ImGui::PopID();
@@ -107,7 +107,7 @@ void radiusLine(AppCore& app) {
     if (r.width() <= 0) {
         ImGui::TextDisabled("radius: shown after the first frame");
     } else {
-        const RadiusInfo& ri = app.radiusInfo();
+        const RadiusInfo& ri = app.frames().radiusInfo();
         const bool tiny = ri.pixels<2.0f, huge = ri.world> 0.25f * ri.sceneDiagonal;
         const ImVec4 colour =
             tiny || huge ? ImVec4(1, 0.7f, 0.3f, 1) : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
@@ -121,7 +121,7 @@ void radiusLine(AppCore& app) {
                 "The AO radius in scene units and in pixels at the centre of the view; the scene's\n"
                 "bounding-box diagonal. Under 2 pixels the kernel sees nothing: AO goes flat grey.");
     }
-    rememberRect(app, "radius#info");
+    rememberRect(app.view(), "radius#info");
 }
 
 } // namespace
@@ -146,7 +146,7 @@ void drawParameters(AppCore& app) {
             ImGui::TextDisabled("%s", group.c_str());
             ImGui::Separator();
         }
-        if (paramWidget(app, p, s)) app.poke();
+        if (paramWidget(app, p, s)) app.frames().keepAwake();
     }
 }
 

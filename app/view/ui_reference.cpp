@@ -55,16 +55,16 @@ void progressLine(const LiveReference::Status& s) {
 
 } // namespace
 
-std::string referenceTag(AppCore& app) {
-    const LiveReference::Status s = app.reference().status();
+std::string referenceTag(const FrameDriver& frames) {
+    const LiveReference::Status s = frames.reference().status();
     char buf[64] = "";
     if (s.rays > 0) std::snprintf(buf, sizeof buf, "  %d/%d rays", s.rays, s.target);
     return buf;
 }
 
-std::string referenceEmptyReason(AppCore& app, const std::string& buffer) {
+std::string referenceEmptyReason(const FrameDriver& frames, const std::string& buffer) {
     if (buffer.rfind("reference.", 0) != 0) return "";
-    const LiveReference::Status s = app.reference().status();
+    const LiveReference::Status s = frames.reference().status();
     if (s.rays > 0) return "";
     switch (s.state) {
     case State::Waiting:
@@ -76,24 +76,24 @@ std::string referenceEmptyReason(AppCore& app, const std::string& buffer) {
     }
 }
 
-void drawReferenceSection(AppCore& app) {
-    if (ImGui::Checkbox("vs reference", &app.referenceOn)) app.poke();
-    rememberRect(app, "reference#on");
+void drawReferenceSection(FrameDriver& frames, ViewState& view) {
+    if (ImGui::Checkbox("vs reference", &frames.referenceOn)) frames.keepAwake();
+    rememberRect(view, "reference#on");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "Ray-traced reference AO of this view (Embree, on the CPU in the background, one core left\n"
             "to the renderer): cosine-weighted visibility within the AO's world radius at the centre\n"
             "of the view, refined up to %d rays per pixel; restarted when the camera, the radius, the\n"
             "size or the scene changes. Shown as reference.ao and reference.error.",
-            app.referenceRays);
-    if (!app.referenceOn) {
+            frames.referenceRays);
+    if (!frames.referenceOn) {
         ImGui::TextDisabled("off");
         return;
     }
-    const LiveReference::Status s = app.reference().status();
+    const LiveReference::Status s = frames.reference().status();
     progressLine(s);
-    rememberRect(app, "reference#progress");
-    const auto& m = app.reference().metrics();
+    rememberRect(view, "reference#progress");
+    const auto& m = frames.reference().metrics();
     if (!m || s.state == State::Waiting) return;
     if (ImGui::BeginTable("reference", 2, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
         row("RMSE", "root mean square of ao.denoised - reference over geometry pixels (linear AO)", "%.4f",
@@ -110,7 +110,7 @@ void drawReferenceSection(AppCore& app) {
             m->referenceNoise);
         ImGui::EndTable();
     }
-    rememberRect(app, "reference#metrics");
+    rememberRect(view, "reference#metrics");
     ImGui::TextDisabled("R %.4g units, %.1f s, %.1f Mrays/s", s.radius, s.seconds, s.mraysPerSecond);
 }
 

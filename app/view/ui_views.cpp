@@ -44,17 +44,17 @@ bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
                                ImGuiButtonFlags_MouseButtonMiddle);
     const ImGuiIO& io = ImGui::GetIO();
     CameraController& cc = app.cameraController();
-    const bool split = app.viewMode == ViewMode::Split && !app.splitDifference;
-    const float divider = pos.x + size.x * app.splitPosition;
+    const bool split = app.view().mode == ViewMode::Split && !app.view().splitDifference;
+    const float divider = pos.x + size.x * app.view().splitPosition;
     bool moved = false;
     if (ImGui::IsItemActivated()) // a press near the divider drags it until released
-        app.draggingDivider = split && ImGui::IsMouseClicked(ImGuiMouseButton_Left) &&
+        app.view().draggingDivider = split && ImGui::IsMouseClicked(ImGuiMouseButton_Left) &&
                               std::abs(io.MousePos.x - divider) <= 8.0f;
-    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) app.draggingDivider = false;
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) app.view().draggingDivider = false;
     if (ImGui::IsItemActive()) {
-        if (app.draggingDivider) { // drag the divider, not the camera
-            app.splitPosition = std::clamp((io.MousePos.x - pos.x) / size.x, 0.0f, 1.0f);
-            app.poke();
+        if (app.view().draggingDivider) { // drag the divider, not the camera
+            app.view().splitPosition = std::clamp((io.MousePos.x - pos.x) / size.x, 0.0f, 1.0f);
+            app.frames().keepAwake();
         } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f) &&
                    (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
             cc.rotate(io.MouseDelta.x, io.MouseDelta.y);
@@ -81,13 +81,13 @@ bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
                 moved = true;
             }
         }
-        if (!app.pinPixel) {
+        if (!app.view().pinPixel) {
             const ImVec2 rel((io.MousePos.x - pos.x) / size.x, (io.MousePos.y - pos.y) / size.y);
-            app.hoverUv = glm::vec2(std::clamp(rel.x, 0.0f, 0.99999f), std::clamp(rel.y, 0.0f, 0.99999f));
-            app.hoverBranch = split && io.MousePos.x > divider ? 1 : 0;
+            app.view().hoverUv = glm::vec2(std::clamp(rel.x, 0.0f, 0.99999f), std::clamp(rel.y, 0.0f, 0.99999f));
+            app.view().hoverChain = split && io.MousePos.x > divider ? 1 : 0;
         }
     }
-    if (moved) app.noteInteraction();
+    if (moved) app.frames().noteInteraction();
     const bool click = ImGui::IsItemDeactivated() &&
                        ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).x == 0.0f &&
                        ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).y == 0.0f;
@@ -105,7 +105,7 @@ void label(ImDrawList* dl, ImVec2 pos, const std::string& text, float maxWidth =
 
 // The reference's buffers say how far the trace is (or why it waits) on their label.
 std::string tag(AppCore& app, const std::string& buffer) {
-    return buffer.rfind("reference.", 0) == 0 ? referenceTag(app) : std::string();
+    return buffer.rfind("reference.", 0) == 0 ? referenceTag(app.frames()) : std::string();
 }
 
 // A buffer with nothing to show yet (its zeros would read as "fully occluded" or "no error"):
@@ -123,7 +123,7 @@ void cover(ImDrawList* dl, ImVec2 p, ImVec2 q, const std::string& why) {
 
 void drawSamples(AppCore& app, ImDrawList* dl, ImVec2 pos, ImVec2 size) {
     const glm::ivec2 px = app.hoverPixel();
-    if (!app.showSamples || px.x < 0) return;
+    if (!app.view().showSamples || px.x < 0) return;
     const auto& pi = app.inspection();
     if (!pi || !pi->geometry) return;
     const Renderer& r = app.renderer();
@@ -142,88 +142,88 @@ void drawSamples(AppCore& app, ImDrawList* dl, ImVec2 pos, ImVec2 size) {
 }
 
 void toolbar(AppCore& app) {
-    int mode = int(app.viewMode);
+    int mode = int(app.view().mode);
     ImGui::RadioButton("Grid", &mode, int(ViewMode::Grid));
     ImGui::SameLine();
     ImGui::RadioButton("Single", &mode, int(ViewMode::Single));
     ImGui::SameLine();
     ImGui::RadioButton("Split A|B", &mode, int(ViewMode::Split));
-    rememberRect(app, "mode#split");
-    if (mode != int(app.viewMode)) app.viewMode = ViewMode(mode), app.poke();
+    rememberRect(app.view(), "mode#split");
+    if (mode != int(app.view().mode)) app.view().mode = ViewMode(mode), app.frames().keepAwake();
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
-    if (ImGui::SliderFloat("resolution", &app.renderScale, 0.25f, 1.0f, "%.2fx",
+    if (ImGui::SliderFloat("resolution", &app.frames().renderScale, 0.25f, 1.0f, "%.2fx",
                            ImGuiSliderFlags_AlwaysClamp))
-        app.poke();
+        app.frames().keepAwake();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Render resolution relative to the view when input is still");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
-    if (ImGui::SliderFloat("moving", &app.interactiveScale, 0.1f, 1.0f, "%.2fx",
+    if (ImGui::SliderFloat("moving", &app.frames().interactiveScale, 0.1f, 1.0f, "%.2fx",
                            ImGuiSliderFlags_AlwaysClamp))
-        app.poke();
+        app.frames().keepAwake();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "Resolution while the camera moves or a slider is dragged; refined to full when input stops");
     ImGui::SameLine();
-    if (ImGui::Checkbox("fit range", &app.style.fit)) app.poke();
+    if (ImGui::Checkbox("fit range", &app.view().style.fit)) app.frames().keepAwake();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "Stretch every buffer over its 1st..99th percentile on geometry (depth and position always are)");
     ImGui::SameLine();
-    if (ImGui::Checkbox("false colour", &app.style.falseColor)) app.poke();
+    if (ImGui::Checkbox("false colour", &app.view().style.falseColor)) app.frames().keepAwake();
     // The second row always exists (with frame height), so switching modes never resizes the image
     // and never re-renders everything.
-    if (app.viewMode == ViewMode::Grid) {
+    if (app.view().mode == ViewMode::Grid) {
         ImGui::AlignTextToFramePadding();
         ImGui::TextDisabled("click a buffer to enlarge it; drag: orbit, right-drag: pan, wheel: zoom; "
                             "ranges are printed on each view");
     }
-    if (app.viewMode == ViewMode::Single) {
+    if (app.view().mode == ViewMode::Single) {
         ImGui::SetNextItemWidth(170);
-        if (ImGui::BeginCombo("buffer", app.enlarged.c_str())) {
+        if (ImGui::BeginCombo("buffer", app.view().enlarged.c_str())) {
             for (const Resource* r : app.renderer().buffers())
-                if (ImGui::Selectable(r->desc.name.c_str(), r->desc.name == app.enlarged))
-                    app.enlarged = r->desc.name, app.poke();
+                if (ImGui::Selectable(r->desc.name.c_str(), r->desc.name == app.view().enlarged))
+                    app.view().enlarged = r->desc.name, app.frames().keepAwake();
             ImGui::EndCombo();
         }
     }
-    if (app.viewMode == ViewMode::Split) {
-        int kind = int(app.splitKind);
+    if (app.view().mode == ViewMode::Split) {
+        int kind = int(app.view().splitKind);
         ImGui::RadioButton("AO on | off", &kind, int(SplitKind::AoOnOff));
         ImGui::SameLine();
         ImGui::RadioButton("current | preset", &kind, int(SplitKind::Preset));
-        if (kind != int(app.splitKind)) app.splitKind = SplitKind(kind), app.poke();
-        if (app.splitKind == SplitKind::Preset) {
+        if (kind != int(app.view().splitKind)) app.view().splitKind = SplitKind(kind), app.frames().keepAwake();
+        if (app.view().splitKind == SplitKind::Preset) {
             ImGui::SameLine();
             ImGui::SetNextItemWidth(150);
-            if (ImGui::BeginCombo("B", app.splitPresetB.c_str())) {
+            if (ImGui::BeginCombo("B", app.view().splitPresetB.c_str())) {
                 for (const auto& e : app.presets().entries())
-                    if (ImGui::Selectable(e.name.c_str(), e.name == app.splitPresetB))
-                        app.splitPresetB = e.name, app.poke();
+                    if (ImGui::Selectable(e.name.c_str(), e.name == app.view().splitPresetB))
+                        app.view().splitPresetB = e.name, app.frames().keepAwake();
                 ImGui::EndCombo();
             }
         }
         ImGui::SameLine();
         ImGui::SetNextItemWidth(130);
-        if (ImGui::BeginCombo("compare", app.splitBuffer.c_str())) {
+        if (ImGui::BeginCombo("compare", app.view().splitBuffer.c_str())) {
             // Every buffer chain B has too (its own or shared with A), from the graph.
             for (const Resource* r : app.renderer().buffers()) {
                 const std::string& b = r->desc.name;
                 if (app.renderer().graph().find("b." + b) &&
-                    ImGui::Selectable(b.c_str(), app.splitBuffer == b))
-                    app.splitBuffer = b, app.poke();
+                    ImGui::Selectable(b.c_str(), app.view().splitBuffer == b))
+                    app.view().splitBuffer = b, app.frames().keepAwake();
             }
             ImGui::EndCombo();
         }
         ImGui::SameLine();
-        if (ImGui::Checkbox("A - B", &app.splitDifference)) app.poke();
-        rememberRect(app, "split#difference");
-        if (app.splitDifference) {
+        if (ImGui::Checkbox("A - B", &app.view().splitDifference)) app.frames().keepAwake();
+        rememberRect(app.view(), "split#difference");
+        if (app.view().splitDifference) {
             ImGui::SameLine();
             ImGui::SetNextItemWidth(90);
-            if (ImGui::SliderFloat("x", &app.diffScale, 1.0f, 100.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
-                app.poke();
+            if (ImGui::SliderFloat("x", &app.view().diffScale, 1.0f, 100.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
+                app.frames().keepAwake();
         }
     }
 }
@@ -249,9 +249,9 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
     Renderer& r = app.renderer();
     const float aspect = float(r.width()) / float(r.height());
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    BufferViews& views = app.views();
+    BufferViews& views = app.frames().views();
 
-    if (app.viewMode == ViewMode::Grid) {
+    if (app.view().mode == ViewMode::Grid) {
         const auto buffers = r.buffers();
         const int cols = gridColumns(int(buffers.size()), avail, aspect);
         const int rows = int((buffers.size() + size_t(cols) - 1) / size_t(cols));
@@ -267,44 +267,44 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
             ImGui::PopID();
             const BufferViews::View* v = views.find(name);
             image(dl, v, p, ImVec2(p.x + sz.x, p.y + sz.y));
-            cover(dl, p, ImVec2(p.x + sz.x, p.y + sz.y), referenceEmptyReason(app, name));
+            cover(dl, p, ImVec2(p.x + sz.x, p.y + sz.y), referenceEmptyReason(app.frames(), name));
             label(dl, p, (v ? v->label : name) + tag(app, name), sz.x);
-            app.widgetRects["view#" + name] = ImVec4(p.x, p.y, p.x + sz.x, p.y + sz.y);
+            app.view().widgetRects["view#" + name] = ImVec4(p.x, p.y, p.x + sz.x, p.y + sz.y);
             if (clicked) {
-                app.enlarged = name;
-                app.viewMode = ViewMode::Single;
-                app.poke();
+                app.view().enlarged = name;
+                app.view().mode = ViewMode::Single;
+                app.frames().keepAwake();
             }
         }
     } else {
         ImVec2 off, sz;
         fit(avail, aspect, off, sz);
         const ImVec2 p(origin.x + off.x, origin.y + off.y), q(p.x + sz.x, p.y + sz.y);
-        if (interact(app, "image", p, sz) && app.viewMode == ViewMode::Single) app.pinPixel = !app.pinPixel;
-        app.widgetRects["view#main"] = ImVec4(p.x, p.y, q.x, q.y);
-        if (app.viewMode == ViewMode::Single) {
-            const BufferViews::View* v = views.find(app.enlarged);
+        if (interact(app, "image", p, sz) && app.view().mode == ViewMode::Single) app.view().pinPixel = !app.view().pinPixel;
+        app.view().widgetRects["view#main"] = ImVec4(p.x, p.y, q.x, q.y);
+        if (app.view().mode == ViewMode::Single) {
+            const BufferViews::View* v = views.find(app.view().enlarged);
             image(dl, v, p, q);
-            cover(dl, p, q, referenceEmptyReason(app, app.enlarged));
-            label(dl, p, (v ? v->label : app.enlarged) + tag(app, app.enlarged));
+            cover(dl, p, q, referenceEmptyReason(app.frames(), app.view().enlarged));
+            label(dl, p, (v ? v->label : app.view().enlarged) + tag(app, app.view().enlarged));
             drawSamples(app, dl, p, sz);
-        } else if (app.splitDifference) {
-            if (r.graph().find("b." + app.splitBuffer)) {
+        } else if (app.view().splitDifference) {
+            if (r.graph().find("b." + app.view().splitBuffer)) {
                 const BufferViews::View& d =
-                    views.difference(r, app.splitBuffer, "b." + app.splitBuffer, app.diffScale);
+                    views.difference(r, app.view().splitBuffer, "b." + app.view().splitBuffer, app.view().diffScale);
                 image(dl, &d, p, q);
                 label(dl, p, d.label);
             }
         } else {
-            const float s = app.splitPosition, x = p.x + sz.x * s;
-            image(dl, views.find(app.splitBuffer), p, ImVec2(x, q.y), ImVec2(0, 1), ImVec2(s, 0));
-            image(dl, views.find("b." + app.splitBuffer), ImVec2(x, p.y), q, ImVec2(s, 1), ImVec2(1, 0));
+            const float s = app.view().splitPosition, x = p.x + sz.x * s;
+            image(dl, views.find(app.view().splitBuffer), p, ImVec2(x, q.y), ImVec2(0, 1), ImVec2(s, 0));
+            image(dl, views.find("b." + app.view().splitBuffer), ImVec2(x, p.y), q, ImVec2(s, 1), ImVec2(1, 0));
             dl->AddLine(ImVec2(x, p.y), ImVec2(x, q.y), IM_COL32(255, 255, 0, 255), 3.0f);
             dl->AddCircleFilled(ImVec2(x, (p.y + q.y) * 0.5f), 6.0f, IM_COL32(255, 255, 0, 255));
-            app.widgetRects["split#divider"] = ImVec4(x - 4, p.y, x + 4, q.y);
-            label(dl, p, "A: current  " + app.splitBuffer);
+            app.view().widgetRects["split#divider"] = ImVec4(x - 4, p.y, x + 4, q.y);
+            label(dl, p, "A: current  " + app.view().splitBuffer);
             const std::string bl =
-                app.splitKind == SplitKind::AoOnOff ? "B: AO off" : "B: " + app.splitPresetB;
+                app.view().splitKind == SplitKind::AoOnOff ? "B: AO off" : "B: " + app.view().splitPresetB;
             label(dl, ImVec2(q.x - ImGui::CalcTextSize(bl.c_str()).x - 10, p.y), bl);
             drawSamples(app, dl, p, sz);
         }

@@ -28,24 +28,24 @@ AppCore* appOf(GLFWwindow* w) {
     return static_cast<AppCore*>(glfwGetWindowUserPointer(w));
 }
 bool g_screenshotRequested = false; // F12
-void pokeOnly(GLFWwindow* w) {
-    if (AppCore* a = appOf(w)) a->poke();
+void keepAwake(GLFWwindow* w) {
+    if (AppCore* a = appOf(w)) a->frames().keepAwake();
 }
 
 // Installed before ImGui's backend, which chains to them: every input event wakes the loop.
 void installWakeCallbacks(GLFWwindow* w) {
-    glfwSetCursorPosCallback(w, [](GLFWwindow* win, double, double) { pokeOnly(win); });
-    glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int, int, int) { pokeOnly(win); });
-    glfwSetScrollCallback(w, [](GLFWwindow* win, double, double) { pokeOnly(win); });
+    glfwSetCursorPosCallback(w, [](GLFWwindow* win, double, double) { keepAwake(win); });
+    glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int, int, int) { keepAwake(win); });
+    glfwSetScrollCallback(w, [](GLFWwindow* win, double, double) { keepAwake(win); });
     glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int) {
         if (key == GLFW_KEY_F12 && action == GLFW_PRESS) g_screenshotRequested = true;
-        pokeOnly(win);
+        keepAwake(win);
     });
-    glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) { pokeOnly(win); });
-    glfwSetWindowFocusCallback(w, [](GLFWwindow* win, int) { pokeOnly(win); });
-    glfwSetCursorEnterCallback(w, [](GLFWwindow* win, int) { pokeOnly(win); });
-    glfwSetFramebufferSizeCallback(w, [](GLFWwindow* win, int, int) { pokeOnly(win); });
-    glfwSetWindowRefreshCallback(w, [](GLFWwindow* win) { pokeOnly(win); });
+    glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) { keepAwake(win); });
+    glfwSetWindowFocusCallback(w, [](GLFWwindow* win, int) { keepAwake(win); });
+    glfwSetCursorEnterCallback(w, [](GLFWwindow* win, int) { keepAwake(win); });
+    glfwSetFramebufferSizeCallback(w, [](GLFWwindow* win, int, int) { keepAwake(win); });
+    glfwSetWindowRefreshCallback(w, [](GLFWwindow* win) { keepAwake(win); });
     glfwSetDropCallback(w, [](GLFWwindow* win, int n, const char** paths) {
         if (AppCore* a = appOf(win)) a->dropFiles(std::vector<std::string>(paths, paths + n));
     });
@@ -128,7 +128,7 @@ int runWindowApp(const WindowOptions& o) {
         }
         int renderedBefore = 0;
         while (!glfwWindowShouldClose(window)) {
-            if (o.frames == 0 && !app.busy()) {
+            if (o.frames == 0 && !app.frames().busy()) {
                 // Idle costs nothing: sleep until an event (or a periodic check for edited shaders).
                 glfwWaitEventsTimeout(0.5);
             } else {
@@ -139,7 +139,7 @@ int runWindowApp(const WindowOptions& o) {
                 lastShaderCheck = now;
                 app.pollShaderReload();
             }
-            if (o.frames == 0 && !app.busy()) continue;
+            if (o.frames == 0 && !app.frames().busy()) continue;
             const auto t0 = std::chrono::steady_clock::now();
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
@@ -174,15 +174,15 @@ int runWindowApp(const WindowOptions& o) {
             if (!last) glfwSwapBuffers(window);
             const float ms =
                 std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count();
-            app.noteFrameMs(ms);
+            app.frames().noteFrameMs(ms);
             if (frameLog) {
-                const bool rendered = app.framesRendered() != renderedBefore;
-                renderedBefore = app.framesRendered();
+                const bool rendered = app.frames().framesRendered() != renderedBefore;
+                renderedBefore = app.frames().framesRendered();
                 frameLog << frame << " " << ms << " " << app.renderer().width() << " "
-                         << app.renderer().height() << " " << (app.renderedInteractive() ? 1 : 0) << " "
+                         << app.renderer().height() << " " << (app.frames().renderedInteractive() ? 1 : 0) << " "
                          << (rendered ? 1 : 0) << " ";
                 if (rendered)
-                    for (const auto& p : app.lastReport().ran())
+                    for (const auto& p : app.frames().lastReport().ran())
                         frameLog << p << ",";
                 frameLog << "\n" << std::flush;
             }

@@ -87,6 +87,18 @@ Framebuffer::Framebuffer(const Texture2D& color, int level, const std::string& n
     label(GL_FRAMEBUFFER, id, name);
 }
 
+Framebuffer Framebuffer::withoutAttachments(int width, int height, const std::string& name) {
+    Framebuffer f;
+    GLuint id = 0;
+    glCreateFramebuffers(1, &id);
+    f.h_ = FramebufferHandle(id);
+    glNamedFramebufferParameteri(id, GL_FRAMEBUFFER_DEFAULT_WIDTH, width);
+    glNamedFramebufferParameteri(id, GL_FRAMEBUFFER_DEFAULT_HEIGHT, height);
+    f.width_ = width, f.height_ = height;
+    label(GL_FRAMEBUFFER, id, name);
+    return f;
+}
+
 void Framebuffer::bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, id());
     glViewport(0, 0, width_, height_);
@@ -97,6 +109,21 @@ void RenderTarget::ensure(int width, int height, GLenum internalFormat, const st
     fbo_ = Framebuffer();
     tex_ = Texture2D(width, height, internalFormat, name);
     fbo_ = Framebuffer({&tex_}, nullptr, name);
+}
+
+Buffer::Buffer(std::size_t bytes, const void* data, GLbitfield flags, const std::string& name) {
+    GLuint id = 0;
+    glCreateBuffers(1, &id);
+    h_ = BufferHandle(id);
+    glNamedBufferStorage(id, GLsizeiptr(bytes), data, flags);
+    label(GL_BUFFER, id, name);
+}
+
+VertexArray::VertexArray(const std::string& name) {
+    GLuint id = 0;
+    glCreateVertexArrays(1, &id);
+    h_ = VertexArrayHandle(id);
+    label(GL_VERTEX_ARRAY, id, name);
 }
 
 UniformBuffer::UniformBuffer(std::size_t bytes, const std::string& name) : size_(bytes) {

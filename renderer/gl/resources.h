@@ -42,6 +42,8 @@ class Framebuffer {
     Framebuffer(const std::vector<const Texture2D*>& colors, const Texture2D* depth, const std::string& name);
     // One colour attachment: MIP `level` of `color` (the viewport is that level's size).
     Framebuffer(const Texture2D& color, int level, const std::string& name);
+    // No attachments (GL 4.3): a w x h target whose fragment shader runs for its side effects only.
+    static Framebuffer withoutAttachments(int width, int height, const std::string& name);
     GLuint id() const { return h_.id(); }
     void bind() const;
     explicit operator bool() const { return bool(h_); }
@@ -62,6 +64,30 @@ class RenderTarget {
   private:
     Texture2D tex_;
     Framebuffer fbo_;
+};
+
+// A buffer object with immutable storage (vertex, index or shader-storage data); `data` may be null.
+class Buffer {
+  public:
+    Buffer() = default;
+    Buffer(std::size_t bytes, const void* data, GLbitfield flags, const std::string& name);
+    GLuint id() const { return h_.id(); }
+    explicit operator bool() const { return bool(h_); }
+
+  private:
+    BufferHandle h_;
+};
+
+// A vertex array object (attribute formats and the element buffer).
+class VertexArray {
+  public:
+    VertexArray() = default;
+    explicit VertexArray(const std::string& name);
+    GLuint id() const { return h_.id(); }
+    explicit operator bool() const { return bool(h_); }
+
+  private:
+    VertexArrayHandle h_;
 };
 
 class UniformBuffer {

@@ -25,21 +25,10 @@ struct ProbeState { // restores what run() changes, whatever happens in between
 
 void InspectProbe::run(glm::ivec2 pixel, glm::ivec2 size, const std::function<void()>& draw,
                        PixelInspection& out) {
-    if (!ssbo_) {
-        GLuint id = 0;
-        glCreateBuffers(1, &id);
-        ssbo_ = gl::BufferHandle(id);
-        glNamedBufferStorage(id, GLsizeiptr(kBytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
-        gl::label(GL_BUFFER, id, "inspector.record");
-    }
+    if (!ssbo_) ssbo_ = gl::Buffer(kBytes, nullptr, GL_DYNAMIC_STORAGE_BIT, "inspector.record");
     if (!fbo_ || fboSize_ != size) {
-        // No attachments (GL 4.3): the fragment shader runs for its side effects only.
-        GLuint id = 0;
-        glCreateFramebuffers(1, &id);
-        fbo_ = gl::FramebufferHandle(id);
-        glNamedFramebufferParameteri(id, GL_FRAMEBUFFER_DEFAULT_WIDTH, size.x);
-        glNamedFramebufferParameteri(id, GL_FRAMEBUFFER_DEFAULT_HEIGHT, size.y);
-        gl::label(GL_FRAMEBUFFER, id, "inspector.probe");
+        // No attachments: the fragment shader runs for its side effects only.
+        fbo_ = gl::Framebuffer::withoutAttachments(size.x, size.y, "inspector.probe");
         fboSize_ = size;
     }
     const glm::ivec2 glPixel(pixel.x, size.y - 1 - pixel.y); // GL window coordinates: origin bottom-left
@@ -49,8 +38,7 @@ void InspectProbe::run(glm::ivec2 pixel, glm::ivec2 size, const std::function<vo
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSAO_SSBO_INSPECT, ssbo_.id());
     {
         ProbeState restore;
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-        glViewport(0, 0, size.x, size.y);
+        fbo_.bind(); // and its viewport
         glEnable(GL_SCISSOR_TEST);
         glScissor(glPixel.x, glPixel.y, 1, 1);
         draw();

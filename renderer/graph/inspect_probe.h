@@ -1,7 +1,7 @@
 // Runs a pass's shader for exactly one pixel with the INSPECT variant and reads back what the
 // shader recorded (shaders/include/inspect.glsl): the sample inspector shows what the GPU did.
 #pragma once
-#include "gl/handle.h"
+#include "gl/resources.h"
 #include "graph/inspection.h"
 
 #include <glm/glm.hpp>
@@ -19,8 +19,8 @@ class InspectProbe {
     void run(glm::ivec2 pixel, glm::ivec2 size, const std::function<void()>& draw, PixelInspection& out);
 
   private:
-    gl::BufferHandle ssbo_;
-    gl::FramebufferHandle fbo_;
+    gl::Buffer ssbo_;
+    gl::Framebuffer fbo_;
     glm::ivec2 fboSize_{0};
 };
 

@@ -26,20 +26,10 @@ GpuScene::GpuScene(const Scene& scene) : draws_(scene.draws), radius_(scene.boun
     for (size_t d = 0; d < draws_.size(); ++d)
         for (uint32_t i = draws_[d].firstIndex; i < draws_[d].firstIndex + draws_[d].indexCount; ++i)
             drawBounds_[d].add(scene.vertices[scene.indices[i]].position);
-    GLuint ids[2];
-    glCreateBuffers(2, ids);
-    vbo_ = gl::BufferHandle(ids[0]);
-    ibo_ = gl::BufferHandle(ids[1]);
-    glNamedBufferStorage(vbo_.id(), GLsizeiptr(scene.vertices.size() * sizeof(Vertex)), scene.vertices.data(),
-                         0);
-    glNamedBufferStorage(ibo_.id(), GLsizeiptr(scene.indices.size() * sizeof(uint32_t)), scene.indices.data(),
-                         0);
-    gl::label(GL_BUFFER, vbo_.id(), "scene-vertices");
-    gl::label(GL_BUFFER, ibo_.id(), "scene-indices");
-
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    vao_ = gl::VertexArrayHandle(vao);
+    vbo_ = gl::Buffer(scene.vertices.size() * sizeof(Vertex), scene.vertices.data(), 0, "scene-vertices");
+    ibo_ = gl::Buffer(scene.indices.size() * sizeof(uint32_t), scene.indices.data(), 0, "scene-indices");
+    vao_ = gl::VertexArray("scene");
+    const GLuint vao = vao_.id();
     glVertexArrayVertexBuffer(vao, 0, vbo_.id(), 0, sizeof(Vertex));
     glVertexArrayElementBuffer(vao, ibo_.id());
     glEnableVertexArrayAttrib(vao, 0);
@@ -48,7 +38,6 @@ GpuScene::GpuScene(const Scene& scene) : draws_(scene.draws), radius_(scene.boun
     glEnableVertexArrayAttrib(vao, 1);
     glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal));
     glVertexArrayAttribBinding(vao, 1, 0);
-    gl::label(GL_VERTEX_ARRAY, vao, "scene");
 }
 
 DrawStats GpuScene::draw(GLint colorLocation, const glm::mat4* cullViewProj, bool zeroToOneDepth) const {

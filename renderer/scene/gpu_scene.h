@@ -1,6 +1,6 @@
 // The scene's triangles in GL buffers, drawn one draw call per material.
 #pragma once
-#include "gl/handle.h"
+#include "gl/resources.h"
 #include "scene/scene.h"
 
 #include <vector>
@@ -27,8 +27,8 @@ class GpuScene {
     float radius() const { return radius_; }
 
   private:
-    gl::VertexArrayHandle vao_;
-    gl::BufferHandle vbo_, ibo_;
+    gl::VertexArray vao_;
+    gl::Buffer vbo_, ibo_;
     std::vector<Draw> draws_;
     std::vector<Bounds> drawBounds_; // per draw, scene frame
     float radius_ = 1.0f;

@@ -81,7 +81,7 @@ TEST_F(AppUse, TheRadiusFollowsEachSceneUnlessAPresetFixesIt) {
 TEST_F(AppUse, OrbitAndZoomWorkAroundAGltfCamera) {
     start();
     ASSERT_TRUE(ui_->app().openScene(scene("CornellBox/cornellBox.gltf")));
-    ui_->app().viewMode = ViewMode::Single;
+    ui_->app().view().mode = ViewMode::Single;
     ui_->settle();
     const Camera c0 = ui_->app().cameraController().camera();
     const float dist0 = glm::length(c0.target - c0.eye);
@@ -113,7 +113,7 @@ TEST_F(AppUse, OrbitAndZoomWorkAroundAGltfCamera) {
 TEST_F(AppUse, ZoomOnTheMillimetreEngineMovesMillimetresByTheHundred) {
     start();
     ASSERT_TRUE(ui_->app().openScene(scene("2CylinderEngine/2CylinderEngine.gltf")));
-    ui_->app().viewMode = ViewMode::Single;
+    ui_->app().view().mode = ViewMode::Single;
     ui_->settle();
     const Camera c0 = ui_->app().cameraController().camera();
     const ImVec4 v = ui_->rect("view#main");
@@ -128,7 +128,7 @@ TEST_F(AppUse, ZoomOnTheMillimetreEngineMovesMillimetresByTheHundred) {
 
 TEST_F(AppUse, DraggingRendersAtTheInteractiveScaleAndTimingKeepsBothApart) {
     start(1600, 2600, 1.0f);
-    ui_->app().viewMode = ViewMode::Single;
+    ui_->app().view().mode = ViewMode::Single;
     ui_->settle();
     const int fullW = ui_->app().renderer().width();
     const ImVec4 v = ui_->rect("view#main");
@@ -138,15 +138,15 @@ TEST_F(AppUse, DraggingRendersAtTheInteractiveScaleAndTimingKeepsBothApart) {
     for (int i = 1; i <= 4; ++i) {
         ui_->frame(cx + 10.0f * float(i), cy, true);
         if (i == 1) continue; // the camera moves after this frame's render: reduced from the next one
-        EXPECT_NEAR(ui_->app().renderer().width(), fullW * ui_->app().interactiveScale, 2.0f);
-        EXPECT_TRUE(ui_->app().renderedInteractive());
+        EXPECT_NEAR(ui_->app().renderer().width(), fullW * ui_->app().frames().interactiveScale, 2.0f);
+        EXPECT_TRUE(ui_->app().frames().renderedInteractive());
     }
     ui_->frame(cx + 40, cy, false);
     ui_->settle();
     EXPECT_EQ(ui_->app().renderer().width(), fullW); // refined once input stopped
-    EXPECT_FALSE(ui_->app().renderedInteractive());
-    const auto& moving = ui_->app().timing(true);
-    const auto& full = ui_->app().timing(false);
+    EXPECT_FALSE(ui_->app().frames().renderedInteractive());
+    const auto& moving = ui_->app().frames().timing(true);
+    const auto& full = ui_->app().frames().timing(false);
     EXPECT_EQ(full.width, fullW);
     EXPECT_LT(moving.width, full.width);
     EXPECT_GT(moving.average("ao"), 0.0);
@@ -155,17 +155,17 @@ TEST_F(AppUse, DraggingRendersAtTheInteractiveScaleAndTimingKeepsBothApart) {
                 full.width, full.height, moving.average("ao"), moving.width, moving.height);
     // A new scene starts new timings: nothing is averaged across scenes or sizes.
     ASSERT_TRUE(ui_->app().openScene("builtin:corner"));
-    EXPECT_EQ(ui_->app().timing(false).average("ao"), -1.0);
+    EXPECT_EQ(ui_->app().frames().timing(false).average("ao"), -1.0);
     ui_->settle();
-    EXPECT_GT(ui_->app().timing(false).average("ao"), 0.0);
+    EXPECT_GT(ui_->app().frames().timing(false).average("ao"), 0.0);
 }
 
 TEST_F(AppUse, TimingAndInspectorAreInViewAt900PixelsAndThePlotDraws) {
     start(1600, 900, 0.3f);
     for (int i = 0; i < 3; ++i)
         ui_->frame(900, 300);
-    ui_->app().noteFrameMs(12.0f);
-    ui_->app().noteFrameMs(15.0f);
+    ui_->app().frames().noteFrameMs(12.0f);
+    ui_->app().frames().noteFrameMs(15.0f);
     ui_->frames(2);
     for (const char* key : {"timing", "inspector", "timing#plot", "reference#on", "reference#progress"}) {
         const ImVec4 r = ui_->rect(key);
@@ -205,7 +205,7 @@ TEST_F(AppUse, ViewsAndPngPreviewsUseOneMapping) {
     RunInfo info;
     writeOutputs(captureFrame(r), dir, info, FrameReport{}, nlohmann::json::object());
     for (const char* name : {"gbuffer.depth", "gbuffer.position", "gbuffer.normal", "ao.raw", "composite"}) {
-        const auto* view = ui_->app().views().find(name);
+        const auto* view = ui_->app().frames().views().find(name);
         ASSERT_NE(view, nullptr) << name;
         const Image app = readBack(view->target.texture(), 3);
         const Image png = readPng(dir + "/" + name + ".png");

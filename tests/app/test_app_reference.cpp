@@ -112,8 +112,8 @@ class AppReference : public GlTest {
         o.renderScale = 0.3f;         // a 1600x900 window: about 350x190 render pixels
         o.reference = false;          // turned on below with a small target, so the trace is short
         ui_ = std::make_unique<UiDriver>(o, 1600, 900);
-        app().referenceRays = 32;
-        app().referenceOn = true;
+        app().frames().referenceRays = 32;
+        app().frames().referenceOn = true;
         ui_->settle();
     }
     void TearDown() override {
@@ -121,13 +121,13 @@ class AppReference : public GlTest {
         GlTest::TearDown();
     }
     AppCore& app() { return ui_->app(); }
-    LiveReference::State state() { return app().reference().status().state; }
+    LiveReference::State state() { return app().frames().reference().status().state; }
     // UI frames until the reference reached its target, recording the rays shown after each.
     std::vector<int> framesUntilDone() {
         std::vector<int> rays;
         eventually([&] {
             ui_->frame();
-            rays.push_back(app().reference().status().rays);
+            rays.push_back(app().frames().reference().status().rays);
             return state() == LiveReference::State::Done;
         });
         return rays;
@@ -151,8 +151,8 @@ TEST_F(AppReference, AppearsAsBuffersAndRefinesToItsTarget) {
     EXPECT_TRUE(std::is_sorted(rays.begin(), rays.end())) << "the ray count only grows";
     EXPECT_EQ(rays.back(), 32);
     ui_->frame();
-    ASSERT_TRUE(app().views().find("reference.ao")) << "painted in the grid like any buffer";
-    ASSERT_TRUE(app().views().find("reference.error"));
+    ASSERT_TRUE(app().frames().views().find("reference.ao")) << "painted in the grid like any buffer";
+    ASSERT_TRUE(app().frames().views().find("reference.error"));
 
     // The reference: finite, in [0, 1], 1 on sky; some occlusion in the box.
     const Image ref = read("reference.ao"), depth = read("gbuffer.depth");
@@ -181,7 +181,7 @@ TEST_F(AppReference, AppearsAsBuffersAndRefinesToItsTarget) {
     EXPECT_GE(double(skyOne), 0.99 * double(sky)) << "sky is 1 (pixel-centre rays, as the raster's)";
 
     // The error view: error.png's diverging map, white at 0, red where the AO is too bright.
-    const Image painted = readBack(app().views().find("reference.error")->target.texture(), 3);
+    const Image painted = readBack(app().frames().views().find("reference.error")->target.texture(), 3);
     int red = 0, white = 0;
     for (size_t i = 0; i < error.data.size(); ++i) {
         if (!(depth.data[i] > 0.0f)) continue;
@@ -193,7 +193,7 @@ TEST_F(AppReference, AppearsAsBuffersAndRefinesToItsTarget) {
     EXPECT_GT(white, 0);
 
     // The numbers beside the timings, and the hover readout.
-    const auto& m = app().reference().metrics();
+    const auto& m = app().frames().reference().metrics();
     ASSERT_TRUE(m.has_value());
     for (double v : {m->rmse, m->bias, m->psnrGeometrySrgb, m->ssim, m->referenceNoise})
         EXPECT_TRUE(std::isfinite(v)) << v;
@@ -207,24 +207,24 @@ TEST_F(AppReference, AppearsAsBuffersAndRefinesToItsTarget) {
 
     // Converged: nothing left to do, the app may sleep again.
     ui_->frames(3);
-    const int rendered = app().framesRendered();
+    const int rendered = app().frames().framesRendered();
     ui_->frames(5);
-    EXPECT_EQ(app().framesRendered(), rendered);
-    EXPECT_FALSE(app().busy());
+    EXPECT_EQ(app().frames().framesRendered(), rendered);
+    EXPECT_FALSE(app().frames().busy());
     ui_->save(std::string(SSAOLAB_TEST_TMP) + "/ui_reference.png");
 }
 
 TEST_F(AppReference, AnAoChangeUpdatesTheErrorAndKeepsTheReference) {
     framesUntilDone();
     const Image ref = read("reference.ao"), error = read("reference.error");
-    const double rmse = app().reference().metrics()->rmse;
+    const double rmse = app().frames().reference().metrics()->rmse;
     app().settings().kernel.samples = 4; // noisier AO, same radius: the reference stays valid
-    app().poke();
+    app().frames().keepAwake();
     ui_->settle();
     // The error is evaluated off the UI thread: shown a frame or a few later.
     ASSERT_TRUE(eventually([&] {
         ui_->frame();
-        return app().reference().metrics()->rmse != rmse;
+        return app().frames().reference().metrics()->rmse != rmse;
     }));
     EXPECT_EQ(state(), LiveReference::State::Done) << "no restart";
     EXPECT_EQ(read("reference.ao").data, ref.data);
@@ -236,39 +236,39 @@ TEST_F(AppReference, ACameraOrRadiusChangeCancelsAndRestarts) {
     const Image before = read("reference.ao");
     // A drag: while it lasts the trace waits, showing nothing of the old view.
     app().cameraController().rotate(40, 0);
-    app().noteInteraction();
+    app().frames().noteInteraction();
     ui_->frame();
     EXPECT_EQ(state(), LiveReference::State::Waiting);
-    EXPECT_EQ(app().reference().status().rays, 0) << "the ray count drops back";
-    EXPECT_FALSE(app().reference().metrics().has_value());
+    EXPECT_EQ(app().frames().reference().status().rays, 0) << "the ray count drops back";
+    EXPECT_FALSE(app().frames().reference().metrics().has_value());
     ui_->settle();
     EXPECT_NE(state(), LiveReference::State::Waiting) << "restarted once input settled";
     framesUntilDone();
-    EXPECT_EQ(app().reference().status().rays, 32);
+    EXPECT_EQ(app().frames().reference().status().rays, 32);
     EXPECT_NE(read("reference.ao").data, before.data) << "the new view's reference";
 
-    const float radius = app().reference().status().radius;
+    const float radius = app().frames().reference().status().radius;
     app().settings().ao.radiusScene *= 2.0f;
-    app().poke();
+    app().frames().keepAwake();
     ui_->frame();
-    EXPECT_LT(app().reference().status().rays, 32);
+    EXPECT_LT(app().frames().reference().status().rays, 32);
     framesUntilDone();
-    EXPECT_NEAR(app().reference().status().radius, 2.0f * radius, 1e-3f * radius);
+    EXPECT_NEAR(app().frames().reference().status().radius, 2.0f * radius, 1e-3f * radius);
 }
 
 TEST_F(AppReference, TurningItOffStopsTheTraceAndRemovesItsBuffers) {
-    app().referenceRays = 1 << 16; // would trace for minutes
+    app().frames().referenceRays = 1 << 16; // would trace for minutes
     ui_->frames(2);
     ASSERT_TRUE(eventually([&] {
         ui_->frame();
-        return app().reference().tracing() && state() == LiveReference::State::Tracing;
+        return app().frames().reference().tracing() && state() == LiveReference::State::Tracing;
     }));
     ui_->click("reference#on", 0.1f);
     ui_->frame();
-    EXPECT_FALSE(app().referenceOn);
+    EXPECT_FALSE(app().frames().referenceOn);
     EXPECT_EQ(state(), LiveReference::State::Off);
     EXPECT_FALSE(app().renderer().graph().find("reference.ao")) << "its buffers left the graph";
-    EXPECT_TRUE(eventually([&] { return !app().reference().tracing(); })) << "the worker stopped";
+    EXPECT_TRUE(eventually([&] { return !app().frames().reference().tracing(); })) << "the worker stopped";
     ui_->click("reference#on", 0.1f); // and on again: a fresh trace
     ui_->frame();
     EXPECT_TRUE(app().renderer().graph().find("reference.ao"));
@@ -276,10 +276,10 @@ TEST_F(AppReference, TurningItOffStopsTheTraceAndRemovesItsBuffers) {
 }
 
 TEST_F(AppReference, DestroyingTheAppWhileTracingReturns) {
-    app().referenceRays = 1 << 16;
+    app().frames().referenceRays = 1 << 16;
     ASSERT_TRUE(eventually([&] {
         ui_->frame();
-        return app().reference().tracing();
+        return app().frames().reference().tracing();
     }));
     ui_.reset(); // cancels and joins the worker: no hang, no crash
     SUCCEED();

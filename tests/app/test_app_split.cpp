@@ -44,15 +44,15 @@ using V = std::vector<std::string>;
 TEST_F(AppSplit, AoOnOffAddsOneCompositeNotASecondRenderer) {
     ui_->click("mode#split");
     ui_->settle();
-    ASSERT_EQ(ui_->app().viewMode, ViewMode::Split);
-    ASSERT_EQ(ui_->app().splitKind, SplitKind::AoOnOff);
+    ASSERT_EQ(ui_->app().view().mode, ViewMode::Split);
+    ASSERT_EQ(ui_->app().view().splitKind, SplitKind::AoOnOff);
     // Entering the split view ran B's composite alone: the G-buffer and the AO are shared.
-    EXPECT_EQ(ui_->app().lastReport().ran(), V{"b.composite"});
+    EXPECT_EQ(ui_->app().frames().lastReport().ran(), V{"b.composite"});
     EXPECT_EQ(ui_->app().renderer().graph().resolve("b.ao.denoised"), "ao.denoised");
     EXPECT_LT(meanOf("composite", 3), meanOf("b.composite", 3)); // with AO the frame is darker
     // A camera move re-renders one G-buffer for both halves.
     ui_->app().cameraController().rotate(30, 0);
-    ui_->app().poke();
+    ui_->app().frames().keepAwake();
     ui_->settle();
     const auto& order = ui_->app().renderer().graph().passOrder();
     EXPECT_EQ(std::count(order.begin(), order.end(), "gbuffer"), 1);
@@ -60,23 +60,23 @@ TEST_F(AppSplit, AoOnOffAddsOneCompositeNotASecondRenderer) {
 }
 
 TEST_F(AppSplit, PresetBRendersItsOwnAoOnTheSharedGBuffer) {
-    ui_->app().viewMode = ViewMode::Split;
-    ui_->app().splitKind = SplitKind::Preset;
-    ui_->app().splitPresetB = "crytek-sphere";
-    ui_->app().splitBuffer = "ao.raw"; // compare AO buffers, not only composites
-    ui_->app().poke();
+    ui_->app().view().mode = ViewMode::Split;
+    ui_->app().view().splitKind = SplitKind::Preset;
+    ui_->app().view().splitPresetB = "crytek-sphere";
+    ui_->app().view().splitBuffer = "ao.raw"; // compare AO buffers, not only composites
+    ui_->app().frames().keepAwake();
     ui_->settle();
     Renderer& r = ui_->app().renderer();
     ASSERT_TRUE(r.settingsB().has_value());
     EXPECT_EQ(r.settingsB()->kernel.shape, KernelShape::Sphere);
     EXPECT_LT(meanOf("b.ao.raw"), meanOf("ao.raw") - 0.1); // the sphere kernel's false occlusion
-    ASSERT_NE(ui_->app().views().find("ao.raw"), nullptr);
-    ASSERT_NE(ui_->app().views().find("b.ao.raw"), nullptr);
+    ASSERT_NE(ui_->app().frames().views().find("ao.raw"), nullptr);
+    ASSERT_NE(ui_->app().frames().views().find("b.ao.raw"), nullptr);
     // The inspector follows the half under the cursor.
     const ImVec4 v = ui_->rect("view#main");
     ui_->frame(v.x + (v.z - v.x) * 0.9f, v.y + (v.w - v.y) * 0.8f);
     ui_->frame(v.x + (v.z - v.x) * 0.9f, v.y + (v.w - v.y) * 0.8f);
-    EXPECT_EQ(ui_->app().hoverBranch, 1);
+    EXPECT_EQ(ui_->app().view().hoverChain, 1);
     const auto& pi = ui_->app().inspection();
     ASSERT_TRUE(pi.has_value());
     ASSERT_TRUE(pi->geometry) << "the floor is under the cursor";
@@ -84,15 +84,15 @@ TEST_F(AppSplit, PresetBRendersItsOwnAoOnTheSharedGBuffer) {
 }
 
 TEST_F(AppSplit, DifferenceViewIsGreyWhereAEqualsBAndColouredWhereItDiffers) {
-    ui_->app().viewMode = ViewMode::Split;
-    ui_->app().splitKind = SplitKind::Preset;
-    ui_->app().splitPresetB = "crytek-sphere";
-    ui_->app().splitBuffer = "ao.raw";
-    ui_->app().splitDifference = true;
-    ui_->app().poke();
+    ui_->app().view().mode = ViewMode::Split;
+    ui_->app().view().splitKind = SplitKind::Preset;
+    ui_->app().view().splitPresetB = "crytek-sphere";
+    ui_->app().view().splitBuffer = "ao.raw";
+    ui_->app().view().splitDifference = true;
+    ui_->app().frames().keepAwake();
     ui_->settle();
     Renderer& r = ui_->app().renderer();
-    const auto& d = ui_->app().views().difference(r, "ao.raw", "b.ao.raw", ui_->app().diffScale);
+    const auto& d = ui_->app().frames().views().difference(r, "ao.raw", "b.ao.raw", ui_->app().view().diffScale);
     const Image img = readBack(d.target.texture(), 3);
     const Image mask = readBack(r.texture("gbuffer.depth"), 1);
     long red = 0, geometry = 0;
@@ -104,10 +104,10 @@ TEST_F(AppSplit, DifferenceViewIsGreyWhereAEqualsBAndColouredWhereItDiffers) {
             }
     EXPECT_GT(red, geometry / 3) << "the sphere kernel darkens most surfaces";
     // Identical halves: the difference is uniformly grey.
-    ui_->app().splitKind = SplitKind::AoOnOff;
-    ui_->app().poke();
+    ui_->app().view().splitKind = SplitKind::AoOnOff;
+    ui_->app().frames().keepAwake();
     ui_->settle();
-    const auto& same = ui_->app().views().difference(r, "ao.raw", "b.ao.raw", 100.0f);
+    const auto& same = ui_->app().frames().views().difference(r, "ao.raw", "b.ao.raw", 100.0f);
     const Image g = readBack(same.target.texture(), 3);
     for (size_t i = 0; i < g.data.size(); i += 3)
         ASSERT_TRUE(std::abs(g.data[i] - 0.5f) < 0.01f || std::abs(g.data[i] - 0.12f) < 0.01f) << i;
@@ -121,6 +121,6 @@ TEST_F(AppSplit, TheDividerCanBeDraggedWithoutMovingTheCamera) {
     const ImVec4 v = ui_->rect("view#main");
     const float x = (d.x + d.z) * 0.5f, y = (d.y + d.w) * 0.5f;
     ui_->drag(x, y, v.x + (v.z - v.x) * 0.25f, y);
-    EXPECT_NEAR(ui_->app().splitPosition, 0.25f, 0.02f);
+    EXPECT_NEAR(ui_->app().view().splitPosition, 0.25f, 0.02f);
     EXPECT_EQ(ui_->app().cameraController().camera().eye, before.eye);
 }

@@ -53,7 +53,7 @@ TEST_F(AppUi, CheckboxChangesTheSettingAndTheAoImage) {
 }
 
 TEST_F(AppUi, SliderDragRendersReducedThenReRunsOnlyWhatItInvalidates) {
-    ui_->app().interactiveScale = 0.15f; // below this fixture's render scale (0.3)
+    ui_->app().frames().interactiveScale = 0.15f; // below this fixture's render scale (0.3)
     ui_->settle();
     const int fullW = ui_->app().renderer().width();
     Image before = aoRaw();
@@ -63,9 +63,9 @@ TEST_F(AppUi, SliderDragRendersReducedThenReRunsOnlyWhatItInvalidates) {
     ui_->frame(r.x + (r.z - r.x) * 0.3f, y, true);
     std::vector<std::vector<std::string>> ran;
     for (int i = 1; i <= 4; ++i) {
-        const int framesBefore = ui_->app().framesRendered();
+        const int framesBefore = ui_->app().frames().framesRendered();
         ui_->frame(r.x + (r.z - r.x) * (0.3f + 0.05f * float(i)), y, true);
-        if (ui_->app().framesRendered() > framesBefore) ran.push_back(ui_->app().lastReport().ran());
+        if (ui_->app().frames().framesRendered() > framesBefore) ran.push_back(ui_->app().frames().lastReport().ran());
         // While the slider is held the frame is rendered at the interactive scale.
         EXPECT_LT(ui_->app().renderer().width(), fullW);
     }
@@ -194,11 +194,11 @@ TEST_F(AppUi, DroppingABadFileShowsTheErrorAndKeepsTheScene) {
 }
 
 TEST_F(AppUi, ClickingAGridCellEnlargesItAndTheInspectorsFollowTheCursor) {
-    ASSERT_EQ(ui_->app().viewMode, ViewMode::Grid);
+    ASSERT_EQ(ui_->app().view().mode, ViewMode::Grid);
     ui_->click("view#ao.raw");
     ui_->frame();
-    EXPECT_EQ(ui_->app().viewMode, ViewMode::Single);
-    EXPECT_EQ(ui_->app().enlarged, "ao.raw");
+    EXPECT_EQ(ui_->app().view().mode, ViewMode::Single);
+    EXPECT_EQ(ui_->app().view().enlarged, "ao.raw");
     // Hover the middle of the enlarged view: the pixel inspector and sample inspector follow.
     const ImVec4 r = ui_->rect("view#main");
     ui_->frame((r.x + r.z) * 0.5f, r.y + (r.w - r.y) * 0.7f);
@@ -227,7 +227,7 @@ TEST_F(AppUi, DraggingTheViewOrbitsTheCamera) {
     EXPECT_GT(glm::length(after.eye - before.eye), 0.1f);
     EXPECT_NEAR(glm::length(after.eye - after.target), glm::length(before.eye - before.target),
                 1e-3f);                                  // orbit keeps distance
-    EXPECT_EQ(ui_->app().lastReport().ran().size(), 4u); // a camera move re-renders everything
+    EXPECT_EQ(ui_->app().frames().lastReport().ran().size(), 4u); // a camera move re-renders everything
 }
 
 TEST_F(AppUi, CameraPanelSwitchesTheLensAndAViewOfTheAoAloneCullsTheComposite) {
@@ -253,12 +253,12 @@ TEST_F(AppUi, CameraPanelSwitchesTheLensAndAViewOfTheAoAloneCullsTheComposite) {
     EXPECT_EQ(ui_->app().renderer().camera().depth, DepthMode::Reversed);
 
     // A single view of the raw AO: the composite is not run (culled), the grid brings it back.
-    ui_->app().viewMode = ViewMode::Single;
-    ui_->app().enlarged = "ao.raw";
+    ui_->app().view().mode = ViewMode::Single;
+    ui_->app().view().enlarged = "ao.raw";
     ui_->app().settings().ao.power = 1.3f;
-    ui_->app().poke();
+    ui_->app().frames().keepAwake();
     ui_->frames(3);
-    const FrameReport& single = ui_->app().lastReport();
+    const FrameReport& single = ui_->app().frames().lastReport();
     bool culled = false;
     for (const auto& p : single.passes)
         culled = culled || (p.name == "composite" && p.culled);
@@ -266,10 +266,10 @@ TEST_F(AppUi, CameraPanelSwitchesTheLensAndAViewOfTheAoAloneCullsTheComposite) {
     // The pixel readout shows nothing for what this view did not compute, not an older frame's values.
     EXPECT_TRUE(ui_->app().valueAt("composite", {10, 10}).empty());
     EXPECT_FALSE(ui_->app().valueAt("ao.raw", {10, 10}).empty());
-    ui_->app().viewMode = ViewMode::Grid;
-    ui_->app().poke();
+    ui_->app().view().mode = ViewMode::Grid;
+    ui_->app().frames().keepAwake();
     ui_->frames(2);
-    const auto ran = ui_->app().lastReport().ran();
+    const auto ran = ui_->app().frames().lastReport().ran();
     EXPECT_NE(std::find(ran.begin(), ran.end(), "composite"), ran.end());
     EXPECT_FALSE(ui_->app().valueAt("composite", {10, 10}).empty());
 }
@@ -277,14 +277,14 @@ TEST_F(AppUi, CameraPanelSwitchesTheLensAndAViewOfTheAoAloneCullsTheComposite) {
 TEST_F(AppUi, IdleFramesRenderNothing) {
     ui_->settle(); // let hover/input settle
     ui_->frames(4);
-    const int rendered = ui_->app().framesRendered();
+    const int rendered = ui_->app().frames().framesRendered();
     ui_->frames(10);
-    EXPECT_EQ(ui_->app().framesRendered(), rendered); // no SSAO pass ran without a change
-    EXPECT_FALSE(ui_->app().busy());                  // and the window loop may sleep
+    EXPECT_EQ(ui_->app().frames().framesRendered(), rendered); // no SSAO pass ran without a change
+    EXPECT_FALSE(ui_->app().frames().busy());                  // and the window loop may sleep
     ui_->app().settings().composite.ambient = 0.5f;
-    ui_->app().poke();
+    ui_->app().frames().keepAwake();
     ui_->frame();
-    EXPECT_EQ(ui_->app().framesRendered(), rendered + 1);
+    EXPECT_EQ(ui_->app().frames().framesRendered(), rendered + 1);
 }
 
 TEST_F(AppUi, BrokenShaderKeepsTheLastGoodProgramAndShowsFileAndLine) {
@@ -311,8 +311,8 @@ TEST_F(AppUi, BrokenShaderKeepsTheLastGoodProgramAndShowsFileAndLine) {
     fs::last_write_time(frag, fs::last_write_time(frag) + std::chrono::seconds(2));
     ui_->app().pollShaderReload();
     ui_->frame();
-    EXPECT_NE(ui_->app().shaderError().find("techniques/kernel/kernel.frag:"), std::string::npos)
-        << ui_->app().shaderError() << " / " << ui_->app().status();
+    EXPECT_NE(ui_->app().frames().shaderError().find("techniques/kernel/kernel.frag:"), std::string::npos)
+        << ui_->app().frames().shaderError() << " / " << ui_->app().status();
     ui_->app().renderer().invalidate(); // still renders, with the last good program
     ui_->frames(2);
     EXPECT_EQ(aoRaw().data, good.data);
@@ -321,24 +321,24 @@ TEST_F(AppUi, BrokenShaderKeepsTheLastGoodProgramAndShowsFileAndLine) {
     fs::last_write_time(frag, fs::last_write_time(frag) + std::chrono::seconds(4));
     ui_->app().pollShaderReload();
     ui_->frame();
-    EXPECT_TRUE(ui_->app().shaderError().empty()) << ui_->app().shaderError();
+    EXPECT_TRUE(ui_->app().frames().shaderError().empty()) << ui_->app().frames().shaderError();
 }
 
 TEST_F(AppUi, ClosingTheAppReleasesEveryGlObject) {
-    ui_->app().viewMode = ViewMode::Split; // also chain B
-    ui_->app().splitKind = SplitKind::Preset;
+    ui_->app().view().mode = ViewMode::Split; // also chain B
+    ui_->app().view().splitKind = SplitKind::Preset;
     ui_->frames(2);
     Renderer& r = ui_->app().renderer();
     const GLuint chainB = r.texture("b.ao.raw").id();
     ASSERT_TRUE(glIsTexture(chainB));
-    ui_->app().viewMode = ViewMode::Grid;
+    ui_->app().view().mode = ViewMode::Grid;
     ui_->frames(2);
     EXPECT_FALSE(glIsTexture(chainB)) << "leaving the split view frees chain B";
     std::vector<GLuint> textures;
     for (const Resource* res : r.graph().resources(true))
         textures.push_back(res->texture.id());
     for (const Resource* res : r.buffers())
-        textures.push_back(ui_->app().views().find(res->desc.name)->target.texture().id());
+        textures.push_back(ui_->app().frames().views().find(res->desc.name)->target.texture().id());
     for (GLuint id : textures)
         ASSERT_TRUE(glIsTexture(id)) << id;
     ui_.reset();
@@ -387,7 +387,7 @@ TEST_F(AppUi, WindowResizeAndHiDpiScaleTheRenderSize) {
     ui_->frames(2);
     const int w1 = ui_->app().renderer().width();
     EXPECT_LT(w1, w0);
-    EXPECT_EQ(ui_->app().lastReport().ran().size(), 4u); // a new size re-renders every pass
+    EXPECT_EQ(ui_->app().frames().lastReport().ran().size(), 4u); // a new size re-renders every pass
     io.DisplayFramebufferScale = ImVec2(2, 2);           // a HiDPI monitor: twice the pixels
     ui_->frames(2);
     EXPECT_NEAR(ui_->app().renderer().width(), 2 * w1, 2);

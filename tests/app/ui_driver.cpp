@@ -51,9 +51,9 @@ void UiDriver::save(const std::string& path) const {
 }
 
 ImVec4 UiDriver::rect(const std::string& key) const {
-    auto it = app_->widgetRects.find(key);
-    EXPECT_NE(it, app_->widgetRects.end()) << "no widget recorded as " << key;
-    return it == app_->widgetRects.end() ? ImVec4(0, 0, 0, 0) : it->second;
+    auto it = app_->view().widgetRects.find(key);
+    EXPECT_NE(it, app_->view().widgetRects.end()) << "no widget recorded as " << key;
+    return it == app_->view().widgetRects.end() ? ImVec4(0, 0, 0, 0) : it->second;
 }
 
 void UiDriver::clickAt(float x, float y, bool ctrl) {
@@ -95,7 +95,7 @@ void UiDriver::wheel(float x, float y, float steps) {
 }
 
 void UiDriver::settle() {
-    for (int i = 0; i < 40 && (app_->interacting() || app_->renderedInteractive()); ++i)
+    for (int i = 0; i < 40 && (app_->frames().interacting() || app_->frames().renderedInteractive()); ++i)
         frame(mx_, my_, false);
     frame(mx_, my_, false);
 }

@@ -30,7 +30,7 @@ class UiDriver {
     void wheel(float x, float y, float steps);
     // Frames with no input until the app renders at full resolution again (input settled).
     void settle();
-    bool has(const std::string& key) const { return app_->widgetRects.count(key) != 0; }
+    bool has(const std::string& key) const { return app_->view().widgetRects.count(key) != 0; }
     ImVec4 rect(const std::string& key) const;
     // The last UI frame as PNG (to look at what a test saw).
     void save(const std::string& path) const;
