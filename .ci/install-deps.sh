@@ -12,6 +12,7 @@ PKGS=(
   libembree-dev libtbb-dev libbenchmark-dev
   python3 python3-matplotlib
   clang  # libFuzzer targets with ASan+UBSan (tests/fuzz)
+  glslang-tools  # glslangValidator: every shader variant compiles offline (tests/gl/test_glsl_validator.cpp)
   assimp-testmodels  # 53 glTF files, many broken on purpose (tests/cli/test_cli.cpp)
   xvfb xauth
 )

@@ -140,6 +140,13 @@ GLuint ShaderLibrary::program(const std::string& vert, const std::string& frag, 
     return id;
 }
 
+std::vector<ShaderLibrary::Variant> ShaderLibrary::variants() const {
+    std::vector<Variant> out;
+    for (const auto& [key, e] : cache_)
+        out.push_back({e.vert, e.frag, e.defines});
+    return out;
+}
+
 void ShaderLibrary::reload() {
     std::map<std::string, Entry> fresh;
     for (auto& [key, e] : cache_)

@@ -30,6 +30,13 @@ class ShaderLibrary {
     GLuint program(const std::string& vert, const std::string& frag, const Defines& defines = {});
     const std::string& dir() const { return dir_; }
     void clear() { cache_.clear(); }
+    // Every program built so far, as (vertex file, fragment file, defines): what a test hands to an
+    // offline compiler (glslangValidator) to catch GLSL that only one driver accepts.
+    struct Variant {
+        std::string vert, frag;
+        Defines defines;
+    };
+    std::vector<Variant> variants() const;
 
     // Hot reload: recompiles every cached program from disk, all or nothing. On a compile error
     // the previous programs stay in use and the error (with file:line) is thrown.
