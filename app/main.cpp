@@ -13,6 +13,8 @@
 #include "util/paths.h"
 #include "view/window_app.h"
 
+#include "cli_util.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -39,70 +41,83 @@ void printParams() {
     }
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app{
-        "ssaolab — explore screen-space ambient occlusion: every parameter, every buffer, measured.\n"
-        "Without a subcommand it opens the window (or, with no display, renders the default scene\n"
-        "headless into ./out/)."};
-    app.require_subcommand(0, 1);
-    app.fallthrough(); // global options may follow the subcommand
+// Every subcommand's options, parsed into one place.
+struct Commands {
+    CLI::App app{"ssaolab — explore screen-space ambient occlusion: every parameter, every buffer, measured.\n"
+                 "Without a subcommand it opens the window (or, with no display, renders the default scene\n"
+                 "headless into ./out/)."};
     double maxTriangles = double(ssao::SceneBudget{}.triangles);
-    app.add_option("--max-triangles", maxTriangles,
-                   "refuse scenes that expand to more triangles once instances are flattened")
-        ->capture_default_str()
-        ->check(CLI::Range(1.0, 2e9));
-    ssao::RenderOptions ro;
-    CLI::App* render =
-        app.add_subcommand("render", "render a scene headless (EGL) into EXR/PNG buffers and metrics.json");
-    ssao::addRenderOptions(*render, ro);
-    ssao::BenchOptions bo;
-    CLI::App* bench = app.add_subcommand(
-        "bench", "run time against error: every configuration of a sweep against the ray-traced reference");
-    ssao::addBenchOptions(*bench, bo);
-    ssao::TuneOptions to;
-    CLI::App* tune = app.add_subcommand(
-        "tune", "fit one technique's parameters to the ray-traced reference; report held-out views; save JSON");
-    ssao::addTuneOptions(*tune, to);
-    ssao::SkipsOptions ko;
-    CLI::App* skips = app.add_subcommand(
-        "skips", "work a scene does not need, skipped and measured: each skip against the same frame "
-                 "without it (dirty passes, sky, adaptive samples, culling, unused targets)");
-    ssao::addSkipsOptions(*skips, ko);
-    ssao::StressOptions so;
-    CLI::App* stress = app.add_subcommand(
-        "stress", "numerical stability: every technique under extreme projections, scales, placements, "
-                  "precisions and parameter limits; non-finite, out-of-range and invariance errors");
-    ssao::addStressOptions(*stress, so);
-    app.add_subcommand("params", "list every parameter: key, default, unit, range, help");
-    app.add_subcommand("paths", "where this binary finds its shaders, assets and presets");
-    ssao::WindowOptions wo;
-    std::string windowSize = "1600x900";
-    CLI::App* view = app.add_subcommand("view", "open the interactive explorer window (GLFW + Dear ImGui)");
-    view->add_option("--scene", wo.app.scene,
-                     "builtin:NAME or a .gltf/.glb file (default: the preset's, else showcase)");
-    view->add_option("--preset", wo.app.preset, "preset name or JSON file");
-    view->add_option("--shaders", wo.app.shaderDir, "shader folder (edits are hot-reloaded)");
-    view->add_option("--preset-dir", wo.app.userPresetDir,
-                     "folder for saved presets (default $XDG_CONFIG_HOME/ssaolab/presets)");
-    view->add_option("--size", windowSize, "window size WIDTHxHEIGHT")->capture_default_str();
-    std::string viewProjection, viewDepth;
-    ssao::addLensOptions(*view, viewProjection, viewDepth);
-    view->add_option("--frames", wo.frames, "draw N frames then exit (for tests and screenshots)")
-        ->check(CLI::Range(0, 1000000));
-    view->add_option("--screenshot", wo.screenshot, "with --frames: save the last frame as PNG");
-    view->add_option("--frame-log", wo.frameLog,
-                     "write one line per drawn frame: ms, render size, moving, passes run");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        if (e.get_exit_code() == 0) return app.exit(e); // --help
-        // Like every other bad input: one line, exit code 1.
-        std::fprintf(stderr, "ssaolab: error: %s (see ssaolab --help)\n", e.what());
-        return 1;
+    ssao::RenderOptions render;
+    ssao::BenchOptions bench;
+    ssao::TuneOptions tune;
+    ssao::SkipsOptions skips;
+    ssao::StressOptions stress;
+    ssao::WindowOptions window;
+    std::string windowSize = "1600x900", viewProjection, viewDepth;
+
+    Commands() {
+        app.require_subcommand(0, 1);
+        app.fallthrough(); // global options may follow the subcommand
+        app.allow_extras(); // mistyped options and commands are reported by refuseExtras, by name
+        app.add_option("--max-triangles", maxTriangles,
+                       "refuse scenes that expand to more triangles once instances are flattened")
+            ->capture_default_str()
+            ->check(ssao::cliRange(1.0, 2e9));
+        ssao::addRenderOptions(*sub("render", "render a scene headless (EGL) into EXR/PNG buffers and metrics.json"),
+                               render);
+        ssao::addBenchOptions(
+            *sub("bench", "run time against error: every configuration of a sweep against the ray-traced reference"),
+            bench);
+        ssao::addTuneOptions(
+            *sub("tune", "fit one technique's parameters to the ray-traced reference; report held-out views; save JSON"),
+            tune);
+        ssao::addSkipsOptions(*sub("skips", "work a scene does not need, skipped and measured: each skip against "
+                                            "the same frame without it (dirty passes, sky, adaptive samples, "
+                                            "culling, unused targets)"),
+                              skips);
+        ssao::addStressOptions(*sub("stress", "numerical stability: every technique under extreme projections, "
+                                              "scales, placements, precisions and parameter limits; non-finite, "
+                                              "out-of-range and invariance errors"),
+                               stress);
+        sub("params", "list every parameter: key, default, unit, range, help");
+        sub("paths", "where this binary finds its shaders, assets and presets");
+        addView(*sub("view", "open the interactive explorer window (GLFW + Dear ImGui)"));
     }
-    try {
+
+    CLI::App* sub(const char* name, const char* help) {
+        CLI::App* c = app.add_subcommand(name, help);
+        c->allow_extras();
+        return c;
+    }
+
+    void addView(CLI::App& view) {
+        ssao::WindowOptions& wo = window;
+        view.add_option("--scene", wo.app.scene, "builtin:NAME or a .gltf/.glb file (default: the preset's, else showcase)");
+        view.add_option("--preset", wo.app.preset, "preset name or JSON file");
+        view.add_option("--shaders", wo.app.shaderDir, "shader folder (edits are hot-reloaded)");
+        view.add_option("--preset-dir", wo.app.userPresetDir,
+                        "folder for saved presets (default $XDG_CONFIG_HOME/ssaolab/presets)");
+        view.add_option("--size", windowSize, "window size WIDTHxHEIGHT")->capture_default_str();
+        ssao::addLensOptions(view, viewProjection, viewDepth);
+        view.add_option("--frames", wo.frames, "draw N frames then exit (for tests and screenshots)")
+            ->check(ssao::cliRange(0, 1000000));
+        view.add_option("--screenshot", wo.screenshot, "with --frames: save the last frame as PNG");
+        view.add_option("--frame-log", wo.frameLog, "write one line per drawn frame: ms, render size, moving, passes run");
+    }
+
+    int runWindow() {
+        ssao::WindowOptions& wo = window;
+        ssao::parseSizeOption(windowSize, wo.width, wo.height); // strict, and within render's budget
+        if (wo.width < 200 || wo.height < 150)
+            throw ssao::Error("--size '" + windowSize + "': the window needs at least 200x150");
+        if (!viewProjection.empty()) wo.app.projection = ssao::parseProjection(viewProjection);
+        if (!viewDepth.empty()) wo.app.depth = ssao::parseDepthMode(viewDepth);
+        if (!wo.screenshot.empty() && wo.frames <= 0)
+            throw ssao::Error("--screenshot needs --frames N (the frame to save)");
+        return ssao::runWindowApp(wo);
+    }
+
+    int run() {
         ssao::setSceneBudget({size_t(maxTriangles)});
         if (app.got_subcommand("params")) {
             printParams();
@@ -110,38 +125,53 @@ int main(int argc, char** argv) {
         }
         if (app.got_subcommand("paths")) {
             std::printf("binary   %s\ndata     %s (%s)\nshaders  %s\npresets  %s/presets, then %s\n",
-                        ssao::executablePath().c_str(), ssao::dataRoot().c_str(),
-                        ssao::dataRootSource().c_str(), ssao::shaderRoot().c_str(), ssao::assetRoot().c_str(),
+                        ssao::executablePath().c_str(), ssao::dataRoot().c_str(), ssao::dataRootSource().c_str(),
+                        ssao::shaderRoot().c_str(), ssao::assetRoot().c_str(),
                         ssao::PresetStore::defaultUserDir().c_str());
             return 0;
         }
-        if (app.got_subcommand("bench")) return ssao::runBench(bo);
-        if (app.got_subcommand("tune")) return ssao::runTune(to);
-        if (app.got_subcommand("stress")) return ssao::runStress(so);
-        if (app.got_subcommand("skips")) return ssao::runSkips(ko);
-        if (app.got_subcommand("view") || (!app.got_subcommand("render") && ssao::haveDisplay())) {
-            ssao::parseSizeOption(windowSize, wo.width, wo.height); // strict, and within render's budget
-            if (wo.width < 200 || wo.height < 150)
-                throw ssao::Error("--size '" + windowSize + "': the window needs at least 200x150");
-            if (!viewProjection.empty()) wo.app.projection = ssao::parseProjection(viewProjection);
-            if (!viewDepth.empty()) wo.app.depth = ssao::parseDepthMode(viewDepth);
-            if (!wo.screenshot.empty() && wo.frames <= 0)
-                throw ssao::Error("--screenshot needs --frames N (the frame to save)");
-            return ssao::runWindowApp(wo);
-        }
+        if (app.got_subcommand("bench")) return ssao::runBench(bench);
+        if (app.got_subcommand("tune")) return ssao::runTune(tune);
+        if (app.got_subcommand("stress")) return ssao::runStress(stress);
+        if (app.got_subcommand("skips")) return ssao::runSkips(skips);
+        if (app.got_subcommand("view") || (!app.got_subcommand("render") && ssao::haveDisplay())) return runWindow();
         if (!app.got_subcommand("render"))
             std::printf("no display: rendering headless into %s/ (for the window run `xvfb-run -a ssaolab` "
                         "or set DISPLAY)\n",
-                        ro.out.c_str());
-        return ssao::runRender(ro);
+                        render.out.c_str());
+        return ssao::runRender(render);
+    }
+};
+
+// One line, whatever the message carries (a compiler log ends in a newline, may hold several).
+int reportError(const std::string& what) {
+    std::string msg = what;
+    while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ' || msg.back() == '\r'))
+        msg.pop_back();
+    for (char& c : msg)
+        if (c == '\n' || c == '\r') c = ';';
+    std::fprintf(stderr, "ssaolab: error: %s\n", msg.c_str());
+    return 1;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    Commands cli;
+    try {
+        cli.app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) return cli.app.exit(e); // --help
+        // Like every other bad input: one line, exit code 1; the subcommand's own help.
+        std::string help = "ssaolab --help";
+        for (const CLI::App* sub : cli.app.get_subcommands())
+            help = "ssaolab " + sub->get_name() + " --help";
+        return reportError(std::string(e.what()) + " (see " + help + ")");
+    }
+    try {
+        ssao::refuseExtras(cli.app);
+        return cli.run();
     } catch (const std::exception& e) {
-        // One line, whatever the message carries (a compiler log ends in a newline, may hold several).
-        std::string msg = e.what();
-        while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ' || msg.back() == '\r'))
-            msg.pop_back();
-        for (char& c : msg)
-            if (c == '\n' || c == '\r') c = ';';
-        std::fprintf(stderr, "ssaolab: error: %s\n", msg.c_str());
-        return 1;
+        return reportError(e.what());
     }
 }

@@ -14,6 +14,8 @@
 #include "scene/view_fit.h"
 #include "util/paths.h"
 
+#include "cli_util.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -39,7 +41,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--out", o.out, "output folder (EXR, PNG, metrics.json)")->capture_default_str();
     cmd.add_option("--timing-frames", o.timingFrames, "extra frames, every pass forced, averaged into gpu_ms")
         ->capture_default_str()
-        ->check(CLI::Range(1, 100));
+        ->check(cliRange(1, 100));
     cmd.add_flag("--fit-range", o.fitRange,
                  "PNG previews: fit every buffer's range (as the app's 'fit range')");
     cmd.add_flag("--false-colour", o.falseColor, "PNG previews: scalar buffers in false colour");
@@ -48,7 +50,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
                  "the error metrics");
     cmd.add_option("--reference-rays", o.referenceRays, "reference rays per pixel")
         ->capture_default_str()
-        ->check(CLI::Range(1, 1 << 16));
+        ->check(cliRange(1, 1 << 16));
     cmd.add_option("--reference-variant", o.referenceVariant,
                    "visibility (XeGTAO's: binary within R) or obscurance (linear falloff 1 - t/R)")
         ->capture_default_str()

@@ -11,6 +11,8 @@
 #include "util/error.h"
 #include "util/paths.h"
 
+#include "cli_util.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -29,16 +31,16 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
     cmd.add_option("--size", o.size, "render size WIDTHxHEIGHT")->capture_default_str();
     cmd.add_option("--views", o.views, "viewpoints per scene: its camera, then orbits around it")
         ->capture_default_str()
-        ->check(CLI::Range(1, 32));
+        ->check(cliRange(1, 32));
     cmd.add_option("--frames", o.frames, "timed frames per configuration and view (median, min, max)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 10000));
+        ->check(cliRange(1, 10000));
     cmd.add_option("--warmup", o.warmup, "untimed frames before timing")
         ->capture_default_str()
-        ->check(CLI::Range(0, 1000));
+        ->check(cliRange(0, 1000));
     cmd.add_option("--reference-rays", o.referenceRays, "reference rays per pixel")
         ->capture_default_str()
-        ->check(CLI::Range(1, 1 << 16));
+        ->check(cliRange(1, 1 << 16));
     cmd.add_option("--reference-variant", o.referenceVariant, "visibility (XeGTAO's) or obscurance")
         ->capture_default_str()
         ->check(CLI::IsMember({"visibility", "obscurance"}));
@@ -47,7 +49,7 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
            "the AO radius R of every configuration and of the reference, as a fraction of the scene's "
            "bounding-box diagonal")
         ->capture_default_str()
-        ->check(CLI::Range(0.0001, 0.5));
+        ->check(cliRange(0.0001, 0.5));
     cmd.add_option("--out", o.out, "output folder")->capture_default_str();
     cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)");
     cmd.add_flag(

@@ -68,40 +68,46 @@ size_t mostAccurate(const BenchRun& run) {
     return best;
 }
 
-void writeBenchFiles(const BenchRun& run, const std::string& dir) {
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec) throw Error("cannot create " + dir + ": " + ec.message());
+namespace {
+
+// results.csv: one row per scene, viewpoint and configuration.
+std::string resultsCsv(const BenchRun& run) {
     const auto& cfgs = run.sweep->configs;
-    {
-        std::ostringstream f;
-        f << "scene,viewpoint,label,technique,baseline,pareto," << kMetricHeader << ",settings\n";
-        for (const auto& v : run.views) {
-            const BenchConfig& c = cfgs[v.config];
-            f << csvField(v.scene) << "," << csvField(v.viewpoint) << "," << csvField(c.label) << ","
-              << c.settings.ao.technique << "," << c.baseline << "," << run.summary[v.config].pareto << ","
-              << metricCells(v) << "," << csvField(c.keys.dump()) << "\n";
-        }
-        writeFileAtomically((fs::path(dir) / "results.csv").string(), f.str());
+    std::ostringstream f;
+    f << "scene,viewpoint,label,technique,baseline,pareto," << kMetricHeader << ",settings\n";
+    for (const auto& v : run.views) {
+        const BenchConfig& c = cfgs[v.config];
+        f << csvField(v.scene) << "," << csvField(v.viewpoint) << "," << csvField(c.label) << ","
+          << c.settings.ao.technique << "," << c.baseline << "," << run.summary[v.config].pareto << ","
+          << metricCells(v) << "," << csvField(c.keys.dump()) << "\n";
     }
-    {
-        std::ostringstream f;
-        f << "label,technique,baseline,pareto,views,gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,"
-             "psnr_geometry_srgb,psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,time_ratio,rmse_ratio,"
-             "rmse_first_frame,"
-             "settings\n";
-        for (const auto& s : run.summary) {
-            const BenchConfig& c = cfgs[s.config];
-            f << csvField(c.label) << "," << c.settings.ao.technique << "," << c.baseline << "," << s.pareto
-              << "," << s.views << "," << num(s.gpuMs) << "," << num(s.gpuMsMin) << "," << num(s.gpuMsMax)
-              << "," << num(s.rmse) << "," << num(s.mae) << "," << num(s.bias) << ","
-              << num(s.psnrGeometrySrgb) << "," << num(s.psnrFullSrgb) << "," << num(s.rmseEdge) << ","
-              << num(s.rmseInterior) << "," << num(s.ssim) << "," << s.nonFinite << "," << num(s.timeRatio)
-              << "," << num(s.rmseRatio) << "," << num(s.rmseFirstFrame) << "," << csvField(c.keys.dump())
-              << "\n";
-        }
-        writeFileAtomically((fs::path(dir) / "summary.csv").string(), f.str());
+    return f.str();
+}
+
+// summary.csv: one row per configuration, over every view.
+std::string summaryCsv(const BenchRun& run) {
+    const auto& cfgs = run.sweep->configs;
+    std::ostringstream f;
+    f << "label,technique,baseline,pareto,views,gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,"
+         "psnr_geometry_srgb,psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,time_ratio,rmse_ratio,"
+         "rmse_first_frame,"
+         "settings\n";
+    for (const auto& s : run.summary) {
+        const BenchConfig& c = cfgs[s.config];
+        f << csvField(c.label) << "," << c.settings.ao.technique << "," << c.baseline << "," << s.pareto
+          << "," << s.views << "," << num(s.gpuMs) << "," << num(s.gpuMsMin) << "," << num(s.gpuMsMax)
+          << "," << num(s.rmse) << "," << num(s.mae) << "," << num(s.bias) << ","
+          << num(s.psnrGeometrySrgb) << "," << num(s.psnrFullSrgb) << "," << num(s.rmseEdge) << ","
+          << num(s.rmseInterior) << "," << num(s.ssim) << "," << s.nonFinite << "," << num(s.timeRatio)
+          << "," << num(s.rmseRatio) << "," << num(s.rmseFirstFrame) << "," << csvField(c.keys.dump())
+          << "\n";
     }
+    return f.str();
+}
+
+// results.json: the run's facts, every configuration's summary and every view's result.
+nlohmann::json resultsJson(const BenchRun& run) {
+    const auto& cfgs = run.sweep->configs;
     nlohmann::json j = run.facts;
     j["sweep"] = {{"name", run.sweep->name}, {"description", run.sweep->description}};
     for (const auto& s : run.summary) {
@@ -149,7 +155,18 @@ void writeBenchFiles(const BenchRun& run, const std::string& dir) {
                                 {"rmse_first_frame", jnum(v.rmseFirstFrame)},
                                 {"nonfinite", v.error.nonFinite},
                                 {"reference_noise", jnum(v.error.referenceNoise)}});
-    writeFileAtomically((fs::path(dir) / "results.json").string(), j.dump(2) + "\n");
+    return j;
+}
+
+} // namespace
+
+void writeBenchFiles(const BenchRun& run, const std::string& dir) {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec) throw Error("cannot create " + dir + ": " + ec.message());
+    writeFileAtomically((fs::path(dir) / "results.csv").string(), resultsCsv(run));
+    writeFileAtomically((fs::path(dir) / "summary.csv").string(), summaryCsv(run));
+    writeFileAtomically((fs::path(dir) / "results.json").string(), resultsJson(run).dump(2) + "\n");
     writeFileAtomically((fs::path(dir) / "report.md").string(), benchMarkdown(run, "pareto.png"));
 }
 

@@ -16,6 +16,8 @@
 #include "util/error.h"
 #include "util/paths.h"
 
+#include "cli_util.h"
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -33,10 +35,10 @@ void addSkipsOptions(CLI::App& cmd, SkipsOptions& o) {
     cmd.add_option("--size", o.size, "render size WIDTHxHEIGHT")->capture_default_str();
     cmd.add_option("--frames", o.frames, "timed frames per variant (median)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 1000));
+        ->check(cliRange(1, 1000));
     cmd.add_option("--reference-rays", o.referenceRays, "reference rays per pixel (adaptive rows' error)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 1 << 16));
+        ->check(cliRange(1, 1 << 16));
     cmd.add_option("--out", o.out, "output folder (skips.json, skips.md)")->capture_default_str();
     cmd.add_flag("--quiet", o.quiet, "no progress output");
 }

@@ -7,6 +7,7 @@
 #include "util/error.h"
 #include "util/paths.h"
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 
@@ -69,6 +70,139 @@ std::string textField(const nlohmann::json& j, const char* key, const std::strin
 }
 } // namespace
 
+namespace {
+
+// Builds the configurations of one sweep file: the baseline, each group's combinations, every
+// technique at its defaults; a configuration equal to an earlier one is kept once.
+class SweepBuilder {
+  public:
+    SweepBuilder(const std::string& origin, const std::string& presetDir, size_t maxConfigs)
+        : origin_(origin), store_(PresetStore::standard(presetDir)), maxConfigs_(maxConfigs) {}
+
+    void base(const nlohmann::json& b) {
+        if (!b.is_object()) throw Error(origin_ + ": base: expected {\"preset\": ..., \"set\": {...}}");
+        const std::string preset = textField(b, "preset", "", origin_ + ": base");
+        if (!preset.empty()) {
+            base_ = store_.open(preset).settings;
+            resetRadius(base_);
+        }
+        if (b.contains("set")) {
+            applyKeys(base_, b["set"], origin_ + ": base.set");
+            baseKeys_ = b["set"];
+        }
+    }
+
+    // The baseline first, so every later row can be read against it.
+    void baseline() {
+        BenchConfig c;
+        c.label = "learnopengl (baseline)";
+        c.group = "baseline";
+        c.settings = store_.open("learnopengl").settings;
+        resetRadius(c.settings); // the bench's radius, like every configuration
+        c.keys = {{"preset", "learnopengl"}};
+        c.baseline = true;
+        add(c);
+    }
+
+    void group(const nlohmann::json& g, size_t gi) {
+        if (!g.is_object()) throw Error(origin_ + ": group " + std::to_string(gi + 1) + " must be an object");
+        const std::string gname = textField(g, "name", "group " + std::to_string(gi + 1), origin_);
+        const std::string where = origin_ + ": group '" + gname + "'";
+        for (auto& [k, v] : g.items())
+            if (k != "name" && k != "preset" && k != "set" && k != "vary")
+                throw Error(where + ": unknown key '" + k + "' (name, preset, set, vary)");
+        Settings gs = base_;
+        nlohmann::json gkeys = baseKeys_;
+        if (g.contains("preset")) { // the group starts from a preset instead of the base
+            if (!g["preset"].is_string()) throw Error(where + ".preset: expected a preset name");
+            gs = store_.open(g["preset"].get<std::string>()).settings;
+            resetRadius(gs);
+            gkeys = {{"preset", g["preset"]}};
+        }
+        if (g.contains("set")) {
+            applyKeys(gs, g["set"], where + ".set");
+            gkeys.update(g["set"]);
+        }
+        combinations(gname, where, gs, gkeys, axes(g, where));
+    }
+
+    // Every technique at its defaults: one added later is never missing from the front.
+    void techniqueDefaults() {
+        for (const auto& t : techniques()) {
+            BenchConfig c;
+            c.group = "technique defaults";
+            c.settings = base_;
+            setParam(c.settings, "ao.technique", t.id);
+            c.keys = {{"ao.technique", t.id}};
+            c.label = t.id + " defaults";
+            add(c);
+        }
+    }
+
+    std::vector<BenchConfig> configs;
+
+  private:
+    using Axes = std::vector<std::pair<std::string, nlohmann::json>>;
+
+    Axes axes(const nlohmann::json& g, const std::string& where) const {
+        Axes out;
+        if (!g.contains("vary")) return out;
+        if (!g["vary"].is_object()) throw Error(where + ".vary: expected {\"key\": [values]}");
+        for (auto& [k, v] : g["vary"].items()) {
+            if (!v.is_array() || v.empty()) throw Error(where + ".vary: '" + k + "' needs a non-empty list");
+            out.emplace_back(k, v);
+        }
+        return out;
+    }
+
+    // Odometer over the axes' lists. The combinations are counted before any is made: lists of
+    // equal values multiply into duplicates that the distinct-configuration cap never sees.
+    void combinations(const std::string& gname, const std::string& where, const Settings& gs,
+                      const nlohmann::json& gkeys, const Axes& axes) {
+        double total = 1;
+        for (const auto& a : axes)
+            total *= double(a.second.size());
+        if (total > double(maxConfigs_))
+            throw Error(where + ".vary: " + std::to_string((unsigned long long)std::min(total, 1e18)) +
+                        " combinations, more than " + std::to_string(maxConfigs_));
+        std::vector<size_t> idx(axes.size(), 0);
+        for (;;) {
+            BenchConfig c;
+            c.group = gname;
+            c.settings = gs;
+            c.keys = gkeys;
+            for (size_t a = 0; a < axes.size(); ++a) {
+                nlohmann::json one = {{axes[a].first, axes[a].second[idx[a]]}};
+                applyKeys(c.settings, one, where + ".vary");
+                c.keys.update(one);
+            }
+            c.label = labelOf(c.keys);
+            add(c);
+            size_t a = 0;
+            while (a < axes.size() && ++idx[a] == axes[a].second.size())
+                idx[a++] = 0;
+            if (a == axes.size()) break;
+        }
+    }
+
+    void add(BenchConfig c) {
+        const std::string key = toEffectiveJson(c.settings).dump();
+        if (!seen_.insert(key).second) return;
+        if (configs.size() >= maxConfigs_)
+            throw Error(origin_ + ": more than " + std::to_string(maxConfigs_) + " configurations");
+        configs.push_back(std::move(c));
+    }
+
+    std::string origin_;
+    PresetStore store_;
+    size_t maxConfigs_;
+    Settings base_ = defaultSettings();
+    nlohmann::json baseKeys_ = nlohmann::json::object();
+    std::set<std::string> seen_;
+};
+
+} // namespace
+
 Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::string& presetDir,
                  size_t maxConfigs) {
     if (!j.is_object()) throw Error(origin + ": a sweep is a JSON object");
@@ -78,104 +212,17 @@ Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::
     Sweep sw;
     sw.name = textField(j, "name", "sweep", origin);
     sw.description = textField(j, "description", "", origin);
-    const PresetStore store = PresetStore::standard(presetDir);
-    Settings base = defaultSettings();
-    nlohmann::json baseKeys = nlohmann::json::object();
-    if (j.contains("base")) {
-        const auto& b = j["base"];
-        if (!b.is_object()) throw Error(origin + ": base: expected {\"preset\": ..., \"set\": {...}}");
-        const std::string preset = textField(b, "preset", "", origin + ": base");
-        if (!preset.empty()) {
-            base = store.open(preset).settings;
-            resetRadius(base);
-        }
-        if (b.contains("set")) {
-            applyKeys(base, b["set"], origin + ": base.set");
-            baseKeys = b["set"];
-        }
-    }
-    std::set<std::string> seen;
-    auto add = [&](BenchConfig c) {
-        const std::string key = toEffectiveJson(c.settings).dump();
-        if (!seen.insert(key).second) return;
-        if (sw.configs.size() >= maxConfigs)
-            throw Error(origin + ": more than " + std::to_string(maxConfigs) + " configurations");
-        sw.configs.push_back(std::move(c));
-    };
-
-    // The baseline first, so every later row can be read against it.
-    BenchConfig baseline;
-    baseline.label = "learnopengl (baseline)";
-    baseline.group = "baseline";
-    baseline.settings = store.open("learnopengl").settings;
-    resetRadius(baseline.settings); // the bench's radius, like every configuration
-    baseline.keys = {{"preset", "learnopengl"}};
-    baseline.baseline = true;
-    add(baseline);
-
+    SweepBuilder b(origin, presetDir, maxConfigs);
+    if (j.contains("base")) b.base(j["base"]);
+    b.baseline();
     if (j.contains("groups")) {
         const auto& groups = j["groups"];
         if (!groups.is_array()) throw Error(origin + ": groups: expected an array");
-        for (size_t gi = 0; gi < groups.size(); ++gi) {
-            const auto& g = groups[gi];
-            if (!g.is_object()) throw Error(origin + ": group " + std::to_string(gi + 1) + " must be an object");
-            const std::string gname = textField(g, "name", "group " + std::to_string(gi + 1), origin);
-            const std::string where = origin + ": group '" + gname + "'";
-            for (auto& [k, v] : g.items())
-                if (k != "name" && k != "preset" && k != "set" && k != "vary")
-                    throw Error(where + ": unknown key '" + k + "' (name, preset, set, vary)");
-            Settings gs = base;
-            nlohmann::json gkeys = baseKeys;
-            if (g.contains("preset")) { // the group starts from a preset instead of the base
-                if (!g["preset"].is_string()) throw Error(where + ".preset: expected a preset name");
-                gs = store.open(g["preset"].get<std::string>()).settings;
-                resetRadius(gs);
-                gkeys = {{"preset", g["preset"]}};
-            }
-            if (g.contains("set")) {
-                applyKeys(gs, g["set"], where + ".set");
-                gkeys.update(g["set"]);
-            }
-            std::vector<std::pair<std::string, nlohmann::json>> axes;
-            if (g.contains("vary")) {
-                if (!g["vary"].is_object()) throw Error(where + ".vary: expected {\"key\": [values]}");
-                for (auto& [k, v] : g["vary"].items()) {
-                    if (!v.is_array() || v.empty())
-                        throw Error(where + ".vary: '" + k + "' needs a non-empty list");
-                    axes.emplace_back(k, v);
-                }
-            }
-            // Odometer over the axes' lists.
-            std::vector<size_t> idx(axes.size(), 0);
-            for (;;) {
-                BenchConfig c;
-                c.group = gname;
-                c.settings = gs;
-                c.keys = gkeys;
-                for (size_t a = 0; a < axes.size(); ++a) {
-                    nlohmann::json one = {{axes[a].first, axes[a].second[idx[a]]}};
-                    applyKeys(c.settings, one, where + ".vary");
-                    c.keys.update(one);
-                }
-                c.label = labelOf(c.keys);
-                add(c);
-                size_t a = 0;
-                while (a < axes.size() && ++idx[a] == axes[a].second.size())
-                    idx[a++] = 0;
-                if (a == axes.size()) break;
-            }
-        }
+        for (size_t gi = 0; gi < groups.size(); ++gi)
+            b.group(groups[gi], gi);
     }
-    // Every technique at its defaults: one added later is never missing from the front.
-    for (const auto& t : techniques()) {
-        BenchConfig c;
-        c.group = "technique defaults";
-        c.settings = base;
-        setParam(c.settings, "ao.technique", t.id);
-        c.keys = {{"ao.technique", t.id}};
-        c.label = t.id + " defaults";
-        add(c);
-    }
+    b.techniqueDefaults();
+    sw.configs = std::move(b.configs);
     return sw;
 }
 

@@ -14,6 +14,8 @@
 #include "util/error.h"
 #include "util/paths.h"
 
+#include "cli_util.h"
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -34,19 +36,19 @@ void addTuneOptions(CLI::App& cmd, TuneOptions& o) {
     cmd.add_option("--size", o.size, "render size")->capture_default_str();
     cmd.add_option("--views", o.views, "viewpoints per scene; even ones train, odd ones are held out")
         ->capture_default_str()
-        ->check(CLI::Range(2, 32));
+        ->check(cliRange(2, 32));
     cmd.add_option("--rounds", o.rounds, "search rounds (each halves every bracket)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 10));
+        ->check(cliRange(1, 10));
     cmd.add_option("--grid", o.grid, "values per parameter per round")
         ->capture_default_str()
-        ->check(CLI::Range(3, 33));
+        ->check(cliRange(3, 33));
     cmd.add_option("--reference-rays", o.referenceRays, "reference rays per pixel")
         ->capture_default_str()
-        ->check(CLI::Range(1, 1 << 16));
+        ->check(cliRange(1, 1 << 16));
     cmd.add_option("--radius-scene", o.radiusScene, "the reference's R as a fraction of the scene diagonal")
         ->capture_default_str()
-        ->check(CLI::Range(0.0001, 0.5));
+        ->check(cliRange(0.0001, 0.5));
     cmd.add_option("--set", o.sets, "KEY=VALUE applied to the start, e.g. TECHNIQUE.steps=4 (repeatable)");
     cmd.add_option("--knob", o.knobs,
                    "fit only this knob (repeatable: a float parameter key or radius_multiplier; default: "

@@ -47,8 +47,9 @@ Camera transformCamera(const Camera& c, const Scene& from, const Scene& to, doub
     return out;
 }
 
-std::vector<StressCase> stressCases(const std::string& technique) {
-    std::vector<StressCase> cases;
+namespace {
+
+void projectionCases(std::vector<StressCase>& cases) {
     // Projection: fixed planes, in units of the scene's bounding-box diagonal so every scene sees
     // the same ratios (up to 1e11), with each depth mapping. Standard depth loses surfaces as the
     // ratio grows (reported against the benign render; past 1e8 the camera check refuses, which
@@ -83,6 +84,9 @@ std::vector<StressCase> stressCases(const std::string& technique) {
             cases.push_back(on);
         }
     }
+}
+
+void placementCases(std::vector<StressCase>& cases) {
     // Scale and placement: the radius follows the scene (scene mode), so AO must not change.
     for (double s : {1e-3, 1e-2, 1e-1, 10.0, 1e2, 1e3}) {
         StressCase c{"scale", "x" + sci(s)};
@@ -100,6 +104,9 @@ std::vector<StressCase> stressCases(const std::string& technique) {
         c.offset = glm::dvec3(t, 0.5 * t, -0.25 * t), c.compared = true, c.sceneOrigin = false;
         cases.push_back(c);
     }
+}
+
+void precisionCases(std::vector<StressCase>& cases, const std::string& technique) {
     // G-buffer precision, and every technique row that chooses where positions come from.
     std::vector<std::string> precision = {"gbuffer.position_format=rgba16f", "gbuffer.normal_format=rgba8",
                                           "gbuffer.normal_format=rgba32f", "ao.normals=depth"};
@@ -111,6 +118,9 @@ std::vector<StressCase> stressCases(const std::string& technique) {
         c.settings = [assignment](Settings& s) { applyAssignment(s, assignment); };
         cases.push_back(c);
     }
+}
+
+void limitCases(std::vector<StressCase>& cases, const std::string& technique) {
     // Every parameter that applies to this technique, at both ends of its range.
     for (const Param& p : paramTable()) {
         const std::string g = p.group();
@@ -128,6 +138,9 @@ std::vector<StressCase> stressCases(const std::string& technique) {
             cases.push_back(c);
         }
     }
+}
+
+void cameraCases(std::vector<StressCase>& cases) {
     // Awkward cameras: inside the geometry, on a surface, grazing, looking away from everything.
     {
         StressCase c{"camera", "inside the scene's centre"};
@@ -162,6 +175,9 @@ std::vector<StressCase> stressCases(const std::string& technique) {
         };
         cases.push_back(a);
     }
+}
+
+void geometryCases(std::vector<StressCase>& cases) {
     // Geometry: zero-area triangles (must change nothing), normals of zero or non-unit length
     // (renormalised, or replaced by the face's own: finite either way).
     {
@@ -186,6 +202,18 @@ std::vector<StressCase> stressCases(const std::string& technique) {
             cases.push_back(c);
         }
     }
+}
+
+} // namespace
+
+std::vector<StressCase> stressCases(const std::string& technique) {
+    std::vector<StressCase> cases;
+    projectionCases(cases);
+    placementCases(cases);
+    precisionCases(cases, technique);
+    limitCases(cases, technique);
+    cameraCases(cases);
+    geometryCases(cases);
     return cases;
 }
 

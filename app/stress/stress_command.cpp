@@ -12,6 +12,8 @@
 #include "util/error.h"
 #include "util/paths.h"
 
+#include "cli_util.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -28,7 +30,7 @@ void addStressOptions(CLI::App& cmd, StressOptions& o) {
     cmd.add_option("--tolerance", o.tolerance,
                    "largest RMSE against the benign render allowed where AO must not change (scale, translation)")
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 1.0));
+        ->check(cliRange(0.0, 1.0));
     cmd.add_option("--out", o.out, "output folder (stress.json, stability.md)")->capture_default_str();
     cmd.add_flag("--quiet", o.quiet, "no progress output");
 }

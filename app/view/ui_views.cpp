@@ -141,91 +141,94 @@ void drawSamples(AppCore& app, ImDrawList* dl, ImVec2 pos, ImVec2 size) {
     }
 }
 
-void toolbar(AppCore& app) {
-    int mode = int(app.view().mode);
+// The second row of the toolbar in Split mode: what B is, what A | B compares.
+void splitControls(AppCore& app) {
+    ViewState& v = app.view();
+    FrameDriver& f = app.frames();
+    int kind = int(v.splitKind);
+    ImGui::RadioButton("AO on | off", &kind, int(SplitKind::AoOnOff));
+    ImGui::SameLine();
+    ImGui::RadioButton("current | preset", &kind, int(SplitKind::Preset));
+    if (kind != int(v.splitKind)) v.splitKind = SplitKind(kind), f.keepAwake();
+    if (v.splitKind == SplitKind::Preset) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(150);
+        if (ImGui::BeginCombo("B", v.splitPresetB.c_str())) {
+            for (const auto& e : app.presets().entries())
+                if (ImGui::Selectable(e.name.c_str(), e.name == v.splitPresetB)) v.splitPresetB = e.name, f.keepAwake();
+            ImGui::EndCombo();
+        }
+    }
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(130);
+    if (ImGui::BeginCombo("compare", v.splitBuffer.c_str())) {
+        // Every buffer chain B has too (its own or shared with A), from the graph.
+        for (const Resource* r : app.renderer().buffers()) {
+            const std::string& b = r->desc.name;
+            if (app.renderer().graph().find("b." + b) && ImGui::Selectable(b.c_str(), v.splitBuffer == b))
+                v.splitBuffer = b, f.keepAwake();
+        }
+        ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    if (ImGui::Checkbox("A - B", &v.splitDifference)) f.keepAwake();
+    rememberRect(v, "split#difference");
+    if (v.splitDifference) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(90);
+        if (ImGui::SliderFloat("x", &v.diffScale, 1.0f, 100.0f, "%.0f", ImGuiSliderFlags_Logarithmic)) f.keepAwake();
+    }
+}
+
+// The first row: view mode, render scales and the display style.
+void modeAndScales(ViewState& v, FrameDriver& f) {
+    int mode = int(v.mode);
     ImGui::RadioButton("Grid", &mode, int(ViewMode::Grid));
     ImGui::SameLine();
     ImGui::RadioButton("Single", &mode, int(ViewMode::Single));
     ImGui::SameLine();
     ImGui::RadioButton("Split A|B", &mode, int(ViewMode::Split));
-    rememberRect(app.view(), "mode#split");
-    if (mode != int(app.view().mode)) app.view().mode = ViewMode(mode), app.frames().keepAwake();
+    rememberRect(v, "mode#split");
+    if (mode != int(v.mode)) v.mode = ViewMode(mode), f.keepAwake();
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
-    if (ImGui::SliderFloat("resolution", &app.frames().renderScale, 0.25f, 1.0f, "%.2fx",
-                           ImGuiSliderFlags_AlwaysClamp))
-        app.frames().keepAwake();
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Render resolution relative to the view when input is still");
+    if (ImGui::SliderFloat("resolution", &f.renderScale, 0.25f, 1.0f, "%.2fx", ImGuiSliderFlags_AlwaysClamp))
+        f.keepAwake();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Render resolution relative to the view when input is still");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
-    if (ImGui::SliderFloat("moving", &app.frames().interactiveScale, 0.1f, 1.0f, "%.2fx",
-                           ImGuiSliderFlags_AlwaysClamp))
-        app.frames().keepAwake();
+    if (ImGui::SliderFloat("moving", &f.interactiveScale, 0.1f, 1.0f, "%.2fx", ImGuiSliderFlags_AlwaysClamp))
+        f.keepAwake();
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "Resolution while the camera moves or a slider is dragged; refined to full when input stops");
+        ImGui::SetTooltip("Resolution while the camera moves or a slider is dragged; refined to full when input stops");
     ImGui::SameLine();
-    if (ImGui::Checkbox("fit range", &app.view().style.fit)) app.frames().keepAwake();
+    if (ImGui::Checkbox("fit range", &v.style.fit)) f.keepAwake();
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "Stretch every buffer over its 1st..99th percentile on geometry (depth and position always are)");
+        ImGui::SetTooltip("Stretch every buffer over its 1st..99th percentile on geometry (depth and position always are)");
     ImGui::SameLine();
-    if (ImGui::Checkbox("false colour", &app.view().style.falseColor)) app.frames().keepAwake();
+    if (ImGui::Checkbox("false colour", &v.style.falseColor)) f.keepAwake();
+}
+
+void toolbar(AppCore& app) {
+    modeAndScales(app.view(), app.frames());
     // The second row always exists (with frame height), so switching modes never resizes the image
     // and never re-renders everything.
-    if (app.view().mode == ViewMode::Grid) {
+    ViewState& v = app.view();
+    if (v.mode == ViewMode::Grid) {
         ImGui::AlignTextToFramePadding();
         ImGui::TextDisabled("click a buffer to enlarge it; drag: orbit, right-drag: pan, wheel: zoom; "
                             "ranges are printed on each view");
     }
-    if (app.view().mode == ViewMode::Single) {
+    if (v.mode == ViewMode::Single) {
         ImGui::SetNextItemWidth(170);
-        if (ImGui::BeginCombo("buffer", app.view().enlarged.c_str())) {
+        if (ImGui::BeginCombo("buffer", v.enlarged.c_str())) {
             for (const Resource* r : app.renderer().buffers())
-                if (ImGui::Selectable(r->desc.name.c_str(), r->desc.name == app.view().enlarged))
-                    app.view().enlarged = r->desc.name, app.frames().keepAwake();
+                if (ImGui::Selectable(r->desc.name.c_str(), r->desc.name == v.enlarged))
+                    v.enlarged = r->desc.name, app.frames().keepAwake();
             ImGui::EndCombo();
         }
     }
-    if (app.view().mode == ViewMode::Split) {
-        int kind = int(app.view().splitKind);
-        ImGui::RadioButton("AO on | off", &kind, int(SplitKind::AoOnOff));
-        ImGui::SameLine();
-        ImGui::RadioButton("current | preset", &kind, int(SplitKind::Preset));
-        if (kind != int(app.view().splitKind)) app.view().splitKind = SplitKind(kind), app.frames().keepAwake();
-        if (app.view().splitKind == SplitKind::Preset) {
-            ImGui::SameLine();
-            ImGui::SetNextItemWidth(150);
-            if (ImGui::BeginCombo("B", app.view().splitPresetB.c_str())) {
-                for (const auto& e : app.presets().entries())
-                    if (ImGui::Selectable(e.name.c_str(), e.name == app.view().splitPresetB))
-                        app.view().splitPresetB = e.name, app.frames().keepAwake();
-                ImGui::EndCombo();
-            }
-        }
-        ImGui::SameLine();
-        ImGui::SetNextItemWidth(130);
-        if (ImGui::BeginCombo("compare", app.view().splitBuffer.c_str())) {
-            // Every buffer chain B has too (its own or shared with A), from the graph.
-            for (const Resource* r : app.renderer().buffers()) {
-                const std::string& b = r->desc.name;
-                if (app.renderer().graph().find("b." + b) &&
-                    ImGui::Selectable(b.c_str(), app.view().splitBuffer == b))
-                    app.view().splitBuffer = b, app.frames().keepAwake();
-            }
-            ImGui::EndCombo();
-        }
-        ImGui::SameLine();
-        if (ImGui::Checkbox("A - B", &app.view().splitDifference)) app.frames().keepAwake();
-        rememberRect(app.view(), "split#difference");
-        if (app.view().splitDifference) {
-            ImGui::SameLine();
-            ImGui::SetNextItemWidth(90);
-            if (ImGui::SliderFloat("x", &app.view().diffScale, 1.0f, 100.0f, "%.0f", ImGuiSliderFlags_Logarithmic))
-                app.frames().keepAwake();
-        }
-    }
+    if (v.mode == ViewMode::Split) splitControls(app);
 }
 
 void image(ImDrawList* dl, const BufferViews::View* v, ImVec2 p, ImVec2 q, ImVec2 uv0 = {0, 1},

@@ -37,8 +37,12 @@ void installWakeCallbacks(GLFWwindow* w) {
     glfwSetCursorPosCallback(w, [](GLFWwindow* win, double, double) { keepAwake(win); });
     glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int, int, int) { keepAwake(win); });
     glfwSetScrollCallback(w, [](GLFWwindow* win, double, double) { keepAwake(win); });
-    glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int) {
+    glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int mods) {
         if (key == GLFW_KEY_F12 && action == GLFW_PRESS) g_screenshotRequested = true;
+        // Quit: Ctrl+Q, or Esc when no text field has the keyboard (Esc also leaves a field).
+        const bool typing = ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput;
+        if (action == GLFW_PRESS && ((key == GLFW_KEY_Q && (mods & GLFW_MOD_CONTROL)) || (key == GLFW_KEY_ESCAPE && !typing)))
+            glfwSetWindowShouldClose(win, GLFW_TRUE);
         keepAwake(win);
     });
     glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) { keepAwake(win); });
@@ -83,8 +87,9 @@ bool haveDisplay() {
     return (x && *x) || (wl && *wl);
 }
 
-int runWindowApp(const WindowOptions& o) {
-    GlfwSession glfw;
+namespace {
+
+GLFWwindow* createWindow(const WindowOptions& o) {
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -96,7 +101,10 @@ int runWindowApp(const WindowOptions& o) {
     glfwMakeContextCurrent(window);
     glfwSwapInterval(1);
     gl::installDebugOutput(false);
+    return window;
+}
 
+void initImGui(GLFWwindow* window) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -109,7 +117,104 @@ int runWindowApp(const WindowOptions& o) {
     installWakeCallbacks(window);
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL3_Init("#version 450 core");
+}
 
+// The window's loop: sleeps while idle, draws the UI when something changes, saves screenshots and
+// writes the frame log.
+class FrameLoop {
+  public:
+    FrameLoop(GLFWwindow* window, AppCore& app, const WindowOptions& o) : window_(window), app_(app), o_(o) {
+        if (o.frameLog.empty()) return;
+        log_.open(o.frameLog);
+        if (!log_) throw Error("cannot write frame log " + o.frameLog);
+        log_ << "# frame ms(CPU, UI + render + swap) render_w render_h moving rendered passes_run\n";
+    }
+
+    void run() {
+        double lastShaderCheck = glfwGetTime();
+        while (!glfwWindowShouldClose(window_)) {
+            const bool idle = o_.frames == 0 && !app_.frames().busy();
+            // Idle costs nothing: sleep until an event (or a periodic check for edited shaders).
+            idle ? glfwWaitEventsTimeout(0.5) : glfwPollEvents();
+            // Shader files are checked at most twice a second, not on every busy frame.
+            if (const double now = glfwGetTime(); now - lastShaderCheck >= 0.5) {
+                lastShaderCheck = now;
+                app_.pollShaderReload();
+            }
+            if (o_.frames == 0 && !app_.frames().busy()) continue;
+            if (drawFrame()) break;
+        }
+    }
+
+  private:
+    // Returns true after the last frame of --frames N.
+    bool drawFrame() {
+        const auto t0 = std::chrono::steady_clock::now();
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        app_.drawUi();
+        ImGui::Render();
+        int fw = 0, fh = 0;
+        glfwGetFramebufferSize(window_, &fw, &fh);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, fw, fh);
+        glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        ++frame_;
+        if (g_screenshotRequested) f12Screenshot(fw, fh);
+        const bool last = o_.frames > 0 && frame_ >= o_.frames;
+        if (last && !o_.screenshot.empty()) screenshot(fw, fh, o_.screenshot);
+        if (!last) glfwSwapBuffers(window_);
+        const float ms = std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        app_.frames().noteFrameMs(ms);
+        if (log_) logFrame(ms);
+        return last;
+    }
+
+    // F12: the window as the user sees it, into the current folder, under the next free name
+    // (screenshots of earlier sessions are never overwritten).
+    void f12Screenshot(int fw, int fh) {
+        g_screenshotRequested = false;
+        static int shots = 0;
+        std::string name;
+        do
+            name = "ssaolab-screenshot-" + std::to_string(++shots) + ".png";
+        while (std::filesystem::exists(name));
+        try {
+            screenshot(fw, fh, name);
+            app_.setStatus("saved " + name, false);
+        } catch (const std::exception& e) {
+            app_.setStatus(e.what(), true);
+        }
+    }
+
+    void logFrame(float ms) {
+        const FrameDriver& f = app_.frames();
+        const bool rendered = f.framesRendered() != renderedBefore_;
+        renderedBefore_ = f.framesRendered();
+        log_ << frame_ << " " << ms << " " << app_.renderer().width() << " " << app_.renderer().height() << " "
+             << (f.renderedInteractive() ? 1 : 0) << " " << (rendered ? 1 : 0) << " ";
+        if (rendered)
+            for (const auto& p : f.lastReport().ran())
+                log_ << p << ",";
+        log_ << "\n" << std::flush;
+    }
+
+    GLFWwindow* window_;
+    AppCore& app_;
+    const WindowOptions& o_;
+    std::ofstream log_;
+    int frame_ = 0, renderedBefore_ = 0;
+};
+
+} // namespace
+
+int runWindowApp(const WindowOptions& o) {
+    GlfwSession glfw;
+    GLFWwindow* window = createWindow(o);
+    initImGui(window);
     int rc = 0;
     {
         AppOptions appOptions = o.app;
@@ -118,76 +223,7 @@ int runWindowApp(const WindowOptions& o) {
         appOptions.wake = [] { glfwPostEmptyEvent(); };
         AppCore app(appOptions);
         glfwSetWindowUserPointer(window, &app);
-        int frame = 0;
-        double lastShaderCheck = glfwGetTime();
-        std::ofstream frameLog;
-        if (!o.frameLog.empty()) {
-            frameLog.open(o.frameLog);
-            if (!frameLog) throw Error("cannot write frame log " + o.frameLog);
-            frameLog << "# frame ms(CPU, UI + render + swap) render_w render_h moving rendered passes_run\n";
-        }
-        int renderedBefore = 0;
-        while (!glfwWindowShouldClose(window)) {
-            if (o.frames == 0 && !app.frames().busy()) {
-                // Idle costs nothing: sleep until an event (or a periodic check for edited shaders).
-                glfwWaitEventsTimeout(0.5);
-            } else {
-                glfwPollEvents();
-            }
-            // Shader files are checked at most twice a second, not on every busy frame.
-            if (const double now = glfwGetTime(); now - lastShaderCheck >= 0.5) {
-                lastShaderCheck = now;
-                app.pollShaderReload();
-            }
-            if (o.frames == 0 && !app.frames().busy()) continue;
-            const auto t0 = std::chrono::steady_clock::now();
-            ImGui_ImplOpenGL3_NewFrame();
-            ImGui_ImplGlfw_NewFrame();
-            ImGui::NewFrame();
-            app.drawUi();
-            ImGui::Render();
-            int fw = 0, fh = 0;
-            glfwGetFramebufferSize(window, &fw, &fh);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            glViewport(0, 0, fw, fh);
-            glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
-            glClear(GL_COLOR_BUFFER_BIT);
-            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-            ++frame;
-            if (g_screenshotRequested) { // F12: the window as the user sees it, into the current folder
-                g_screenshotRequested = false;
-                // The next free name: screenshots of earlier sessions are never overwritten.
-                static int shots = 0;
-                std::string name;
-                do
-                    name = "ssaolab-screenshot-" + std::to_string(++shots) + ".png";
-                while (std::filesystem::exists(name));
-                try {
-                    screenshot(fw, fh, name);
-                    app.setStatus("saved " + name, false);
-                } catch (const std::exception& e) {
-                    app.setStatus(e.what(), true);
-                }
-            }
-            const bool last = o.frames > 0 && frame >= o.frames;
-            if (last && !o.screenshot.empty()) screenshot(fw, fh, o.screenshot);
-            if (!last) glfwSwapBuffers(window);
-            const float ms =
-                std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count();
-            app.frames().noteFrameMs(ms);
-            if (frameLog) {
-                const bool rendered = app.frames().framesRendered() != renderedBefore;
-                renderedBefore = app.frames().framesRendered();
-                frameLog << frame << " " << ms << " " << app.renderer().width() << " "
-                         << app.renderer().height() << " " << (app.frames().renderedInteractive() ? 1 : 0) << " "
-                         << (rendered ? 1 : 0) << " ";
-                if (rendered)
-                    for (const auto& p : app.frames().lastReport().ran())
-                        frameLog << p << ",";
-                frameLog << "\n" << std::flush;
-            }
-            if (last) break;
-        }
+        FrameLoop(window, app, o).run();
         gl::pollGlErrors();
         if (gl::glErrorCount() > 0) {
             std::fprintf(stderr, "ssaolab: error: OpenGL reported %d error(s) during the session\n",

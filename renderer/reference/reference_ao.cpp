@@ -78,6 +78,47 @@ uint32_t pixelSeed(int x, int y) {
 
 constexpr int kBatch = 256; // rays handed to Embree per stream call
 
+// The rasteriser's camera (glm::lookAt + Camera::projection): pixel centre (x + 0.5, y + 0.5),
+// y from the top, maps to NDC (2(x+0.5)/W - 1, 1 - 2(y+0.5)/H).
+struct PrimaryRays {
+    glm::dvec3 eye, fwd, right, up;
+    double tanHalf, aspect, orthoHalf;
+    bool ortho;
+    int width, height;
+    PrimaryRays(const Camera& c, int w, int h)
+        : eye(c.eye), fwd(glm::normalize(glm::dvec3(c.target) - eye)),
+          right(glm::normalize(glm::cross(fwd, glm::dvec3(c.up)))), up(glm::cross(right, fwd)),
+          tanHalf(std::tan(glm::radians(double(c.fovYDeg)) * 0.5)), aspect(double(w) / double(h)),
+          orthoHalf(glm::length(glm::dvec3(c.target) - eye) * tanHalf), ortho(c.orthographic()), width(w),
+          height(h) {}
+    // Orthographic: parallel rays from the eye plane, the view spanning +-orthoHalf.
+    void ray(int x, int y, glm::dvec3& org, glm::dvec3& d) const {
+        const double nx = 2.0 * (x + 0.5) / width - 1.0, ny = 1.0 - 2.0 * (y + 0.5) / height;
+        d = ortho ? fwd : glm::normalize(fwd + right * (nx * tanHalf * aspect) + up * (ny * tanHalf));
+        org = ortho ? eye + right * (nx * orthoHalf * aspect) + up * (ny * orthoHalf) : eye;
+    }
+};
+
+// Whether a surface lies within a few ULPs of `o` along either normal (coincident faces: the
+// shortest way to a parallel twin): of the hit's own coordinates or of the primary distance,
+// whichever is coarser - a camera far away orders two faces closer than its ULPs at random, and
+// the offsets clear only the hit's.
+bool coincidentFace(RTCScene scene, const glm::vec3& o, const glm::vec3& ng, const glm::vec3& n, float coarse) {
+    for (const glm::vec3& dir : {ng, n}) {
+        alignas(16) RTCRay probe{};
+        probe.org_x = o.x, probe.org_y = o.y, probe.org_z = o.z;
+        probe.dir_x = dir.x, probe.dir_y = dir.y, probe.dir_z = dir.z;
+        probe.tnear = 0.0f;
+        probe.tfar = coincidenceDistance(coarse);
+        probe.mask = 0xffffffffu;
+        RTCIntersectContext near;
+        rtcInitIntersectContext(&near);
+        rtcOccluded1(scene, &near, &probe);
+        if (probe.tfar < 0.0f) return true; // Embree sets tfar = -inf on a hit
+    }
+    return false;
+}
+
 } // namespace
 
 ReferenceTracer::ReferenceTracer(const EmbreeScene& scene, const Camera& camera, int width, int height,
@@ -98,29 +139,15 @@ ReferenceTracer::ReferenceTracer(const EmbreeScene& scene, const Camera& camera,
         sumW_.assign(n, 0.0);
         sumW2_.assign(n, 0.0);
     }
-
-    // The rasteriser's camera (glm::lookAt + Camera::projection): pixel centre (x + 0.5, y + 0.5),
-    // y from the top, maps to NDC (2(x+0.5)/W - 1, 1 - 2(y+0.5)/H).
-    const glm::dvec3 eye(camera.eye);
-    const glm::dvec3 fwd = glm::normalize(glm::dvec3(camera.target) - eye);
-    const glm::dvec3 right = glm::normalize(glm::cross(fwd, glm::dvec3(camera.up)));
-    const glm::dvec3 up = glm::cross(right, fwd);
-    const double tanHalf = std::tan(glm::radians(double(camera.fovYDeg)) * 0.5);
-    const double aspect = double(width) / double(height);
-    const bool ortho = camera.orthographic();
-    const double orthoHalf = glm::length(glm::dvec3(camera.target) - eye) * tanHalf;
-    const Scene& sc = scene.scene();
-
+    const PrimaryRays rays(camera, width, height);
     parallelRows(height, threadCount(settings.threads), [&](int y) {
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
         for (int x = 0; x < width; ++x) {
-            const double nx = 2.0 * (x + 0.5) / width - 1.0, ny = 1.0 - 2.0 * (y + 0.5) / height;
-            // Orthographic: parallel rays from the eye plane, the view spanning +-orthoHalf.
-            const glm::dvec3 d = ortho ? fwd : glm::normalize(fwd + right * (nx * tanHalf * aspect) + up * (ny * tanHalf));
-            const glm::dvec3 org = ortho ? eye + right * (nx * orthoHalf * aspect) + up * (ny * orthoHalf) : eye;
-            const double cosFwd = glm::dot(d, fwd);
+            glm::dvec3 org, d;
+            rays.ray(x, y, org, d);
+            const double cosFwd = glm::dot(d, rays.fwd);
             alignas(16) RTCRayHit rh{};
             rh.ray.org_x = float(org.x), rh.ray.org_y = float(org.y), rh.ray.org_z = float(org.z);
             rh.ray.dir_x = float(d.x), rh.ray.dir_y = float(d.y), rh.ray.dir_z = float(d.z);
@@ -132,93 +159,104 @@ ReferenceTracer::ReferenceTracer(const EmbreeScene& scene, const Camera& camera,
             rtcIntersect1(scene.handle(), &ctx, &rh);
             if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
             const size_t i = size_t(y) * width + x;
-            const uint32_t* tri = &sc.indices[size_t(rh.hit.primID) * 3];
-            const float u = rh.hit.u, v = rh.hit.v, w = 1.0f - u - v;
-            // Barycentric position: exact to the triangle's precision, unlike org + t * dir.
-            const glm::vec3 p = w * sc.vertices[tri[0]].position + u * sc.vertices[tri[1]].position +
-                                v * sc.vertices[tri[2]].position;
-            glm::vec3 ng(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
-            const float ngLen = glm::length(ng);
-            ng = ngLen > 0.0f ? ng / ngLen : -glm::vec3(d);
-            if (glm::dot(glm::dvec3(ng), d) > 0.0) ng = -ng; // the face the camera sees
-            glm::vec3 n = w * sc.vertices[tri[0]].normal + u * sc.vertices[tri[1]].normal +
-                          v * sc.vertices[tri[2]].normal;
-            const float nLen = glm::length(n);
-            n = nLen > 1e-10f ? n / nLen : ng; // interpolated normals are shorter than 1
-            if (glm::dot(n, ng) < 0.0f) n = -n; // as the G-buffer: shade the side we see
-            float scale = 0.0f;
-            for (int k = 0; k < 3; ++k) {
-                const glm::vec3 a = glm::abs(sc.vertices[tri[k]].position);
-                scale = std::max({scale, a.x, a.y, a.z});
-            }
-            const glm::vec3 o = offsetRayOrigin(backOffTowardEye(p, -glm::vec3(d), scale), ng);
-            hits_[i] = Hit{o.x, o.y, o.z, n.x, n.y, n.z};
-            // Coincident faces: a short probe along the geometric and the shading normal (the
-            // shortest way to a parallel twin) that hits within a few ULPs - of the hit's own
-            // coordinates or of the primary distance, whichever is coarser: a camera far away
-            // orders two faces closer than its ULPs at random, and the offset above clears only
-            // the hit's.
-            const float coarse = std::max(scale, rh.ray.tfar);
-            for (const glm::vec3& dir : {ng, n}) {
-                alignas(16) RTCRay probe{};
-                probe.org_x = o.x, probe.org_y = o.y, probe.org_z = o.z;
-                probe.dir_x = dir.x, probe.dir_y = dir.y, probe.dir_z = dir.z;
-                probe.tnear = 0.0f;
-                probe.tfar = coincidenceDistance(coarse);
-                probe.mask = 0xffffffffu;
-                RTCIntersectContext near;
-                rtcInitIntersectContext(&near);
-                rtcOccluded1(scene.handle(), &near, &probe);
-                if (probe.tfar < 0.0f) ambiguous_[i] = 1.0f; // Embree sets tfar = -inf on a hit
-            }
+            storeHit(i, rh, glm::vec3(d));
             depth_[i] = float(double(rh.ray.tfar) * cosFwd);
             geometry_[i] = 1.0f;
         }
     }, {});
 }
 
+void ReferenceTracer::storeHit(size_t i, const RTCRayHit& rh, const glm::vec3& d) {
+    const Scene& sc = scene_.scene();
+    const uint32_t* tri = &sc.indices[size_t(rh.hit.primID) * 3];
+    const float u = rh.hit.u, v = rh.hit.v, w = 1.0f - u - v;
+    // Barycentric position: exact to the triangle's precision, unlike org + t * dir.
+    const glm::vec3 p =
+        w * sc.vertices[tri[0]].position + u * sc.vertices[tri[1]].position + v * sc.vertices[tri[2]].position;
+    glm::vec3 ng(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+    const float ngLen = glm::length(ng);
+    ng = ngLen > 0.0f ? ng / ngLen : -d;
+    if (glm::dot(ng, d) > 0.0f) ng = -ng; // the face the camera sees
+    glm::vec3 n = w * sc.vertices[tri[0]].normal + u * sc.vertices[tri[1]].normal + v * sc.vertices[tri[2]].normal;
+    const float nLen = glm::length(n);
+    n = nLen > 1e-10f ? n / nLen : ng;  // interpolated normals are shorter than 1
+    if (glm::dot(n, ng) < 0.0f) n = -n; // as the G-buffer: shade the side we see
+    float scale = 0.0f; // the largest |coordinate| of the triangle: its vertices' precision
+    for (int k = 0; k < 3; ++k) {
+        const glm::vec3 a = glm::abs(sc.vertices[tri[k]].position);
+        scale = std::max({scale, a.x, a.y, a.z});
+    }
+    const glm::vec3 o = offsetRayOrigin(backOffTowardEye(p, -d, scale), ng);
+    hits_[i] = Hit{o.x, o.y, o.z, n.x, n.y, n.z};
+    if (coincidentFace(scene_.handle(), o, ng, n, std::max(scale, rh.ray.tfar))) ambiguous_[i] = 1.0f;
+}
+
+// A stream of AO rays handed to Embree kBatch at a time; each result lands in its pixel's tallies.
+class ReferenceTracer::RayBatch {
+  public:
+    RayBatch(ReferenceTracer& t) : t_(t), obscurance_(t.settings_.variant == ReferenceVariant::Obscurance) {
+        rtcInitIntersectContext(&ctx_); // incoherent: right for AO rays
+    }
+    void add(const Hit& h, const glm::vec3& dir, uint32_t pixel) {
+        RTCRayHit& r = batch_[filled_];
+        r.ray.org_x = h.px, r.ray.org_y = h.py, r.ray.org_z = h.pz;
+        r.ray.dir_x = dir.x, r.ray.dir_y = dir.y, r.ray.dir_z = dir.z;
+        r.ray.tnear = 0.0f; // the origin is already offset off the surface
+        r.ray.tfar = t_.settings_.radius;
+        r.ray.time = 0.0f;
+        r.ray.mask = 0xffffffffu;
+        r.ray.id = 0;
+        r.ray.flags = 0;
+        r.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        r.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        owner_[filled_] = pixel;
+        if (++filled_ == kBatch) flush();
+    }
+    void flush() {
+        if (!filled_) return;
+        if (obscurance_) {
+            rtcIntersect1M(t_.scene_.handle(), &ctx_, batch_, unsigned(filled_), sizeof(RTCRayHit));
+            for (int k = 0; k < filled_; ++k) {
+                const bool hit = batch_[k].hit.geomID != RTC_INVALID_GEOMETRY_ID;
+                // Visibility of one ray under linear falloff: 1 - W(t) = t / R when it hits.
+                const double w = hit ? std::clamp(double(batch_[k].ray.tfar) / t_.settings_.radius, 0.0, 1.0) : 1.0;
+                t_.sumW_[owner_[k]] += w;
+                t_.sumW2_[owner_[k]] += w * w;
+            }
+        } else {
+            // rtcOccluded1M reads RTCRay records; RTCRayHit starts with one, so the stride skips the
+            // hit part. tfar becomes -inf on an occluder.
+            rtcOccluded1M(t_.scene_.handle(), &ctx_, &batch_[0].ray, unsigned(filled_), sizeof(RTCRayHit));
+            for (int k = 0; k < filled_; ++k)
+                if (batch_[k].ray.tfar >= 0.0f) ++t_.unoccluded_[owner_[k]];
+        }
+        traced += filled_;
+        filled_ = 0;
+    }
+    long long traced = 0;
+
+  private:
+    ReferenceTracer& t_;
+    bool obscurance_;
+    RTCIntersectContext ctx_;
+    alignas(64) RTCRayHit batch_[kBatch];
+    uint32_t owner_[kBatch];
+    int filled_ = 0;
+};
+
 bool ReferenceTracer::addSamples(int count, const std::atomic<bool>* cancel, const Progress& progress) {
     if (broken_) throw Error("reference: tracer was cancelled; start a new one");
     if (count <= 0) return true;
     const int first = done_;
-    const bool obscurance = settings_.variant == ReferenceVariant::Obscurance;
-    const float radius = settings_.radius;
     std::atomic<long long> rays{0};
     std::atomic<bool> stopped{false};
     const auto t0 = std::chrono::steady_clock::now();
-
     parallelRows(height_, threadCount(settings_.threads), [&](int y) {
         if (stopped.load(std::memory_order_relaxed) || (cancel && cancel->load(std::memory_order_relaxed))) {
             stopped = true;
             return;
         }
-        alignas(64) RTCRayHit batch[kBatch];
-        uint32_t owner[kBatch];
-        int filled = 0;
-        long long traced = 0;
-        RTCIntersectContext ctx;
-        rtcInitIntersectContext(&ctx); // incoherent: right for AO rays
-        auto flush = [&] {
-            if (!filled) return;
-            if (obscurance) {
-                rtcIntersect1M(scene_.handle(), &ctx, batch, unsigned(filled), sizeof(RTCRayHit));
-                for (int k = 0; k < filled; ++k) {
-                    const bool hit = batch[k].hit.geomID != RTC_INVALID_GEOMETRY_ID;
-                    // Visibility of one ray under linear falloff: 1 - W(t) = t / R when it hits.
-                    const double w = hit ? std::clamp(double(batch[k].ray.tfar) / radius, 0.0, 1.0) : 1.0;
-                    sumW_[owner[k]] += w;
-                    sumW2_[owner[k]] += w * w;
-                }
-            } else {
-                // rtcOccluded1M reads RTCRay records; RTCRayHit starts with one, so the stride
-                // skips the hit part. tfar becomes -inf on an occluder.
-                rtcOccluded1M(scene_.handle(), &ctx, &batch[0].ray, unsigned(filled), sizeof(RTCRayHit));
-                for (int k = 0; k < filled; ++k)
-                    if (batch[k].ray.tfar >= 0.0f) ++unoccluded_[owner[k]];
-            }
-            traced += filled;
-            filled = 0;
-        };
+        RayBatch batch(*this);
         for (int x = 0; x < width_; ++x) {
             const size_t i = size_t(y) * width_ + x;
             if (geometry_[i] == 0.0f) continue;
@@ -230,26 +268,12 @@ bool ReferenceTracer::addSamples(int count, const std::atomic<bool>* cancel, con
             for (int s = first; s < first + count; ++s) {
                 float lx, ly, lz;
                 sampling::cosineHemisphere(sampling::sobol2D(uint32_t(s), seed), lx, ly, lz);
-                const glm::vec3 dir = t * lx + b * ly + n * lz;
-                RTCRayHit& r = batch[filled];
-                r.ray.org_x = h.px, r.ray.org_y = h.py, r.ray.org_z = h.pz;
-                r.ray.dir_x = dir.x, r.ray.dir_y = dir.y, r.ray.dir_z = dir.z;
-                r.ray.tnear = 0.0f; // the origin is already offset off the surface
-                r.ray.tfar = radius;
-                r.ray.time = 0.0f;
-                r.ray.mask = 0xffffffffu;
-                r.ray.id = 0;
-                r.ray.flags = 0;
-                r.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-                r.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-                owner[filled] = uint32_t(i);
-                if (++filled == kBatch) flush();
+                batch.add(h, t * lx + b * ly + n * lz, uint32_t(i));
             }
         }
-        flush();
-        rays.fetch_add(traced);
+        batch.flush();
+        rays.fetch_add(batch.traced);
     }, progress);
-
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     rays_ += rays.load();
     if (stopped) {

@@ -71,6 +71,10 @@ class ReferenceTracer {
         float nx, ny, nz; // shading normal (unit, facing the viewer's side)
     };
 
+    class RayBatch;
+    // The primary hit of pixel i (ray direction d): offset origin, normal, coincident-face flag.
+    void storeHit(size_t i, const RTCRayHit& rh, const glm::vec3& d);
+
     const EmbreeScene& scene_;
     int width_, height_;
     ReferenceSettings settings_;

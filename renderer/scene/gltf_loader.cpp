@@ -308,7 +308,11 @@ std::optional<Camera> cameraFromNode(const tinygltf::Model& m, const tinygltf::N
 
 } // namespace
 
-Scene loadGltf(const std::string& path) {
+namespace {
+
+// The file as tinygltf reads it: regular files only, buffers inside the scene's folder, images
+// never decoded; glTF 1.0 and geometry-changing extensions refused by name.
+tinygltf::Model readModel(const std::string& path) {
     {
         std::error_code ec;
         if (!std::filesystem::exists(path, ec)) throw Error("scene file not found: " + path);
@@ -343,20 +347,14 @@ Scene loadGltf(const std::string& path) {
     for (const auto& ext : model.extensionsRequired)
         for (const char* bad : kUnsupportedExtensions)
             if (ext == bad) throw Error("glTF " + path + " requires unsupported extension " + ext);
+    return model;
+}
 
-    Scene s;
-    s.name = path;
-    std::vector<int> roots;
-    int sceneIdx = model.defaultScene >= 0 ? model.defaultScene : 0;
-    if (sceneIdx < int(model.scenes.size()))
-        roots = model.scenes[sceneIdx].nodes;
-    else
-        for (int i = 0; i < int(model.nodes.size()); ++i)
-            roots.push_back(i);
-
-    // glTF 2.0 §3.5.3: a node has at most one parent, and the hierarchy is a set of disjoint trees.
-    // Enforced: a node listed twice (by two parents, or twice by one) would be drawn once per path,
-    // and 22 levels of that is 4 million copies from a 1.5 KB file. Meshes may still be shared.
+// The nodes to draw: the default scene's roots, or, in a file without scenes, every node without a
+// parent. glTF 2.0 §3.5.3: a node has at most one parent and the hierarchy is a set of disjoint
+// trees. Enforced: a node listed twice (by two parents, or twice by one) would be drawn once per
+// path, and 22 levels of that is 4 million copies from a 1.5 KB file. Meshes may still be shared.
+std::vector<int> sceneRoots(const tinygltf::Model& model, const std::string& path) {
     std::vector<int> parentOf(model.nodes.size(), -1);
     for (size_t pi = 0; pi < model.nodes.size(); ++pi)
         for (int c : model.nodes[pi].children) {
@@ -369,6 +367,14 @@ Scene loadGltf(const std::string& path) {
                             "); glTF allows one parent per node");
             parentOf[size_t(c)] = int(pi);
         }
+    std::vector<int> roots;
+    const int sceneIdx = model.defaultScene >= 0 ? model.defaultScene : 0;
+    if (sceneIdx < int(model.scenes.size())) {
+        roots = model.scenes[size_t(sceneIdx)].nodes;
+    } else { // no scenes: the trees' roots, each drawn once
+        for (int i = 0; i < int(model.nodes.size()); ++i)
+            if (parentOf[size_t(i)] < 0) roots.push_back(i);
+    }
     std::vector<char> isRoot(model.nodes.size(), 0);
     for (int r : roots) {
         if (r < 0 || r >= int(model.nodes.size()))
@@ -378,58 +384,71 @@ Scene loadGltf(const std::string& path) {
                         " is a scene root and also listed elsewhere; glTF allows one parent per node");
         isRoot[size_t(r)] = 1;
     }
-    // Cycles (a node its own ancestor) are still caught on the walk; the visit bound stays as a guard.
-    std::vector<char> onPath(model.nodes.size(), 0);
-    size_t visits = 0;
-    constexpr size_t kMaxVisits = 1000000;
-    std::vector<glm::dvec3> worldPos;   // per vertex, file coordinates
-    std::vector<glm::dvec3> cameraEyes; // per entry of s.cameras, file coordinates
-    std::function<void(int, const glm::dmat4&, int)> visit = [&](int ni, const glm::dmat4& parent, int depth) {
-        if (ni < 0 || ni >= int(model.nodes.size()))
-            throw Error("glTF " + path + ": node index " + std::to_string(ni) + " does not exist");
-        if (onPath[size_t(ni)])
-            throw Error("glTF " + path + ": node " + std::to_string(ni) + " is its own ancestor");
-        if (depth > 1000) throw Error("glTF " + path + ": node hierarchy deeper than 1000 levels");
-        if (++visits > kMaxVisits)
-            throw Error("glTF " + path + ": more than 1 million node instances (shared nodes multiply)");
-        onPath[size_t(ni)] = 1;
-        const auto& n = model.nodes[ni];
+    return roots;
+}
+
+// Walks the node trees, flattening meshes into the scene and collecting the cameras. Cycles (a
+// node its own ancestor) are caught on the walk; the visit bound stays as a guard.
+class NodeWalker {
+  public:
+    NodeWalker(const tinygltf::Model& m, const std::string& path, Scene& s)
+        : m_(m), path_(path), s_(s), onPath_(m.nodes.size(), 0) {}
+
+    void visit(int ni, const glm::dmat4& parent, int depth) {
+        if (ni < 0 || ni >= int(m_.nodes.size()))
+            throw Error("glTF " + path_ + ": node index " + std::to_string(ni) + " does not exist");
+        if (onPath_[size_t(ni)]) throw Error("glTF " + path_ + ": node " + std::to_string(ni) + " is its own ancestor");
+        if (depth > 1000) throw Error("glTF " + path_ + ": node hierarchy deeper than 1000 levels");
+        if (++visits_ > kMaxVisits)
+            throw Error("glTF " + path_ + ": more than 1 million node instances (shared nodes multiply)");
+        onPath_[size_t(ni)] = 1;
+        const auto& n = m_.nodes[size_t(ni)];
         const glm::dmat4 world = parent * localMatrix(n);
         if (n.mesh >= 0) {
-            if (n.mesh >= int(model.meshes.size()))
-                throw Error("glTF " + path + ": node refers to missing mesh");
-            const auto& mesh = model.meshes[n.mesh];
+            if (n.mesh >= int(m_.meshes.size())) throw Error("glTF " + path_ + ": node refers to missing mesh");
+            const auto& mesh = m_.meshes[size_t(n.mesh)];
             for (const auto& p : mesh.primitives)
-                appendPrimitive(model, p, world, s, worldPos, "glTF mesh '" + mesh.name + "'");
+                appendPrimitive(m_, p, world, s_, worldPos, "glTF mesh '" + mesh.name + "'");
         }
-        if (n.camera >= 0 && n.camera < int(model.cameras.size())) {
+        if (n.camera >= 0 && n.camera < int(m_.cameras.size())) {
             glm::dvec3 eye;
-            if (auto cam = cameraFromNode(model, n, world, eye)) {
-                std::string name = !n.name.empty() ? n.name : model.cameras[n.camera].name;
-                s.cameras.emplace_back(name.empty() ? "camera " + std::to_string(s.cameras.size()) : name,
-                                       *cam);
+            if (auto cam = cameraFromNode(m_, n, world, eye)) {
+                const std::string name = !n.name.empty() ? n.name : m_.cameras[size_t(n.camera)].name;
+                s_.cameras.emplace_back(name.empty() ? "camera " + std::to_string(s_.cameras.size()) : name, *cam);
                 cameraEyes.push_back(eye);
             }
         }
         for (int c : n.children)
             visit(c, world, depth + 1);
-        onPath[size_t(ni)] = 0;
-    };
-    for (int r : roots)
-        visit(r, glm::dmat4(1.0), 0);
+        onPath_[size_t(ni)] = 0;
+    }
+
+    std::vector<glm::dvec3> worldPos;   // per vertex, file coordinates
+    std::vector<glm::dvec3> cameraEyes; // per entry of s.cameras, file coordinates
+
+  private:
+    static constexpr size_t kMaxVisits = 1000000;
+    const tinygltf::Model& m_;
+    const std::string& path_;
+    Scene& s_;
+    std::vector<char> onPath_;
+    size_t visits_ = 0;
+};
+
+// Positions into the scene frame, cameras with it, the extent checked, far planes for infinite
+// projections and orbit targets placed.
+void finishScene(Scene& s, const NodeWalker& w, const std::string& path) {
     if (s.indices.empty()) throw Error("glTF " + path + " has no triangles to render");
-    s.setWorldPositions(worldPos);
+    s.setWorldPositions(w.worldPos);
     for (size_t i = 0; i < s.cameras.size(); ++i) { // eye and target in the scene frame
         Camera& c = s.cameras[i].second;
         const glm::vec3 dir = c.target;
-        c.eye = s.toScene(cameraEyes[i]);
+        c.eye = s.toScene(w.cameraEyes[i]);
         c.target = c.eye + dir;
     }
     if (!s.cameras.empty()) s.camera = s.cameras.front().second;
-    if (!s.bounds.valid() || !std::isfinite(s.bounds.radius()))
-        throw Error("glTF " + path + " has non-finite positions");
-    if (!(s.bounds.radius() > 0.0f))
-        throw Error("glTF " + path + " has no extent: every vertex is at one point");
+    if (!s.bounds.valid() || !std::isfinite(s.bounds.radius())) throw Error("glTF " + path + " has non-finite positions");
+    if (!(s.bounds.radius() > 0.0f)) throw Error("glTF " + path + " has no extent: every vertex is at one point");
     // Infinite projections (no zfar): put the far plane safely behind the whole scene.
     auto fixFar = [&](Camera& c) {
         if (c.farZ > c.nearZ) return;
@@ -440,6 +459,18 @@ Scene loadGltf(const std::string& path) {
     if (s.camera) fixFar(*s.camera), placeOrbitTarget(*s.camera, s);
     for (auto& [name, c] : s.cameras)
         fixFar(c), placeOrbitTarget(c, s);
+}
+
+} // namespace
+
+Scene loadGltf(const std::string& path) {
+    const tinygltf::Model model = readModel(path);
+    Scene s;
+    s.name = path;
+    NodeWalker walker(model, path, s);
+    for (int r : sceneRoots(model, path))
+        walker.visit(r, glm::dmat4(1.0), 0);
+    finishScene(s, walker, path);
     return s;
 }
 

@@ -1,0 +1,84 @@
+#include "cli_util.h"
+
+#include "util/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace ssao {
+
+CLI::Validator cliRange(double lo, double hi) {
+    const std::string desc = "[" + CLI::detail::to_string(lo) + " - " + CLI::detail::to_string(hi) + "]";
+    return CLI::Validator(
+        [lo, hi](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0') return "'" + text + "' is not a number";
+            if (!std::isfinite(v)) return "'" + text + "' is not a finite number";
+            if (v < lo || v > hi) return "'" + text + "' is outside [" + CLI::detail::to_string(lo) + ", " +
+                                         CLI::detail::to_string(hi) + "]";
+            return {};
+        },
+        desc, "RANGE");
+}
+
+namespace {
+size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j)
+        row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diag = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            const size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diag = up;
+        }
+    }
+    return row[b.size()];
+}
+} // namespace
+
+std::string closestName(const std::string& word, const std::vector<std::string>& candidates) {
+    std::string best;
+    size_t bestD = std::string::npos;
+    for (const auto& c : candidates) {
+        const size_t d = editDistance(word, c);
+        if (d < bestD) bestD = d, best = c;
+    }
+    // Close: at most a third of the word's letters wrong (typos, not another word).
+    return bestD <= std::max<size_t>(2, word.size() / 3) ? best : "";
+}
+
+void refuseExtras(const CLI::App& app) {
+    // The subcommand chosen (one at most), else the program itself.
+    const CLI::App* cmd = &app;
+    for (const CLI::App* sub : app.get_subcommands())
+        cmd = sub;
+    std::vector<std::string> extras = cmd->remaining();
+    if (extras.empty() && cmd != &app) extras = app.remaining();
+    if (extras.empty()) return;
+    const std::string& first = extras.front();
+    const std::string help = cmd == &app ? "ssaolab --help" : "ssaolab " + cmd->get_name() + " --help";
+    if (first.empty() || first[0] != '-') {
+        if (cmd != &app) throw Error(cmd->get_name() + ": unexpected argument '" + first + "' (see " + help + ")");
+        std::vector<std::string> names;
+        for (const CLI::App* sub : app.get_subcommands({}))
+            names.push_back(sub->get_name());
+        const std::string near = closestName(first, names);
+        throw Error("unknown command '" + first + "'" + (near.empty() ? "" : " (did you mean " + near + "?)") +
+                    " (see ssaolab --help)");
+    }
+    std::vector<std::string> names;
+    for (const CLI::Option* o : cmd->get_options())
+        for (const auto& n : o->get_lnames())
+            names.push_back("--" + n);
+    const std::string word = first.substr(0, first.find('='));
+    const std::string near = closestName(word, names);
+    throw Error((cmd == &app ? std::string() : cmd->get_name() + ": ") + "unknown option '" + word + "'" +
+                (near.empty() ? "" : " (did you mean " + near + "?)") + " (see " + help + ")");
+}
+
+} // namespace ssao

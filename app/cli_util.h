@@ -1,0 +1,22 @@
+// Command-line helpers shared by every subcommand: a range check that refuses NaN (CLI11's
+// Range lets "nan" through: every comparison with it is false), and the one-line report of a
+// mistyped option or command naming the closest valid one.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace ssao {
+
+// A finite number in [lo, hi].
+CLI::Validator cliRange(double lo, double hi);
+
+// The candidate nearest to `word` (edit distance), or "" when none is close.
+std::string closestName(const std::string& word, const std::vector<std::string>& candidates);
+
+// After parsing with extras allowed: throws ssao::Error naming the first unknown command or
+// option (with the closest valid one and the help to read), if there is one.
+void refuseExtras(const CLI::App& app);
+
+} // namespace ssao
