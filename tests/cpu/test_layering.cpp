@@ -61,3 +61,73 @@ TEST(Layering, ATechniqueIsNamedOnlyInItsFoldersTheRegistryAndTheSettingsAggrega
             EXPECT_TRUE(allowed.count(f)) << t.id << " is named in " << f;
     }
 }
+
+namespace {
+// The project headers a file includes, directly and through them (resolved against renderer/, the
+// include root, and the including file's folder).
+std::set<std::string> includeClosure(const std::string& file) {
+    const fs::path root(SSAOLAB_SOURCE_DIR);
+    std::set<std::string> seen;
+    std::vector<fs::path> todo = {root / file};
+    const std::regex inc(R"re(#include\s+"([^"]+)")re");
+    while (!todo.empty()) {
+        const fs::path p = todo.back();
+        todo.pop_back();
+        const std::string text = slurp(p);
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), inc); it != std::sregex_iterator(); ++it) {
+            const std::string name = (*it)[1];
+            for (const fs::path& base : {root / "renderer", p.parent_path(), root / "app"}) {
+                const fs::path cand = fs::weakly_canonical(base / name);
+                if (!fs::exists(cand)) continue;
+                const std::string rel = fs::relative(cand, root).generic_string();
+                if (seen.insert(rel).second) todo.push_back(cand);
+                break;
+            }
+        }
+    }
+    return seen;
+}
+
+bool includesGl(const std::string& file, std::string& via) {
+    for (const auto& h : includeClosure(file)) {
+        const std::string text = slurp(fs::path(SSAOLAB_SOURCE_DIR) / h);
+        if (h.rfind("renderer/gl/", 0) == 0 || h == "renderer/renderer.h" || h.rfind("renderer/graph/frame_graph", 0) == 0 ||
+            text.find("#include <epoxy/") != std::string::npos || text.find("#include <EGL/") != std::string::npos) {
+            via = h;
+            return true;
+        }
+    }
+    return false;
+}
+} // namespace
+
+TEST(Layering, ImagesMetricsReferenceAndReportsIncludeNoGlAndNoRenderer) {
+    // The CPU image and its EXR/PNG writers, the error metrics, the ray-traced reference and the
+    // reports (written from a FrameCapture) are pure CPU code: nothing they include, directly or
+    // not, is GL (gl/, epoxy, EGL) or the renderer.
+    int checked = 0;
+    for (const auto& f : programSources()) {
+        const bool pure = f.rfind("renderer/output/", 0) == 0 || f.rfind("renderer/metrics/", 0) == 0 ||
+                          f.rfind("renderer/reference/", 0) == 0;
+        if (!pure) continue;
+        std::string via;
+        EXPECT_FALSE(includesGl(f, via)) << f << " includes GL or the renderer through " << via;
+        ++checked;
+    }
+    EXPECT_GE(checked, 20);
+}
+
+TEST(Layering, SettingsIncludeNoTechniqueCode) {
+    // The settings see the techniques only through their settings structs (the one aggregate,
+    // techniques/technique_settings.h) and what the registry supplies (settings/params.h).
+    for (const auto& f : programSources()) {
+        if (f.rfind("renderer/settings/", 0) != 0) continue;
+        for (const auto& h : includeClosure(f)) {
+            const bool technique = h.rfind("renderer/techniques/", 0) == 0;
+            const bool settingsOnly = h == "renderer/techniques/technique_settings.h" ||
+                                      h.find("/settings.h") != std::string::npos ||
+                                      h == "renderer/techniques/noise/noise.h";
+            EXPECT_FALSE(technique && !settingsOnly) << f << " includes " << h;
+        }
+    }
+}
