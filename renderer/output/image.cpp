@@ -12,6 +12,7 @@
 #include <iterator>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 
 namespace ssao {
@@ -23,30 +24,65 @@ Image Image::channel(int c) const {
     return out;
 }
 
-void writeExr(const Image& img, const std::string& path) {
+namespace {
+// The EXR file's bytes (as tinyexr's SaveEXR lays them out: fp32, (A)BGR channel order, ZIP above
+// 16x16), made in memory: no file is written but the destination, atomically.
+std::string encodeExr(const Image& img) {
+    const int c = img.channels, w = img.width, h = img.height;
+    if (c != 1 && c != 3 && c != 4) throw Error("EXR: unsupported channel count " + std::to_string(c));
+    const size_t n = size_t(w) * size_t(h), nc = static_cast<size_t>(c);
+    std::vector<std::vector<float>> planes(nc, std::vector<float>(n));
+    for (size_t i = 0; i < n; ++i)
+        for (int k = 0; k < c; ++k)
+            planes[size_t(k)][i] = img.data[size_t(c) * i + size_t(k)];
+    static const char* names1[] = {"A"};
+    static const char* names3[] = {"B", "G", "R"};
+    static const char* names4[] = {"A", "B", "G", "R"};
+    const char** names = c == 1 ? names1 : c == 3 ? names3 : names4;
+    std::vector<float*> ptrs(nc);
+    std::vector<EXRChannelInfo> channels(nc);
+    std::vector<int> types(nc, TINYEXR_PIXELTYPE_FLOAT);
+    for (int k = 0; k < c; ++k) {
+        const int plane = c == 1 ? 0 : c == 3 ? 2 - k : (k == 0 ? 3 : 3 - k); // (A)BGR from RGB(A)
+        ptrs[size_t(k)] = planes[size_t(plane)].data();
+        std::memset(channels[size_t(k)].name, 0, sizeof channels[size_t(k)].name);
+        std::strncpy(channels[size_t(k)].name, names[k], sizeof channels[size_t(k)].name - 1);
+    }
+    EXRHeader header;
+    InitEXRHeader(&header);
+    header.compression_type = (w < 16 && h < 16) ? TINYEXR_COMPRESSIONTYPE_NONE : TINYEXR_COMPRESSIONTYPE_ZIP;
+    header.num_channels = c;
+    header.channels = channels.data();
+    header.pixel_types = types.data();
+    header.requested_pixel_types = types.data();
+    EXRImage image;
+    InitEXRImage(&image);
+    image.num_channels = c;
+    image.images = reinterpret_cast<unsigned char**>(ptrs.data());
+    image.width = w;
+    image.height = h;
+    unsigned char* mem = nullptr;
     const char* err = nullptr;
-    // tinyexr wants 1, 3 or 4 channels; fp32 keeps NaN/inf and full precision. It writes to a file
-    // only, so the file is made beside the destination and read back whole: a write that a full disk
-    // cut short fails here (or at the atomic rename) instead of leaving a broken EXR.
-    const std::string staged = path + ".exr-staged";
-    int rc = SaveEXR(img.data.data(), img.width, img.height, img.channels, 0, staged.c_str(), &err);
-    if (rc != TINYEXR_SUCCESS) {
-        std::string msg = err ? err : "unknown error";
+    const size_t size = SaveEXRImageToMemory(&image, &header, &mem, &err);
+    if (size == 0 || !mem) {
+        const std::string msg = err ? err : "unknown error";
         if (err) FreeEXRErrorMessage(err);
-        std::remove(staged.c_str());
-        throw Error("cannot write " + path + ": " + msg);
+        throw Error("EXR encoding failed: " + msg);
     }
+    std::string bytes(reinterpret_cast<const char*>(mem), size);
+    std::free(mem);
+    return bytes;
+}
+} // namespace
+
+void writeExr(const Image& img, const std::string& path) {
+    // fp32 keeps NaN/inf and full precision; the bytes go to disk through the atomic writer.
     std::string bytes;
-    {
-        std::ifstream in(staged, std::ios::binary);
-        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    try {
+        bytes = encodeExr(img);
+    } catch (const Error& e) {
+        throw Error("cannot write " + path + ": " + e.what());
     }
-    std::remove(staged.c_str());
-    EXRVersion version;
-    if (bytes.empty() ||
-        ParseEXRVersionFromMemory(&version, reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()) !=
-            TINYEXR_SUCCESS)
-        throw Error("cannot write " + path + ": the EXR came out truncated (disk full?)");
     writeFileAtomically(path, bytes);
 }
 

@@ -1,10 +1,12 @@
 #include "reference/reference_cache.h"
 
 #include "output/image.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -62,13 +64,43 @@ std::string ReferenceKey::fileStem() const {
 }
 
 std::string referenceCacheDir() {
+    // XDG Base Directory: an empty variable means unset (an empty XDG_CACHE_HOME once made the cache
+    // "/ssaolab", at the file system's root).
+    auto env = [](const char* name) -> std::string {
+        const char* v = std::getenv(name);
+        return v && *v ? std::string(v) : std::string();
+    };
     std::string base;
-    if (const char* d = std::getenv("SSAOLAB_CACHE_DIR")) base = d;
-    else if (const char* x = std::getenv("XDG_CACHE_HOME")) base = std::string(x) + "/ssaolab";
-    else if (const char* h = std::getenv("HOME")) base = std::string(h) + "/.cache/ssaolab";
+    if (const std::string d = env("SSAOLAB_CACHE_DIR"); !d.empty()) base = d;
+    else if (const std::string x = env("XDG_CACHE_HOME"); !x.empty()) base = x + "/ssaolab";
+    else if (const std::string h = env("HOME"); !h.empty()) base = h + "/.cache/ssaolab";
     else base = ".ssaolab-cache";
     return base + "/reference";
 }
+
+namespace {
+
+// A cache entry is data from disk: anything a trace cannot have produced makes it a miss (then the
+// trace overwrites it) - never a "RMSE 6.01" from an AO of 7, or a ray count of -2147483648.
+bool validEntry(const nlohmann::json& meta, const Image& px, const ReferenceKey& key) {
+    if (px.width != key.width || px.height != key.height || px.channels != 4) return false;
+    const auto& samples = meta.at("samples");
+    const auto& seconds = meta.at("seconds");
+    const auto& rays = meta.at("ao_rays");
+    if (!samples.is_number_integer() || samples.get<long long>() != key.settings.samples) return false;
+    if (!seconds.is_number() || !std::isfinite(seconds.get<double>()) || seconds.get<double>() < 0) return false;
+    const double maxRays = double(key.settings.samples) * double(px.width) * double(px.height);
+    if (!rays.is_number_integer() || rays.get<long long>() < 0 || double(rays.get<long long>()) > maxRays) return false;
+    for (size_t i = 0; i < size_t(px.width) * size_t(px.height); ++i) {
+        const float ao = px.data[4 * i], se = px.data[4 * i + 1], depth = px.data[4 * i + 2], g = px.data[4 * i + 3];
+        if (!(ao >= 0.0f && ao <= 1.0f) || !(se >= 0.0f && se <= 0.5f) || !(depth >= 0.0f) || !std::isfinite(depth))
+            return false;
+        if (g != 0.0f && g != 1.0f && g != 2.0f) return false; // sky, geometry, ambiguous geometry
+    }
+    return true;
+}
+
+} // namespace
 
 std::optional<ReferenceImage> loadCachedReference(const ReferenceKey& key, const std::string& dir) {
     const fs::path stem = fs::path(dir) / key.fileStem();
@@ -78,9 +110,9 @@ std::optional<ReferenceImage> loadCachedReference(const ReferenceKey& key, const
     try {
         nlohmann::json meta;
         std::ifstream(stem.string() + ".json") >> meta;
-        if (meta.value("key", std::string()) != key.text()) return std::nullopt; // a hash collision
+        if (!meta.is_object() || meta.value("key", std::string()) != key.text()) return std::nullopt; // a collision
         const Image px = readExr(stem.string() + ".exr");
-        if (px.width != key.width || px.height != key.height || px.channels != 4) return std::nullopt;
+        if (!validEntry(meta, px, key)) return std::nullopt;
         ReferenceImage img;
         img.width = px.width;
         img.height = px.height;
@@ -116,16 +148,13 @@ bool storeCachedReference(const ReferenceKey& key, const ReferenceImage& img, co
             px.data[4 * i + 3] =
                 img.geometry[i] + (i < img.ambiguous.size() && img.ambiguous[i] > 0.0f ? 1.0f : 0.0f);
         }
-        const std::string tmp = stem.string() + ".tmp" + std::to_string(::getpid()); // per process
-        writeExr(px, tmp + ".exr");
-        {
-            nlohmann::json meta = {{"key", key.text()},        {"samples", img.samples},
-                                   {"seconds", img.seconds},    {"ao_rays", img.aoRays},
-                                   {"channels", "R=ao G=stderr B=depth A=geometry (2 = ambiguous)"}};
-            std::ofstream(tmp + ".json") << meta.dump(2) << "\n";
-        }
-        fs::rename(tmp + ".exr", stem.string() + ".exr");
-        fs::rename(tmp + ".json", stem.string() + ".json");
+        // Each file atomically; the JSON last, so a reader never pairs it with a half-written image
+        // (and a mismatched pair fails validation: a miss).
+        writeExr(px, stem.string() + ".exr");
+        const nlohmann::json meta = {{"key", key.text()},     {"samples", img.samples},
+                                     {"seconds", img.seconds}, {"ao_rays", img.aoRays},
+                                     {"channels", "R=ao G=stderr B=depth A=geometry (2 = ambiguous)"}};
+        writeFileAtomically(stem.string() + ".json", meta.dump(2) + "\n");
         return true;
     } catch (const std::exception&) {
         return false;

@@ -7,7 +7,13 @@
 
 namespace ssao {
 
-// Throws ssao::Error("cannot write PATH: REASON") naming the file and the system's reason.
+// Throws ssao::Error("cannot write PATH: REASON") naming the file and the system's reason. The
+// destination must be absent or a regular file (a device, a FIFO, a folder or a symlink is refused:
+// `--out /dev/null` must not replace the device node); the temporary file is created exclusively
+// (O_EXCL, O_NOFOLLOW) under a name unique to the process and the call, so a link planted at it
+// cannot redirect the write and two processes writing one folder never share it.
 void writeFileAtomically(const std::string& path, const std::string& bytes);
+// The destination check alone: absent, or a regular file.
+void checkOutputPath(const std::string& path);
 
 } // namespace ssao

@@ -11,6 +11,11 @@
 #include <fstream>
 #include <sstream>
 
+#include <csignal>
+
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 using namespace ssao;
@@ -30,22 +35,80 @@ TEST(AtomicFile, WritesTheWholeFileAndReplacesTheOldOne) {
     EXPECT_EQ(slurp(path), "new contents\n");
 }
 
+namespace {
+// Files beside `path` whose names start with path + ".tmp": staging files left behind.
+size_t stagingLeft(const std::string& path) {
+    size_t n = 0;
+    const std::string stem = std::filesystem::path(path).filename().string() + ".tmp";
+    for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(path).parent_path()))
+        n += e.path().filename().string().rfind(stem, 0) == 0;
+    return n;
+}
+} // namespace
+
 TEST(AtomicFile, AFullDiskIsAnErrorAndLeavesTheOldFile) {
-    // The staging file is made to point at /dev/full, whose every write fails with ENOSPC.
+    // A write the file system cuts short (here: a 1 KB file-size limit in a child process, so the
+    // kernel refuses the 64 KB write as a full disk would) is an error naming the file; the old
+    // file stays and no staging file is left behind.
     const std::string path = ssaotest::writeTemp("atomic_full.json", "old");
-    const std::string staged = path + ".tmp" + std::to_string(::getpid());
-    std::filesystem::remove(staged);
-    ASSERT_EQ(::symlink("/dev/full", staged.c_str()), 0);
-    std::string msg;
-    try {
-        writeFileAtomically(path, std::string(1 << 16, 'x'));
-    } catch (const Error& e) {
-        msg = e.what();
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        ::signal(SIGXFSZ, SIG_IGN); // the write returns EFBIG instead of killing the process
+        struct rlimit lim{1024, 1024};
+        ::setrlimit(RLIMIT_FSIZE, &lim);
+        try {
+            writeFileAtomically(path, std::string(1 << 16, 'x'));
+        } catch (const Error& e) {
+            const std::string msg = e.what();
+            ::_exit(msg.find("cannot write " + path) != std::string::npos &&
+                            msg.find("write failed") != std::string::npos
+                        ? 0
+                        : 2);
+        }
+        ::_exit(3); // wrote past the limit without an error
     }
-    EXPECT_NE(msg.find("cannot write " + path), std::string::npos) << msg;
-    EXPECT_NE(msg.find("No space left on device"), std::string::npos) << msg;
-    EXPECT_EQ(slurp(path), "old");                          // untouched
-    EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(staged))); // cleaned up
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "child status " << status;
+    EXPECT_EQ(slurp(path), "old"); // untouched
+    EXPECT_EQ(stagingLeft(path), 0u);
+}
+
+TEST(AtomicFile, APlantedLinkAtAStagingNameIsNeverWrittenThrough) {
+    // Before: the staging name was path + ".tmp" + pid (EXR: path + ".exr-staged"), opened with
+    // fopen: a symlink planted there made the write land outside --out. Now staging files are
+    // created exclusively under names unique to the call, never through a link.
+    const std::string victim = ssaotest::writeTemp("atomic_victim.txt", "precious");
+    const std::string path = std::string(SSAOLAB_TEST_TMP) + "/atomic_linked.json";
+    std::filesystem::remove(path);
+    for (const std::string& planted : {path + ".tmp" + std::to_string(::getpid()), path + ".exr-staged",
+                                       path + ".tmp-" + std::to_string(::getpid()) + "-0"}) {
+        std::filesystem::remove(planted);
+        ASSERT_EQ(::symlink(victim.c_str(), planted.c_str()), 0);
+    }
+    writeFileAtomically(path, "output");
+    EXPECT_EQ(slurp(path), "output");
+    EXPECT_EQ(slurp(victim), "precious");
+}
+
+TEST(AtomicFile, ADestinationThatIsNotARegularFileIsRefused) {
+    // `tune --out /dev/null` once replaced the device node with a regular file (as root, the
+    // system's). A device, a FIFO, a folder or a symlink at the destination is refused by name.
+    EXPECT_NE(ssaotest::errorOf([] { checkOutputPath("/dev/null"); }).find("a device"), std::string::npos);
+    const std::string fifo = std::string(SSAOLAB_TEST_TMP) + "/atomic_fifo";
+    std::filesystem::remove(fifo);
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_NE(ssaotest::errorOf([&] { writeFileAtomically(fifo, "x"); }).find("a FIFO"), std::string::npos);
+    const std::string link = std::string(SSAOLAB_TEST_TMP) + "/atomic_dest_link";
+    const std::string victim = ssaotest::writeTemp("atomic_victim2.txt", "precious");
+    std::filesystem::remove(link);
+    ASSERT_EQ(::symlink(victim.c_str(), link.c_str()), 0);
+    EXPECT_NE(ssaotest::errorOf([&] { writeFileAtomically(link, "x"); }).find("a symbolic link"), std::string::npos);
+    EXPECT_EQ(slurp(victim), "precious");
+    EXPECT_NE(ssaotest::errorOf([] { writeFileAtomically(SSAOLAB_TEST_TMP, "x"); }).find("a folder"),
+              std::string::npos);
+    EXPECT_EQ(ssaotest::errorOf([] { checkOutputPath(std::string(SSAOLAB_TEST_TMP) + "/absent.json"); }), "");
 }
 
 TEST(AtomicFile, AMissingFolderIsAnErrorNamingTheFile) {

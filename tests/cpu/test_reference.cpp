@@ -5,6 +5,8 @@
 #include "reference/sampling.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene.h"
+#include "output/image.h"
+#include "test_util.h"
 #include "util/error.h"
 
 #include <gtest/gtest.h>
@@ -371,4 +373,63 @@ TEST(Reference, CacheReturnsTheSameFrameWithoutTracing) {
     Scene moved = s;
     moved.vertices[0].position.x += 1e-3f;
     EXPECT_NE(sceneContentHash(moved), sceneContentHash(s));
+}
+
+TEST(Reference, ACorruptCacheEntryIsAMissNeverTrusted) {
+    // Before: an EXR with AO 7.0 gave "RMSE 6.01" and exit 0; a json with samples 1e300 gave
+    // rays_per_pixel -2147483648; a NaN ended in a bare json exception. Every entry is validated
+    // (range, finiteness, size, key) and any bad one is traced again.
+    const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/refcache_corrupt";
+    std::filesystem::remove_all(dir);
+    const Scene s = floorScene(true);
+    const Camera cam = lookDown({0.5f, 0, 0}, 1.5f);
+    const ReferenceSettings rs{0.8f, 32};
+    const ReferenceImage good = ReferenceProvider(s, dir).get(cam, 24, 16, rs);
+    const ReferenceKey key{sceneContentHash(s), cam, 24, 16, rs};
+    const std::string stem = dir + "/" + key.fileStem();
+    const std::string json = ssaotest::slurp(stem + ".json");
+    const Image exr = readExr(stem + ".exr");
+    auto corrupt = [&](const std::function<void(Image&, std::string&)>& f) {
+        Image px = exr;
+        std::string meta = json;
+        f(px, meta);
+        writeExr(px, stem + ".exr");
+        ssaotest::writeTemp("refcache_meta.json", meta);
+        std::filesystem::copy_file(std::string(SSAOLAB_TEST_TMP) + "/refcache_meta.json", stem + ".json",
+                                   std::filesystem::copy_options::overwrite_existing);
+        return loadCachedReference(key, dir).has_value();
+    };
+    EXPECT_TRUE(corrupt([](Image&, std::string&) {})); // the untouched entry loads
+    EXPECT_FALSE(corrupt([](Image& px, std::string&) { px.data[0] = 7.0f; }));            // AO outside [0,1]
+    EXPECT_FALSE(corrupt([](Image& px, std::string&) { px.data[0] = std::nanf(""); }));   // NaN AO
+    EXPECT_FALSE(corrupt([](Image& px, std::string&) { px.data[2] = INFINITY; }));        // depth
+    EXPECT_FALSE(corrupt([](Image& px, std::string&) { px.data[3] = 0.5f; }));            // geometry flag
+    EXPECT_FALSE(corrupt([](Image& px, std::string&) { px.width = 12, px.data.resize(12 * 16 * 4); })); // size
+    EXPECT_FALSE(corrupt([](Image&, std::string& m) {
+        m.replace(m.find("\"samples\": 32"), 13, "\"samples\": 1e300");
+    }));
+    EXPECT_FALSE(corrupt([](Image&, std::string& m) { m = "[1, 2]"; })); // not an object
+    EXPECT_FALSE(corrupt([](Image&, std::string& m) { m = "{\"key\": "; })); // truncated
+    // And the provider traces again instead of returning the bad entry.
+    corrupt([](Image& px, std::string&) { px.data[0] = 7.0f; });
+    bool cached = true;
+    const ReferenceImage again = ReferenceProvider(s, dir).get(cam, 24, 16, rs, {}, &cached);
+    EXPECT_FALSE(cached);
+    EXPECT_EQ(again.ao, good.ao);
+}
+
+TEST(Reference, AnEmptyXdgCacheHomeMeansUnset) {
+    // XDG Base Directory: empty means unset. Before: XDG_CACHE_HOME="" put the cache at /ssaolab.
+    const char* keepCache = std::getenv("SSAOLAB_CACHE_DIR");
+    const std::string keep = keepCache ? keepCache : "";
+    ::unsetenv("SSAOLAB_CACHE_DIR");
+    ::setenv("XDG_CACHE_HOME", "", 1);
+    ::setenv("HOME", "/home/someone", 1);
+    EXPECT_EQ(referenceCacheDir(), "/home/someone/.cache/ssaolab/reference");
+    ::setenv("SSAOLAB_CACHE_DIR", "", 1);
+    EXPECT_EQ(referenceCacheDir(), "/home/someone/.cache/ssaolab/reference");
+    ::setenv("XDG_CACHE_HOME", "/xdg", 1);
+    EXPECT_EQ(referenceCacheDir(), "/xdg/ssaolab/reference");
+    if (keepCache) ::setenv("SSAOLAB_CACHE_DIR", keep.c_str(), 1);
+    else ::unsetenv("SSAOLAB_CACHE_DIR");
 }
