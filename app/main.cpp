@@ -47,6 +47,7 @@ struct Commands {
                  "Without a subcommand it opens the window (or, with no display, renders the default scene\n"
                  "headless into ./out/)."};
     double maxTriangles = double(ssao::SceneBudget{}.triangles);
+    double maxSceneMib = double(ssao::SceneBudget{}.bytes >> 20);
     ssao::RenderOptions render;
     ssao::BenchOptions bench;
     ssao::TuneOptions tune;
@@ -63,6 +64,10 @@ struct Commands {
                        "refuse scenes that expand to more triangles once instances are flattened")
             ->capture_default_str()
             ->check(ssao::cliRange(1.0, 2e9));
+        app.add_option("--max-scene-mib", maxSceneMib,
+                       "refuse scenes whose buffers, or what they expand to, take more memory (MiB)")
+            ->capture_default_str()
+            ->check(ssao::cliRange(1.0, 1 << 20));
         ssao::addRenderOptions(*sub("render", "render a scene headless (EGL) into EXR/PNG buffers and metrics.json"),
                                render);
         ssao::addBenchOptions(
@@ -118,7 +123,7 @@ struct Commands {
     }
 
     int run() {
-        ssao::setSceneBudget({size_t(maxTriangles)});
+        ssao::setSceneBudget({size_t(maxTriangles), size_t(maxSceneMib) << 20});
         if (app.got_subcommand("params")) {
             printParams();
             return 0;

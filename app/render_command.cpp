@@ -11,6 +11,7 @@
 #include "settings/preset_store.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/json_file.h"
 #include "scene/view_fit.h"
 #include "util/paths.h"
 
@@ -201,7 +202,7 @@ std::string judgeAgainstReference(const RenderOptions& o, const Renderer& r, con
     e["error"]["reference"]["cached"] = cached;
     m["error"] = e["error"];
     m["error_raw"] = e["error_raw"];
-    writeFileAtomically((std::filesystem::path(o.out) / "metrics.json").string(), m.dump(2) + "\n");
+    writeFileAtomically((std::filesystem::path(o.out) / "metrics.json").string(), dumpJson(m) + "\n");
     const auto& j = m["error"];
     char line[512];
     std::snprintf(line, sizeof line,

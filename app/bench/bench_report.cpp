@@ -2,6 +2,7 @@
 
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/json_file.h"
 #include "util/paths.h"
 
 #include <cmath>
@@ -166,7 +167,7 @@ void writeBenchFiles(const BenchRun& run, const std::string& dir) {
     if (ec) throw Error("cannot create " + dir + ": " + ec.message());
     writeFileAtomically((fs::path(dir) / "results.csv").string(), resultsCsv(run));
     writeFileAtomically((fs::path(dir) / "summary.csv").string(), summaryCsv(run));
-    writeFileAtomically((fs::path(dir) / "results.json").string(), resultsJson(run).dump(2) + "\n");
+    writeFileAtomically((fs::path(dir) / "results.json").string(), dumpJson(resultsJson(run)) + "\n");
     writeFileAtomically((fs::path(dir) / "report.md").string(), benchMarkdown(run, "pareto.png"));
 }
 

@@ -2,6 +2,7 @@
 
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/json_file.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -118,7 +119,7 @@ void writeSkipsFiles(const SkipsRun& run, const std::string& dir) {
                              {"wall_without_ms", r.wallWithout},
                              {"error_change", r.errorChange},
                              {"extra", r.extra}});
-    writeFileAtomically(dir + "/skips.json", j.dump(2) + "\n");
+    writeFileAtomically(dir + "/skips.json", dumpJson(j) + "\n");
     writeFileAtomically(dir + "/skips.md", skipsMarkdown(run));
 }
 

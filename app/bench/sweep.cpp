@@ -5,6 +5,7 @@
 #include "settings/preset_store.h"
 #include "techniques/technique.h"
 #include "util/error.h"
+#include "util/json_file.h"
 #include "util/paths.h"
 
 #include <algorithm>
@@ -228,15 +229,9 @@ Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::
 
 Sweep loadSweep(const std::string& nameOrPath, const std::string& presetDir) {
     const std::string path = nameOrPath == "builtin" ? assetRoot() + "/bench/sweep_builtin.json" : nameOrPath;
-    std::ifstream in(path);
-    if (!in) throw Error("sweep " + path + ": cannot open");
-    nlohmann::json j;
-    try {
-        in >> j;
-    } catch (const std::exception& e) {
-        throw Error("sweep " + path + ": not valid JSON (" + e.what() + ")");
-    }
-    return parseSweep(j, "sweep " + path, presetDir);
+    // A regular file only (a FIFO would block for ever), nesting bounded before it is parsed or
+    // copied (200 000 nested lists once crashed the copy before any validation).
+    return parseSweep(readJsonFile(path, "sweep"), "sweep " + path, presetDir);
 }
 
 } // namespace ssao

@@ -2,6 +2,7 @@
 
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/json_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -139,7 +140,7 @@ void writeStressFiles(const StressRun& run, const std::string& dir) {
                              {"geometry_pixels", r.geometry}, {"mean", r.mean}, {"rmse", r.rmse},
                              {"coverage_moved", r.coverage}, {"plane_mean", r.planeMean},
                              {"unphysical", r.unphysical}});
-    writeFileAtomically(dir + "/stress.json", j.dump(2) + "\n");
+    writeFileAtomically(dir + "/stress.json", dumpJson(j) + "\n");
     writeFileAtomically(dir + "/stability.md", stabilityMarkdown(run));
 }
 

@@ -6,6 +6,7 @@
 #include "settings/preset.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/json_file.h"
 
 #include <filesystem>
 #include <fstream>
@@ -86,7 +87,7 @@ nlohmann::json writeOutputs(const FrameCapture& c, const std::string& dir, const
     m["passes_run"] = firstFrame.ran();
     m["skips"] = skipCounters(c, firstFrame);
     m["gpu_ms"] = timing;
-    writeFileAtomically(path("metrics.json"), m.dump(2) + "\n");
+    writeFileAtomically(path("metrics.json"), dumpJson(m) + "\n");
     return m;
 }
 

@@ -3,6 +3,7 @@
 #include "output/image.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/json_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -108,8 +109,7 @@ std::optional<ReferenceImage> loadCachedReference(const ReferenceKey& key, const
     if (!fs::is_regular_file(stem.string() + ".json", ec) || !fs::is_regular_file(stem.string() + ".exr", ec))
         return std::nullopt;
     try {
-        nlohmann::json meta;
-        std::ifstream(stem.string() + ".json") >> meta;
+        const nlohmann::json meta = readJsonFile(stem.string() + ".json", "reference cache entry");
         if (!meta.is_object() || meta.value("key", std::string()) != key.text()) return std::nullopt; // a collision
         const Image px = readExr(stem.string() + ".exr");
         if (!validEntry(meta, px, key)) return std::nullopt;
@@ -154,7 +154,7 @@ bool storeCachedReference(const ReferenceKey& key, const ReferenceImage& img, co
         const nlohmann::json meta = {{"key", key.text()},     {"samples", img.samples},
                                      {"seconds", img.seconds}, {"ao_rays", img.aoRays},
                                      {"channels", "R=ao G=stderr B=depth A=geometry (2 = ambiguous)"}};
-        writeFileAtomically(stem.string() + ".json", meta.dump(2) + "\n");
+        writeFileAtomically(stem.string() + ".json", dumpJson(meta) + "\n");
         return true;
     } catch (const std::exception&) {
         return false;

@@ -1,6 +1,7 @@
 // glTF 2.0 → Scene: meshes under the default scene's node hierarchy, flattened to world space.
 #include "scene/gltf_loader.h"
 
+#include "scene/gltf_guard.h"
 #include "scene/view_fit.h"
 #include "util/error.h"
 
@@ -25,6 +26,8 @@ namespace {
 // with a message naming it, instead of being read or hanging.
 struct SceneFolder {
     std::filesystem::path root; // canonical
+    size_t budget = 0;          // bytes every buffer read may take in total
+    size_t read = 0;            // bytes read so far
 };
 
 std::optional<std::filesystem::path> insideFolder(const std::string& file, const SceneFolder& f) {
@@ -61,11 +64,17 @@ bool readFileInFolder(std::vector<unsigned char>* out, std::string* err, const s
         if (err) *err += "'" + file + "' is not a regular file\n";
         return false;
     }
+    // The budget counts every read, before it happens: two buffers naming one sparse 2 GiB file
+    // once took 4 GiB.
+    auto* f = static_cast<SceneFolder*>(user);
     const auto size = std::filesystem::file_size(*p, ec);
-    if (ec || size > (size_t(2) << 30)) {
-        if (err) *err += "'" + file + "' is larger than 2 GiB\n";
+    if (ec || size > f->budget - std::min(f->read, f->budget)) {
+        if (err)
+            *err += "'" + file + "' (" + std::to_string(size >> 20) + " MiB) takes the scene's buffers past the budget of " +
+                    std::to_string(f->budget >> 20) + " MiB (raise it with ssaolab --max-scene-mib N)\n";
         return false;
     }
+    f->read += size_t(size);
     std::ifstream in(*p, std::ios::binary);
     out->resize(size_t(size));
     if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) {
@@ -312,24 +321,18 @@ namespace {
 
 // The file as tinygltf reads it: regular files only, buffers inside the scene's folder, images
 // never decoded; glTF 1.0 and geometry-changing extensions refused by name.
-tinygltf::Model readModel(const std::string& path) {
-    {
-        std::error_code ec;
-        if (!std::filesystem::exists(path, ec)) throw Error("scene file not found: " + path);
-        if (!std::filesystem::is_regular_file(path, ec)) // a folder, a FIFO (opening it would hang), ...
-            throw Error("scene " + path + " is not a regular .gltf/.glb file");
-    }
+tinygltf::Model readModel(const GuardedGltf& g, const std::string& path) {
     tinygltf::TinyGLTF loader;
-    SceneFolder folder{std::filesystem::weakly_canonical(std::filesystem::absolute(path)).parent_path()};
+    SceneFolder folder{g.file.parent_path(), sceneBudget().bytes, 0};
     loader.SetFsCallbacks({fileExistsInFolder, keepPath, readFileInFolder, refuseWrite, &folder});
     loader.SetImageLoader(skipImage, nullptr);
     tinygltf::Model model;
     std::string err, warn;
-    const bool binary = path.size() > 4 && path.substr(path.size() - 4) == ".glb";
+    const std::string base = g.file.parent_path().string();
     bool ok = false;
     try { // tinygltf throws on some malformed input (e.g. nlohmann::json type errors)
-        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                    : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+        ok = g.binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, g.glb.data(), unsigned(g.glb.size()), base)
+                      : loader.LoadASCIIFromString(&model, &err, &warn, g.json.data(), unsigned(g.json.size()), base);
     } catch (const std::exception& e) {
         throw Error("cannot load glTF " + path + ": " + e.what());
     }
@@ -387,12 +390,39 @@ std::vector<int> sceneRoots(const tinygltf::Model& model, const std::string& pat
     return roots;
 }
 
+// "glTF mesh 'name'" for messages, the name cut at 60 characters: building the label for every
+// primitive from an 8 MB name made loading time grow with name length x primitives.
+std::string meshLabel(const tinygltf::Mesh& mesh, int index) {
+    const std::string name = mesh.name.size() > 60 ? mesh.name.substr(0, 57) + "..." : mesh.name;
+    return "glTF mesh " + std::to_string(index) + (name.empty() ? "" : " '" + name + "'");
+}
+
+// What the scene will hold once flattened, from the accessors' counts alone: the budget is checked
+// before anything is allocated (900 primitives sharing one accessor once took 5.4 GiB first).
+struct Expansion {
+    double triangles = 0, vertices = 0;
+    void add(const tinygltf::Model& m, const tinygltf::Primitive& p) {
+        auto pos = p.attributes.find("POSITION");
+        if (pos == p.attributes.end() || pos->second < 0 || pos->second >= int(m.accessors.size())) return;
+        const double pc = double(m.accessors[size_t(pos->second)].count);
+        const double ic = p.indices >= 0 && p.indices < int(m.accessors.size()) ? double(m.accessors[size_t(p.indices)].count) : pc;
+        const double tris = p.mode == TINYGLTF_MODE_TRIANGLES ? std::floor(ic / 3)
+                            : (p.mode == TINYGLTF_MODE_TRIANGLE_STRIP || p.mode == TINYGLTF_MODE_TRIANGLE_FAN) ? std::max(ic - 2, 0.0)
+                                                                                                              : 0.0;
+        triangles += tris;
+        vertices += p.attributes.count("NORMAL") ? pc : 3 * tris; // flat normals give every corner a vertex
+    }
+    // Vertices (scene frame), their file positions (double) and three indices a triangle.
+    double bytes() const { return vertices * double(sizeof(Vertex) + sizeof(glm::dvec3)) + triangles * 12; }
+};
+
 // Walks the node trees, flattening meshes into the scene and collecting the cameras. Cycles (a
 // node its own ancestor) are caught on the walk; the visit bound stays as a guard.
 class NodeWalker {
   public:
-    NodeWalker(const tinygltf::Model& m, const std::string& path, Scene& s)
-        : m_(m), path_(path), s_(s), onPath_(m.nodes.size(), 0) {}
+    // countOnly: adds up `expansion` and allocates nothing.
+    NodeWalker(const tinygltf::Model& m, const std::string& path, Scene& s, bool countOnly = false)
+        : m_(m), path_(path), s_(s), onPath_(m.nodes.size(), 0), countOnly_(countOnly) {}
 
     void visit(int ni, const glm::dmat4& parent, int depth) {
         if (ni < 0 || ni >= int(m_.nodes.size()))
@@ -408,9 +438,12 @@ class NodeWalker {
             if (n.mesh >= int(m_.meshes.size())) throw Error("glTF " + path_ + ": node refers to missing mesh");
             const auto& mesh = m_.meshes[size_t(n.mesh)];
             for (const auto& p : mesh.primitives)
-                appendPrimitive(m_, p, world, s_, worldPos, "glTF mesh '" + mesh.name + "'");
+                if (countOnly_)
+                    expansion.add(m_, p);
+                else
+                    appendPrimitive(m_, p, world, s_, worldPos, meshLabel(mesh, n.mesh));
         }
-        if (n.camera >= 0 && n.camera < int(m_.cameras.size())) {
+        if (!countOnly_ && n.camera >= 0 && n.camera < int(m_.cameras.size())) {
             glm::dvec3 eye;
             if (auto cam = cameraFromNode(m_, n, world, eye)) {
                 const std::string name = !n.name.empty() ? n.name : m_.cameras[size_t(n.camera)].name;
@@ -425,6 +458,7 @@ class NodeWalker {
 
     std::vector<glm::dvec3> worldPos;   // per vertex, file coordinates
     std::vector<glm::dvec3> cameraEyes; // per entry of s.cameras, file coordinates
+    Expansion expansion;                // countOnly
 
   private:
     static constexpr size_t kMaxVisits = 1000000;
@@ -433,6 +467,7 @@ class NodeWalker {
     Scene& s_;
     std::vector<char> onPath_;
     size_t visits_ = 0;
+    bool countOnly_ = false;
 };
 
 // Positions into the scene frame, cameras with it, the extent checked, far planes for infinite
@@ -464,11 +499,25 @@ void finishScene(Scene& s, const NodeWalker& w, const std::string& path) {
 } // namespace
 
 Scene loadGltf(const std::string& path) {
-    const tinygltf::Model model = readModel(path);
+    const GuardedGltf guarded = guardGltf(path, sceneBudget()); // checks tinygltf does not make
+    const tinygltf::Model model = readModel(guarded, path);
     Scene s;
     s.name = path;
+    const std::vector<int> roots = sceneRoots(model, path);
+    NodeWalker count(model, path, s, true);
+    for (int r : roots)
+        count.visit(r, glm::dmat4(1.0), 0);
+    const SceneBudget budget = sceneBudget();
+    if (count.expansion.triangles > double(budget.triangles))
+        throw Error("glTF " + path + " expands to " + std::to_string((long long)count.expansion.triangles) +
+                    " triangles, past the budget of " + std::to_string(budget.triangles) +
+                    " triangles (raise it with ssaolab --max-triangles N)");
+    if (count.expansion.bytes() > double(budget.bytes))
+        throw Error("glTF " + path + " expands to " + std::to_string((long long)(count.expansion.bytes() / (1 << 20))) +
+                    " MiB of vertices and indices, past the budget of " + std::to_string(budget.bytes >> 20) +
+                    " MiB (raise it with ssaolab --max-scene-mib N)");
     NodeWalker walker(model, path, s);
-    for (int r : sceneRoots(model, path))
+    for (int r : roots)
         walker.visit(r, glm::dmat4(1.0), 0);
     finishScene(s, walker, path);
     return s;

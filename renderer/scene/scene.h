@@ -72,6 +72,10 @@ Camera cameraToFile(const Camera& sceneCamera, const Scene& s);
 // `ssaolab --max-triangles N` raises it.
 struct SceneBudget {
     size_t triangles = 20000000; // 20 M: ~0.5 GB of vertices and indices, plus the BVH
+    // Bytes: the buffers a glTF reads (in total: two buffers naming one file count twice, a GLB its
+    // whole file) and, separately, the scene they expand to (vertices, positions, indices), each
+    // checked before it is allocated. `ssaolab --max-scene-mib N` raises it.
+    size_t bytes = size_t(1) << 30; // 1 GiB
 };
 void setSceneBudget(SceneBudget b);
 SceneBudget sceneBudget();

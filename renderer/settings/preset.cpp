@@ -3,6 +3,7 @@
 #include "settings/params.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/json_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -158,17 +159,10 @@ Preset presetFromJson(const nlohmann::json& j, const std::string& origin, const 
 }
 
 Preset readPresetFile(const std::string& path) {
-    std::ifstream in(path);
-    if (!in || fs::is_directory(path)) throw Error("preset file not found: " + path);
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) { // syntax, or a number that overflows a double
-        std::string what = e.what();
-        const size_t bracket = what.find("] ");
-        if (bracket != std::string::npos) what = what.substr(bracket + 2); // drop "[json.exception...]"
-        throw Error("preset " + path + " is not valid JSON (" + what + ")");
-    }
+    if (fs::is_directory(path)) throw Error("preset file not found: " + path);
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw Error("preset file not found: " + path);
+    const nlohmann::json j = readJsonFile(path, "preset"); // regular files only, nesting bounded
     Preset p = presetFromJson(j, "preset " + path, fs::path(path).parent_path().string());
     if (p.name.empty()) p.name = fs::path(path).stem().string();
     return p;
@@ -178,7 +172,7 @@ void writePresetFile(const Preset& p, const std::string& path) {
     std::error_code ec;
     const auto parent = fs::path(path).parent_path();
     if (!parent.empty()) fs::create_directories(parent, ec);
-    writeFileAtomically(path, presetToJson(p).dump(2) + "\n"); // complete or untouched, never half a preset
+    writeFileAtomically(path, dumpJson(presetToJson(p)) + "\n"); // complete or untouched, never half a preset
 }
 
 } // namespace ssao

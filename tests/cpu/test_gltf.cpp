@@ -262,7 +262,7 @@ TEST(GltfHostile, OneAccessorInManyPrimitivesMeetsTheBudget) {
                                             "[" + prims + "]"));
     EXPECT_EQ(loadGltf(path).triangleCount(), 40u); // within the default budget
     const SceneBudget saved = sceneBudget();
-    setSceneBudget({25});
+    setSceneBudget({25, saved.bytes});
     const std::string e = errorOf(path);
     setSceneBudget(saved);
     EXPECT_NE(e.find("past the budget of 25 triangles (raise it with ssaolab --max-triangles N)"), std::string::npos)
