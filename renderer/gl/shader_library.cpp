@@ -3,7 +3,6 @@
 #include "util/error.h"
 
 #include <fstream>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -19,20 +18,34 @@ std::string readFile(const std::string& path) {
     return ss.str();
 }
 
+// `#include "name"` (spaces allowed around '#' and the keyword): the name, or "" when the line is
+// not an include. A plain scan: std::regex recursed once per character and a 60 000-space line
+// overflowed the stack (in the explorer, saving such a file killed the window).
+std::string includeTarget(const std::string& line, const std::string& where) {
+    size_t i = line.find_first_not_of(" \t");
+    if (i == std::string::npos || line[i] != '#') return "";
+    i = line.find_first_not_of(" \t", i + 1);
+    if (i == std::string::npos || line.compare(i, 7, "include") != 0) return "";
+    i = line.find_first_not_of(" \t", i + 7);
+    if (i == std::string::npos || line[i] != '"') return "";
+    const size_t end = line.find('"', i + 1);
+    if (end == std::string::npos || line.find_first_not_of(" \t\r", end + 1) != std::string::npos) return "";
+    if (end - i - 1 > 256) throw Error(where + ": #include name longer than 256 characters");
+    return line.substr(i + 1, end - i - 1);
+}
+
 void expand(const std::string& dir, const std::string& file, std::vector<std::string>& files,
             std::set<std::string>& included, std::ostringstream& out, int depth) {
     if (depth > 16) throw Error("shader include depth exceeded at " + file);
     const int fileId = int(files.size());
     files.push_back(file);
     std::istringstream in(readFile(dir + "/" + file));
-    static const std::regex includeRe(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
     std::string line;
     int lineNo = 0;
     while (std::getline(in, line)) {
         ++lineNo;
-        std::smatch m;
-        if (std::regex_match(line, m, includeRe)) {
-            std::string inc = m[1];
+        const std::string inc = includeTarget(line, "shaders/" + file + ":" + std::to_string(lineNo));
+        if (!inc.empty()) {
             // Includes are relative to the shader root (like a -I path), e.g. "include/onb.glsl".
             if (included.insert(inc).second) {
                 out << "#line 1 " << files.size() << "\n";
@@ -53,33 +66,59 @@ std::string preprocessShader(const std::string& shaderDir, const std::string& fi
     std::ostringstream body;
     std::set<std::string> included;
     expand(shaderDir, file, files, included, body, 0);
-    std::string text = body.str();
+    const std::string text = body.str();
     // The #version line must come first: pull it out, then inject defines and resync lines.
-    static const std::regex versionRe(R"(^\s*#\s*version[^\n]*\n)");
-    std::smatch m;
-    if (!std::regex_search(text, m, versionRe) || m.position(0) != 0)
+    const size_t start = text.find_first_not_of(" \t\r\n");
+    const size_t hash = start == std::string::npos || text[start] != '#' ? std::string::npos : start;
+    const size_t kw = hash == std::string::npos ? hash : text.find_first_not_of(" \t", hash + 1);
+    if (kw == std::string::npos || text.compare(kw, 7, "version") != 0)
         throw Error(shaderDir + "/" + file + ":1: shader must start with #version");
+    const size_t eol = text.find('\n', kw);
+    const std::string version = text.substr(0, eol == std::string::npos ? text.size() : eol + 1);
     std::ostringstream out;
-    out << m.str(0);
+    out << version;
     for (auto& [k, v] : defines)
         out << "#define " << k << " " << v << "\n";
-    out << "#line 2 0\n" << text.substr(m.length(0));
+    out << "#line 2 0\n" << text.substr(version.size());
     return out.str();
 }
 
+namespace {
+// Reads digits at `i`; false when there are none.
+bool digits(const std::string& s, size_t& i, size_t& value) {
+    const size_t from = i;
+    value = 0;
+    while (i < s.size() && s[i] >= '0' && s[i] <= '9' && i - from < 9)
+        value = value * 10 + size_t(s[i++] - '0');
+    return i > from;
+}
+// The first "F:L(C)" (Mesa) or "F(L)" (NVIDIA) of a log line: file id, line, where it starts and ends.
+bool logLocation(const std::string& s, size_t& id, size_t& line, size_t& at, size_t& end) {
+    for (at = 0; at < s.size(); ++at) {
+        if (s[at] < '0' || s[at] > '9' || (at > 0 && s[at - 1] >= '0' && s[at - 1] <= '9')) continue;
+        size_t i = at, col = 0;
+        if (!digits(s, i, id) || i >= s.size()) continue;
+        if (s[i] == ':') {
+            ++i;
+            if (digits(s, i, line) && i < s.size() && s[i] == '(' && digits(s, ++i, col) && i < s.size() && s[i] == ')')
+                return end = i + 1, true;
+        } else if (s[i] == '(') {
+            ++i;
+            if (digits(s, i, line) && i < s.size() && s[i] == ')') return end = i + 1, true;
+        }
+    }
+    return false;
+}
+} // namespace
+
 std::string mapLogToFiles(const std::string& log, const std::vector<std::string>& files) {
-    static const std::regex mesaRe(R"((\d+):(\d+)\(\d+\))");
-    static const std::regex nvRe(R"((\d+)\((\d+)\))");
     std::istringstream in(log);
     std::ostringstream out;
     std::string line;
     while (std::getline(in, line)) {
-        std::smatch m;
-        if (std::regex_search(line, m, mesaRe) || std::regex_search(line, m, nvRe)) {
-            size_t id = std::stoul(m[1]);
-            if (id < files.size())
-                line = "shaders/" + files[id] + ":" + m[2].str() + line.substr(m.position(0) + m.length(0));
-        }
+        size_t id = 0, no = 0, at = 0, end = 0;
+        if (logLocation(line, id, no, at, end) && id < files.size())
+            line = line.substr(0, at) + "shaders/" + files[id] + ":" + std::to_string(no) + line.substr(end);
         out << line << "\n";
     }
     return out.str();

@@ -90,7 +90,20 @@ void validateCamera(const Camera& c) {
         throw Error("camera: fov, near and far must be finite numbers");
     if (!(c.nearZ > 0.0f)) throw Error("camera: near must be > 0");
     if (!(c.farZ > c.nearZ)) throw Error("camera: far must be > near");
-    if (c.depth == DepthMode::Reversed) return; // a float holds 1/z to 24 bits at any ratio
+    if (c.depth == DepthMode::Reversed) {
+        // A float holds near/z to 24 bits at any ratio - while near/z stays a normal float: past
+        // 1.2e-38 it turns denormal and flushes to 0, the cleared far value, and nothing renders
+        // (near 1e-38 drew an empty frame reported as "no geometry in view").
+        if (c.nearZ < kMinReversedNear) {
+            char buf[200];
+            std::snprintf(buf, sizeof buf,
+                          "camera: near = %.3g is below %.0e: reversed-Z stores depth as near/z, which leaves "
+                          "float's normal range for surfaces 1e8 x near away (raise near)",
+                          double(c.nearZ), double(kMinReversedNear));
+            throw Error(buf);
+        }
+        return;
+    }
     // A 32-bit depth buffer spreads its precision as near/z: past ~1e8 every surface lands on the
     // same depth value and nothing renders (near 1e-9, far 1e9 gave an empty frame reported as
     // "fully occluded"). 2CylinderEngine's own camera (0.05 .. 1e6, 2e7) still passes.

@@ -66,8 +66,10 @@ Camera parseCamera(const std::string& text, const Camera& base, const glm::dvec3
 
 // Throws when the camera would produce NaN matrices (zero direction, near <= 0, far <= near...)
 // or a depth range the depth buffer cannot resolve (standard depth: far/near above
-// kMaxFarNearRatio; reversed depth resolves any ratio a float holds, and an infinite far plane).
+// kMaxFarNearRatio; reversed depth resolves any ratio a float holds, and an infinite far plane,
+// down to a near plane of kMinReversedNear: near/z stays a normal float 1e8 x near away).
 constexpr double kMaxFarNearRatio = 1e8;
+constexpr float kMinReversedNear = 1e-30f;
 void validateCamera(const Camera& c);
 
 } // namespace ssao
