@@ -11,6 +11,7 @@
 #include "settings/preset.h"
 #include "settings/preset_store.h"
 #include "techniques/technique.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/paths.h"
 
@@ -248,6 +249,7 @@ void saveTuned(const TuneOptions& o, const Tuner& t, const std::vector<Knob>& kn
 int runTune(const TuneOptions& o) {
     int w = 0, h = 0;
     parseSizeOption(o.size, w, h);
+    checkOutputPath(o.out); // before minutes of tuning: a device or a FIFO is never replaced
     findTechnique(o.technique); // throws naming the choices
     Settings start = defaultSettings();
     if (!o.preset.empty()) start = PresetStore::standard(o.presetDir).open(o.preset).settings;

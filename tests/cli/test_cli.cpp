@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
+
+#include <regex>
 
 #include <cmath>
 #include <filesystem>
@@ -561,4 +564,55 @@ TEST(CliStress, EveryTechniqueStaysFiniteInRangeAndInvariantUnderScaleAndTransla
     EXPECT_EQ(invariant, 5 * 27);
     std::ifstream md(out + "/stability.md");
     EXPECT_TRUE(md.good());
+}
+
+TEST(CliHostile, OutputsNeverOverwriteWhatTheyMustNot) {
+    // A symlink planted at a staging name inside --out made a render overwrite a file outside it.
+    const std::string out = outDir("planted");
+    std::filesystem::remove_all(out);
+    std::filesystem::create_directories(out);
+    const std::string victim = writeTemp("victim.txt", "precious");
+    for (const char* staged : {"ao.raw.exr.exr-staged", "metrics.json.tmp1", "ao.raw.png.tmp-1-0"})
+        ASSERT_EQ(::symlink(victim.c_str(), (out + "/" + staged).c_str()), 0);
+    CliRun r = ssaolab("render --scene builtin:corner --size 64x36 --timing-frames 1 --quiet --out " + out);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(slurp(victim), "precious");
+    // tune --out a FIFO (or a device: /dev/null as root) replaced the node with a regular file.
+    const std::string fifo = std::string(SSAOLAB_TEST_TMP) + "/tune_fifo";
+    std::filesystem::remove(fifo);
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    r = ssaolab("tune --technique sao --scene builtin:corner --size 64x36 --views 2 --rounds 1 --grid 3 "
+                "--reference-rays 4 --knob sao.bias --quiet --out " + fifo);
+    expectCleanFailure(r, "is not a regular file (a FIFO)");
+    struct stat st {};
+    ASSERT_EQ(::lstat(fifo.c_str(), &st), 0);
+    EXPECT_TRUE(S_ISFIFO(st.st_mode)) << "the FIFO is still a FIFO";
+    // Two renders into one --out at once: the EXR staging name had no process id ("truncated").
+    const std::string shared = outDir("together");
+    std::filesystem::remove_all(shared);
+    const std::string cmd = std::string("'") + SSAOLAB_BINARY + "' render --scene builtin:showcase --size 160x90 "
+                            "--timing-frames 1 --quiet --out " + shared;
+    const std::string both = "(" + cmd + " & " + cmd + " & wait %1; a=$?; wait %2; b=$?; exit $((a + b)))";
+    EXPECT_EQ(std::system(("bash -c '" + std::regex_replace(both, std::regex("'"), "'\\''") + "'").c_str()), 0);
+    EXPECT_TRUE(std::filesystem::exists(shared + "/metrics.json"));
+}
+
+TEST(CliHostile, NanOptionsAndNonUtf8NamesGiveOneLineOrAReport) {
+    // `nan` passed CLI11's range checks: --tolerance nan switched the invariance check off.
+    expectCleanFailure(ssaolab("stress --scene builtin:corner --tolerance nan"), "not a finite number");
+    expectCleanFailure(ssaolab("--max-triangles nan render --scene builtin:corner"), "not a finite number");
+    // A scene file name that is not UTF-8 ended in a bare json exception after the images, with no
+    // metrics.json: JSON output replaces the bytes instead.
+    const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/latin1";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string src = std::string(SSAOLAB_SCENES_DIR) + "/CornellBox/";
+    std::filesystem::copy_file(src + "cornellBox.gltf", dir + "/caf\xe9.gltf");
+    std::filesystem::copy_file(src + "cornellBox.bin", dir + "/cornellBox.bin");
+    const std::string out = outDir("latin1");
+    std::filesystem::remove_all(out);
+    const CliRun r = ssaolab("render --scene '" + dir + "/caf\xe9.gltf' --size 64x36 --timing-frames 1 --quiet --out " + out);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json m = nlohmann::json::parse(slurp(out + "/metrics.json"));
+    EXPECT_NE(m["scene"]["name"].get<std::string>().find("caf\xef\xbf\xbd.gltf"), std::string::npos); // U+FFFD
 }
