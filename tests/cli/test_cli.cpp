@@ -592,7 +592,7 @@ TEST(CliHostile, OutputsNeverOverwriteWhatTheyMustNot) {
     std::filesystem::remove_all(shared);
     const std::string cmd = std::string("'") + SSAOLAB_BINARY + "' render --scene builtin:showcase --size 160x90 "
                             "--timing-frames 1 --quiet --out " + shared;
-    const std::string both = "(" + cmd + " & " + cmd + " & wait %1; a=$?; wait %2; b=$?; exit $((a + b)))";
+    const std::string both = "(" + cmd + " & p1=$!; " + cmd + " & p2=$!; wait $p1; a=$?; wait $p2; b=$?; exit $((a + b)))";
     EXPECT_EQ(std::system(("bash -c '" + std::regex_replace(both, std::regex("'"), "'\\''") + "'").c_str()), 0);
     EXPECT_TRUE(std::filesystem::exists(shared + "/metrics.json"));
 }
