@@ -15,6 +15,7 @@ PKGS=(
   glslang-tools  # glslangValidator: every shader variant compiles offline (tests/gl/test_glsl_validator.cpp)
   assimp-testmodels  # 53 glTF files, many broken on purpose (tests/cli/test_cli.cpp)
   xvfb xauth
+  chromium  # report.html opened in a real browser (tests/cli/test_report_html.cpp)
 )
 
 missing=()

@@ -52,21 +52,47 @@ std::string closestName(const std::string& word, const std::vector<std::string>&
     return bestD <= std::max<size_t>(2, word.size() / 3) ? best : "";
 }
 
-void refuseExtras(const CLI::App& app) {
-    // The subcommand chosen (one at most), else the program itself.
+namespace {
+// The innermost subcommand chosen ("bench merge"), else the program itself.
+const CLI::App* chosen(const CLI::App& app) {
     const CLI::App* cmd = &app;
-    for (const CLI::App* sub : app.get_subcommands())
-        cmd = sub;
+    for (auto subs = cmd->get_subcommands(); !subs.empty(); subs = cmd->get_subcommands())
+        cmd = subs.back();
+    return cmd;
+}
+// "bench merge" for that subcommand, "" for the program.
+std::string commandPath(const CLI::App* cmd) {
+    std::string path;
+    for (; cmd && cmd->get_parent(); cmd = cmd->get_parent())
+        path = cmd->get_name() + (path.empty() ? "" : " " + path);
+    return path;
+}
+} // namespace
+
+std::string helpCommand(const CLI::App& app) {
+    const std::string path = commandPath(chosen(app));
+    return path.empty() ? "ssaolab --help" : "ssaolab " + path + " --help";
+}
+
+void refuseExtras(const CLI::App& app) {
+    const CLI::App* cmd = chosen(app);
     std::vector<std::string> extras = cmd->remaining();
-    if (extras.empty() && cmd != &app) extras = app.remaining();
+    for (const CLI::App* up = cmd->get_parent(); extras.empty() && up; up = up->get_parent())
+        extras = up->remaining();
     if (extras.empty()) return;
     const std::string& first = extras.front();
-    const std::string help = cmd == &app ? "ssaolab --help" : "ssaolab " + cmd->get_name() + " --help";
+    const std::string help = helpCommand(app);
+    const std::string name = commandPath(cmd);
     if (first.empty() || first[0] != '-') {
-        if (cmd != &app) throw Error(cmd->get_name() + ": unexpected argument '" + first + "' (see " + help + ")");
         std::vector<std::string> names;
-        for (const CLI::App* sub : app.get_subcommands({}))
+        for (const CLI::App* sub : cmd->get_subcommands({}))
             names.push_back(sub->get_name());
+        if (cmd != &app && names.empty())
+            throw Error(name + ": unexpected argument '" + first + "' (see " + help + ")");
+        if (cmd != &app)
+            throw Error(name + ": unexpected argument '" + first + "'" +
+                        (closestName(first, names).empty() ? "" : " (did you mean " + closestName(first, names) + "?)") +
+                        " (see " + help + ")");
         const std::string near = closestName(first, names);
         throw Error("unknown command '" + first + "'" + (near.empty() ? "" : " (did you mean " + near + "?)") +
                     " (see ssaolab --help)");
@@ -77,7 +103,7 @@ void refuseExtras(const CLI::App& app) {
             names.push_back("--" + n);
     const std::string word = first.substr(0, first.find('='));
     const std::string near = closestName(word, names);
-    throw Error((cmd == &app ? std::string() : cmd->get_name() + ": ") + "unknown option '" + word + "'" +
+    throw Error((cmd == &app ? std::string() : name + ": ") + "unknown option '" + word + "'" +
                 (near.empty() ? "" : " (did you mean " + near + "?)") + " (see " + help + ")");
 }
 

@@ -18,5 +18,7 @@ std::string closestName(const std::string& word, const std::vector<std::string>&
 // After parsing with extras allowed: throws ssao::Error naming the first unknown command or
 // option (with the closest valid one and the help to read), if there is one.
 void refuseExtras(const CLI::App& app);
+// "ssaolab bench merge --help": the help of the innermost subcommand chosen.
+std::string helpCommand(const CLI::App& app);
 
 } // namespace ssao

@@ -50,6 +50,8 @@ struct Commands {
     double maxSceneMib = double(ssao::SceneBudget{}.bytes >> 20);
     ssao::RenderOptions render;
     ssao::BenchOptions bench;
+    ssao::BenchMergeOptions benchMerge;
+    CLI::App* benchCmd = nullptr;
     ssao::TuneOptions tune;
     ssao::SkipsOptions skips;
     ssao::StressOptions stress;
@@ -70,9 +72,13 @@ struct Commands {
             ->check(ssao::cliRange(1.0, 1 << 20));
         ssao::addRenderOptions(*sub("render", "render a scene headless (EGL) into EXR/PNG buffers and metrics.json"),
                                render);
-        ssao::addBenchOptions(
-            *sub("bench", "run time against error: every configuration of a sweep against the ray-traced reference"),
-            bench);
+        benchCmd = sub("bench", "run time against error: every configuration of a sweep against the ray-traced reference");
+        ssao::addBenchOptions(*benchCmd, bench);
+        benchCmd->require_subcommand(0, 1);
+        CLI::App* merge = benchCmd->add_subcommand(
+            "merge", "join the output folders of `bench --shard K/N` runs into one run's results and reports");
+        merge->allow_extras();
+        ssao::addBenchMergeOptions(*merge, benchMerge);
         ssao::addTuneOptions(
             *sub("tune", "fit one technique's parameters to the ray-traced reference; report held-out views; save JSON"),
             tune);
@@ -135,7 +141,8 @@ struct Commands {
                         ssao::PresetStore::defaultUserDir().c_str());
             return 0;
         }
-        if (app.got_subcommand("bench")) return ssao::runBench(bench);
+        if (app.got_subcommand("bench"))
+            return benchCmd->got_subcommand("merge") ? ssao::runBenchMerge(benchMerge) : ssao::runBench(bench);
         if (app.got_subcommand("tune")) return ssao::runTune(tune);
         if (app.got_subcommand("stress")) return ssao::runStress(stress);
         if (app.got_subcommand("skips")) return ssao::runSkips(skips);
@@ -168,10 +175,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return cli.app.exit(e); // --help
         // Like every other bad input: one line, exit code 1; the subcommand's own help.
-        std::string help = "ssaolab --help";
-        for (const CLI::App* sub : cli.app.get_subcommands())
-            help = "ssaolab " + sub->get_name() + " --help";
-        return reportError(std::string(e.what()) + " (see " + help + ")");
+        return reportError(std::string(e.what()) + " (see " + ssao::helpCommand(cli.app) + ")");
     }
     try {
         ssao::refuseExtras(cli.app);

@@ -1,13 +1,17 @@
 #include "bench/bench_command.h"
 
+#include "bench/bench_answer.h"
 #include "bench/bench_report.h"
 #include "bench/bench_run.h"
+#include "bench/shard.h"
+#include "bench/thumbnails.h"
 #include "bench/viewpoints.h"
 #include "headless_runner.h"
 #include "progress_bar.h"
 #include "reference/reference_cache.h"
 #include "render_command.h"
 #include "scene/scene.h"
+#include "settings/preset.h"
 #include "util/error.h"
 #include "util/paths.h"
 
@@ -15,10 +19,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
-#include <set>
 #include <filesystem>
+#include <optional>
+#include <set>
 
 namespace ssao {
 
@@ -52,6 +59,16 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
         ->check(cliRange(0.0001, 0.5));
     cmd.add_option("--out", o.out, "output folder")->capture_default_str();
     cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)");
+    cmd.add_option("--baseline", o.baseline, "the preset every row is compared with")->capture_default_str();
+    cmd.add_option("--shard", o.shard,
+                   "K/N: run the K-th of N equal parts of the work (scenes x views x configurations); join "
+                   "the parts with `ssaolab bench merge`")
+        ->capture_default_str();
+    cmd.add_option("--budget-ms", o.budgetMs,
+                   "answer: the most accurate configuration whose AO + denoise time is at most this (ms)")
+        ->check(cliRange(1e-6, 1e6));
+    cmd.add_option("--max-error", o.maxError, "answer: the fastest configuration whose RMSE is at most this")
+        ->check(cliRange(1e-9, 1.0));
     cmd.add_flag(
         "--no-plot", [&o](int64_t) { o.plot = false; }, "skip the matplotlib plot");
     cmd.add_flag("--quiet", o.quiet, "no progress output");
@@ -59,54 +76,102 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
 
 namespace {
 
-// One scene of the benchmark: for each viewpoint, the reference (cached) and every configuration.
-void benchScene(const BenchOptions& o, HeadlessRunner& runner, Renderer& r, const Sweep& sweep,
-                ReferenceVariant variant, const std::string& spec, Scene& scene, BenchRun& run) {
-    const float radius = o.radiusScene * 2.0f * scene.bounds.radius();
-    const int w = r.width(), h = r.height();
-    r.setScene(scene);
-    ReferenceProvider provider(scene);
-    nlohmann::json facts = {{"name", scene.name},
-                            {"spec", spec},
-                            {"triangles", scene.triangleCount()},
-                            {"diagonal", 2.0f * scene.bounds.radius()},
-                            {"radius", radius}};
-    for (const auto& [vname, cam] : viewpoints(defaultCamera(scene), o.views)) {
-        r.setCamera(cam);
-        r.setSettings(withRadius(sweep.configs[sweep.baseline].settings, radius));
-        r.render(); // fits the clip planes: the reference traces the camera as rendered
+std::string hostName() {
+    char b[256] = {};
+    return ::gethostname(b, sizeof b - 1) == 0 ? std::string(b) : "unknown";
+}
+
+// What one shard measures of one scene: for each viewpoint holding any of its units, the
+// reference (cached), the baseline (always: every row's time is divided by its own run's
+// baseline on that view) and its configurations.
+class SceneBench {
+  public:
+    SceneBench(const BenchOptions& o, HeadlessRunner& runner, Renderer& r, BenchRun& run, ReferenceVariant variant)
+        : o_(o), runner_(runner), r_(r), run_(run), variant_(variant) {}
+
+    void run(size_t si, const std::string& spec, Scene& scene, const std::vector<WorkUnit>& units) {
+        const float radius = o_.radiusScene * 2.0f * scene.bounds.radius();
+        r_.setScene(scene);
+        ReferenceProvider provider(scene);
+        nlohmann::json facts = {{"name", scene.name},
+                                {"spec", spec},
+                                {"triangles", scene.triangleCount()},
+                                {"diagonal", 2.0f * scene.bounds.radius()},
+                                {"radius", radius},
+                                {"viewpoints", nlohmann::json::array()}};
+        const auto vps = viewpoints(defaultCamera(scene), o_.views);
+        for (size_t vi = 0; vi < vps.size(); ++vi) {
+            std::vector<size_t> configs;
+            for (const WorkUnit& u : units)
+                if (u.scene == si && u.view == vi) configs.push_back(u.config);
+            if (!configs.empty()) facts["viewpoints"].push_back(view(scene, vps[vi].first, vps[vi].second, vi, radius, provider, configs));
+        }
+        run_.facts["scenes"].push_back(facts);
+    }
+
+  private:
+    nlohmann::json view(const Scene& scene, const std::string& vname, const Camera& cam, size_t vi, float radius,
+                        ReferenceProvider& provider, const std::vector<size_t>& configs) {
+        const Sweep& sweep = run_.sweep;
+        r_.setCamera(cam);
+        r_.setSettings(withRadius(sweep.configs[sweep.baseline].settings, radius));
+        r_.render(); // fits the clip planes: the reference traces the camera as rendered
         bool cached = false;
         ReferenceImage ref;
         {
-            ProgressBar bar("  reference " + scene.name + " " + vname, !o.quiet);
-            ref = provider.get(r.camera(), w, h, {radius, o.referenceRays, variant}, [&](double f) { bar.update(f); },
-                               &cached);
+            ProgressBar bar("  reference " + scene.name + " " + vname, !o_.quiet);
+            ref = provider.get(r_.camera(), r_.width(), r_.height(), {radius, o_.referenceRays, variant_},
+                               [&](double f) { bar.update(f); }, &cached);
         }
-        facts["viewpoints"].push_back({{"name", vname},
-                                       {"camera",
-                                        {{"eye", {cam.eye.x, cam.eye.y, cam.eye.z}},
-                                         {"target", {cam.target.x, cam.target.y, cam.target.z}}}},
-                                       {"reference_cached", cached},
-                                       {"reference_seconds", ref.seconds},
-                                       {"reference_ambiguous_pixels", ref.ambiguousPixels()},
-                                       {"reference_mrays_per_second", ref.raysPerSecond() * 1e-6}});
-        ProgressBar bar("  " + scene.name + " " + vname + ": " + std::to_string(sweep.configs.size()) +
-                            " configurations",
-                        !o.quiet);
-        for (size_t c = 0; c < sweep.configs.size(); ++c) {
-            ViewResult v = measure(r, withRadius(sweep.configs[c].settings, radius), ref, o.warmup, o.frames);
-            runner.checkGl("measuring " + sweep.configs[c].label + " on " + scene.name + " " + vname);
-            v.scene = scene.name;
-            v.viewpoint = vname;
-            v.config = c;
-            run.views.push_back(v);
-            bar.update(double(c + 1) / double(sweep.configs.size()));
+        const std::string thumbs = thumbnailDir(o_.out, scene.name, vname);
+        if (vi == 0) writeReferenceThumbnail(thumbs, ref);
+        ProgressBar bar("  " + scene.name + " " + vname + ": " + std::to_string(configs.size()) + " configurations",
+                        !o_.quiet);
+        // The baseline first, whether or not this shard owns its row.
+        const ViewResult base = one(sweep.baseline, scene.name, vname, radius, ref, vi == 0 ? thumbs : "");
+        const bool ownsBaseline = std::find(configs.begin(), configs.end(), sweep.baseline) != configs.end();
+        if (ownsBaseline) run_.views.push_back(base);
+        for (size_t k = 0; k < configs.size(); ++k) {
+            if (configs[k] == sweep.baseline) continue;
+            ViewResult v = one(configs[k], scene.name, vname, radius, ref, vi == 0 ? thumbs : "");
+            v.baselineMs = base.gpuMs;
+            run_.views.push_back(v);
+            bar.update(double(k + 1) / double(configs.size()));
         }
+        return {{"name", vname},
+                {"index", vi},
+                {"camera", cameraToJson(cam)},
+                {"reference_cached", cached},
+                {"reference_seconds", ref.seconds},
+                {"reference_ambiguous_pixels", ref.ambiguousPixels()},
+                {"reference_mrays_per_second", ref.raysPerSecond() * 1e-6}};
     }
-    run.facts["scenes"].push_back(facts);
-}
 
-void printBenchSummary(const BenchRun& run, const Sweep& sweep, const BenchOptions& o) {
+    ViewResult one(size_t c, const std::string& scene, const std::string& vname, float radius, const ReferenceImage& ref,
+                   const std::string& thumbs) {
+        const BenchConfig& cfg = run_.sweep.configs[c];
+        Measurement m(withRadius(cfg.settings, radius), o_.warmup, o_.frames);
+        while (!m.step(r_, ref)) {
+        }
+        runner_.checkGl("measuring " + cfg.label + " on " + scene + " " + vname);
+        if (!thumbs.empty()) writeThumbnails(thumbs, c, m.evaluation(), ref);
+        ViewResult v = m.result();
+        v.scene = scene;
+        v.viewpoint = vname;
+        v.config = c;
+        v.baselineMs = v.gpuMs;
+        return v;
+    }
+
+    const BenchOptions& o_;
+    HeadlessRunner& runner_;
+    Renderer& r_;
+    BenchRun& run_;
+    ReferenceVariant variant_;
+};
+
+void printBenchSummary(const BenchRun& run, const std::string& out, bool plot) {
+    const Sweep& sweep = run.sweep;
     const ConfigSummary& b = run.summary[sweep.baseline];
     std::printf("baseline %s: %.3f ms, RMSE %.4f, PSNR %.2f dB (geometry) %.2f dB (full frame)\n",
                 sweep.configs[sweep.baseline].label.c_str(), b.gpuMs, b.rmse, b.psnrGeometrySrgb, b.psnrFullSrgb);
@@ -122,57 +187,98 @@ void printBenchSummary(const BenchRun& run, const Sweep& sweep, const BenchOptio
     int front = 0;
     for (const auto& s : run.summary)
         front += s.pareto;
-    std::printf("%d configurations on the Pareto front; wrote %s/{results.csv,summary.csv,results.json,report.md"
-                "%s}\n",
-                front, o.out.c_str(), o.plot ? ",pareto.png,pareto.svg" : "");
+    std::printf("%d configurations on the Pareto front; wrote %s/{results.csv,summary.csv,results.json,report.md,"
+                "report.html%s}\n",
+                front, out.c_str(), plot ? ",pareto.png,pareto.svg" : "");
 }
 
 } // namespace
+
+// The preset context of the answer: the first viewpoint of the first scene, as the run recorded it.
+std::optional<AnswerContext> answerContext(const BenchRun& run, const std::string& out, float& radius) {
+    const nlohmann::json& f = run.facts;
+    if (!f.contains("scene_specs") || f["scene_specs"].empty() || !f.contains("scenes") || f["scenes"].empty())
+        return std::nullopt;
+    const nlohmann::json& sc = f["scenes"][0];
+    if (!sc.contains("viewpoints") || sc["viewpoints"].empty()) return std::nullopt;
+    AnswerContext ctx;
+    ctx.scene = f["scene_specs"][0].get<std::string>();
+    parseSizeOption(f.value("size", ""), ctx.width, ctx.height);
+    ctx.camera = cameraFromJson(sc["viewpoints"][0]["camera"], "results.json camera");
+    ctx.referenceRays = f["reference"].value("rays", 0);
+    ctx.presetPath = (std::filesystem::path(out) / "answer.json").string();
+    radius = sc.value("radius", 0.0f);
+    return ctx;
+}
+
+int finishBench(BenchRun& run, const std::string& out, const std::string& title, bool plot, bool quiet,
+                const Question& q) {
+    run.summary = summarize(run.views, run.sweep.configs.size(), run.sweep.baseline);
+    writeBenchFiles(run, out);
+    if (plot) plotBench(out, title, quiet);
+    if (!quiet) printBenchSummary(run, out, plot);
+    if (q.asked()) {
+        float radius = 0;
+        const auto ctx = answerContext(run, out, radius);
+        if (!ctx) throw Error("the results hold no viewpoint of the first scene to answer on");
+        std::printf("%s\n", answerLine(run, q, *ctx, radius).c_str());
+    }
+    long bad = 0;
+    for (const auto& s : run.summary)
+        bad += s.nonFinite;
+    if (bad > 0) throw Error(std::to_string(bad) + " non-finite AO pixels in the benchmark (see results.csv)");
+    return 0;
+}
 
 int runBench(const BenchOptions& o) {
     // Everything that needs no GL first: bad input fails in milliseconds with one line.
     int w = 0, h = 0;
     parseSizeOption(o.size, w, h);
-    const Sweep sweep = loadSweep(o.sweep, o.presetDir);
+    const ShardSpec shard = parseShard(o.shard);
+    BenchRun run;
+    run.sweep = loadSweep(o.sweep, o.presetDir, o.baseline);
     const ReferenceVariant variant = parseVariant(o.referenceVariant);
-    const std::vector<std::string> specs =
-        o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
+    const std::vector<std::string> specs = o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
     std::vector<Scene> scenes;
     for (const auto& s : specs)
         scenes.push_back(loadNamedScene(s));
+    const std::vector<WorkUnit> units = shardUnits(scenes.size(), size_t(o.views), run.sweep.configs.size(), shard);
 
     HeadlessRunner runner;
-    BenchRun run;
-    run.sweep = &sweep;
     run.facts = runFacts(runner.glRenderer());
     run.facts["size"] = o.size;
     run.facts["frames"] = o.frames;
     run.facts["warmup"] = o.warmup;
+    run.facts["views_per_scene"] = o.views;
     run.facts["reference"] = {{"definition", kReferenceDefinition},
                               {"variant", o.referenceVariant},
                               {"rays", o.referenceRays},
                               {"radius_scene", o.radiusScene}};
+    run.facts["scene_specs"] = specs;
+    run.facts["scenes"] = nlohmann::json::array();
     std::unique_ptr<Renderer> r = runner.makeRenderer(w, h);
     r->setWanted(std::set<std::string>{"ao.denoised"}); // what is judged: no composite, no albedo
     if (!o.quiet)
-        std::printf("bench: %zu configurations x %zu scenes x %d views at %dx%d on %s\n", sweep.configs.size(),
-                    scenes.size(), o.views, w, h, runner.glRenderer().c_str());
+        std::printf("bench: %zu configurations x %zu scenes x %d views at %dx%d on %s%s\n", run.sweep.configs.size(),
+                    scenes.size(), o.views, w, h, runner.glRenderer().c_str(),
+                    shard.whole() ? "" : (" (shard " + shard.text() + ": " + std::to_string(units.size()) + " of " +
+                                          std::to_string(scenes.size() * o.views * run.sweep.configs.size()) + " units)")
+                                             .c_str());
+    SceneBench bench(o, runner, *r, run, variant);
     for (size_t si = 0; si < scenes.size(); ++si)
-        benchScene(o, runner, *r, sweep, variant, specs[si], scenes[si], run);
-    run.summary = summarize(run.views, sweep.configs.size(), sweep.baseline);
-    writeBenchFiles(run, o.out);
+        bench.run(si, specs[si], scenes[si], units);
+    run.shards = nlohmann::json::array({{{"shard", shard.text()},
+                                         {"hostname", hostName()},
+                                         {"cpu", run.facts["cpu"]},
+                                         {"gl_renderer", run.facts["gl_renderer"]},
+                                         {"date", run.facts["date"]},
+                                         {"git_revision", run.facts["git_revision"]},
+                                         {"rows", run.views.size()}}});
     std::string title;
     for (const auto& s : scenes)
         title += (title.empty() ? "" : ", ") + s.name;
     title += " | " + o.size + " | " + runner.glRenderer();
-    if (o.plot) plotBench(o.out, title, o.quiet);
-    if (!o.quiet) printBenchSummary(run, sweep, o);
-    long bad = 0;
-    for (const auto& s : run.summary)
-        bad += s.nonFinite;
-    if (bad > 0)
-        throw Error(std::to_string(bad) + " non-finite AO pixels in the benchmark (see results.csv)");
-    return 0;
+    return finishBench(run, o.out, title, o.plot, o.quiet, Question{o.budgetMs, o.maxError});
 }
 
 } // namespace ssao

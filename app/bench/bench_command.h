@@ -1,7 +1,11 @@
 // `ssaolab bench`: run time against error for every configuration of a sweep, on scenes and
 // viewpoints, against the cached ray-traced reference — results.csv/json, summary.csv, a Markdown
-// report of the Pareto front and a plot (matplotlib, app/bench/plot_pareto.py).
+// report of the Pareto front, report.html and a plot (matplotlib, app/bench/plot_pareto.py).
+// `--shard K/N` runs a part of the work; `ssaolab bench merge DIR...` joins the parts.
 #pragma once
+#include "bench/bench_answer.h"
+#include "bench/bench_results.h"
+
 #include <string>
 #include <vector>
 
@@ -23,12 +27,30 @@ struct BenchOptions {
     float radiusScene = 0.05f; // R = radiusScene x the scene's bounding-box diagonal
     std::string out = "bench-out";
     std::string presetDir;
+    std::string baseline = "learnopengl"; // the preset every row is compared with
+    std::string shard = "1/1";            // K/N: run only this part of the work (bench/shard.h)
+    double budgetMs = 0, maxError = 0;    // the question to answer (bench/bench_answer.h); 0 = none
+    bool plot = true;
+    bool quiet = false;
+};
+
+struct BenchMergeOptions {
+    std::vector<std::string> dirs; // shard output folders
+    std::string out = "bench-merged";
+    double budgetMs = 0, maxError = 0;
     bool plot = true;
     bool quiet = false;
 };
 
 void addBenchOptions(CLI::App& cmd, BenchOptions& o);
-// Throws ssao::Error on bad input; returns the exit code.
+void addBenchMergeOptions(CLI::App& cmd, BenchMergeOptions& o);
+// Throw ssao::Error on bad input; return the exit code.
 int runBench(const BenchOptions& o);
+int runBenchMerge(const BenchMergeOptions& o);
+
+// The end of `bench` and of `bench merge`: summaries, files, plot, the printed summary and the
+// answer to --budget-ms / --max-error (bench/bench_answer.h). Returns the exit code.
+int finishBench(BenchRun& run, const std::string& out, const std::string& title, bool plot, bool quiet,
+                const Question& q);
 
 } // namespace ssao

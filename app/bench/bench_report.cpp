@@ -1,5 +1,6 @@
 #include "bench/bench_report.h"
 
+#include "bench/report_html.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/json_file.h"
@@ -32,10 +33,6 @@ std::string num(double v, int digits = 6) {
     return b;
 }
 
-nlohmann::json jnum(double v) {
-    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-
 const char* kMetricHeader =
     "gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,p99_abs,max_abs,psnr_geometry_srgb,"
     "psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,reference_noise,frames,rmse_first_frame";
@@ -52,11 +49,11 @@ std::string metricCells(const ViewResult& v) {
 } // namespace
 
 size_t fastestAtMostBaselineError(const BenchRun& run) {
-    const double base = run.summary[run.sweep->baseline].rmse;
+    const double base = run.summary[run.sweep.baseline].rmse;
     size_t best = std::string::npos;
     for (const auto& s : run.summary)
-        if (s.config != run.sweep->baseline && std::isfinite(s.rmse) && s.rmse <= base &&
-            (best == std::string::npos || s.gpuMs < run.summary[best].gpuMs))
+        if (s.config != run.sweep.baseline && std::isfinite(s.rmse) && s.rmse <= base &&
+            (best == std::string::npos || s.timeRatio < run.summary[best].timeRatio))
             best = s.config;
     return best;
 }
@@ -73,21 +70,24 @@ namespace {
 
 // results.csv: one row per scene, viewpoint and configuration.
 std::string resultsCsv(const BenchRun& run) {
-    const auto& cfgs = run.sweep->configs;
+    const auto& cfgs = run.sweep.configs;
     std::ostringstream f;
-    f << "scene,viewpoint,label,technique,baseline,pareto," << kMetricHeader << ",settings\n";
+    f << "scene,viewpoint,label,technique,baseline,pareto," << kMetricHeader
+      << ",baseline_ms,time_ratio,shard,settings\n";
     for (const auto& v : run.views) {
         const BenchConfig& c = cfgs[v.config];
+        const std::string shard = run.shards.size() > size_t(v.shard) ? run.shards[v.shard].value("shard", "1/1") : "1/1";
         f << csvField(v.scene) << "," << csvField(v.viewpoint) << "," << csvField(c.label) << ","
           << c.settings.ao.technique << "," << c.baseline << "," << run.summary[v.config].pareto << ","
-          << metricCells(v) << "," << csvField(c.keys.dump()) << "\n";
+          << metricCells(v) << "," << num(v.baselineMs) << "," << num(v.timeRatio) << "," << shard << ","
+          << csvField(c.keys.dump()) << "\n";
     }
     return f.str();
 }
 
 // summary.csv: one row per configuration, over every view.
 std::string summaryCsv(const BenchRun& run) {
-    const auto& cfgs = run.sweep->configs;
+    const auto& cfgs = run.sweep.configs;
     std::ostringstream f;
     f << "label,technique,baseline,pareto,views,gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,"
          "psnr_geometry_srgb,psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,time_ratio,rmse_ratio,"
@@ -106,59 +106,6 @@ std::string summaryCsv(const BenchRun& run) {
     return f.str();
 }
 
-// results.json: the run's facts, every configuration's summary and every view's result.
-nlohmann::json resultsJson(const BenchRun& run) {
-    const auto& cfgs = run.sweep->configs;
-    nlohmann::json j = run.facts;
-    j["sweep"] = {{"name", run.sweep->name}, {"description", run.sweep->description}};
-    for (const auto& s : run.summary) {
-        const BenchConfig& c = cfgs[s.config];
-        j["configurations"].push_back({{"label", c.label},
-                                       {"group", c.group},
-                                       {"keys", c.keys},
-                                       {"baseline", c.baseline},
-                                       {"pareto", s.pareto},
-                                       {"views", s.views},
-                                       {"gpu_ms", jnum(s.gpuMs)},
-                                       {"gpu_ms_min", jnum(s.gpuMsMin)},
-                                       {"gpu_ms_max", jnum(s.gpuMsMax)},
-                                       {"rmse", jnum(s.rmse)},
-                                       {"mae", jnum(s.mae)},
-                                       {"bias", jnum(s.bias)},
-                                       {"psnr_geometry_srgb", jnum(s.psnrGeometrySrgb)},
-                                       {"psnr_full_srgb", jnum(s.psnrFullSrgb)},
-                                       {"rmse_edge", jnum(s.rmseEdge)},
-                                       {"rmse_interior", jnum(s.rmseInterior)},
-                                       {"ssim", jnum(s.ssim)},
-                                       {"rmse_first_frame", jnum(s.rmseFirstFrame)},
-                                       {"nonfinite", s.nonFinite},
-                                       {"time_ratio", jnum(s.timeRatio)},
-                                       {"rmse_ratio", jnum(s.rmseRatio)}});
-    }
-    for (const auto& v : run.views)
-        j["results"].push_back({{"scene", v.scene},
-                                {"viewpoint", v.viewpoint},
-                                {"label", cfgs[v.config].label},
-                                {"gpu_ms", jnum(v.gpuMs)},
-                                {"gpu_ms_min", jnum(v.gpuMsMin)},
-                                {"gpu_ms_max", jnum(v.gpuMsMax)},
-                                {"rmse", jnum(v.error.rmse)},
-                                {"mae", jnum(v.error.mae)},
-                                {"bias", jnum(v.error.bias)},
-                                {"p99_abs", jnum(v.error.p99Abs)},
-                                {"max_abs", jnum(v.error.maxAbs)},
-                                {"psnr_geometry_srgb", jnum(v.error.psnrGeometrySrgb)},
-                                {"psnr_full_srgb", jnum(v.error.psnrFullSrgb)},
-                                {"rmse_edge", jnum(v.error.rmseEdge)},
-                                {"rmse_interior", jnum(v.error.rmseInterior)},
-                                {"ssim", jnum(v.error.ssim)},
-                                {"frames", v.frames},
-                                {"rmse_first_frame", jnum(v.rmseFirstFrame)},
-                                {"nonfinite", v.error.nonFinite},
-                                {"reference_noise", jnum(v.error.referenceNoise)}});
-    return j;
-}
-
 } // namespace
 
 void writeBenchFiles(const BenchRun& run, const std::string& dir) {
@@ -169,11 +116,12 @@ void writeBenchFiles(const BenchRun& run, const std::string& dir) {
     writeFileAtomically((fs::path(dir) / "summary.csv").string(), summaryCsv(run));
     writeFileAtomically((fs::path(dir) / "results.json").string(), dumpJson(resultsJson(run)) + "\n");
     writeFileAtomically((fs::path(dir) / "report.md").string(), benchMarkdown(run, "pareto.png"));
+    writeFileAtomically((fs::path(dir) / "report.html").string(), benchHtml(run, dir));
 }
 
 std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
-    const auto& cfgs = run.sweep->configs;
-    const ConfigSummary& base = run.summary[run.sweep->baseline];
+    const auto& cfgs = run.sweep.configs;
+    const ConfigSummary& base = run.summary[run.sweep.baseline];
     const nlohmann::json& f = run.facts;
     std::ostringstream md;
     md << "Run: " << f.value("date", "") << ", git " << f.value("git_revision", "") << ", "
@@ -198,8 +146,18 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
               "all views): "
            << num(std::sqrt(noise / double(run.views.size())), 3)
            << " — errors well above it are the techniques', not the reference's.";
+    if (run.shards.size() > 1) {
+        md << "\n\nMerged from " << run.shards.size()
+           << " shards. Times are only comparable on one machine: every row is divided by the baseline its own "
+              "shard measured on the same view, and configurations are ranked by those ratios (the ms columns "
+              "mix machines).\n\n| shard | host | CPU | GL renderer | date | git | rows |\n|---|---|---|---|---|---|---:|\n";
+        for (const auto& sh : run.shards)
+            md << "| " << sh.value("shard", "") << " | " << sh.value("hostname", "") << " | " << sh.value("cpu", "")
+               << " | " << sh.value("gl_renderer", "") << " | " << sh.value("date", "") << " | "
+               << sh.value("git_revision", "") << " | " << sh.value("rows", 0) << " |\n";
+    }
     md << "\n\n![time against error](" << plotFile << ")\n\n";
-    md << "Baseline: **" << cfgs[run.sweep->baseline].label << "**: " << num(base.gpuMs, 4)
+    md << "Baseline: **" << cfgs[run.sweep.baseline].label << "**: " << num(base.gpuMs, 4)
        << " ms AO + denoise, geometry RMSE " << num(base.rmse, 4) << ", PSNR "
        << num(base.psnrGeometrySrgb, 4) << " dB (geometry, sRGB), " << num(base.psnrFullSrgb, 4)
        << " dB full frame.\n\n";
@@ -220,8 +178,8 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
               "|\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
         std::vector<const ConfigSummary*> rows;
         for (const auto& s : run.summary)
-            if (!frontOnly || s.pareto || s.config == run.sweep->baseline) rows.push_back(&s);
-        std::sort(rows.begin(), rows.end(), [](auto* a, auto* b) { return a->gpuMs < b->gpuMs; });
+            if (!frontOnly || s.pareto || s.config == run.sweep.baseline) rows.push_back(&s);
+        std::sort(rows.begin(), rows.end(), [](auto* a, auto* b) { return a->timeRatio < b->timeRatio; });
         for (const ConfigSummary* s : rows)
             md << "| " << cfgs[s->config].label << " | " << num(s->gpuMs, 4) << " | " << num(s->timeRatio, 3)
                << " | " << num(s->rmse, 4) << " | " << num(s->rmseRatio, 3) << " | " << num(s->bias, 3)
@@ -234,7 +192,8 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
     md << "\n### Every configuration\n\n";
     table(false);
     md << "\nTime: GPU timer queries (GL_TIME_ELAPSED) of every pass but the G-buffer and the composite, "
-          "mean over views of each view's median. RMSE: linear AO over the reference's geometry pixels, "
+          "mean over views of each view's median; x baseline: the geometric mean over views of each view's "
+          "median divided by the baseline's median on that view (the front and the ranking use it). RMSE: linear AO over the reference's geometry pixels, "
           "sqrt of the mean MSE over views; PSNR of the mean sRGB MSE over views (XeGTAO's averaging); bias "
           "= "
           "mean(SSAO - reference), + = too bright. With temporal accumulation the RMSE is of the image after "

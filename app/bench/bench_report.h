@@ -1,9 +1,8 @@
 // Writes a benchmark's results: results.csv (per view), summary.csv (per configuration),
 // results.json (both, with the run's facts), report.md (the Pareto front and every row against
-// the baseline) and the plot through plot_pareto.py.
+// the baseline), report.html (bench/report_html.h) and the plot through plot_pareto.py.
 #pragma once
-#include "bench/sweep.h"
-#include "metrics/bench_summary.h"
+#include "bench/bench_results.h"
 
 #include <nlohmann/json.hpp>
 
@@ -12,14 +11,8 @@
 
 namespace ssao {
 
-struct BenchRun {
-    nlohmann::json facts; // runFacts() + size, frames, reference, scenes...
-    const Sweep* sweep = nullptr;
-    std::vector<ViewResult> views;
-    std::vector<ConfigSummary> summary;
-};
-
 void writeBenchFiles(const BenchRun& run, const std::string& dir);
+
 // Markdown: the run's facts, the front, the headline sentences and the full table.
 std::string benchMarkdown(const BenchRun& run, const std::string& plotFile);
 // Runs plot_pareto.py; returns false (after printing one line) when Python/matplotlib is missing.

@@ -1,8 +1,5 @@
 #include "bench/bench_run.h"
-#include "gl/readback.h"
 
-#include "metrics/evaluate.h"
-#include "output/image.h"
 #include "util/error.h"
 
 #include <array>
@@ -18,36 +15,6 @@ Settings withRadius(Settings s, float radius) {
     s.ao.radiusMode = RadiusMode::World;
     s.ao.radius = radius;
     return s;
-}
-
-ViewResult measure(Renderer& r, const Settings& s, const ReferenceImage& ref, int warmup, int frames) {
-    r.setSettings(s);
-    r.render();
-    ViewResult v;
-    v.error = evaluate(readBack(r.texture("ao.denoised"), 1), ref).metrics;
-    v.rmseFirstFrame = v.error.rmse;
-    if (r.accumulating()) { // temporal: judge the image after its frames are blended
-        do {
-            r.render();
-            ++v.frames;
-        } while (r.accumulating());
-        v.error = evaluate(readBack(r.texture("ao.denoised"), 1), ref).metrics;
-    }
-    std::vector<double> ms;
-    for (int f = 0; f < warmup + frames && frames > 0; ++f) {
-        r.invalidate();
-        const FrameReport fr = r.render();
-        double sum = 0;
-        for (const auto& p : fr.passes)
-            if (p.name != "gbuffer" && p.name != "composite" && p.gpuMs >= 0) sum += p.gpuMs;
-        if (f >= warmup) ms.push_back(sum);
-    }
-    if (!ms.empty()) {
-        v.gpuMs = median(ms);
-        v.gpuMsMin = *std::min_element(ms.begin(), ms.end());
-        v.gpuMsMax = *std::max_element(ms.begin(), ms.end());
-    }
-    return v;
 }
 
 namespace {

@@ -3,10 +3,13 @@
 
 Called by the C++ benchmark command once it has written summary.csv (one row per
 configuration) and results.csv (one row per scene, viewpoint and configuration).
-x: AO + denoise GPU time per frame (log axis); y: geometry-pixel RMSE against the
-ray-traced reference. Every configuration is a grey dot with a thin min..max time
-bar; the Pareto front (flagged by the C++ side, not recomputed) is highlighted and
-joined by a step line; the learnopengl baseline is a black star.
+x: AO + denoise GPU time per frame as a multiple of the baseline's on the same view
+and machine (the time_ratio column; log axis), so shards measured on different
+machines plot together; y: geometry-pixel RMSE against the ray-traced reference.
+Every configuration is a grey dot with a thin min..max time bar; the Pareto front
+(flagged by the C++ side, not recomputed) is highlighted and joined by a step line;
+the baseline is a black star. Only the front and the baseline are labelled (the
+built-in sweep has ~80 configurations; report.html names every point on hover).
 
 Writes OUT.png (dpi 150) and OUT.svg, and with --results also
 OUT_by_scene.png/.svg: one panel per scene, views averaged per configuration
@@ -20,6 +23,7 @@ import csv
 import math
 import os
 import sys
+import textwrap
 
 PROG = "plot_pareto"
 FRONT, DOT, BAR = "#d62728", "#9a9a9a", "#c8c8c8"  # front, other points, time bars
@@ -62,16 +66,21 @@ def read_rows(path, extra=()):
     if missing:
         fail(f"{path} lacks column(s) {', '.join(missing)}")
     rows = []
+    ratio = "time_ratio" in fields
     for n, r in enumerate(raw, start=2):
-        t, e = number(r.get("gpu_ms")), number(r.get("rmse"))
-        if t is None or e is None or t <= 0:
+        ms, e = number(r.get("gpu_ms")), number(r.get("rmse"))
+        t = number(r.get("time_ratio")) if ratio else ms
+        if t is None or e is None or t <= 0 or ms is None or ms <= 0:
             warn(f"{path}:{n}: skipping '{r.get('label')}': gpu_ms={r.get('gpu_ms')!r}, "
                  f"rmse={r.get('rmse')!r} (need finite numbers, gpu_ms > 0)")
             continue
+        scale = t / ms  # the min..max bar in the same unit as t
+        tmin, tmax = number(r.get("gpu_ms_min")), number(r.get("gpu_ms_max"))
         rows.append({"label": (r.get("label") or "").strip() or f"row {n}",
                      "scene": (r.get("scene") or "").strip() or "(no scene)",
                      "t": t, "e": e,
-                     "tmin": number(r.get("gpu_ms_min")), "tmax": number(r.get("gpu_ms_max")),
+                     "tmin": None if tmin is None else tmin * scale,
+                     "tmax": None if tmax is None else tmax * scale,
                      "baseline": flag(r.get("baseline")), "pareto": flag(r.get("pareto"))})
     if not rows:
         fail(f"no plottable rows in {path}")
@@ -91,9 +100,8 @@ def check_front(points, where):
 
 
 def place_labels(ax, points):
-    """Annotate every point; each label takes the candidate offset that overlaps the
-    legend, markers and earlier labels least. Front points and the baseline go first
-    in a legible font, the others after them in a smaller, lighter one."""
+    """Annotate the front and the baseline; each label takes the candidate offset that
+    overlaps the legend, markers and earlier labels least (the baseline first)."""
     from matplotlib.transforms import Bbox
     renderer = ax.figure.canvas.get_renderer()
     axbox = ax.get_window_extent(renderer)
@@ -115,8 +123,9 @@ def place_labels(ax, points):
                    max(0.0, min(box.y1, b.y1) - max(box.y0, b.y0)) for b in taken + [m for k, m in marks.items() if k != own])
         return area + 1e4 * out
 
-    for p in sorted(points, key=lambda p: (not p["baseline"], not p["pareto"], p["t"])):
-        strong = p["baseline"] or p["pareto"]
+    for p in sorted((p for p in points if p["baseline"] or p["pareto"]),
+                    key=lambda p: (not p["baseline"], p["t"])):
+        strong = True
         style = dict(fontsize=7 if strong else 5.5, color="#1a1a1a" if strong else "#666666",
                      fontweight="bold" if p["baseline"] else "normal", zorder=6,
                      textcoords="offset points",
@@ -176,9 +185,9 @@ def draw(ax, points, title, front_label, legend=True):
     ax.grid(True, which="major", color="#dddddd", lw=0.8)
     ax.grid(True, which="minor", axis="x", color="#eeeeee", lw=0.6)
     ax.set_axisbelow(True)
-    ax.set_xlabel("AO + denoise GPU time per frame (ms)", fontsize=9)
+    ax.set_xlabel("AO + denoise GPU time per frame (x the baseline's on the same view and machine)", fontsize=9)
     ax.set_ylabel("RMSE vs ray-traced reference (geometry pixels)", fontsize=9)
-    ax.set_title(title, fontsize=10)
+    ax.set_title("\n".join(textwrap.wrap(title, 70)), fontsize=9)
     if legend:
         ax.legend(loc="upper right", fontsize=7, framealpha=0.9)
 
@@ -195,7 +204,7 @@ def by_scene(rows):
         scenes.setdefault(r["scene"], {}).setdefault(r["label"], []).append(r)
     out = {}
     for scene, groups in scenes.items():
-        out[scene] = [{"label": label, "t": sum(r["t"] for r in g) / len(g),
+        out[scene] = [{"label": label, "t": math.exp(sum(math.log(r["t"]) for r in g) / len(g)),
                        "e": math.sqrt(sum(r["e"] ** 2 for r in g) / len(g)),
                        "tmin": min(r["t"] if r["tmin"] is None else r["tmin"] for r in g),
                        "tmax": max(r["t"] if r["tmax"] is None else r["tmax"] for r in g),
@@ -241,7 +250,8 @@ def main(argv=None):
                 draw(ax, pts, scene, "Pareto front (this scene)", legend=(i == 0))
             for ax in list(axes.flat)[len(scenes):]:
                 ax.set_visible(False)
-            fig.suptitle(f"{args.title}: per scene (mean over views; RMSE as RMS)", fontsize=11)
+            fig.suptitle("\n".join(textwrap.wrap(f"{args.title}: per scene (mean over views; RMSE as RMS)", 110)),
+                         fontsize=10)
             fig.tight_layout()
             for ax, pts in zip(axes.flat, scenes.values()):
                 place_labels(ax, pts)

@@ -44,18 +44,12 @@ void applyKeys(Settings& s, const nlohmann::json& keys, const std::string& where
     }
 }
 
-// Labels name parameters by their short name ("samples=16"), except where that would be unclear
-// ("enabled=true" means nothing without "temporal.").
-std::string shortKey(const std::string& key) {
-    if (key.rfind("temporal.", 0) == 0) return key;
-    const auto dot = key.rfind('.');
-    return dot == std::string::npos ? key : key.substr(dot + 1);
-}
-
+// Labels name parameters by their full key ("kernel.samples=16 denoise.kind=none"): a short name
+// ("kind=none") did not say which group it belonged to.
 std::string labelOf(const nlohmann::json& keys) {
     std::string l;
     for (auto& [k, v] : keys.items())
-        l += (l.empty() ? "" : " ") + shortKey(k) + "=" + valueText(v);
+        l += (l.empty() ? "" : " ") + k + "=" + valueText(v);
     return l.empty() ? "defaults" : l;
 }
 
@@ -93,14 +87,15 @@ class SweepBuilder {
         }
     }
 
-    // The baseline first, so every later row can be read against it.
-    void baseline() {
+    // The baseline first, so every later row can be read against it: any preset (learnopengl, the
+    // seed article's, by default).
+    void baseline(const std::string& preset) {
         BenchConfig c;
-        c.label = "learnopengl (baseline)";
+        c.label = preset + " (baseline)";
         c.group = "baseline";
-        c.settings = store_.open("learnopengl").settings;
+        c.settings = store_.open(preset).settings;
         resetRadius(c.settings); // the bench's radius, like every configuration
-        c.keys = {{"preset", "learnopengl"}};
+        c.keys = {{"preset", preset}};
         c.baseline = true;
         add(c);
     }
@@ -205,7 +200,7 @@ class SweepBuilder {
 } // namespace
 
 Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::string& presetDir,
-                 size_t maxConfigs) {
+                 size_t maxConfigs, const std::string& baseline) {
     if (!j.is_object()) throw Error(origin + ": a sweep is a JSON object");
     for (auto& [k, v] : j.items())
         if (k != "name" && k != "description" && k != "base" && k != "groups")
@@ -215,7 +210,7 @@ Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::
     sw.description = textField(j, "description", "", origin);
     SweepBuilder b(origin, presetDir, maxConfigs);
     if (j.contains("base")) b.base(j["base"]);
-    b.baseline();
+    b.baseline(baseline);
     if (j.contains("groups")) {
         const auto& groups = j["groups"];
         if (!groups.is_array()) throw Error(origin + ": groups: expected an array");
@@ -227,11 +222,11 @@ Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::
     return sw;
 }
 
-Sweep loadSweep(const std::string& nameOrPath, const std::string& presetDir) {
+Sweep loadSweep(const std::string& nameOrPath, const std::string& presetDir, const std::string& baseline) {
     const std::string path = nameOrPath == "builtin" ? assetRoot() + "/bench/sweep_builtin.json" : nameOrPath;
     // A regular file only (a FIFO would block for ever), nesting bounded before it is parsed or
     // copied (200 000 nested lists once crashed the copy before any validation).
-    return parseSweep(readJsonFile(path, "sweep"), "sweep " + path, presetDir);
+    return parseSweep(readJsonFile(path, "sweep"), "sweep " + path, presetDir, 2000, baseline);
 }
 
 } // namespace ssao

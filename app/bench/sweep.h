@@ -16,7 +16,7 @@
 namespace ssao {
 
 struct BenchConfig {
-    std::string label;   // "samples=16 denoise=none"; the baseline is "learnopengl (baseline)"
+    std::string label;   // "kernel.samples=16 denoise.kind=none"; the baseline is "learnopengl (baseline)"
     std::string group;   // the sweep group it came from
     Settings settings;   // before the bench's radius is applied
     nlohmann::json keys; // {"ao.power": 2, ...}: what differs from the base
@@ -34,9 +34,11 @@ bool isRadiusKey(const std::string& key);
 
 // Throws ssao::Error naming the file and the key on bad input (unknown key, bad value, radius key,
 // empty lists, more than `maxConfigs` configurations).
+// `baseline` names the preset every row is compared with.
 Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::string& presetDir = "",
-                 size_t maxConfigs = 2000);
+                 size_t maxConfigs = 2000, const std::string& baseline = "learnopengl");
 // "builtin" or a JSON file path.
-Sweep loadSweep(const std::string& nameOrPath, const std::string& presetDir = "");
+Sweep loadSweep(const std::string& nameOrPath, const std::string& presetDir = "",
+                const std::string& baseline = "learnopengl");
 
 } // namespace ssao

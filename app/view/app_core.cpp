@@ -31,7 +31,8 @@ std::string absoluteSpec(const std::string& spec) {
 AppCore::AppCore(const AppOptions& o)
     : opts_(o), store_(PresetStore::standard(o.userPresetDir)),
       frames_(o.shaderDir.empty() ? shaderRoot() : o.shaderDir, o.renderScale, o.interactiveScale, o.reference,
-              o.wake) {
+              o.wake),
+      front_(o.shaderDir.empty() ? shaderRoot() : o.shaderDir) {
     loaded_.name = "defaults";
     // A bad --preset or --scene opens the window anyway, on the defaults and the built-in scene, with
     // the problem in the status line: the user fixes it from the panel instead of reading a log.
@@ -58,8 +59,10 @@ AppCore::AppCore(const AppOptions& o)
         camera_.reset(cameraToScene(*loaded_.camera, *scene_), scene_->bounds.radius(), scene_->bounds.center());
     if (o.projection) camera_.setProjection(*o.projection);
     if (o.depth) camera_.setDepth(*o.depth);
-    if (!startupError.empty())
-        setStatus(startupError + " (showing " + spec + ")", true);
+    if (!startupError.empty()) {
+        startupError_ = startupError + " (showing " + spec + ")";
+        setStatus(startupError_, true);
+    }
     else
         setStatus("loaded " + scene_->name + (o.preset.empty() ? "" : " with preset " + loaded_.name) + "; " +
                       radiusNote(),
@@ -201,6 +204,21 @@ bool AppCore::unsavedChanges() const {
     return settings_ != loaded_.settings;
 }
 
+void AppCore::applyCandidate(const Candidate& c) {
+    settings_ = withRadiusOf(c.settings, settings_);
+    frames_.keepAwake();
+    setStatus("applied " + c.label + " (the radius stays yours)", false);
+}
+
+void AppCore::compareCandidate(const Candidate& c) {
+    splitCandidate_ = withRadiusOf(c.settings, settings_);
+    view_.splitCandidateB = c.label;
+    view_.splitKind = SplitKind::Candidate;
+    view_.mode = ViewMode::Split;
+    frames_.keepAwake();
+    setStatus("split view: A = current, B = " + c.label, false);
+}
+
 std::optional<Settings> AppCore::settingsB() {
     if (view_.mode != ViewMode::Split) return std::nullopt;
     if (view_.splitKind == SplitKind::AoOnOff) {
@@ -208,6 +226,7 @@ std::optional<Settings> AppCore::settingsB() {
         s.composite.useAo = false;
         return s;
     }
+    if (view_.splitKind == SplitKind::Candidate) return splitCandidate_;
     // The B preset is read from disk when it is chosen, not on every frame.
     if (view_.splitPresetB != cachedSplitPreset_) {
         cachedSplitPreset_ = view_.splitPresetB;
@@ -230,6 +249,12 @@ void AppCore::drawUi() {
                  ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - infoHeight));
     drawInfoStrip(frames_, inspector_, view_, ImVec2(panelWidth, io.DisplaySize.y - infoHeight),
                   ImVec2(io.DisplaySize.x - panelWidth, infoHeight));
+    try { // after the frame on screen: the front's slice of work for this frame
+        front_.update(settings_, store_, frames_, scene_);
+    } catch (const std::exception& e) {
+        front_.paused = true;
+        setStatus(std::string("front panel: ") + e.what(), true);
+    }
     frames_.endUiFrame();
 }
 

@@ -5,6 +5,7 @@
 #include "renderer.h"
 #include "settings/preset.h"
 #include "settings/preset_store.h"
+#include "front/front_panel.h"
 #include "view/camera_controller.h"
 #include "view/frame_driver.h"
 #include "view/inspector.h"
@@ -54,6 +55,10 @@ class AppCore {
     bool deletePreset(const std::string& name);
     void resetCamera();
     void selectSceneCamera(int index);
+    // A point of the front: its settings become the current ones (with the user's radius), or B of
+    // the split view, so A | B compares it with the current setting.
+    void applyCandidate(const Candidate& c);
+    void compareCandidate(const Candidate& c);
 
     // ---- Per frame ----
     // Builds the whole UI (call between ImGui::NewFrame and ImGui::Render); renders what changed.
@@ -67,6 +72,7 @@ class AppCore {
     ViewState& view() { return view_; }
     FrameDriver& frames() { return frames_; }
     Inspector& inspector() { return inspector_; }
+    FrontPanel& front() { return front_; }
     Renderer& renderer() { return frames_.renderer(); }
 
     // ---- State ----
@@ -76,6 +82,9 @@ class AppCore {
     const Scene& scene() const { return *scene_; }
     const std::string& sceneSpec() const { return sceneSpec_; }
     const std::string& status() const { return status_; }
+    // What --scene or --preset got wrong at start ("" when both loaded): the window shows it, the
+    // caller prints it on stderr and exits non-zero, so a script learns of it too.
+    const std::string& startupError() const { return startupError_; }
     bool statusIsError() const { return statusError_; }
     PresetStore& presets() { return store_; }
     CameraController& cameraController() { return camera_; }
@@ -106,14 +115,18 @@ class AppCore {
     FrameDriver frames_;
     Inspector inspector_;
     std::string status_;
+    std::string startupError_;
     bool statusError_ = false;
     std::string cachedSplitPreset_;
     std::optional<Settings> cachedSplitSettings_;
+    std::optional<Settings> splitCandidate_; // B when SplitKind::Candidate
+    FrontPanel front_;
 };
 
 // UI pieces (ui_panels.cpp, ui_params.cpp, ui_views.cpp, ui_info.cpp).
 void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size);
 void drawParameters(AppCore& app);
+void drawFrontTab(AppCore& app); // ui_front.cpp: the time-against-error front of this view
 void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size);
 // Each panel gets the parts it draws: the strip under the image reads the frames and the inspector.
 void drawInfoStrip(FrameDriver& frames, Inspector& inspector, ViewState& view, ImVec2 pos,

@@ -63,6 +63,12 @@ class LiveReference {
     Status status() const;
     // The error of ao.denoised against the snapshot shown; nullopt before the first snapshot.
     const std::optional<ErrorMetrics>& metrics() const { return metrics_; }
+    // The finished reference of the view (every ray traced), null while it is not; with the key it
+    // traced (the camera as rendered, the size) and its world radius R.
+    std::shared_ptr<const ReferenceImage> finished() const {
+        return status().state == State::Done ? shown_ : nullptr;
+    }
+    const std::optional<Key>& key() const { return key_; }
     // True when the worker reported something this object has not yet looked at.
     bool hasNews() const { return worker_.serial() != seenTrace_ || evaluator_.serial() != seenEvaluation_; }
     // True while the worker thread traces (a cancelled job until it stops).

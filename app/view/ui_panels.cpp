@@ -184,6 +184,10 @@ void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size) {
             presetSection(app);
             ImGui::EndTabItem();
         }
+        if (tab(app, "Front")) {
+            drawFrontTab(app);
+            ImGui::EndTabItem();
+        }
         ImGui::EndTabBar();
     }
     ImGui::End();

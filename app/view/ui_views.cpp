@@ -149,6 +149,10 @@ void splitControls(AppCore& app) {
     ImGui::RadioButton("AO on | off", &kind, int(SplitKind::AoOnOff));
     ImGui::SameLine();
     ImGui::RadioButton("current | preset", &kind, int(SplitKind::Preset));
+    if (!v.splitCandidateB.empty()) { // a point picked on the front (shift+click in the Front tab)
+        ImGui::SameLine();
+        ImGui::RadioButton(("current | " + v.splitCandidateB).c_str(), &kind, int(SplitKind::Candidate));
+    }
     if (kind != int(v.splitKind)) v.splitKind = SplitKind(kind), f.keepAwake();
     if (v.splitKind == SplitKind::Preset) {
         ImGui::SameLine();
@@ -306,8 +310,9 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
             dl->AddCircleFilled(ImVec2(x, (p.y + q.y) * 0.5f), 6.0f, IM_COL32(255, 255, 0, 255));
             app.view().widgetRects["split#divider"] = ImVec4(x - 4, p.y, x + 4, q.y);
             label(dl, p, "A: current  " + app.view().splitBuffer);
-            const std::string bl =
-                app.view().splitKind == SplitKind::AoOnOff ? "B: AO off" : "B: " + app.view().splitPresetB;
+            const std::string bl = app.view().splitKind == SplitKind::AoOnOff     ? "B: AO off"
+                                   : app.view().splitKind == SplitKind::Candidate ? "B: " + app.view().splitCandidateB
+                                                                                  : "B: " + app.view().splitPresetB;
             label(dl, ImVec2(q.x - ImGui::CalcTextSize(bl.c_str()).x - 10, p.y), bl);
             drawSamples(app, dl, p, sz);
         }

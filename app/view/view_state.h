@@ -14,13 +14,14 @@
 namespace ssao {
 
 enum class ViewMode { Grid, Single, Split };
-enum class SplitKind { AoOnOff, Preset };
+enum class SplitKind { AoOnOff, Preset, Candidate }; // Candidate: a point picked on the front
 
 struct ViewState {
     ViewMode mode = ViewMode::Grid;
     std::string enlarged = "composite"; // buffer shown in Single mode
     SplitKind splitKind = SplitKind::AoOnOff;
     std::string splitPresetB = "crytek-sphere";
+    std::string splitCandidateB; // the label of the front point shown as B (SplitKind::Candidate)
     std::string splitBuffer = "composite"; // what A | B compares: composite, ao.denoised or ao.raw
     bool splitDifference = false;          // show (A - B) * diffScale instead of the two halves
     float diffScale = 4.0f;

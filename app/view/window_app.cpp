@@ -10,6 +10,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -222,6 +223,12 @@ int runWindowApp(const WindowOptions& o) {
         // ready (glfwPostEmptyEvent may be called from any thread; AppCore joins it before glfwTerminate).
         appOptions.wake = [] { glfwPostEmptyEvent(); };
         AppCore app(appOptions);
+        if (!app.startupError().empty()) {
+            std::string line = app.startupError();
+            std::replace(line.begin(), line.end(), '\n', ';');
+            std::fprintf(stderr, "ssaolab: error: %s\n", line.c_str());
+            rc = 1; // the window stays open on the built-in scene; the exit status still says it failed
+        }
         glfwSetWindowUserPointer(window, &app);
         FrameLoop(window, app, o).run();
         gl::pollGlErrors();

@@ -41,14 +41,30 @@ double psnrOf(double mse) {
 }
 } // namespace
 
-std::vector<ConfigSummary> summarize(const std::vector<ViewResult>& views, size_t configCount,
-                                     size_t baseline) {
+namespace {
+// Each row's time against the baseline of its own run on its view.
+void rowRatios(std::vector<ViewResult>& views, size_t baseline) {
+    for (ViewResult& v : views) {
+        double base = v.baselineMs;
+        if (!std::isfinite(base))
+            for (const ViewResult& b : views)
+                if (b.config == baseline && b.scene == v.scene && b.viewpoint == v.viewpoint && b.shard == v.shard) {
+                    base = b.gpuMs;
+                    break;
+                }
+        v.timeRatio = base > 0 ? v.gpuMs / base : std::numeric_limits<double>::quiet_NaN();
+    }
+}
+} // namespace
+
+std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t configCount, size_t baseline) {
+    rowRatios(views, baseline);
     std::vector<ConfigSummary> out(configCount);
     for (size_t c = 0; c < configCount; ++c) {
         ConfigSummary& s = out[c];
         s.config = c;
-        double mse = 0, mseGeo = 0, mseFull = 0, edge = 0, interior = 0, mseFirst = 0;
-        int edgeViews = 0, interiorViews = 0;
+        double mse = 0, mseGeo = 0, mseFull = 0, edge = 0, interior = 0, mseFirst = 0, logRatio = 0;
+        int edgeViews = 0, interiorViews = 0, ratioViews = 0;
         s.gpuMsMin = std::numeric_limits<double>::infinity();
         s.gpuMsMax = -s.gpuMsMin;
         for (const ViewResult& v : views) {
@@ -68,6 +84,7 @@ std::vector<ConfigSummary> summarize(const std::vector<ViewResult>& views, size_
                 interior += v.error.rmseInterior * v.error.rmseInterior, ++interiorViews;
             s.ssim += v.error.ssim;
             s.nonFinite += v.error.nonFinite;
+            if (std::isfinite(v.timeRatio) && v.timeRatio > 0) logRatio += std::log(v.timeRatio), ++ratioViews;
         }
         if (s.views == 0) {
             const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -88,17 +105,16 @@ std::vector<ConfigSummary> summarize(const std::vector<ViewResult>& views, size_
         s.rmseInterior =
             interiorViews ? std::sqrt(interior / interiorViews) : std::numeric_limits<double>::quiet_NaN();
         s.ssim /= n;
+        s.timeRatio = ratioViews ? std::exp(logRatio / ratioViews) : std::numeric_limits<double>::quiet_NaN();
     }
     std::vector<double> t, e;
     for (const auto& s : out)
-        t.push_back(s.gpuMs), e.push_back(s.rmse);
+        t.push_back(s.timeRatio), e.push_back(s.rmse);
     const std::vector<bool> front = paretoFront(t, e);
     for (size_t c = 0; c < configCount; ++c) {
         out[c].pareto = front[c];
-        if (baseline < configCount) {
-            out[c].timeRatio = out[c].gpuMs / out[baseline].gpuMs;
-            out[c].rmseRatio = out[c].rmse / out[baseline].rmse;
-        }
+        out[c].rmseRatio = baseline < configCount ? out[c].rmse / out[baseline].rmse
+                                                  : std::numeric_limits<double>::quiet_NaN();
     }
     return out;
 }

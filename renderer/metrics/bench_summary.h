@@ -1,10 +1,14 @@
 // Benchmark bookkeeping, pure: per-view measurements → one summary per configuration (time
 // averaged over views, errors as the RMS over views, PSNR of the mean MSE as XeGTAO reports it),
 // ratios to the baseline measured in the same run, and the time/error Pareto front.
+// Times are only comparable on one machine: every row keeps its ratio to the baseline measured on
+// the same view by the same run (a shard of a split benchmark, bench/shard.h), and configurations
+// are ranked by those ratios, so rows measured on different machines can be merged.
 #pragma once
 #include "metrics/error_metrics.h"
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -17,6 +21,11 @@ struct ViewResult {
     ErrorMetrics error;        // of the image judged: after temporal accumulation when it is on
     double rmseFirstFrame = 0; // geometry RMSE of the first frame alone (= error.rmse without temporal)
     int frames = 1;            // frames blended into the judged image
+    // The baseline's median on this view, measured by the same run (NaN: take the baseline's row
+    // of the same scene and viewpoint), and gpuMs / it.
+    double baselineMs = std::numeric_limits<double>::quiet_NaN();
+    double timeRatio = std::numeric_limits<double>::quiet_NaN(); // set by summarize()
+    int shard = 0; // which run measured it (index into the report's shards; 0 unsharded)
 };
 
 struct ConfigSummary {
@@ -29,8 +38,9 @@ struct ConfigSummary {
     double ssim = 0;
     double rmseFirstFrame = 0; // sqrt of the mean over views of the first frame's MSE
     long nonFinite = 0;
-    double timeRatio = 0, rmseRatio = 0; // to the baseline configuration
-    bool pareto = false;
+    // To the baseline: time = geometric mean over views of each row's ratio; error = RMSE / RMSE.
+    double timeRatio = 0, rmseRatio = 0;
+    bool pareto = false; // on the front of (timeRatio, rmse)
 };
 
 double median(std::vector<double> v); // NaN when empty
@@ -39,8 +49,8 @@ double median(std::vector<double> v); // NaN when empty
 // wrong, strictly better in one). Minimises both coordinates; ties keep both.
 std::vector<bool> paretoFront(const std::vector<double>& time, const std::vector<double>& error);
 
-// One summary per configuration 0..configCount-1 (in that order), ratios against `baseline`.
-std::vector<ConfigSummary> summarize(const std::vector<ViewResult>& views, size_t configCount,
-                                     size_t baseline);
+// One summary per configuration 0..configCount-1 (in that order), ratios against `baseline`;
+// fills each view's timeRatio.
+std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t configCount, size_t baseline);
 
 } // namespace ssao

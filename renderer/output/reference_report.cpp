@@ -1,5 +1,7 @@
 #include "output/reference_report.h"
 
+#include "../../shaders/include/view_colors.h"
+
 #include <filesystem>
 
 namespace ssao {
@@ -12,6 +14,14 @@ ReferenceSettings referenceSettingsFor(const RadiusInfo& radius, int rays, Refer
     return s;
 }
 
+Image referencePreview(const ReferenceImage& ref) {
+    Image img{ref.width, ref.height, 1, ref.ao};
+    // The sky as ao.denoised.png draws it: white sky (open AO) hid every silhouette against it.
+    for (size_t i = 0; i < img.data.size(); ++i)
+        if (!(ref.geometry[i] > 0.0f)) img.data[i] = float(SSAO_SKY_GREY);
+    return img;
+}
+
 nlohmann::json writeReferenceOutputs(const FrameCapture& c, const ReferenceImage& ref, const ReferenceSettings& s,
                                      const std::string& dir) {
     auto path = [&](const std::string& f) { return (std::filesystem::path(dir) / f).string(); };
@@ -22,7 +32,7 @@ nlohmann::json writeReferenceOutputs(const FrameCapture& c, const ReferenceImage
 
     const Image refImg{ref.width, ref.height, 1, ref.ao};
     writeExr(refImg, path("ao_reference.exr"));
-    writePng(refImg, path("ao_reference.png"));
+    writePng(referencePreview(ref), path("ao_reference.png"));
     writeExr(Image{ref.width, ref.height, 1, ref.stdErr}, path("ao_reference_stderr.exr"));
     writeExr(e.error, path("error.exr"));
     writePng(errorHeatmap(e.error, ref.geometry), path("error.png"));

@@ -15,6 +15,10 @@ namespace ssao {
 // ao.radius_mode=screen, the world radius at the centre of the view).
 ReferenceSettings referenceSettingsFor(const RadiusInfo& radius, int rays, ReferenceVariant variant);
 
+// The reference as a preview (ao_reference.png, bench thumbnails): AO in [0,1], the sky in the
+// views' sky grey (SSAO_SKY_GREY), like ao.denoised.png.
+Image referencePreview(const ReferenceImage& ref);
+
 // Evaluates ao.denoised (and ao.raw) of the frame; writes the files into `dir`; returns
 // {"error": metrics of ao.denoised, "error_raw": metrics of ao.raw}.
 nlohmann::json writeReferenceOutputs(const FrameCapture& c, const ReferenceImage& ref, const ReferenceSettings& s,

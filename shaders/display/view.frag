@@ -2,6 +2,7 @@
 // Maps one buffer to a displayable RGBA8 image (renderer/display/display_range.h decides the
 // range). NaN and inf show as magenta so a numerical bug is impossible to miss; sky is dark grey.
 #include "include/bindings.h"
+#include "include/view_colors.h"
 
 layout(binding = SSAO_TEX_VIEW_SOURCE) uniform sampler2D src;
 layout(binding = SSAO_TEX_VIEW_SOURCE_B) uniform sampler2D srcB;
@@ -58,6 +59,6 @@ void main() {
         float t = ((v.r * uDecode.x + uDecode.y) - uLo.x) / span.x;
         c = uFalseColor != 0 ? viridis(t) : vec3(t);
     }
-    if (!geometry && uMode != SSAO_VIEW_COLOR) c = vec3(0.12);
+    if (!geometry && uMode != SSAO_VIEW_COLOR) c = vec3(SSAO_SKY_GREY);
     oColor = vec4(clamp(c, 0.0, 1.0), 1.0);
 }

@@ -47,9 +47,17 @@ TEST(BenchSweep, GroupsExpandToProductsDeduplicatedWithTheBaselineFirst) {
     EXPECT_EQ(s.configs[0].label, "learnopengl (baseline)");
     EXPECT_EQ(s.configs[1].settings.kernel.samples, 4);
     EXPECT_EQ(s.configs[1].settings.kernel.noise, Noise::None); // the base applies
-    EXPECT_EQ(s.configs[1].label, "kind=none noise=none samples=4");
+    // Labels name each key's group: "kind=none" alone did not say which parameter it was.
+    EXPECT_EQ(s.configs[1].label, "denoise.kind=none kernel.noise=none kernel.samples=4");
     EXPECT_EQ(s.configs[4].settings.kernel.samples, 8);
     EXPECT_EQ(s.configs[5].group, "technique defaults");
+}
+
+TEST(BenchSweep, AnyPresetCanBeTheBaseline) {
+    const Sweep s = parseSweep(nlohmann::json::parse(R"({"groups": []})"), "test", "", 2000, "gtao-high");
+    EXPECT_EQ(s.configs[s.baseline].label, "gtao-high (baseline)");
+    EXPECT_EQ(s.configs[s.baseline].settings.ao.technique, "gtao");
+    EXPECT_THROW(parseSweep(nlohmann::json::parse(R"({"groups": []})"), "test", "", 2000, "no-such-preset"), Error);
 }
 
 TEST(BenchSweep, TheBuiltinSweepCoversWhatTheIssueLists) {

@@ -35,8 +35,10 @@ TEST(BenchSummary, SummariesAverageViewsAndRatioToTheBaseline) {
     };
     // Config 0 (baseline): views with RMSE 0.1 and 0.3 → sqrt((0.01 + 0.09) / 2) = sqrt(0.05).
     // Config 1: twice as fast, RMSE 0.1 in both views.
-    const std::vector<ViewResult> views = {view(0, 10, 0.1, 20), view(0, 20, 0.3, 30), view(1, 5, 0.1, 20),
-                                           view(1, 10, 0.1, 20)};
+    std::vector<ViewResult> views = {view(0, 10, 0.1, 20), view(0, 20, 0.3, 30), view(1, 5, 0.1, 20),
+                                     view(1, 10, 0.1, 20)};
+    views[0].viewpoint = views[2].viewpoint = "a";
+    views[1].viewpoint = views[3].viewpoint = "b";
     const auto s = summarize(views, 3, 0);
     ASSERT_EQ(s.size(), 3u);
     EXPECT_EQ(s[0].views, 2);
@@ -50,11 +52,34 @@ TEST(BenchSummary, SummariesAverageViewsAndRatioToTheBaseline) {
     EXPECT_NEAR(s[0].rmseEdge, std::sqrt((0.04 + 0.36) / 2), 1e-12);
     EXPECT_TRUE(std::isnan(s[0].rmseInterior));
     EXPECT_DOUBLE_EQ(s[0].timeRatio, 1.0);
-    EXPECT_DOUBLE_EQ(s[1].timeRatio, 7.5 / 15.0);
+    EXPECT_DOUBLE_EQ(s[1].timeRatio, 0.5); // 5/10 and 10/20: each row against its own view's baseline
+    EXPECT_DOUBLE_EQ(views[3].timeRatio, 0.5);
     EXPECT_NEAR(s[1].rmseRatio, 0.1 / std::sqrt(0.05), 1e-12);
     EXPECT_TRUE(s[1].pareto);  // faster and more accurate
     EXPECT_FALSE(s[0].pareto); // dominated by config 1
     EXPECT_EQ(s[2].views, 0);  // never measured: NaN, not on the front
     EXPECT_TRUE(std::isnan(s[2].rmse));
     EXPECT_FALSE(s[2].pareto);
+}
+
+TEST(BenchSummary, RowsFromTwoMachinesAreRankedByTheirOwnBaselines) {
+    // Shard 1 ran on a machine twice as fast as shard 2: config 1 (shard 1) takes 4 ms against its
+    // baseline's 8, config 2 (shard 2) 12 ms against its baseline's 16. In milliseconds config 2
+    // would look 3x slower; against their own baselines they are 0.5 and 0.75.
+    auto row = [](size_t c, double ms, double base, double rmse, int shard) {
+        ViewResult v;
+        v.scene = "s", v.viewpoint = "camera", v.config = c, v.shard = shard;
+        v.gpuMs = v.gpuMsMin = v.gpuMsMax = ms;
+        v.baselineMs = base;
+        v.error.rmse = rmse;
+        v.error.psnrGeometrySrgb = v.error.psnrFullSrgb = 20;
+        return v;
+    };
+    std::vector<ViewResult> views = {row(0, 8, NAN, 0.2, 1), row(1, 4, 8, 0.3, 1), row(2, 12, 16, 0.1, 2)};
+    const auto s = summarize(views, 3, 0);
+    EXPECT_DOUBLE_EQ(s[0].timeRatio, 1.0);
+    EXPECT_DOUBLE_EQ(s[1].timeRatio, 0.5);
+    EXPECT_DOUBLE_EQ(s[2].timeRatio, 0.75);
+    EXPECT_TRUE(s[1].pareto && s[2].pareto); // fastest; most accurate
+    EXPECT_FALSE(s[0].pareto);               // 1.0x, RMSE 0.2: config 2 is faster and better
 }

@@ -1,0 +1,68 @@
+#include "bench/measurement.h"
+
+#include "gl/readback.h"
+
+#include <algorithm>
+
+namespace ssao {
+
+void Measurement::judge(Renderer& r, const ReferenceImage& ref) {
+    eval_ = evaluate(readBack(r.texture("ao.denoised"), 1), ref);
+    result_.error = eval_.metrics;
+}
+
+bool Measurement::step(Renderer& r, const ReferenceImage& ref) {
+    switch (phase_) {
+    case Phase::First:
+        r.setSettings(settings_);
+        r.render();
+        judge(r, ref);
+        result_.rmseFirstFrame = result_.error.rmse;
+        phase_ = r.accumulating() ? Phase::Accumulating : frames_ > 0 ? Phase::Timing : Phase::Done;
+        break;
+    case Phase::Accumulating: // temporal: judge the image after its frames are blended
+        r.setSettings(settings_); // unchanged settings keep the accumulation going
+        r.render();
+        ++result_.frames;
+        if (!r.accumulating()) {
+            judge(r, ref);
+            phase_ = frames_ > 0 ? Phase::Timing : Phase::Done;
+        }
+        break;
+    case Phase::Timing: {
+        r.setSettings(settings_);
+        r.invalidate(); // every pass runs: the time of a whole frame of this configuration
+        const FrameReport fr = r.render();
+        double sum = 0;
+        for (const auto& p : fr.passes)
+            if (p.name != "gbuffer" && p.name != "composite" && p.gpuMs >= 0) sum += p.gpuMs;
+        if (timed_++ >= warmup_) ms_.push_back(sum);
+        if (timed_ >= warmup_ + frames_) {
+            result_.gpuMs = median(ms_);
+            result_.gpuMsMin = *std::min_element(ms_.begin(), ms_.end());
+            result_.gpuMsMax = *std::max_element(ms_.begin(), ms_.end());
+            phase_ = Phase::Done;
+        }
+        break;
+    }
+    case Phase::Done:
+        break;
+    }
+    return done();
+}
+
+double Measurement::progress() const {
+    if (phase_ == Phase::Done) return 1.0;
+    const double total = 1.0 + (result_.frames - 1) + warmup_ + frames_;
+    const double doneFrames = (phase_ == Phase::First ? 0.0 : 1.0 + (result_.frames - 1)) + timed_;
+    return std::min(doneFrames / std::max(total + (phase_ == Phase::Accumulating ? 1.0 : 0.0), 1.0), 0.99);
+}
+
+ViewResult measure(Renderer& r, const Settings& s, const ReferenceImage& ref, int warmup, int frames) {
+    Measurement m(s, warmup, frames);
+    while (!m.step(r, ref)) {
+    }
+    return m.result();
+}
+
+} // namespace ssao

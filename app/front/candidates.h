@@ -1,0 +1,31 @@
+// What the explorer's front panel measures for the view on screen: every shipped preset of every
+// technique, the user's current settings, and the current settings' neighbours (AO resolution
+// full/half/quarter, each denoiser, the technique's quality ladder). Every candidate runs with the
+// world radius R the live reference traced, as `bench` gives every configuration the reference's R.
+#pragma once
+#include "settings/preset_store.h"
+#include "settings/settings.h"
+
+#include <string>
+#include <vector>
+
+namespace ssao {
+
+struct Candidate {
+    std::string label;  // "gtao-high", "current", "current + ao.resolution=half"
+    std::string origin; // "preset", "current" or "neighbour"
+    Settings settings;  // with the reference's world radius (withRadius)
+    bool baseline = false;
+    bool current = false;
+};
+
+// Distinct candidates (by effective settings; the first label wins), the baseline preset included
+// and flagged, the current settings second. Throws ssao::Error when the baseline is missing.
+std::vector<Candidate> frontCandidates(const Settings& current, const PresetStore& store, float radius,
+                                       const std::string& baseline = "learnopengl");
+
+// Settings `chosen` with the user's radius fields of `current` (the candidate measured with the
+// reference's R; applied, it keeps the radius the user chose).
+Settings withRadiusOf(Settings chosen, const Settings& current);
+
+} // namespace ssao

@@ -1,0 +1,176 @@
+// The "Front" tab: the time-against-error front of the view on screen (front/front_panel.h).
+// A plot drawn with ImGui's draw list - GPU time on a log axis, RMSE against the finished live
+// reference, the front as a step line, the current setting ringed, the baseline black, the
+// reference's noise floor as a grey band - where hovering names a point, a click applies it and
+// a shift+click compares it with the current setting in Split A|B. Under it the two one-click
+// answers and the budget box.
+#include "view/app_core.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace ssao {
+
+namespace {
+
+std::string pointText(const FrontPoint& p, const FrontPoint* base) {
+    char b[320];
+    std::snprintf(b, sizeof b, "%s\n%.3f ms GPU (AO + denoise)%s\nRMSE %.4f%s, bias %+.4f, edge RMSE %.4f",
+                  p.candidate.label.c_str(), p.result.gpuMs,
+                  base ? (", " + std::to_string(p.timeRatio).substr(0, 5) + "x the baseline's").c_str() : "",
+                  p.result.error.rmse, base ? (", " + std::to_string(p.rmseRatio).substr(0, 5) + "x").c_str() : "",
+                  p.result.error.bias, p.result.error.rmseEdge);
+    return b;
+}
+
+// The plot; returns the index of the point under the cursor (npos when none).
+size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, size_t baseline, double noise) {
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const float w = std::max(ImGui::GetContentRegionAvail().x, 200.0f), h = 260.0f;
+    ImGui::InvisibleButton("front#plot", ImVec2(w, h));
+    rememberRect(app.view(), "front#plot");
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const float L = 44, R = 8, T = 8, B = 30;
+    dl->AddRectFilled(origin, ImVec2(origin.x + w, origin.y + h), IM_COL32(250, 250, 250, 255));
+    double tlo = 1e300, thi = 0, ehi = noise * 1.2;
+    for (const auto& p : pts)
+        if (p.result.gpuMs > 0 && std::isfinite(p.result.error.rmse))
+            tlo = std::min(tlo, p.result.gpuMs), thi = std::max(thi, p.result.gpuMs), ehi = std::max(ehi, p.result.error.rmse);
+    if (!(thi > 0)) tlo = 0.1, thi = 10;
+    tlo /= 1.2, thi *= 1.2, ehi = std::max(ehi * 1.1, 1e-3);
+    if (!(thi > tlo * 1.01)) thi = tlo * 2;
+    auto X = [&](double t) { return origin.x + L + float((std::log(t) - std::log(tlo)) / (std::log(thi) - std::log(tlo))) * (w - L - R); };
+    auto Y = [&](double e) { return origin.y + h - B - float(e / ehi) * (h - T - B); };
+    const ImU32 grid = IM_COL32(225, 225, 225, 255), ink = IM_COL32(70, 70, 70, 255);
+    if (noise > 0)
+        dl->AddRectFilled(ImVec2(origin.x + L, Y(noise)), ImVec2(origin.x + w - R, Y(0)), IM_COL32(228, 228, 228, 255));
+    for (int d = int(std::floor(std::log10(tlo))); d <= int(std::ceil(std::log10(thi))); ++d)
+        for (double m : {1.0, 2.0, 5.0}) {
+            const double v = m * std::pow(10.0, d);
+            if (v < tlo || v > thi) continue;
+            dl->AddLine(ImVec2(X(v), origin.y + T), ImVec2(X(v), Y(0)), grid);
+            char b[16];
+            std::snprintf(b, sizeof b, "%g", v);
+            dl->AddText(ImVec2(X(v) - 8, Y(0) + 2), ink, b);
+        }
+    for (int k = 0; k <= 4; ++k) {
+        const double v = ehi * k / 4;
+        dl->AddLine(ImVec2(origin.x + L, Y(v)), ImVec2(origin.x + w - R, Y(v)), grid);
+        char b[16];
+        std::snprintf(b, sizeof b, "%.3f", v);
+        dl->AddText(ImVec2(origin.x + 2, Y(v) - 7), ink, b);
+    }
+    dl->AddText(ImVec2(origin.x + L, origin.y + h - 14), ink, "GPU ms (log)  ->      RMSE ^      grey: reference noise");
+    // The front as a step line, fastest first.
+    std::vector<const FrontPoint*> front;
+    for (const auto& p : pts)
+        if (p.front) front.push_back(&p);
+    std::sort(front.begin(), front.end(), [](auto* a, auto* b) { return a->result.gpuMs < b->result.gpuMs; });
+    for (size_t i = 1; i < front.size(); ++i) {
+        const ImVec2 a(X(front[i - 1]->result.gpuMs), Y(front[i - 1]->result.error.rmse));
+        const ImVec2 c(X(front[i]->result.gpuMs), Y(front[i]->result.error.rmse));
+        dl->AddLine(a, ImVec2(c.x, a.y), IM_COL32(214, 39, 40, 200), 1.5f);
+        dl->AddLine(ImVec2(c.x, a.y), c, IM_COL32(214, 39, 40, 200), 1.5f);
+    }
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    size_t hover = std::string::npos;
+    float best = 8.0f * 8.0f;
+    for (size_t i = 0; i < pts.size(); ++i) {
+        const FrontPoint& p = pts[i];
+        if (!(p.result.gpuMs > 0) || !std::isfinite(p.result.error.rmse)) continue;
+        const ImVec2 c(X(p.result.gpuMs), Y(p.result.error.rmse));
+        const ImU32 col = i == baseline ? IM_COL32(0, 0, 0, 255) : p.front ? IM_COL32(214, 39, 40, 255) : IM_COL32(150, 150, 150, 255);
+        dl->AddCircleFilled(c, i == baseline ? 5.5f : p.front ? 4.0f : 3.0f, col);
+        if (i == current) dl->AddCircle(c, 8.0f, IM_COL32(30, 110, 255, 255), 16, 2.0f);
+        const float d2 = (c.x - mouse.x) * (c.x - mouse.x) + (c.y - mouse.y) * (c.y - mouse.y);
+        if (ImGui::IsItemHovered() && d2 < best) best = d2, hover = i;
+    }
+    if (hover != std::string::npos) {
+        const ImVec2 c(X(pts[hover].result.gpuMs), Y(pts[hover].result.error.rmse));
+        dl->AddCircle(c, 6.0f, IM_COL32(0, 0, 0, 255), 12, 1.5f);
+    }
+    return hover;
+}
+
+// "label: t ms (x), RMSE e (x)" relative to the current point, and a button that applies it.
+void answer(AppCore& app, const char* question, size_t i, const std::string& key) {
+    const FrontPanel& f = app.front();
+    ImGui::TextWrapped("%s", question);
+    if (i == std::string::npos) {
+        ImGui::TextDisabled("  none measured so far");
+        return;
+    }
+    const FrontPoint& p = f.points()[i];
+    const FrontPoint& c = f.points()[f.currentIndex()];
+    ImGui::TextWrapped("  %s: %.3f ms (%.2fx current), RMSE %.4f (%.2fx current)", p.candidate.label.c_str(),
+                       p.result.gpuMs, p.result.gpuMs / c.result.gpuMs, p.result.error.rmse,
+                       p.result.error.rmse / c.result.error.rmse);
+    if (ImGui::SmallButton(("apply##" + key).c_str())) app.applyCandidate(p.candidate);
+    rememberRect(app.view(), "front#apply_" + key);
+    ImGui::SameLine();
+    if (ImGui::SmallButton(("compare in A|B##" + key).c_str())) app.compareCandidate(p.candidate);
+}
+
+} // namespace
+
+void drawFrontTab(AppCore& app) {
+    FrontPanel& f = app.front();
+    f.active = true; // measured in the background from now on
+    const FrontMeasurer& m = f.measurer();
+    const FrontMeasurer::Progress pr = m.progress();
+    if (!f.waiting().empty()) {
+        ImGui::TextWrapped("%s", f.waiting().c_str());
+    } else if (m.busy()) {
+        char b[128];
+        std::snprintf(b, sizeof b, "measuring %zu / %zu candidates, ETA %.0f s", pr.done, pr.total, pr.etaSeconds);
+        ImGui::ProgressBar(float(pr.fraction), ImVec2(-1, 0), b);
+    } else if (m.hasView()) {
+        ImGui::Text("%zu candidates measured on this view (%.1f s)", pr.total, pr.seconds);
+    }
+    rememberRect(app.view(), "front#progress");
+    ImGui::Checkbox("pause", &f.paused);
+    ImGui::SameLine();
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Every shipped preset, the current setting and its neighbours (AO resolution,\n"
+                          "denoisers, quality ladder), each with the reference's radius R: GPU time at\n"
+                          "this view's size (median of 5 frames after 2) and RMSE against the finished\n"
+                          "reference - the numbers `ssaolab bench` gives for the same view.\n"
+                          "Click a point: apply it. Shift+click: compare it with the current one in A|B.");
+    const auto& pts = f.points();
+    const size_t base = m.baselineIndex(), cur = f.currentIndex();
+    const size_t hover = plot(app, pts, cur, base, f.referenceNoise());
+    if (hover != std::string::npos) {
+        ImGui::SetTooltip("%s", pointText(pts[hover], base == std::string::npos ? nullptr : &pts[base]).c_str());
+        if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
+            if (ImGui::GetIO().KeyShift)
+                app.compareCandidate(pts[hover].candidate);
+            else
+                app.applyCandidate(pts[hover].candidate);
+        }
+    }
+    ImGui::TextDisabled("blue ring: current   black: baseline (learnopengl)   red: the front");
+    if (cur != std::string::npos) {
+        answer(app, "Cheapest at <= the current error:", f.cheapestAtMostCurrentError(), "cheapest");
+        answer(app, "Most accurate at <= the current time:", f.mostAccurateWithinCurrentTime(), "accurate");
+    }
+    ImGui::Separator();
+    ImGui::SetNextItemWidth(110);
+    ImGui::InputDouble("budget ms", &f.budgetMs, 0, 0, "%.3f");
+    rememberRect(app.view(), "front#budget_ms");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(110);
+    ImGui::InputDouble("max RMSE", &f.maxError, 0, 0, "%.4f");
+    rememberRect(app.view(), "front#max_error");
+    if (f.budgetMs > 0 || f.maxError > 0) {
+        const size_t b = f.bestForBudget();
+        if (b == std::string::npos) {
+            ImGui::TextDisabled("no candidate meets it (so far)");
+        } else if (cur != std::string::npos) {
+            answer(app, f.budgetMs > 0 ? "Most accurate within the budget:" : "Fastest at most that error:", b, "budget");
+        }
+    }
+}
+
+} // namespace ssao

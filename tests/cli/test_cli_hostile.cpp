@@ -1,0 +1,113 @@
+// Whole program on hostile input: broken third-party files, planted links, NaN options, bytes that are not UTF-8.
+#include "cli_run.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <regex>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+using namespace ssaotest;
+
+TEST(CliHostile, EveryAssimpTestModelRendersOrFailsWithOneLine) {
+    // Debian's assimp-testmodels: 53 glTF 1.0/2.0 files, many broken on purpose (indices out of
+    // range, recursive nodes, wrong JSON types, missing .bin, infinities, Draco, glTF 1.0). Each
+    // must render with finite AO or fail with one `ssaolab: error:` line: no signal, no hang.
+    namespace fs = std::filesystem;
+    const fs::path root = "/usr/share/assimp/models";
+    ASSERT_TRUE(fs::is_directory(root / "glTF2")) << "install assimp-testmodels (.ci/install-deps.sh)";
+    int rendered = 0, refused = 0;
+    for (const auto& e : fs::recursive_directory_iterator(root)) {
+        const std::string ext = e.path().extension().string();
+        if (ext != ".gltf" && ext != ".glb") continue;
+        const std::string out = outDir("assimp");
+        const std::string base = std::string(SSAOLAB_TEST_TMP) + "/assimp";
+        const std::string cmd = "timeout 60 '" + std::string(SSAOLAB_BINARY) + "' render --size 64x48 --quiet " +
+                                "--timing-frames 1 --scene '" + e.path().string() + "' --out " + out + " >" +
+                                base + ".out 2>" + base + ".err </dev/null";
+        const int status = std::system(cmd.c_str());
+        ASSERT_TRUE(WIFEXITED(status)) << e.path() << " was killed by a signal";
+        const int rc = WEXITSTATUS(status);
+        std::ifstream in(base + ".err");
+        std::stringstream err;
+        err << in.rdbuf();
+        const std::string text = err.str();
+        EXPECT_NE(rc, 124) << e.path() << " hung";
+        if (rc == 0) {
+            ++rendered;
+            std::ifstream m(out + "/metrics.json");
+            const auto j = nlohmann::json::parse(m, nullptr, false);
+            ASSERT_FALSE(j.is_discarded()) << e.path();
+            for (const auto& [name, st] : j["buffers"].items())
+                EXPECT_EQ(st.value("nonfinite", 0), 0) << e.path() << " " << name;
+        } else {
+            ++refused;
+            EXPECT_EQ(rc, 1) << e.path() << ": " << text;
+            EXPECT_EQ(text.rfind("ssaolab: error: ", 0), 0u) << e.path() << ": " << text;
+            EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << e.path() << ": " << text;
+        }
+    }
+    std::printf("assimp-testmodels: %d rendered, %d refused with one line\n", rendered, refused);
+    EXPECT_GE(rendered + refused, 50);
+    EXPECT_GE(rendered, 20);
+}
+
+TEST(CliHostile, OutputsNeverOverwriteWhatTheyMustNot) {
+    // A symlink planted at a staging name inside --out made a render overwrite a file outside it.
+    const std::string out = outDir("planted");
+    std::filesystem::remove_all(out);
+    std::filesystem::create_directories(out);
+    const std::string victim = writeTemp("victim.txt", "precious");
+    for (const char* staged : {"ao.raw.exr.exr-staged", "metrics.json.tmp1", "ao.raw.png.tmp-1-0"})
+        ASSERT_EQ(::symlink(victim.c_str(), (out + "/" + staged).c_str()), 0);
+    CliRun r = ssaolab("render --scene builtin:corner --size 64x36 --timing-frames 1 --quiet --out " + out);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(slurp(victim), "precious");
+    // tune --out a FIFO (or a device: /dev/null as root) replaced the node with a regular file.
+    const std::string fifo = std::string(SSAOLAB_TEST_TMP) + "/tune_fifo";
+    std::filesystem::remove(fifo);
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    r = ssaolab("tune --technique sao --scene builtin:corner --size 64x36 --views 2 --rounds 1 --grid 3 "
+                "--reference-rays 4 --knob sao.bias --quiet --out " + fifo);
+    expectCleanFailure(r, "is not a regular file (a FIFO)");
+    struct stat st {};
+    ASSERT_EQ(::lstat(fifo.c_str(), &st), 0);
+    EXPECT_TRUE(S_ISFIFO(st.st_mode)) << "the FIFO is still a FIFO";
+    // Two renders into one --out at once: the EXR staging name had no process id ("truncated").
+    const std::string shared = outDir("together");
+    std::filesystem::remove_all(shared);
+    const std::string cmd = std::string("'") + SSAOLAB_BINARY + "' render --scene builtin:showcase --size 160x90 "
+                            "--timing-frames 1 --quiet --out " + shared;
+    const std::string both = "(" + cmd + " & p1=$!; " + cmd + " & p2=$!; wait $p1; a=$?; wait $p2; b=$?; exit $((a + b)))";
+    EXPECT_EQ(std::system(("bash -c '" + std::regex_replace(both, std::regex("'"), "'\\''") + "'").c_str()), 0);
+    EXPECT_TRUE(std::filesystem::exists(shared + "/metrics.json"));
+}
+
+TEST(CliHostile, NanOptionsAndNonUtf8NamesGiveOneLineOrAReport) {
+    // `nan` passed CLI11's range checks: --tolerance nan switched the invariance check off.
+    expectCleanFailure(ssaolab("stress --scene builtin:corner --tolerance nan"), "not a finite number");
+    expectCleanFailure(ssaolab("--max-triangles nan render --scene builtin:corner"), "not a finite number");
+    // A scene file name that is not UTF-8 ended in a bare json exception after the images, with no
+    // metrics.json: JSON output replaces the bytes instead.
+    const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/latin1";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string src = std::string(SSAOLAB_SCENES_DIR) + "/CornellBox/";
+    std::filesystem::copy_file(src + "cornellBox.gltf", dir + "/caf\xe9.gltf");
+    std::filesystem::copy_file(src + "cornellBox.bin", dir + "/cornellBox.bin");
+    const std::string out = outDir("latin1");
+    std::filesystem::remove_all(out);
+    const CliRun r = ssaolab("render --scene '" + dir + "/caf\xe9.gltf' --size 64x36 --timing-frames 1 --quiet --out " + out);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json m = nlohmann::json::parse(slurp(out + "/metrics.json"));
+    EXPECT_NE(m["scene"]["name"].get<std::string>().find("caf\xef\xbf\xbd.gltf"), std::string::npos); // U+FFFD
+}
