@@ -89,10 +89,17 @@ std::string answerLine(const BenchRun& run, const Question& q, const AnswerConte
     std::string set;
     for (const auto& a : assignments(p.settings))
         set += " --set " + a;
+    // The preset renders one view, the first; say its own numbers when the summary is over more.
+    std::string first;
+    for (const ViewResult& v : run.views)
+        if (v.config == c && v.scene == run.views.front().scene && s.views > 1) {
+            first = " (its view '" + v.viewpoint + "' alone: RMSE " + num(v.error.rmse, 4) + ")";
+            break;
+        }
     return "answer (" + questionText(q) + "): " + cfg.label + ": " + num(s.gpuMs, 4) + " ms (" + num(s.timeRatio, 3) +
            "x the baseline's), RMSE " + num(s.rmse, 4) + " (" + num(s.rmseRatio, 3) + "x); flags:" + set +
-           "; preset " + ctx.presetPath + " (ssaolab render --preset " + ctx.presetPath + " --reference --reference-rays " +
-           std::to_string(ctx.referenceRays) + ")";
+           "; preset " + ctx.presetPath + first + " (ssaolab render --preset " + ctx.presetPath +
+           " --reference --reference-rays " + std::to_string(ctx.referenceRays) + ")";
 }
 
 } // namespace ssao

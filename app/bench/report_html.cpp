@@ -71,8 +71,8 @@ struct Point {
 
 // Time-against-error plot: log x (time x baseline), linear y (RMSE), the front as a step line,
 // the reference's noise floor as a grey band from 0.
-std::string svgPlot(const std::vector<Point>& pts, const std::string& title, double noise) {
-    const double W = 720, H = 430, L = 62, R = 18, T = 30, B = 50;
+std::string svgPlot(const std::vector<Point>& pts, const std::string& title, double noise, double W = 720) {
+    const double H = W * 0.6, L = 62, R = 18, T = 30, B = 50;
     double xlo = 1e300, xhi = 0, yhi = 0;
     for (const Point& p : pts) {
         xlo = std::min(xlo, std::min(p.t, p.tmin)), xhi = std::max(xhi, std::max(p.t, p.tmax));
@@ -306,7 +306,7 @@ std::string benchHtml(const BenchRun& run, const std::string& dir) {
         if (!byScene.count(v.scene)) sceneOrder.push_back(v.scene);
         byScene[v.scene].push_back(&v);
     }
-    const nlohmann::json& f = run.facts;
+    const nlohmann::json f = run.facts.is_object() ? run.facts : nlohmann::json::object();
     std::ostringstream h;
     h << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>ssaolab bench: "
       << esc(run.sweep.name) << "</title>" << kCheck << kStyle << "</head><body>";
@@ -329,7 +329,7 @@ std::string benchHtml(const BenchRun& run, const std::string& dir) {
     h << "<h2>All scenes</h2><div class=\"plots\">" << svgPlot(pointsOf(run, all), "all scenes", noiseOf(all)) << "</div>";
     h << "<h2>Per scene</h2><div class=\"plots\">";
     for (const auto& sc : sceneOrder)
-        h << svgPlot(pointsOf(run, byScene[sc]), sc, noiseOf(byScene[sc]));
+        h << svgPlot(pointsOf(run, byScene[sc]), sc, noiseOf(byScene[sc]), 560);
     h << "</div><h2>The front and the baseline, side by side</h2>" << thumbnails(run, dir)
       << "<h2>Every configuration</h2><p>Click a column to sort.</p>" << table(run) << kSort << "</body></html>\n";
     return h.str();

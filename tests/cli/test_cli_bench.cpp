@@ -31,7 +31,7 @@ TEST(Cli, BenchWritesResultsTheFrontAndRatiosToTheBaseline) {
         " --size 160x90 --views 2 --frames 2 --warmup 0 --reference-rays 16 --quiet --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     for (const char* f :
-         {"results.csv", "summary.csv", "results.json", "report.md", "pareto.png", "pareto.svg"})
+         {"results.csv", "summary.csv", "results.json", "report.md", "report.html", "pareto.png", "pareto.svg"})
         EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
     auto j = nlohmann::json::parse(slurp(out + "/results.json"));
     // baseline + 2 + 2 (+ every technique at its defaults, 64 samples: not a duplicate here).
@@ -60,15 +60,22 @@ TEST(Cli, BenchWritesResultsTheFrontAndRatiosToTheBaseline) {
         front += c["pareto"].get<bool>();
     }
     EXPECT_GE(front, 1);
-    // The front is consistent: no configuration is both faster and more accurate than a front member.
+    // The front is consistent: no configuration is both faster (against the baseline on the same
+    // views) and more accurate than a front member.
     for (const auto& a : cfgs) {
         if (!a["pareto"].get<bool>()) continue;
         for (const auto& b : cfgs) {
-            EXPECT_FALSE(b["gpu_ms"].get<double>() < a["gpu_ms"].get<double>() &&
+            EXPECT_FALSE(b["time_ratio"].get<double>() < a["time_ratio"].get<double>() &&
                          b["rmse"].get<double>() < a["rmse"].get<double>())
                 << a["label"] << " is dominated by " << b["label"];
         }
     }
+    // Labels name each key with its group ("kernel.samples=4", not "samples=4").
+    std::set<std::string> labels;
+    for (const auto& c : cfgs)
+        labels.insert(c["label"].get<std::string>());
+    EXPECT_TRUE(labels.count("kernel.noise=tex4x4 kernel.samples=4")) << *labels.begin();
+    EXPECT_TRUE(labels.count("denoise.kind=gaussian kernel.noise=tex4x4 kernel.samples=8"));
     for (const char* k : {"cpu", "gl_renderer", "build_type", "date", "git_revision"})
         EXPECT_TRUE(j.contains(k)) << k;
     const std::string md = slurp(out + "/report.md");
@@ -186,4 +193,109 @@ TEST(CliStress, EveryTechniqueStaysFiniteInRangeAndInvariantUnderScaleAndTransla
     EXPECT_EQ(invariant, 5 * 27);
     std::ifstream md(out + "/stability.md");
     EXPECT_TRUE(md.good());
+}
+
+namespace {
+const char* kShardSweep = R"({"name": "shards", "groups": [{"name": "k", "vary": {"kernel.samples": [4, 256]}}]})";
+std::string benchArgs(const std::string& sweep) {
+    return "bench --scene builtin:corner --scene " + std::string(SSAOLAB_SCENES_DIR) +
+           "/CornellBox/cornellBox.gltf --size 160x90 --views 2 --frames 3 --warmup 1 --reference-rays 16 --no-plot "
+           "--quiet --sweep " + sweep;
+}
+std::map<std::string, nlohmann::json> rowsByKey(const nlohmann::json& j) {
+    std::map<std::string, nlohmann::json> m;
+    for (const auto& r : j["results"])
+        m[r["scene"].get<std::string>() + "|" + r["viewpoint"].get<std::string>() + "|" + r["label"].get<std::string>()] = r;
+    return m;
+}
+} // namespace
+
+TEST(CliBench, TwoShardsMergedGiveOneRunsErrorsAndFront) {
+    const std::string sweep = writeTemp("shard_sweep.json", kShardSweep);
+    const std::string whole = outDir("shard_whole"), s1 = outDir("shard_1"), s2 = outDir("shard_2"), merged = outDir("shard_merged");
+    for (const auto& d : {whole, s1, s2, merged})
+        std::filesystem::remove_all(d);
+    ASSERT_EQ(ssaolab(benchArgs(sweep) + " --out " + whole).exitCode, 0);
+    ASSERT_EQ(ssaolab(benchArgs(sweep) + " --shard 1/2 --out " + s1).exitCode, 0);
+    ASSERT_EQ(ssaolab(benchArgs(sweep) + " --shard 2/2 --out " + s2).exitCode, 0);
+    const auto a = nlohmann::json::parse(slurp(whole + "/results.json"));
+    const auto p1 = nlohmann::json::parse(slurp(s1 + "/results.json"));
+    const auto p2 = nlohmann::json::parse(slurp(s2 + "/results.json"));
+    // Each shard did about half the units: 2 scenes x 2 views x 8 configurations = 32.
+    EXPECT_EQ(p1["results"].size() + p2["results"].size(), a["results"].size());
+    EXPECT_EQ(p1["results"].size(), 16u);
+    CliRun r = ssaolab("bench merge " + s1 + " " + s2 + " --no-plot --out " + merged);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto m = nlohmann::json::parse(slurp(merged + "/results.json"));
+    const auto ra = rowsByKey(a), rm = rowsByKey(m);
+    ASSERT_EQ(ra.size(), rm.size());
+    for (const auto& [k, row] : ra) {
+        ASSERT_TRUE(rm.count(k)) << k;
+        for (const char* f : {"rmse", "bias", "mae", "p99_abs", "ssim", "rmse_edge", "psnr_full_srgb"})
+            EXPECT_EQ(rm.at(k)[f], row[f]) << k << " " << f; // identical, not close
+        EXPECT_GT(rm.at(k)["time_ratio"].get<double>(), 0.0) << k;
+    }
+    // The same rows in the same order, and the same front (these configurations are far apart in
+    // time: 4 and 256 kernel samples, the techniques at their defaults).
+    std::vector<std::string> oa, om, fa, fm;
+    for (const auto& x : a["results"])
+        oa.push_back(x["scene"].get<std::string>() + x["viewpoint"].get<std::string>() + x["label"].get<std::string>());
+    for (const auto& x : m["results"])
+        om.push_back(x["scene"].get<std::string>() + x["viewpoint"].get<std::string>() + x["label"].get<std::string>());
+    EXPECT_EQ(oa, om);
+    for (const auto& c : a["configurations"])
+        if (c["pareto"].get<bool>()) fa.push_back(c["label"]);
+    for (const auto& c : m["configurations"])
+        if (c["pareto"].get<bool>()) fm.push_back(c["label"]);
+    EXPECT_EQ(fa, fm);
+    // The merged report names the shards and what each measured; its page embeds both shards' thumbnails.
+    EXPECT_EQ(m["shards"].size(), 2u);
+    const std::string md = slurp(merged + "/report.md");
+    EXPECT_NE(md.find("Merged from 2 shards"), std::string::npos);
+    EXPECT_NE(md.find("| 2/2 |"), std::string::npos);
+    const std::string html = slurp(merged + "/report.html");
+    EXPECT_EQ(html.find("not measured by these runs"), std::string::npos);
+    // Merging what is not one benchmark: one line each.
+    expectCleanFailure(ssaolab("bench merge " + s1 + " --out " + merged + "_x"), "shard(s) 2/2 missing");
+    expectCleanFailure(ssaolab("bench merge " + s1 + " " + s1 + " --out " + merged + "_x"), "is also in");
+    expectCleanFailure(ssaolab("bench merge " + s1 + " " + whole + " --out " + merged + "_x"), "another split");
+    expectCleanFailure(ssaolab("bench --shard 3/2"), "K/N");
+}
+
+TEST(CliBench, ABudgetGetsOneLineAPresetAndTheSameNumbersFromRender) {
+    const std::string sweep = writeTemp("answer_sweep.json", kShardSweep);
+    const std::string out = outDir("answer");
+    std::filesystem::remove_all(out);
+    CliRun r = ssaolab("bench --scene " + std::string(SSAOLAB_SCENES_DIR) +
+                       "/CornellBox/cornellBox.gltf --size 160x90 --views 1 --frames 2 --warmup 0 --reference-rays 16 "
+                       "--no-plot --quiet --baseline gtao-low --max-error 0.5 --sweep " + sweep + " --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out; // --quiet: the answer alone
+    EXPECT_NE(r.out.find("answer (at most RMSE 0.5): "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("--set ao.radius_mode=world --set ao.radius="), std::string::npos) << r.out;
+    const auto j = nlohmann::json::parse(slurp(out + "/results.json"));
+    EXPECT_EQ(j["configurations"][0]["label"], "gtao-low (baseline)"); // --baseline: any preset
+    // The fastest configuration at most 0.5 wrong is the one the line names...
+    std::string fastest;
+    double best = 1e300;
+    for (const auto& c : j["configurations"])
+        if (c["rmse"].get<double>() <= 0.5 && c["time_ratio"].get<double>() < best)
+            best = c["time_ratio"].get<double>(), fastest = c["label"];
+    EXPECT_NE(r.out.find("): " + fastest + ": "), std::string::npos) << r.out;
+    // ...and its preset renders the same numbers (scene, size, camera and R in the preset).
+    const std::string rout = outDir("answer_render");
+    std::filesystem::remove_all(rout);
+    CliRun rr = ssaolab("render --preset " + out + "/answer.json --reference --reference-rays 16 --quiet --out " + rout);
+    ASSERT_EQ(rr.exitCode, 0) << rr.err;
+    const auto metrics = nlohmann::json::parse(slurp(rout + "/metrics.json"));
+    for (const auto& c : j["configurations"])
+        if (c["label"] == fastest) {
+            EXPECT_EQ(metrics["error"]["rmse"], c["rmse"]);
+            EXPECT_EQ(metrics["error"]["bias"], c["bias"]);
+        }
+    // A question nothing meets is answered too.
+    r = ssaolab("bench --scene builtin:corner --size 64x36 --views 1 --frames 1 --warmup 0 --reference-rays 4 --no-plot "
+                "--quiet --budget-ms 0.000001 --sweep " + sweep + " --out " + out + "_none");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("answer: no configuration is within"), std::string::npos) << r.out;
 }
