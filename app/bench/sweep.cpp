@@ -44,7 +44,7 @@ void applyKeys(Settings& s, const nlohmann::json& keys, const std::string& where
     }
 }
 
-// Labels name parameters by their full key ("kernel.samples=16 denoise.kind=none"): a short name
+// Labels name parameters by their full key ("ao.resolution=half denoise.kind=none"): a short name
 // ("kind=none") did not say which group it belonged to.
 std::string labelOf(const nlohmann::json& keys) {
     std::string l;

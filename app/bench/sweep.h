@@ -16,7 +16,7 @@
 namespace ssao {
 
 struct BenchConfig {
-    std::string label;   // "kernel.samples=16 denoise.kind=none"; the baseline is "learnopengl (baseline)"
+    std::string label;   // "ao.resolution=half denoise.kind=none"; the baseline is "learnopengl (baseline)"
     std::string group;   // the sweep group it came from
     Settings settings;   // before the bench's radius is applied
     nlohmann::json keys; // {"ao.power": 2, ...}: what differs from the base

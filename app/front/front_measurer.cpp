@@ -21,27 +21,37 @@ std::string FrontView::key() const {
 }
 
 namespace {
-std::string listKey(const std::vector<Candidate>& c) {
-    std::string k;
-    for (const auto& x : c)
-        k += toEffectiveJson(x.settings).dump() + (x.current ? "*" : "") + ";";
-    return k;
+std::string settingsKey(const Candidate& c) {
+    return toEffectiveJson(c.settings).dump();
 }
 } // namespace
 
 void FrontMeasurer::request(const FrontView& view, std::vector<Candidate> candidates) {
-    const std::string key = view.key() + "#" + listKey(candidates);
+    std::string key = view.key() + "#";
+    for (const auto& c : candidates)
+        key += settingsKey(c) + (c.current ? "*" : "") + ";";
     if (key == key_) return;
     cancel();
     key_ = key;
+    viewKey_ = view.key();
     view_ = view;
     total_ = candidates.size();
-    if (auto it = cache_.find(key); it != cache_.end()) {
-        points_ = it->second;
-        return;
+    // What this view already measured (an earlier visit, or the same presets before a slider moved
+    // the current setting) comes from the cache; the rest is measured, the baseline first.
+    if (cache_.size() > 32 && !cache_.count(viewKey_)) cache_.clear();
+    const auto& cached = cache_[viewKey_];
+    for (auto& c : candidates) {
+        const auto it = cached.find(settingsKey(c));
+        if (it == cached.end()) {
+            pending_.push_back(std::move(c));
+            continue;
+        }
+        FrontPoint p = it->second;
+        p.candidate = std::move(c); // this list's label and flags
+        points_.push_back(std::move(p));
     }
-    pending_ = std::move(candidates);
-    std::reverse(pending_.begin(), pending_.end()); // popped from the back: the baseline first
+    std::reverse(pending_.begin(), pending_.end()); // popped from the back: in the list's order
+    updateFront();
 }
 
 void FrontMeasurer::cancel() {
@@ -49,6 +59,7 @@ void FrontMeasurer::cancel() {
     current_.reset();
     points_.clear();
     key_.clear();
+    viewKey_.clear();
     total_ = 0;
     secondsSpent_ = 0;
     stepsDone_ = 0;
@@ -81,7 +92,6 @@ void FrontMeasurer::work(double budgetMs) {
         spent = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     } while (busy() && spent < budgetMs);
     secondsSpent_ += spent * 1e-3;
-    if (!busy()) cache_[key_] = points_;
 }
 
 void FrontMeasurer::finishCurrent() {
@@ -89,6 +99,7 @@ void FrontMeasurer::finishCurrent() {
     p.candidate = std::move(current_->first);
     p.result = current_->second.result();
     current_.reset();
+    cache_[viewKey_][settingsKey(p.candidate)] = p;
     points_.push_back(std::move(p));
     updateFront();
 }

@@ -41,7 +41,7 @@ class FrontMeasurer {
     explicit FrontMeasurer(std::string shaderDir, int warmup = 2, int frames = 5)
         : shaderDir_(std::move(shaderDir)), warmup_(warmup), frames_(frames) {}
 
-    // Measures `candidates` on `view` unless that view and list are what is measured or cached.
+    // Measures `candidates` on `view` (those not cached for it) unless that is what runs already.
     void request(const FrontView& view, std::vector<Candidate> candidates);
     void cancel(); // the view left: stop (the measured part is dropped)
 
@@ -70,14 +70,16 @@ class FrontMeasurer {
     std::unique_ptr<Renderer> renderer_;
     std::shared_ptr<const Scene> uploaded_; // the scene renderer_ holds
     FrontView view_;
-    std::string key_;
+    std::string key_, viewKey_;
     std::vector<Candidate> pending_;
     std::optional<std::pair<Candidate, Measurement>> current_;
     std::vector<FrontPoint> points_;
     size_t total_ = 0;
     double secondsSpent_ = 0;
     int stepsDone_ = 0;
-    std::map<std::string, std::vector<FrontPoint>> cache_; // by view key + candidate list
+    // By view key, then by candidate settings: a view's points survive leaving it and coming back,
+    // and a new current setting measures only itself and its neighbours.
+    std::map<std::string, std::map<std::string, FrontPoint>> cache_;
 };
 
 } // namespace ssao

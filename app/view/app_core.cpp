@@ -6,6 +6,7 @@
 #include "util/error.h"
 #include "util/paths.h"
 
+#include <chrono>
 #include <cstdio>
 #include <optional>
 
@@ -259,7 +260,27 @@ void AppCore::drawUi() {
 }
 
 void AppCore::renderIfNeeded(int viewW, int viewH) {
+    // A technique's first use compiles its shaders: about a second on llvmpipe, one stalled frame.
+    // The frame the choice is made shows a notice instead (the render waits one frame), the frame
+    // after says how long it took.
+    const std::string technique = settings_.ao.technique;
+    if (technique != renderedTechnique_ && !renderedTechnique_.empty() && !announced_) {
+        announced_ = true;
+        setStatus("compiling " + technique + "'s shaders (the first use of a technique takes a moment)...", false);
+        frames_.keepAwake();
+        return;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
     frames_.render({camera_.camera(), settings_, settingsB(), scene_}, view_, viewW, viewH);
+    if (announced_) {
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        char b[160];
+        std::snprintf(b, sizeof b, "switched to %s (%.2f s to compile and render; switching back is instant)",
+                      technique.c_str(), s);
+        setStatus(b, false);
+        announced_ = false;
+    }
+    renderedTechnique_ = technique;
 }
 
 void AppCore::pollShaderReload() {

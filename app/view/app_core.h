@@ -120,6 +120,8 @@ class AppCore {
     std::string cachedSplitPreset_;
     std::optional<Settings> cachedSplitSettings_;
     std::optional<Settings> splitCandidate_; // B when SplitKind::Candidate
+    std::string renderedTechnique_; // of the last render (a change compiles shaders: announced first)
+    bool announced_ = false;
     FrontPanel front_;
 };
 

@@ -8,7 +8,6 @@
 namespace ssao {
 
 namespace {
-constexpr float kRadiansPerPixel = 0.005f;
 constexpr float kMaxPitch = 1.55f; // just short of straight up/down, where lookAt degenerates
 } // namespace
 
@@ -20,7 +19,8 @@ void CameraController::reset(const Camera& c, float sceneRadius, glm::vec3 scene
     cam_.up = glm::normalize(cam_.up);
 }
 
-void CameraController::rotate(float dx, float dy) {
+void CameraController::rotate(float dx, float dy, float viewWidth) {
+    const float kRadiansPerPixel = 3.14159265f / std::max(viewWidth, 1.0f);
     glm::vec3 offset = cam_.eye - cam_.target; // orbit: eye around target; fly: target around eye
     if (mode_ == Mode::Fly) offset = -offset;
     const float dist = glm::length(offset);

@@ -19,8 +19,11 @@ class CameraController {
     void setMode(Mode m) { mode_ = m; }
     Mode mode() const { return mode_; }
 
-    // Mouse drag in pixels. Orbit: rotate around the target; fly: look around.
-    void rotate(float dxPixels, float dyPixels);
+    // Mouse drag in pixels of a view `viewWidth` wide: a drag across the whole width turns half a
+    // turn (pi), whatever the window's size (a fixed 0.005 rad/px turned a small window too fast).
+    // Orbit: rotate around the target; fly: look around.
+    void rotate(float dxPixels, float dyPixels, float viewWidth = kDefaultViewWidth);
+    static constexpr float kDefaultViewWidth = 628.3185f; // pi / 0.005: 0.005 rad per pixel
     // Pan the view (target and eye together), in pixels of a viewport `viewportHeight` tall.
     void pan(float dxPixels, float dyPixels, float viewportHeight);
     // Scroll: dolly towards the target (orbit) or move forward (fly).

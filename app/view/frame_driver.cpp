@@ -26,8 +26,11 @@ FrameReport merged(const FrameReport& first, const FrameReport& second) {
 
 // What is on screen is all the frame needs: a single AO view culls the composite and the G-buffer
 // targets only it reads. The error evaluation reads the denoised AO of each chain.
+// While the cursor (or a pinned pixel) is on the image, the readout lists every buffer at it, so
+// every buffer is computed: a culled one printed "-" (reference.ao, composite in a single AO view).
+// Passes are config-keyed, so each of those runs once and stays clean while nothing changes.
 std::optional<std::set<std::string>> wantedBuffers(const Renderer& r, const ViewState& view) {
-    if (view.mode == ViewMode::Grid) return std::nullopt;
+    if (view.mode == ViewMode::Grid || view.cursorOnImage || view.pinPixel) return std::nullopt;
     std::set<std::string> wanted = {"ao.denoised", "b.ao.denoised"};
     if (view.mode == ViewMode::Single)
         wanted.insert(r.graph().find(view.enlarged) ? view.enlarged : "composite");

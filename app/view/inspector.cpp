@@ -14,21 +14,21 @@ glm::ivec2 Inspector::hoverPixel(const Renderer& r, const ViewState& view) {
 
 const std::optional<PixelInspection>& Inspector::inspection(Renderer& r, const ViewState& view, bool interacting,
                                                             std::string& error) {
-    const Resource* ao = r.graph().find(view.hoverChain ? "b.ao.raw" : "ao.raw");
+    const Resource* ao = r.graph().find(view.cursorOnB() ? "b.ao.raw" : "ao.raw");
     const uint64_t v = ao ? ao->version : 0;
     const glm::ivec2 px = hoverPixel(r, view);
     // While the view moves the AO changes every frame: keep the last record instead of running the
     // probe (a full-shader draw and a read-back) each time.
-    const bool moved = px != inspectedPixel_ || view.hoverChain != inspectedChain_;
+    const bool moved = px != inspectedPixel_ || view.cursorOnB() != inspectedChain_;
     if (moved || (v != inspectedVersion_ && !interacting)) {
         try {
-            inspection_ = r.inspect(view.hoverChain, px);
+            inspection_ = r.inspect(view.cursorOnB(), px);
         } catch (const std::exception& e) {
             inspection_.reset();
             error = e.what();
         }
         inspectedPixel_ = px;
-        inspectedChain_ = view.hoverChain;
+        inspectedChain_ = view.cursorOnB();
         inspectedVersion_ = v;
     }
     return inspection_;

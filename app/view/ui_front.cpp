@@ -83,6 +83,7 @@ size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, si
         const ImU32 col = i == baseline ? IM_COL32(0, 0, 0, 255) : p.front ? IM_COL32(214, 39, 40, 255) : IM_COL32(150, 150, 150, 255);
         dl->AddCircleFilled(c, i == baseline ? 5.5f : p.front ? 4.0f : 3.0f, col);
         if (i == current) dl->AddCircle(c, 8.0f, IM_COL32(30, 110, 255, 255), 16, 2.0f);
+        app.view().widgetRects["front#point:" + p.candidate.label] = ImVec4(c.x - 2, c.y - 2, c.x + 2, c.y + 2);
         const float d2 = (c.x - mouse.x) * (c.x - mouse.x) + (c.y - mouse.y) * (c.y - mouse.y);
         if (ImGui::IsItemHovered() && d2 < best) best = d2, hover = i;
     }

@@ -73,8 +73,10 @@ void inspectorSection(FrameDriver& frames, Inspector& inspector, ViewState& view
         ImGui::TextDisabled("hover the image to inspect a pixel");
         return;
     }
-    ImGui::Text("pixel %d, %d%s", px.x, px.y, view.hoverChain ? "  (B)" : "");
-    const std::string prefix = view.hoverChain ? "b." : "";
+    // B only while the split view shows B under the cursor (a stale tag once stayed in the grid).
+    const bool onB = view.cursorOnB();
+    ImGui::Text("pixel %d, %d%s", px.x, px.y, onB ? "  (B)" : "");
+    const std::string prefix = onB ? "b." : "";
     for (const Resource* r : frames.renderer().buffers()) {
         std::string name = r->desc.name;
         if (!prefix.empty() && frames.renderer().graph().find(prefix + name)) name = prefix + name;

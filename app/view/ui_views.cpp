@@ -57,7 +57,7 @@ bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
             app.frames().keepAwake();
         } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f) &&
                    (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
-            cc.rotate(io.MouseDelta.x, io.MouseDelta.y);
+            cc.rotate(io.MouseDelta.x, io.MouseDelta.y, app.view().viewWidth);
             moved = true;
         }
         if ((ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle)) &&
@@ -81,6 +81,7 @@ bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
                 moved = true;
             }
         }
+        app.view().cursorOnImage = true;
         if (!app.view().pinPixel) {
             const ImVec2 rel((io.MousePos.x - pos.x) / size.x, (io.MousePos.y - pos.y) / size.y);
             app.view().hoverUv = glm::vec2(std::clamp(rel.x, 0.0f, 0.99999f), std::clamp(rel.y, 0.0f, 0.99999f));
@@ -95,12 +96,14 @@ bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
 }
 
 // A label in the image's top-left corner, clipped to the image (long ranges never spill over).
+// A label over the top left of an image, wrapped onto more lines when wider than the image (a
+// clipped "x -4.96..4.96 y -4.95." once hid the ranges a user came for).
 void label(ImDrawList* dl, ImVec2 pos, const std::string& text, float maxWidth = 1e9f) {
-    const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
-    dl->PushClipRect(pos, ImVec2(pos.x + maxWidth, pos.y + ts.y + 4), true);
+    const float wrap = std::max(maxWidth - 8.0f, 40.0f);
+    const ImVec2 ts = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap);
     dl->AddRectFilled(pos, ImVec2(pos.x + ts.x + 8, pos.y + ts.y + 4), IM_COL32(0, 0, 0, 170));
-    dl->AddText(ImVec2(pos.x + 4, pos.y + 2), IM_COL32(255, 255, 255, 255), text.c_str());
-    dl->PopClipRect();
+    dl->AddText(nullptr, 0.0f, ImVec2(pos.x + 4, pos.y + 2), IM_COL32(255, 255, 255, 255), text.c_str(), nullptr,
+                wrap);
 }
 
 // The reference's buffers say how far the trace is (or why it waits) on their label.
@@ -250,9 +253,11 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
     toolbar(app);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 avail = ImGui::GetContentRegionAvail();
+    app.view().viewWidth = avail.x; // a drag across the whole view turns half a turn, in a grid cell too
     // Render at the size the enlarged view shows (1:1 pixels, framebuffer scale included).
     const ImVec2 fbScale = ImGui::GetIO().DisplayFramebufferScale;
     app.renderIfNeeded(int(avail.x * fbScale.x), int(avail.y * fbScale.y));
+    app.view().cursorOnImage = false; // set again below by the image the cursor is over
     Renderer& r = app.renderer();
     const float aspect = float(r.width()) / float(r.height());
     ImDrawList* dl = ImGui::GetWindowDrawList();

@@ -33,7 +33,11 @@ struct ViewState {
     // Where the cursor is (or the pinned point), as uv of the view (y from the top; -1: nowhere):
     // resolution independent, so it stays put when the render size changes while moving.
     glm::vec2 hoverUv{-1.0f, -1.0f};
-    int hoverChain = 0; // 1 when the cursor is over the B half of the split view
+    float viewWidth = 1000.0f;  // pixels of the main view (orbit speed: its width = half a turn)
+    bool cursorOnImage = false; // the cursor was over the image last frame (the readout wants every buffer)
+    int hoverChain = 0; // 1 when the cursor was last over the B half of the split view
+    // The cursor is on chain B now: the split view shows B there (not the grid, not A - B).
+    bool cursorOnB() const { return hoverChain && mode == ViewMode::Split && !splitDifference; }
     std::string newPresetName;
     // Rectangles of widgets drawn last frame, by parameter key or action name (for tests).
     std::map<std::string, ImVec4> widgetRects;

@@ -140,3 +140,22 @@ TEST(CameraController, ZoomingOutAFixedClipCameraNeverClipsItsScene) {
     EXPECT_EQ(z.clip, ClipMode::Fixed);
     EXPECT_NO_THROW(validateCamera(z));
 }
+
+TEST(CameraControllerScale, ADragAcrossTheViewIsHalfATurnWhateverItsSize) {
+    // 160 px turned the camera about 90 degrees in a small window; the turn now scales with the view.
+    for (float width : {400.0f, 1600.0f}) {
+        CameraController c;
+        Camera cam;
+        cam.eye = {0, 0, 5};
+        cam.target = {0, 0, 0};
+        c.reset(cam, 1.0f);
+        c.rotate(width, 0, width);
+        const glm::vec3 e = c.camera().eye;
+        EXPECT_NEAR(e.z, -5.0f, 1e-3f) << width; // half a turn around the target
+        EXPECT_NEAR(e.x, 0.0f, 1e-3f) << width;
+        c.reset(cam, 1.0f);
+        c.rotate(160, 0, width);
+        const float deg = glm::degrees(std::atan2(c.camera().eye.x, c.camera().eye.z));
+        EXPECT_NEAR(std::abs(deg), 180.0f * 160.0f / width, 0.05f) << width;
+    }
+}

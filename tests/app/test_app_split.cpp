@@ -124,3 +124,19 @@ TEST_F(AppSplit, TheDividerCanBeDraggedWithoutMovingTheCamera) {
     EXPECT_NEAR(ui_->app().view().splitPosition, 0.25f, 0.02f);
     EXPECT_EQ(ui_->app().cameraController().camera().eye, before.eye);
 }
+
+TEST_F(AppSplit, TheDividerDragsFromAnywhereAlongItsLine) {
+    // A user grabbed the line above and below its dot: that orbited the camera instead.
+    ui_->click("mode#split");
+    ui_->settle();
+    const ImVec4 v = ui_->rect("view#main");
+    for (float fy : {0.08f, 0.3f, 0.92f}) {
+        const Camera before = ui_->app().cameraController().camera();
+        const ImVec4 d = ui_->rect("split#divider");
+        const float x = (d.x + d.z) * 0.5f + 3.0f, y = d.y + (d.w - d.y) * fy;
+        const float to = ui_->app().view().splitPosition > 0.5f ? 0.3f : 0.7f;
+        ui_->drag(x, y, v.x + (v.z - v.x) * to, y);
+        EXPECT_NEAR(ui_->app().view().splitPosition, to, 0.02f) << "grabbed at " << fy << " of its height";
+        EXPECT_EQ(ui_->app().cameraController().camera().eye, before.eye) << fy;
+    }
+}

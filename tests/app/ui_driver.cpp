@@ -56,12 +56,14 @@ ImVec4 UiDriver::rect(const std::string& key) const {
     return it == app_->view().widgetRects.end() ? ImVec4(0, 0, 0, 0) : it->second;
 }
 
-void UiDriver::clickAt(float x, float y, bool ctrl) {
+void UiDriver::clickAt(float x, float y, bool ctrl, bool shift) {
     ImGuiIO& io = ImGui::GetIO();
     io.KeyCtrl = ctrl;
+    io.KeyShift = shift;
     frame(x, y, false);
     frame(x, y, true);
     io.KeyCtrl = false;
+    io.KeyShift = false;
     frame(x, y, false);
 }
 

@@ -23,7 +23,7 @@ class UiDriver {
     }
     // Press and release at the centre of a widget recorded under `key` (or at a fraction of its width).
     void click(const std::string& key, float fx = 0.5f, bool ctrl = false);
-    void clickAt(float x, float y, bool ctrl = false);
+    void clickAt(float x, float y, bool ctrl = false, bool shift = false);
     void drag(float x0, float y0, float x1, float y1, int steps = 5);
     void type(const std::string& text);
     void pressEnter();

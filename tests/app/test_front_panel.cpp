@@ -1,0 +1,205 @@
+// The explorer's front panel: its measurement gives bench's numbers for the same view (errors
+// identical, times within their spread); in the app it fills in the background once the live
+// reference is finished, a click applies a point, a shift+click compares it in Split A|B, a
+// camera move cancels it and coming back finds the view's front in the cache. Waits are bounded
+// loops of frames, never timings.
+#include "gl_fixture.h"
+#include "ui_driver.h"
+
+#include "bench/bench_run.h"
+#include "front/front_measurer.h"
+#include "headless_runner.h"
+#include "reference/reference_cache.h"
+#include "settings/params.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+using namespace ssao;
+using namespace ssaotest;
+
+namespace {
+const std::string kCornell = std::string(SSAOLAB_SCENES_DIR) + "/CornellBox/cornellBox.gltf";
+
+std::string effective(const Settings& s) {
+    return toEffectiveJson(s).dump();
+}
+} // namespace
+
+class FrontPanelTest : public GlTest {};
+
+TEST_F(FrontPanelTest, MeasuresWhatBenchMeasuresOnTheSameView) {
+    const int w = 160, h = 90;
+    auto scene = std::make_shared<const Scene>(loadScene(kCornell));
+    const float radius = 0.05f * 2.0f * scene->bounds.radius(); // bench --radius-scene 0.05
+    // The view as bench sees it: its camera, clip planes fitted by a render, the cached reference.
+    auto r = makeRenderer(*scene, withRadius(preset("learnopengl"), radius), w, h, defaultCamera(*scene));
+    r->render();
+    const Camera cam = r->camera();
+    ReferenceProvider provider(*scene);
+    auto ref = std::make_shared<const ReferenceImage>(provider.get(cam, w, h, {radius, 16, ReferenceVariant::Visibility}));
+
+    const PresetStore store = PresetStore::standard(std::string(SSAOLAB_TEST_TMP) + "/front_presets");
+    const std::set<std::string> wanted = {"learnopengl", "current", "gtao-low", "vbao-low", "sao-medium",
+                                          "current + ao.resolution=half"};
+    std::vector<Candidate> cands;
+    for (auto& c : frontCandidates(defaultSettings(), store, radius))
+        if (wanted.count(c.label)) cands.push_back(c);
+    ASSERT_EQ(cands.size(), wanted.size());
+    FrontMeasurer m(SSAOLAB_SHADER_DIR, 2, 5);
+    FrontView v{scene, 1, cam, w, h, radius, ref};
+    m.request(v, cands);
+    for (int i = 0; i < 10000 && m.busy(); ++i)
+        m.work(5.0); // slices, as between the explorer's frames
+    ASSERT_FALSE(m.busy());
+    ASSERT_EQ(m.points().size(), cands.size());
+
+    // bench on the same view, size, R, rays and configurations.
+    const std::string sweep = std::string(SSAOLAB_TEST_TMP) + "/front_sweep.json";
+    std::ofstream(sweep) << R"({"name": "front", "groups": [{"name": "half", "set": {"ao.resolution": "half"}},
+        {"name": "a", "preset": "gtao-low"}, {"name": "b", "preset": "vbao-low"}, {"name": "c", "preset": "sao-medium"}]})";
+    const std::string out = std::string(SSAOLAB_TEST_TMP) + "/front_bench";
+    std::filesystem::remove_all(out);
+    const std::string cmd = "SSAOLAB_CACHE_DIR=" + std::string(SSAOLAB_TEST_TMP) + "/cache '" + SSAOLAB_BINARY +
+                            "' bench --scene " + kCornell + " --size 160x90 --views 1 --warmup 2 --frames 5 "
+                            "--reference-rays 16 --radius-scene 0.05 --no-plot --quiet --sweep " + sweep + " --out " + out;
+    ASSERT_EQ(std::system(cmd.c_str()), 0);
+    std::ifstream in(out + "/results.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    std::map<std::string, nlohmann::json> bench; // by effective settings (the bench's R applied)
+    for (size_t c = 0; c < j["configurations"].size(); ++c) {
+        Settings s = defaultSettings();
+        applyJson(s, j["configurations"][c]["settings"], "bench");
+        bench[effective(withRadius(s, radius))] = j["results"][c];
+    }
+    for (const FrontPoint& p : m.points()) {
+        const auto it = bench.find(effective(p.candidate.settings));
+        ASSERT_NE(it, bench.end()) << p.candidate.label << " is not among bench's configurations";
+        const nlohmann::json& b = it->second;
+        // The same steps on the same reference: identical errors, not close ones.
+        EXPECT_EQ(p.result.error.rmse, b["rmse"].get<double>()) << p.candidate.label;
+        EXPECT_EQ(p.result.error.bias, b["bias"].get<double>()) << p.candidate.label;
+        EXPECT_EQ(p.result.error.ssim, b["ssim"].get<double>()) << p.candidate.label;
+        EXPECT_EQ(p.result.error.psnrGeometrySrgb, b["psnr_geometry_srgb"].get<double>()) << p.candidate.label;
+        // Times from two runs: the panel's median lies within bench's min..max, widened by 2x for a
+        // machine running other tests at the same time.
+        EXPECT_GE(p.result.gpuMs, b["gpu_ms_min"].get<double>() / 2.0) << p.candidate.label;
+        EXPECT_LE(p.result.gpuMs, b["gpu_ms_max"].get<double>() * 2.0) << p.candidate.label;
+        EXPECT_GT(p.result.gpuMs, 0.0);
+    }
+    // The front is consistent: no point both faster and more accurate than a front point.
+    for (const auto& a : m.points())
+        for (const auto& b : m.points())
+            if (a.front) {
+                EXPECT_FALSE(b.result.gpuMs < a.result.gpuMs && b.result.error.rmse < a.result.error.rmse)
+                    << a.candidate.label << " dominated by " << b.candidate.label;
+            }
+}
+
+namespace {
+class FrontPanelApp : public GlTest {
+  protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        AppOptions o;
+        o.userPresetDir = std::string(SSAOLAB_TEST_TMP) + "/front_app_presets";
+        o.scene = kCornell; // a real scene
+        o.renderScale = 0.15f;
+        o.reference = false;
+        ui_ = std::make_unique<UiDriver>(o, 1600, 900);
+        app().frames().referenceRays = 8;
+        app().frames().referenceOn = true;
+        ui_->settle();
+    }
+    void TearDown() override {
+        ui_.reset();
+        GlTest::TearDown();
+    }
+    AppCore& app() { return ui_->app(); }
+    // Frames until the front of the view is measured (bounded).
+    bool untilMeasured(int maxFrames = 20000) {
+        for (int i = 0; i < maxFrames; ++i) {
+            ui_->frame();
+            const FrontMeasurer& m = app().front().measurer();
+            if (m.hasView() && !m.busy() && !m.points().empty()) {
+                ui_->frames(2); // the plot is drawn before the frame's slice: draw it with every point
+                return true;
+            }
+        }
+        return false;
+    }
+    std::unique_ptr<UiDriver> ui_;
+};
+} // namespace
+
+TEST_F(FrontPanelApp, FillsInTheBackgroundAndAClickAppliesAPoint) {
+    EXPECT_FALSE(app().front().active) << "nothing is measured before the tab is opened";
+    ui_->click("tab#Front");
+    ASSERT_TRUE(untilMeasured());
+    const auto& pts = app().front().points();
+    // Every shipped preset, the current setting and its neighbours.
+    EXPECT_GE(pts.size(), app().presets().entries().size());
+    for (const auto& p : pts) {
+        EXPECT_TRUE(std::isfinite(p.result.error.rmse) && p.result.error.rmse > 0 && p.result.error.rmse < 0.6)
+            << p.candidate.label;
+        EXPECT_GT(p.result.gpuMs, 0.0) << p.candidate.label;
+        EXPECT_EQ(p.result.error.nonFinite, 0) << p.candidate.label;
+    }
+    const size_t cur = app().front().currentIndex(), base = app().front().measurer().baselineIndex();
+    ASSERT_NE(cur, std::string::npos);
+    ASSERT_NE(base, std::string::npos);
+    EXPECT_EQ(pts[base].candidate.label, "learnopengl");
+    EXPECT_NEAR(pts[base].timeRatio, 1.0, 1e-12);
+    EXPECT_EQ(app().front().measurer().progress().fraction, 1.0);
+    ui_->save(std::string(SSAOLAB_TEST_TMP) + "/ui_front.png");
+
+    // "Cheapest at <= the current error": a button that applies it, radius kept.
+    const Settings before = app().settings();
+    const size_t cheap = app().front().cheapestAtMostCurrentError();
+    if (cheap != std::string::npos) {
+        const Candidate c = pts[cheap].candidate;
+        EXPECT_LE(pts[cheap].result.error.rmse, pts[cur].result.error.rmse);
+        ui_->click("front#apply_cheapest");
+        EXPECT_EQ(effective(app().settings()), effective(withRadiusOf(c.settings, before)));
+        EXPECT_EQ(app().settings().ao.radiusMode, before.ao.radiusMode);
+    }
+    // A new current setting: only it and its neighbours are measured, the presets come from the cache.
+    ASSERT_TRUE(untilMeasured());
+    // Shift+click on a point: it becomes B of the split view.
+    ASSERT_TRUE(ui_->has("front#point:gtao-low"));
+    ImVec4 p = ui_->rect("front#point:gtao-low");
+    ui_->clickAt((p.x + p.z) * 0.5f, (p.y + p.w) * 0.5f, false, true);
+    EXPECT_EQ(app().view().mode, ViewMode::Split);
+    EXPECT_EQ(app().view().splitKind, SplitKind::Candidate);
+    ASSERT_TRUE(app().settingsB().has_value());
+    EXPECT_EQ(app().settingsB()->ao.technique, "gtao");
+    // A plain click applies it.
+    ASSERT_TRUE(untilMeasured());
+    p = ui_->rect("front#point:gtao-low");
+    ui_->clickAt((p.x + p.z) * 0.5f, (p.y + p.w) * 0.5f);
+    EXPECT_EQ(app().settings().ao.technique, "gtao");
+}
+
+TEST_F(FrontPanelApp, ACameraMoveCancelsAndComingBackFindsTheCachedFront) {
+    ui_->click("tab#Front");
+    ASSERT_TRUE(untilMeasured());
+    const size_t n = app().front().points().size();
+    const Camera home = app().cameraController().camera();
+    app().cameraController().rotate(60, 0);
+    app().frames().noteInteraction();
+    ui_->frame();
+    EXPECT_FALSE(app().front().measurer().busy());
+    EXPECT_NE(app().front().waiting().find("waiting for the reference"), std::string::npos) << app().front().waiting();
+    ASSERT_TRUE(untilMeasured()) << "the new view is measured in turn";
+    // Back to the first view: once its reference is finished the front is there in one frame.
+    app().cameraController().reset(home, app().scene().bounds.radius(), home.target);
+    int frames = 0;
+    while (frames++ < 20000 && !app().frames().reference().finished())
+        ui_->frame();
+    ui_->frame();
+    EXPECT_EQ(app().front().points().size(), n);
+    EXPECT_FALSE(app().front().measurer().busy()) << "measured again instead of read from the cache";
+}
