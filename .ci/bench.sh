@@ -14,10 +14,18 @@ mkdir -p "$OUT"
 # docs/bench-discussion.md) without measuring again.
 if [ -z "${BENCH_REPORT_ONLY:-}" ]; then
 "$BUILD/tests/bench_reference" --benchmark_min_time=2 2>/dev/null | tee "$OUT/reference_rays.txt"
+# The run writes a thumbnail of every configuration (for merging shards); the page keeps the
+# self-contained report.html, which embeds those of the front and the baseline only.
+RUN="$BUILD/bench-run"
+rm -rf "$RUN"
 "$BUILD/app/ssaolab" bench \
   --scene "$SCENES/CornellBox/cornellBox.gltf" --scene "$SCENES/FlightHelmet/FlightHelmet.gltf" \
   --scene "$SCENES/2CylinderEngine/2CylinderEngine.gltf" --scene "$SCENES/Lantern/Lantern.gltf" \
-  --size "$SIZE" --views 3 --frames "${BENCH_FRAMES:-10}" --out "$OUT"
+  --size "$SIZE" --views 3 --frames "${BENCH_FRAMES:-10}" --out "$RUN"
+for f in results.csv summary.csv results.json report.md report.html pareto.png pareto.svg \
+         pareto_by_scene.png pareto_by_scene.svg; do
+  cp "$RUN/$f" "$OUT/$f"
+done
 fi
 
 {
@@ -50,6 +58,9 @@ MD
   sed -e 's#](pareto.png)#](bench/pareto.png)#' "$OUT/report.md"
   echo
   echo "Per scene: ![per scene](bench/pareto_by_scene.png)"
+  echo
+  echo "The same run as a page to look at: [report.html](bench/report.html) (offline: the plots, every point named on"
+  echo "hover, the AO, signed error and reference of every front configuration and the baseline, a sortable table)."
   echo
   echo "Raw data: [results.csv](bench/results.csv), [summary.csv](bench/summary.csv), [results.json](bench/results.json)."
   if [ -f "$OUT/skips.md" ]; then
