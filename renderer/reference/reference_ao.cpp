@@ -129,6 +129,11 @@ ReferenceTracer::ReferenceTracer(const EmbreeScene& scene, const Camera& camera,
         throw Error("reference: the radius must be a positive finite number of scene units");
     if (settings.samples < 1) throw Error("reference: at least one ray per pixel is needed");
     validateCamera(camera);
+    if (settings.visibility == ReferenceVisibility::Screen && settings.variant != ReferenceVariant::Visibility)
+        throw Error("screen oracle: only the visibility variant");
+    if (settings.visibility == ReferenceVisibility::Screen)
+        screen_ = std::make_unique<ScreenLayers>(camera, width, height, settings.layers,
+                                                 settings.thickness * settings.radius);
     const size_t n = size_t(width) * size_t(height);
     hits_.assign(n, Hit{});
     depth_.assign(n, 0.0f);
@@ -162,6 +167,9 @@ ReferenceTracer::ReferenceTracer(const EmbreeScene& scene, const Camera& camera,
             storeHit(i, rh, glm::vec3(d));
             depth_[i] = float(double(rh.ray.tfar) * cosFwd);
             geometry_[i] = 1.0f;
+            if (screen_ && settings.layers > 1)
+                storeSecondLayer(i, glm::vec3(org + d * double(rh.ray.tfar)), glm::vec3(d),
+                                 std::isinf(camera.farZ) ? INFINITY : float(camera.farZ / cosFwd));
         }
     }, {});
 }
@@ -188,7 +196,26 @@ void ReferenceTracer::storeHit(size_t i, const RTCRayHit& rh, const glm::vec3& d
     }
     const glm::vec3 o = offsetRayOrigin(backOffTowardEye(p, -d, scale), ng);
     hits_[i] = Hit{o.x, o.y, o.z, n.x, n.y, n.z};
+    if (screen_) screen_->set(0, i, p, ng); // the oracle's first layer: this surface's tangent plane
     if (coincidentFace(scene_.handle(), o, ng, n, std::max(scale, rh.ray.tfar))) ambiguous_[i] = 1.0f;
+}
+
+void ReferenceTracer::storeSecondLayer(size_t i, const glm::vec3& p, const glm::vec3& d, float far) {
+    alignas(16) RTCRayHit rh{};
+    const glm::vec3 o = p + d * (settings_.layerSeparation * settings_.radius);
+    rh.ray.org_x = o.x, rh.ray.org_y = o.y, rh.ray.org_z = o.z;
+    rh.ray.dir_x = d.x, rh.ray.dir_y = d.y, rh.ray.dir_z = d.z;
+    rh.ray.tnear = 0.0f;
+    rh.ray.tfar = far;
+    rh.ray.mask = 0xffffffffu;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    rtcIntersect1(scene_.handle(), &ctx, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return;
+    glm::vec3 ng = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+    if (glm::dot(ng, d) > 0.0f) ng = -ng; // as a G-buffer would store it: facing the viewer
+    screen_->set(1, i, o + d * rh.ray.tfar, ng);
 }
 
 // A stream of AO rays handed to Embree kBatch at a time; each result lands in its pixel's tallies.
@@ -198,6 +225,12 @@ class ReferenceTracer::RayBatch {
         rtcInitIntersectContext(&ctx_); // incoherent: right for AO rays
     }
     void add(const Hit& h, const glm::vec3& dir, uint32_t pixel) {
+        if (t_.screen_) { // the oracle: what the G-buffer holds decides, not the scene
+            if (!t_.screen_->occluded(glm::vec3(h.px, h.py, h.pz), dir, t_.settings_.radius, pixel))
+                ++t_.unoccluded_[pixel];
+            ++traced;
+            return;
+        }
         RTCRayHit& r = batch_[filled_];
         r.ray.org_x = h.px, r.ray.org_y = h.py, r.ray.org_z = h.pz;
         r.ray.dir_x = dir.x, r.ray.dir_y = dir.y, r.ray.dir_z = dir.z;

@@ -10,11 +10,14 @@
 // (unoccluded = 1), for analysis against techniques that model a falloff.
 #pragma once
 #include "reference/embree_scene.h"
+#include "reference/screen_layers.h"
 #include "scene/camera.h"
 
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -24,11 +27,25 @@ enum class ReferenceVariant { Visibility, Obscurance };
 const char* variantName(ReferenceVariant v);               // "visibility" | "obscurance"
 ReferenceVariant parseVariant(const std::string& name);    // throws ssao::Error naming the choices
 
+// What decides whether an AO ray is blocked: the scene (the ground truth), or only what a G-buffer
+// holds (the screen-space oracle, screen_layers.h): the same integral, R and rays, so the oracle's
+// error against the truth is what the screen cannot see, and a technique's error against the
+// oracle is what its settings can still fix.
+enum class ReferenceVisibility { Scene, Screen };
+
 struct ReferenceSettings {
     float radius = 0.5f; // R, scene units: the same world radius the SSAO technique is given
     int samples = 512;   // rays per pixel (XeGTAO accumulates 512)
     ReferenceVariant variant = ReferenceVariant::Visibility;
     int threads = 0;     // 0 = every hardware thread; the result does not depend on it
+    ReferenceVisibility visibility = ReferenceVisibility::Scene;
+    // The oracle's screen (visibility = Screen): 1 depth layer (a G-buffer) or 2 (a deep G-buffer:
+    // the nearest surface at least `layerSeparation` x R behind the first; Mara, McGuire,
+    // Nowrouzezahrai and Luebke 2016), each surface solid for `thickness` x R behind itself
+    // (infinite: the height field GTAO assumes).
+    int layers = 1;
+    float thickness = INFINITY;
+    float layerSeparation = 0.1f;
 };
 
 // A reference frame: single-channel images, row-major, top row first.
@@ -74,8 +91,12 @@ class ReferenceTracer {
     class RayBatch;
     // The primary hit of pixel i (ray direction d): offset origin, normal, coincident-face flag.
     void storeHit(size_t i, const RTCRayHit& rh, const glm::vec3& d);
+    // The deep G-buffer's second layer at pixel i: the nearest surface at least the separation
+    // behind the first hit `p` along the primary ray d.
+    void storeSecondLayer(size_t i, const glm::vec3& p, const glm::vec3& d, float far);
 
     const EmbreeScene& scene_;
+    std::unique_ptr<ScreenLayers> screen_; // the oracle's G-buffer (visibility = Screen)
     int width_, height_;
     ReferenceSettings settings_;
     std::vector<Hit> hits_;

@@ -54,6 +54,9 @@ std::string ReferenceKey::text() const {
       << " R=" << bits(settings.radius) << " variant=" << variantName(settings.variant)
       << " rays=" << settings.samples;
     if (camera.orthographic()) s << " projection=orthographic"; // perspective keys stay as they were
+    if (settings.visibility == ReferenceVisibility::Screen)
+        s << " visibility=screen layers=" << settings.layers << " thickness=" << bits(settings.thickness)
+          << " separation=" << bits(settings.layerSeparation);
     return s.str();
 }
 

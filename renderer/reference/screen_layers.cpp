@@ -1,0 +1,88 @@
+#include "reference/screen_layers.h"
+
+#include "util/error.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ssao {
+
+ScreenLayers::ScreenLayers(const Camera& c, int width, int height, int layers, float thickness)
+    : eye_(c.eye), fwd_(glm::normalize(c.target - c.eye)), right_(glm::normalize(glm::cross(fwd_, c.up))),
+      up_(glm::cross(right_, fwd_)), tanHalf_(std::tan(glm::radians(c.fovYDeg) * 0.5f)),
+      aspect_(float(width) / float(height)), orthoHalf_(glm::length(c.target - c.eye) * tanHalf_),
+      near_(c.nearZ), ortho_(c.orthographic()), width_(width), height_(height), layers_(layers),
+      thickness_(thickness) {
+    if (layers < 1 || layers > 2) throw Error("screen oracle: 1 or 2 depth layers");
+    if (!(thickness > 0.0f)) throw Error("screen oracle: the thickness must be positive");
+    surfaces_.assign(size_t(width) * height * layers, Surface{});
+}
+
+void ScreenLayers::set(int layer, size_t pixel, const glm::vec3& point, const glm::vec3& normal) {
+    surfaces_[size_t(layer) * width_ * height_ + pixel] = {point, normal, true};
+}
+
+// The rasteriser's mapping (reference_ao.cpp PrimaryRays): NDC x = 2 (x + 0.5) / W - 1, y up;
+// window coordinates, unbounded. False behind the near plane.
+bool ScreenLayers::toScreen(const glm::vec3& p, float& fx, float& fy) const {
+    const glm::vec3 v = p - eye_;
+    const float z = glm::dot(v, fwd_);
+    if (!(z > near_)) return false;
+    const float sx = glm::dot(v, right_), sy = glm::dot(v, up_);
+    const float nx = ortho_ ? sx / (orthoHalf_ * aspect_) : sx / (z * tanHalf_ * aspect_);
+    const float ny = ortho_ ? sy / orthoHalf_ : sy / (z * tanHalf_);
+    fx = (nx + 1.0f) * 0.5f * float(width_);
+    fy = (1.0f - ny) * 0.5f * float(height_);
+    return true;
+}
+
+bool ScreenLayers::project(const glm::vec3& p, int& x, int& y, float& fx, float& fy) const {
+    if (!toScreen(p, fx, fy) || !(fx >= 0.0f && fx < float(width_) && fy >= 0.0f && fy < float(height_)))
+        return false;
+    x = int(fx), y = int(fy);
+    return true;
+}
+
+// Whether q lies behind the surface's tangent plane, along the view ray through q, by no more than
+// the thickness. u - s = dot(P - q, N) / dot(r, N): the plane's distance along r minus q's.
+bool ScreenLayers::behind(const Surface& s, const glm::vec3& q) const {
+    if (!s.valid) return false;
+    const glm::vec3 r = ortho_ ? fwd_ : glm::normalize(q - eye_);
+    const float rn = glm::dot(r, s.n);
+    float gap; // how far q lies behind the surface along r (negative: in front)
+    if (std::abs(rn) > 1e-3f)
+        gap = -glm::dot(s.p - q, s.n) / rn;
+    else // seen edge-on: compare the two points' distances along the ray
+        gap = glm::dot(q - eye_, r) - glm::dot(s.p - eye_, r);
+    return gap > 0.0f && gap <= thickness_;
+}
+
+bool ScreenLayers::occluded(const glm::vec3& o, const glm::vec3& d, float R, size_t ownPixel) const {
+    // The part in front of the near plane (behind it the screen holds nothing).
+    float tEnd = R;
+    const float zo = glm::dot(o - eye_, fwd_), dz = glm::dot(d, fwd_);
+    if (zo + dz * R <= near_) {
+        if (dz >= 0.0f) return false;
+        tEnd = (near_ * 1.0001f - zo) / dz;
+        if (!(tEnd > 0.0f)) return false;
+    }
+    // Steps of at most one pixel between the projected ends (at least one, at most 512).
+    float ax, ay, bx, by;
+    if (!toScreen(o, ax, ay) || !toScreen(o + d * tEnd, bx, by)) return false;
+    const float pixels = std::max(std::abs(bx - ax), std::abs(by - ay));
+    const int steps = std::clamp(int(std::ceil(pixels)), 1, 512);
+    const size_t plane = size_t(width_) * height_;
+    for (int k = 1; k <= steps; ++k) {
+        const glm::vec3 q = o + d * (tEnd * float(k) / float(steps));
+        int x, y;
+        float fx, fy;
+        if (!project(q, x, y, fx, fy)) continue; // not on the screen: unknown, occludes nothing
+        const size_t px = size_t(y) * width_ + x;
+        if (px == ownPixel) continue;
+        for (int l = 0; l < layers_; ++l)
+            if (behind(surfaces_[l * plane + px], q)) return true;
+    }
+    return false;
+}
+
+} // namespace ssao

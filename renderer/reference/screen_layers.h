@@ -1,0 +1,48 @@
+// The screen-space oracle's view of a frame: what a G-buffer holds, and nothing else. Per pixel
+// and per depth layer, the surface the pixel centre's ray met (its point and geometric normal:
+// its tangent plane); a surface is solid for `thickness` behind itself along the view ray (an
+// infinite thickness is the height-field assumption GTAO makes). A ray is occluded when a point
+// of it within R lies behind a layer's surface, within that thickness, at a pixel other than its
+// own; a point off screen or behind the camera is unknown to the screen, so it occludes nothing.
+// The ground truth (reference_ao.h) asks the scene instead; the difference between the two is
+// what no screen-space technique with these buffers can see.
+#pragma once
+#include "scene/camera.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace ssao {
+
+class ScreenLayers {
+  public:
+    // `thickness` in scene units (may be +inf); `layers` 1 (a G-buffer) or 2 (a deep G-buffer).
+    ScreenLayers(const Camera& camera, int width, int height, int layers, float thickness);
+
+    // The surface of `layer` at `pixel` (row-major, top row first).
+    void set(int layer, size_t pixel, const glm::vec3& point, const glm::vec3& normal);
+
+    // Marches o + t d for t in (0, R] one pixel at a time.
+    bool occluded(const glm::vec3& o, const glm::vec3& d, float R, size_t ownPixel) const;
+
+    // The pixel whose area holds world point `p` (false when off screen or behind the eye).
+    bool project(const glm::vec3& p, int& x, int& y, float& fx, float& fy) const;
+
+  private:
+    bool toScreen(const glm::vec3& p, float& fx, float& fy) const;
+    struct Surface {
+        glm::vec3 p{0.0f}, n{0.0f};
+        bool valid = false;
+    };
+    bool behind(const Surface& s, const glm::vec3& q) const;
+
+    glm::vec3 eye_, fwd_, right_, up_;
+    float tanHalf_, aspect_, orthoHalf_, near_;
+    bool ortho_;
+    int width_, height_, layers_;
+    float thickness_;
+    std::vector<Surface> surfaces_; // layer-major
+};
+
+} // namespace ssao
