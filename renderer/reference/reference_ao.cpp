@@ -133,7 +133,7 @@ ReferenceTracer::ReferenceTracer(const EmbreeScene& scene, const Camera& camera,
         throw Error("screen oracle: only the visibility variant");
     if (settings.visibility == ReferenceVisibility::Screen)
         screen_ = std::make_unique<ScreenLayers>(camera, width, height, settings.layers,
-                                                 settings.thickness * settings.radius);
+                                                 settings.thickness * settings.radius, settings.guardBand);
     const size_t n = size_t(width) * size_t(height);
     hits_.assign(n, Hit{});
     depth_.assign(n, 0.0f);
@@ -168,8 +168,40 @@ ReferenceTracer::ReferenceTracer(const EmbreeScene& scene, const Camera& camera,
             depth_[i] = float(double(rh.ray.tfar) * cosFwd);
             geometry_[i] = 1.0f;
             if (screen_ && settings.layers > 1)
-                storeSecondLayer(i, glm::vec3(org + d * double(rh.ray.tfar)), glm::vec3(d),
+                storeSecondLayer(x, y, glm::vec3(org + d * double(rh.ray.tfar)), glm::vec3(d),
                                  std::isinf(camera.farZ) ? INFINITY : float(camera.farZ / cosFwd));
+        }
+    }, {});
+    if (screen_ && settings.guardBand > 0) traceGuardBand(camera);
+}
+
+void ReferenceTracer::traceGuardBand(const Camera& camera) {
+    const int g = settings_.guardBand;
+    const PrimaryRays rays(camera, width_, height_); // linear in x, y: pixels beyond the edges too
+    parallelRows(height_ + 2 * g, threadCount(settings_.threads), [&](int row) {
+        const int y = row - g;
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        for (int x = -g; x < width_ + g; ++x) {
+            if (x >= 0 && x < width_ && y >= 0 && y < height_) continue; // the frame: traced already
+            glm::dvec3 org, d;
+            rays.ray(x, y, org, d);
+            const double cosFwd = glm::dot(d, rays.fwd);
+            alignas(16) RTCRayHit rh{};
+            rh.ray.org_x = float(org.x), rh.ray.org_y = float(org.y), rh.ray.org_z = float(org.z);
+            rh.ray.dir_x = float(d.x), rh.ray.dir_y = float(d.y), rh.ray.dir_z = float(d.z);
+            rh.ray.tnear = float(camera.nearZ / cosFwd);
+            const float far = std::isinf(camera.farZ) ? INFINITY : float(camera.farZ / cosFwd);
+            rh.ray.tfar = far;
+            rh.ray.mask = 0xffffffffu;
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            rtcIntersect1(scene_.handle(), &ctx, &rh);
+            if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+            glm::vec3 ng = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+            if (glm::dot(ng, glm::vec3(d)) > 0.0f) ng = -ng;
+            const glm::vec3 p(org + d * double(rh.ray.tfar));
+            screen_->set(0, x, y, p, ng);
+            if (settings_.layers > 1) storeSecondLayer(x, y, p, glm::vec3(d), far);
         }
     }, {});
 }
@@ -200,7 +232,7 @@ void ReferenceTracer::storeHit(size_t i, const RTCRayHit& rh, const glm::vec3& d
     if (coincidentFace(scene_.handle(), o, ng, n, std::max(scale, rh.ray.tfar))) ambiguous_[i] = 1.0f;
 }
 
-void ReferenceTracer::storeSecondLayer(size_t i, const glm::vec3& p, const glm::vec3& d, float far) {
+void ReferenceTracer::storeSecondLayer(int x, int y, const glm::vec3& p, const glm::vec3& d, float far) {
     alignas(16) RTCRayHit rh{};
     const glm::vec3 o = p + d * (settings_.layerSeparation * settings_.radius);
     rh.ray.org_x = o.x, rh.ray.org_y = o.y, rh.ray.org_z = o.z;
@@ -215,7 +247,7 @@ void ReferenceTracer::storeSecondLayer(size_t i, const glm::vec3& p, const glm::
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return;
     glm::vec3 ng = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
     if (glm::dot(ng, d) > 0.0f) ng = -ng; // as a G-buffer would store it: facing the viewer
-    screen_->set(1, i, o + d * rh.ray.tfar, ng);
+    screen_->set(1, x, y, o + d * rh.ray.tfar, ng);
 }
 
 // A stream of AO rays handed to Embree kBatch at a time; each result lands in its pixel's tallies.

@@ -46,6 +46,7 @@ struct ReferenceSettings {
     int layers = 1;
     float thickness = INFINITY;
     float layerSeparation = 0.1f;
+    int guardBand = 0; // pixels the oracle's G-buffer holds beyond each edge of the frame
 };
 
 // A reference frame: single-channel images, row-major, top row first.
@@ -93,7 +94,9 @@ class ReferenceTracer {
     void storeHit(size_t i, const RTCRayHit& rh, const glm::vec3& d);
     // The deep G-buffer's second layer at pixel i: the nearest surface at least the separation
     // behind the first hit `p` along the primary ray d.
-    void storeSecondLayer(size_t i, const glm::vec3& p, const glm::vec3& d, float far);
+    void storeSecondLayer(int x, int y, const glm::vec3& p, const glm::vec3& d, float far);
+    // The oracle's guard band: the first (and second) layer of the pixels beyond the frame's edges.
+    void traceGuardBand(const Camera& camera);
 
     const EmbreeScene& scene_;
     std::unique_ptr<ScreenLayers> screen_; // the oracle's G-buffer (visibility = Screen)

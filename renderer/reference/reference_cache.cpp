@@ -56,7 +56,7 @@ std::string ReferenceKey::text() const {
     if (camera.orthographic()) s << " projection=orthographic"; // perspective keys stay as they were
     if (settings.visibility == ReferenceVisibility::Screen)
         s << " visibility=screen layers=" << settings.layers << " thickness=" << bits(settings.thickness)
-          << " separation=" << bits(settings.layerSeparation);
+          << " separation=" << bits(settings.layerSeparation) << " guard=" << settings.guardBand;
     return s.str();
 }
 

@@ -7,19 +7,25 @@
 
 namespace ssao {
 
-ScreenLayers::ScreenLayers(const Camera& c, int width, int height, int layers, float thickness)
+ScreenLayers::ScreenLayers(const Camera& c, int width, int height, int layers, float thickness, int guard)
     : eye_(c.eye), fwd_(glm::normalize(c.target - c.eye)), right_(glm::normalize(glm::cross(fwd_, c.up))),
       up_(glm::cross(right_, fwd_)), tanHalf_(std::tan(glm::radians(c.fovYDeg) * 0.5f)),
       aspect_(float(width) / float(height)), orthoHalf_(glm::length(c.target - c.eye) * tanHalf_),
-      near_(c.nearZ), ortho_(c.orthographic()), width_(width), height_(height), layers_(layers),
+      near_(c.nearZ), ortho_(c.orthographic()), width_(width), height_(height), layers_(layers), guard_(guard),
       thickness_(thickness) {
     if (layers < 1 || layers > 2) throw Error("screen oracle: 1 or 2 depth layers");
     if (!(thickness > 0.0f)) throw Error("screen oracle: the thickness must be positive");
-    surfaces_.assign(size_t(width) * height * layers, Surface{});
+    if (guard < 0 || guard > 4096) throw Error("screen oracle: a guard band of 0..4096 pixels");
+    surfaces_.assign(size_t(width + 2 * guard) * size_t(height + 2 * guard) * layers, Surface{});
 }
 
 void ScreenLayers::set(int layer, size_t pixel, const glm::vec3& point, const glm::vec3& normal) {
-    surfaces_[size_t(layer) * width_ * height_ + pixel] = {point, normal, true};
+    set(layer, int(pixel % size_t(width_)), int(pixel / size_t(width_)), point, normal);
+}
+
+void ScreenLayers::set(int layer, int x, int y, const glm::vec3& point, const glm::vec3& normal) {
+    const size_t plane = size_t(width_ + 2 * guard_) * size_t(height_ + 2 * guard_);
+    surfaces_[size_t(layer) * plane + index(x, y)] = {point, normal, true};
 }
 
 // The rasteriser's mapping (reference_ao.cpp PrimaryRays): NDC x = 2 (x + 0.5) / W - 1, y up;
@@ -37,9 +43,10 @@ bool ScreenLayers::toScreen(const glm::vec3& p, float& fx, float& fy) const {
 }
 
 bool ScreenLayers::project(const glm::vec3& p, int& x, int& y, float& fx, float& fy) const {
-    if (!toScreen(p, fx, fy) || !(fx >= 0.0f && fx < float(width_) && fy >= 0.0f && fy < float(height_)))
+    const float g = float(guard_);
+    if (!toScreen(p, fx, fy) || !(fx >= -g && fx < float(width_) + g && fy >= -g && fy < float(height_) + g))
         return false;
-    x = int(fx), y = int(fy);
+    x = int(std::floor(fx)), y = int(std::floor(fy));
     return true;
 }
 
@@ -71,14 +78,15 @@ bool ScreenLayers::occluded(const glm::vec3& o, const glm::vec3& d, float R, siz
     if (!toScreen(o, ax, ay) || !toScreen(o + d * tEnd, bx, by)) return false;
     const float pixels = std::max(std::abs(bx - ax), std::abs(by - ay));
     const int steps = std::clamp(int(std::ceil(pixels)), 1, 512);
-    const size_t plane = size_t(width_) * height_;
+    const size_t plane = size_t(width_ + 2 * guard_) * size_t(height_ + 2 * guard_);
+    const size_t own = index(int(ownPixel % size_t(width_)), int(ownPixel / size_t(width_)));
     for (int k = 1; k <= steps; ++k) {
         const glm::vec3 q = o + d * (tEnd * float(k) / float(steps));
         int x, y;
         float fx, fy;
         if (!project(q, x, y, fx, fy)) continue; // not on the screen: unknown, occludes nothing
-        const size_t px = size_t(y) * width_ + x;
-        if (px == ownPixel) continue;
+        const size_t px = index(x, y);
+        if (px == own) continue;
         for (int l = 0; l < layers_; ++l)
             if (behind(surfaces_[l * plane + px], q)) return true;
     }

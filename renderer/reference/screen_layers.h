@@ -17,16 +17,21 @@ namespace ssao {
 
 class ScreenLayers {
   public:
-    // `thickness` in scene units (may be +inf); `layers` 1 (a G-buffer) or 2 (a deep G-buffer).
-    ScreenLayers(const Camera& camera, int width, int height, int layers, float thickness);
+    // `thickness` in scene units (may be +inf); `layers` 1 (a G-buffer) or 2 (a deep G-buffer);
+    // `guard` pixels of margin held beyond each edge of the width x height frame (a guard band).
+    ScreenLayers(const Camera& camera, int width, int height, int layers, float thickness, int guard = 0);
 
-    // The surface of `layer` at `pixel` (row-major, top row first).
+    // The surface of `layer` at `pixel` of the frame (row-major, top row first), or at (x, y) with
+    // x in [-guard, width + guard) and y likewise.
     void set(int layer, size_t pixel, const glm::vec3& point, const glm::vec3& normal);
+    void set(int layer, int x, int y, const glm::vec3& point, const glm::vec3& normal);
+    int guard() const { return guard_; }
 
     // Marches o + t d for t in (0, R] one pixel at a time.
     bool occluded(const glm::vec3& o, const glm::vec3& d, float R, size_t ownPixel) const;
 
-    // The pixel whose area holds world point `p` (false when off screen or behind the eye).
+    // The pixel (frame coordinates, the guard band included) whose area holds world point `p`
+    // (false when outside the held area or behind the eye).
     bool project(const glm::vec3& p, int& x, int& y, float& fx, float& fy) const;
 
   private:
@@ -40,7 +45,8 @@ class ScreenLayers {
     glm::vec3 eye_, fwd_, right_, up_;
     float tanHalf_, aspect_, orthoHalf_, near_;
     bool ortho_;
-    int width_, height_, layers_;
+    size_t index(int x, int y) const { return size_t(y + guard_) * size_t(width_ + 2 * guard_) + size_t(x + guard_); }
+    int width_, height_, layers_, guard_;
     float thickness_;
     std::vector<Surface> surfaces_; // layer-major
 };

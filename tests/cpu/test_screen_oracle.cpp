@@ -99,7 +99,7 @@ TEST(ScreenOracle, AThinnerSurfaceLetsRaysPassBehindIt) {
     // shell a ray can pass behind, so the floor beside it is brighter than under the height field.
     Scene s = floorScene(false);
     quad(s, {-0.5f, 0.6f, -0.5f}, {-0.5f, 0.6f, 0.5f}, {0.5f, 0.6f, 0.5f}, {0.5f, 0.6f, -0.5f}); // a floating lid
-    s.draws.back().count = uint32_t(s.indices.size());
+    s.draws.back().indexCount = uint32_t(s.indices.size());
     s.computeBounds();
     EmbreeScene rt(s);
     const Camera cam = lookDown({0.0f, 0, 0}, 4.0f, 50.0f);
@@ -122,4 +122,30 @@ TEST(ScreenOracle, BadSettingsAreRefused) {
     bad = oracle(1.0f, 4);
     bad.variant = ReferenceVariant::Obscurance;
     EXPECT_THROW(traceReference(rt, cam, 8, 8, bad), Error);
+}
+
+TEST(ScreenOracle, AGuardBandHoldsTheOccluderJustOffScreen) {
+    // The wall just outside the frame (as above): a guard band holds its foot (32 px: up to about
+    // 0.18 R high; 128 px: about 0.67 R), so the truth's darkening near the edge comes back, more
+    // of it the wider the band.
+    const Scene s = floorScene(true);
+    EmbreeScene rt(s);
+    const float R = 1.0f;
+    const Camera cam = lookDown({0.8f, 0, 0}, 1.0f, 40.0f);
+    const int w = 64, h = 48;
+    const ReferenceImage truth = traceReference(rt, cam, w, h, {R, 256});
+    std::vector<double> rmse;
+    for (int g : {0, 32, 128}) {
+        ReferenceSettings band = oracle(R, 256);
+        band.guardBand = g;
+        const ReferenceImage img = traceReference(rt, cam, w, h, band);
+        double se = 0;
+        for (size_t i = 0; i < truth.ao.size(); ++i)
+            se += (img.ao[i] - truth.ao[i]) * (img.ao[i] - truth.ao[i]);
+        rmse.push_back(std::sqrt(se / double(truth.ao.size())));
+        std::printf("oracle vs truth near an off-screen wall, guard band %3d px: RMSE %.4f\n", g, rmse.back());
+    }
+    EXPECT_GT(rmse[0], 0.05);
+    EXPECT_LT(rmse[1], rmse[0]);
+    EXPECT_LT(rmse[2], 0.5 * rmse[0]);
 }
