@@ -15,7 +15,9 @@ CLI::Validator cliRange(double lo, double hi) {
             char* end = nullptr;
             const double v = std::strtod(text.c_str(), &end);
             if (end == text.c_str() || *end != '\0') return "'" + text + "' is not a number";
-            if (!std::isfinite(v)) return "'" + text + "' is not a finite number";
+            // +inf only where the range is open above (a thickness may be infinite); NaN never.
+            if (!std::isfinite(v) && !(v > 0 && std::isinf(v) && std::isinf(hi)))
+                return "'" + text + "' is not a finite number";
             if (v < lo || v > hi) return "'" + text + "' is outside [" + CLI::detail::to_string(lo) + ", " +
                                          CLI::detail::to_string(hi) + "]";
             return {};

@@ -2,6 +2,8 @@
 
 #include "headless_runner.h"
 #include "display/capture.h"
+#include "metrics/evaluate.h"
+#include "output/image.h"
 #include "output/reference_report.h"
 #include "output/report.h"
 #include "progress_bar.h"
@@ -57,6 +59,17 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         ->capture_default_str()
         ->check(CLI::IsMember({"visibility", "obscurance"}));
     cmd.add_flag("--no-cache", o.noCache, "trace the reference even if the cache holds it");
+    cmd.add_option("--oracle-layers", o.oracleLayers,
+                   "with --reference: depth layers of the screen-space oracle's G-buffer (2: a deep G-buffer)")
+        ->capture_default_str()
+        ->check(cliRange(1, 2));
+    cmd.add_option("--oracle-thickness", o.oracleThickness,
+                   "with --reference: thickness of the oracle's surfaces, x R (inf: a height field)")
+        ->capture_default_str()
+        ->check(cliRange(1e-3, INFINITY));
+    cmd.add_option("--oracle-guard", o.oracleGuard, "with --reference: pixels the oracle's G-buffer holds beyond each edge")
+        ->capture_default_str()
+        ->check(cliRange(0, 4096));
     cmd.add_option("--shaders", o.shaderDir,
                    "shader folder (default: the installed or source tree's shaders/)");
     cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)");
@@ -202,12 +215,44 @@ std::string judgeAgainstReference(const RenderOptions& o, const Renderer& r, con
     e["error"]["reference"]["cached"] = cached;
     m["error"] = e["error"];
     m["error_raw"] = e["error_raw"];
+    // The split: the screen-space oracle of the same view (what the G-buffer alone decides), the
+    // AO against it (the technique's share) and it against the truth (the screen's).
+    std::string split;
+    if (rs.variant == ReferenceVariant::Visibility) {
+        ReferenceSettings os = rs;
+        os.visibility = ReferenceVisibility::Screen;
+        os.layers = o.oracleLayers;
+        os.thickness = float(o.oracleThickness);
+        os.guardBand = o.oracleGuard;
+        ReferenceImage oracle;
+        {
+            ProgressBar bar("screen-space oracle", !o.quiet);
+            oracle = provider.get(r.camera(), r.width(), r.height(), os, [&](double f) { bar.update(f); });
+        }
+        const Image oracleImg{oracle.width, oracle.height, 1, oracle.ao};
+        writeExr(oracleImg, (std::filesystem::path(o.out) / "ao_oracle.exr").string());
+        writePng(referencePreview(oracle), (std::filesystem::path(o.out) / "ao_oracle.png").string());
+        const ErrorMetrics tech = evaluate(frame.get("ao.denoised").values, oracle).metrics;
+        const ErrorMetrics screen = evaluate(oracleImg, ref).metrics;
+        m["error_split"] = {{"oracle", {{"layers", os.layers},
+                                        {"thickness_r", std::isinf(os.thickness) ? nlohmann::json("inf") : nlohmann::json(os.thickness)},
+                                        {"guard_band_px", os.guardBand},
+                                        {"files", {"ao_oracle.exr", "ao_oracle.png"}}}},
+                            {"technique", metricsJson(tech, oracle, os)},
+                            {"screen", metricsJson(screen, ref, rs)},
+                            {"note", "technique: ao.denoised against the screen-space oracle (what settings can "
+                                     "still fix); screen: the oracle against the truth (what the G-buffer does not hold)"}};
+        char b[200];
+        std::snprintf(b, sizeof b, "; split: technique (vs the screen-space oracle) %.4f, screen (oracle vs truth) %.4f",
+                      tech.rmse, screen.rmse);
+        split = b;
+    }
     writeFileAtomically((std::filesystem::path(o.out) / "metrics.json").string(), dumpJson(m) + "\n");
     const auto& j = m["error"];
-    char line[512];
+    char line[768];
     std::snprintf(line, sizeof line,
                   "reference (%s, R %.4g, %d rays%s): RMSE %.4f, MAE %.4f, bias %+.4f, PSNR %.2f dB (geometry, "
-                  "sRGB), %.2f dB full frame, SSIM %.4f; reference noise %.4f%s\n",
+                  "sRGB), %.2f dB full frame, SSIM %.4f; reference noise %.4f%s%s\n",
                   variantName(rs.variant), rs.radius, rs.samples,
                   cached ? ", cached"
                          : (", " + std::to_string(int(ref.raysPerSecond() * 1e-6 + 0.5)) + " Mrays/s").c_str(),
@@ -217,7 +262,8 @@ std::string judgeAgainstReference(const RenderOptions& o, const Renderer& r, con
                   ref.ambiguousPixels() ? ("; " + std::to_string(ref.ambiguousPixels()) +
                                            " ambiguous pixels (coincident faces) left out")
                                               .c_str()
-                                        : "");
+                                        : "",
+                  split.c_str());
     return line;
 }
 

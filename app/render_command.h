@@ -29,6 +29,9 @@ struct RenderOptions {
     int referenceRays = 512;       // rays per pixel
     std::string referenceVariant = "visibility";
     bool noCache = false;          // trace even when the reference cache has this view
+    int oracleLayers = 1;          // the screen-space oracle's depth layers (2: a deep G-buffer)
+    double oracleThickness = 1.0;  // its surfaces' thickness, x R (inf: a height field)
+    int oracleGuard = 0;           // pixels its G-buffer holds beyond each edge
     bool verboseGl = false;
     bool quiet = false;
 };

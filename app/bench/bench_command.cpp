@@ -7,6 +7,7 @@
 #include "bench/thumbnails.h"
 #include "bench/viewpoints.h"
 #include "headless_runner.h"
+#include "metrics/evaluate.h"
 #include "progress_bar.h"
 #include "reference/reference_cache.h"
 #include "render_command.h"
@@ -60,6 +61,15 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
     cmd.add_option("--out", o.out, "output folder")->capture_default_str();
     cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)");
     cmd.add_option("--baseline", o.baseline, "the preset every row is compared with")->capture_default_str();
+    cmd.add_flag(
+        "--no-oracle", [&o](int64_t) { o.oracle = false; },
+        "skip the screen-space oracle (no split of the error into the technique's and the screen's)");
+    cmd.add_option("--oracle-layers", o.oracleLayers, "depth layers the oracle's G-buffer holds (2: a deep G-buffer)")
+        ->capture_default_str()
+        ->check(cliRange(1, 2));
+    cmd.add_option("--oracle-thickness", o.oracleThickness,
+                   "thickness of the oracle's surfaces, x R (inf: a height field, GTAO's assumption)")
+        ->check(cliRange(1e-3, INFINITY));
     cmd.add_option("--shard", o.shard,
                    "K/N: run the K-th of N equal parts of the work (scenes x views x configurations); join "
                    "the parts with `ssaolab bench merge`")
@@ -123,6 +133,20 @@ class SceneBench {
             ref = provider.get(r_.camera(), r_.width(), r_.height(), {radius, o_.referenceRays, variant_},
                                [&](double f) { bar.update(f); }, &cached);
         }
+        // The screen-space oracle of the same view, R and rays: what the G-buffer alone decides.
+        std::optional<ReferenceImage> oracle;
+        ErrorMetrics screen;
+        if (o_.oracle) {
+            ReferenceSettings os{radius, o_.referenceRays, variant_};
+            os.visibility = ReferenceVisibility::Screen;
+            os.layers = o_.oracleLayers;
+            os.thickness = float(o_.oracleThickness);
+            ProgressBar bar("  oracle " + scene.name + " " + vname, !o_.quiet);
+            oracle = provider.get(r_.camera(), r_.width(), r_.height(), os, [&](double f) { bar.update(f); });
+            screen = evaluate(Image{oracle->width, oracle->height, 1, oracle->ao}, ref).metrics;
+        }
+        oracle_ = oracle ? &*oracle : nullptr;
+        screen_ = screen;
         const std::string thumbs = thumbnailDir(o_.out, scene.name, vname);
         if (vi == 0) writeReferenceThumbnail(thumbs, ref);
         ProgressBar bar("  " + scene.name + " " + vname + ": " + std::to_string(configs.size()) + " configurations",
@@ -151,11 +175,12 @@ class SceneBench {
                    const std::string& thumbs) {
         const BenchConfig& cfg = run_.sweep.configs[c];
         Measurement m(withRadius(cfg.settings, radius), o_.warmup, o_.frames);
-        while (!m.step(r_, ref)) {
+        while (!m.step(r_, ref, oracle_)) {
         }
         runner_.checkGl("measuring " + cfg.label + " on " + scene + " " + vname);
         if (!thumbs.empty()) writeThumbnails(thumbs, c, m.evaluation(), ref);
         ViewResult v = m.result();
+        if (v.hasSplit) v.screen = screen_;
         v.scene = scene;
         v.viewpoint = vname;
         v.config = c;
@@ -168,6 +193,8 @@ class SceneBench {
     Renderer& r_;
     BenchRun& run_;
     ReferenceVariant variant_;
+    const ReferenceImage* oracle_ = nullptr; // of the view being measured
+    ErrorMetrics screen_;                    // its oracle against the truth
 };
 
 void printBenchSummary(const BenchRun& run, const std::string& out, bool plot) {
@@ -254,6 +281,10 @@ int runBench(const BenchOptions& o) {
                               {"variant", o.referenceVariant},
                               {"rays", o.referenceRays},
                               {"radius_scene", o.radiusScene}};
+    if (o.oracle)
+        run.facts["oracle"] = {{"layers", o.oracleLayers},
+                               {"thickness_r", std::isinf(o.oracleThickness) ? nlohmann::json("inf")
+                                                                             : nlohmann::json(o.oracleThickness)}};
     run.facts["scene_specs"] = specs;
     run.facts["scenes"] = nlohmann::json::array();
     std::unique_ptr<Renderer> r = runner.makeRenderer(w, h);

@@ -6,6 +6,7 @@
 #include "bench/bench_answer.h"
 #include "bench/bench_results.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,9 @@ struct BenchOptions {
     std::string out = "bench-out";
     std::string presetDir;
     std::string baseline = "learnopengl"; // the preset every row is compared with
+    bool oracle = true;                   // trace the screen-space oracle: split every error
+    int oracleLayers = 1;                 // its depth layers (2: a deep G-buffer)
+    double oracleThickness = 1.0;         // its surfaces' thickness, x R (inf: a height field)
     std::string shard = "1/1";            // K/N: run only this part of the work (bench/shard.h)
     double budgetMs = 0, maxError = 0;    // the question to answer (bench/bench_answer.h); 0 = none
     bool plot = true;

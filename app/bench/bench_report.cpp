@@ -1,6 +1,7 @@
 #include "bench/bench_report.h"
 
 #include "bench/report_html.h"
+#include "bench/split_report.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/json_file.h"
@@ -73,13 +74,14 @@ std::string resultsCsv(const BenchRun& run) {
     const auto& cfgs = run.sweep.configs;
     std::ostringstream f;
     f << "scene,viewpoint,label,technique,baseline,pareto," << kMetricHeader
-      << ",baseline_ms,time_ratio,shard,settings\n";
+      << ",baseline_ms,time_ratio,shard,rmse_vs_oracle,rmse_screen,settings\n";
     for (const auto& v : run.views) {
         const BenchConfig& c = cfgs[v.config];
         const std::string shard = run.shards.size() > size_t(v.shard) ? run.shards[v.shard].value("shard", "1/1") : "1/1";
         f << csvField(v.scene) << "," << csvField(v.viewpoint) << "," << csvField(c.label) << ","
           << c.settings.ao.technique << "," << c.baseline << "," << run.summary[v.config].pareto << ","
           << metricCells(v) << "," << num(v.baselineMs) << "," << num(v.timeRatio) << "," << shard << ","
+          << (v.hasSplit ? num(v.vsOracle.rmse) : "") << "," << (v.hasSplit ? num(v.screen.rmse) : "") << ","
           << csvField(c.keys.dump()) << "\n";
     }
     return f.str();
@@ -91,8 +93,8 @@ std::string summaryCsv(const BenchRun& run) {
     std::ostringstream f;
     f << "label,technique,baseline,pareto,views,gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,"
          "psnr_geometry_srgb,psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,time_ratio,rmse_ratio,"
-         "rmse_first_frame,"
-         "settings\n";
+         "rmse_first_frame,rmse_vs_oracle,rmse_edge_vs_oracle,rmse_interior_vs_oracle,rmse_screen,"
+         "rmse_edge_screen,rmse_interior_screen,settings\n";
     for (const auto& s : run.summary) {
         const BenchConfig& c = cfgs[s.config];
         f << csvField(c.label) << "," << c.settings.ao.technique << "," << c.baseline << "," << s.pareto
@@ -100,7 +102,9 @@ std::string summaryCsv(const BenchRun& run) {
           << "," << num(s.rmse) << "," << num(s.mae) << "," << num(s.bias) << ","
           << num(s.psnrGeometrySrgb) << "," << num(s.psnrFullSrgb) << "," << num(s.rmseEdge) << ","
           << num(s.rmseInterior) << "," << num(s.ssim) << "," << s.nonFinite << "," << num(s.timeRatio)
-          << "," << num(s.rmseRatio) << "," << num(s.rmseFirstFrame) << "," << csvField(c.keys.dump())
+          << "," << num(s.rmseRatio) << "," << num(s.rmseFirstFrame) << "," << num(s.technique.rmse) << ","
+          << num(s.technique.rmseEdge) << "," << num(s.technique.rmseInterior) << "," << num(s.screen.rmse) << ","
+          << num(s.screen.rmseEdge) << "," << num(s.screen.rmseInterior) << "," << csvField(c.keys.dump())
           << "\n";
     }
     return f.str();
@@ -189,6 +193,7 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
     };
     md << "### Pareto front (and the baseline), fastest first\n\n";
     table(true);
+    md << splitMarkdown(run);
     md << "\n### Every configuration\n\n";
     table(false);
     md << "\nTime: GPU timer queries (GL_TIME_ELAPSED) of every pass but the G-buffer and the composite, "

@@ -16,7 +16,23 @@ nlohmann::json jnum(double v) {
     return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
+nlohmann::json configFields(const BenchConfig& c, const ConfigSummary& s);
+nlohmann::json viewFields(const ViewResult& v, const std::string& label);
+
+void splitJson(nlohmann::json& j, const SplitSummary& t, const SplitSummary& sc) {
+    j["rmse_vs_oracle"] = jnum(t.rmse), j["bias_vs_oracle"] = jnum(t.bias);
+    j["rmse_edge_vs_oracle"] = jnum(t.rmseEdge), j["rmse_interior_vs_oracle"] = jnum(t.rmseInterior);
+    j["rmse_screen"] = jnum(sc.rmse), j["bias_screen"] = jnum(sc.bias);
+    j["rmse_edge_screen"] = jnum(sc.rmseEdge), j["rmse_interior_screen"] = jnum(sc.rmseInterior);
+}
+
 nlohmann::json configJson(const BenchConfig& c, const ConfigSummary& s) {
+    nlohmann::json j = configFields(c, s);
+    splitJson(j, s.technique, s.screen);
+    return j;
+}
+
+nlohmann::json configFields(const BenchConfig& c, const ConfigSummary& s) {
     return {{"label", c.label},
             {"group", c.group},
             {"keys", c.keys},
@@ -42,6 +58,15 @@ nlohmann::json configJson(const BenchConfig& c, const ConfigSummary& s) {
 }
 
 nlohmann::json viewJson(const ViewResult& v, const std::string& label) {
+    nlohmann::json j = viewFields(v, label);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const SplitSummary none{nan, nan, nan, nan};
+    splitJson(j, v.hasSplit ? SplitSummary{v.vsOracle.rmse, v.vsOracle.bias, v.vsOracle.rmseEdge, v.vsOracle.rmseInterior} : none,
+              v.hasSplit ? SplitSummary{v.screen.rmse, v.screen.bias, v.screen.rmseEdge, v.screen.rmseInterior} : none);
+    return j;
+}
+
+nlohmann::json viewFields(const ViewResult& v, const std::string& label) {
     return {{"scene", v.scene},
             {"viewpoint", v.viewpoint},
             {"config", v.config},
@@ -154,6 +179,18 @@ ViewResult readView(const Reader& rd, const nlohmann::json& j, const std::string
     e.excludedPixels = rd.integer(j, "excluded_pixels", where);
     v.frames = int(rd.integer(j, "frames", where));
     v.rmseFirstFrame = rd.number(j, "rmse_first_frame", where);
+    // The split, when the run traced the oracle (its RMSE is null without one).
+    if (j.contains("rmse_vs_oracle") && !j["rmse_vs_oracle"].is_null()) {
+        v.hasSplit = true;
+        v.vsOracle.rmse = rd.number(j, "rmse_vs_oracle", where);
+        v.vsOracle.bias = rd.number(j, "bias_vs_oracle", where);
+        v.vsOracle.rmseEdge = rd.number(j, "rmse_edge_vs_oracle", where);
+        v.vsOracle.rmseInterior = rd.number(j, "rmse_interior_vs_oracle", where);
+        v.screen.rmse = rd.number(j, "rmse_screen", where);
+        v.screen.bias = rd.number(j, "bias_screen", where);
+        v.screen.rmseEdge = rd.number(j, "rmse_edge_screen", where);
+        v.screen.rmseInterior = rd.number(j, "rmse_interior_screen", where);
+    }
     return v;
 }
 

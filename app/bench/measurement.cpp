@@ -6,17 +6,22 @@
 
 namespace ssao {
 
-void Measurement::judge(Renderer& r, const ReferenceImage& ref) {
-    eval_ = evaluate(readBack(r.texture("ao.denoised"), 1), ref);
+void Measurement::judge(Renderer& r, const ReferenceImage& ref, const ReferenceImage* oracle) {
+    const Image ao = readBack(r.texture("ao.denoised"), 1);
+    eval_ = evaluate(ao, ref);
     result_.error = eval_.metrics;
+    if (oracle) {
+        result_.vsOracle = evaluate(ao, *oracle).metrics;
+        result_.hasSplit = true;
+    }
 }
 
-bool Measurement::step(Renderer& r, const ReferenceImage& ref) {
+bool Measurement::step(Renderer& r, const ReferenceImage& ref, const ReferenceImage* oracle) {
     switch (phase_) {
     case Phase::First:
         r.setSettings(settings_);
         r.render();
-        judge(r, ref);
+        judge(r, ref, oracle);
         result_.rmseFirstFrame = result_.error.rmse;
         phase_ = r.accumulating() ? Phase::Accumulating : frames_ > 0 ? Phase::Timing : Phase::Done;
         break;
@@ -25,7 +30,7 @@ bool Measurement::step(Renderer& r, const ReferenceImage& ref) {
         r.render();
         ++result_.frames;
         if (!r.accumulating()) {
-            judge(r, ref);
+            judge(r, ref, oracle);
             phase_ = frames_ > 0 ? Phase::Timing : Phase::Done;
         }
         break;
@@ -58,9 +63,10 @@ double Measurement::progress() const {
     return std::min(doneFrames / std::max(total + (phase_ == Phase::Accumulating ? 1.0 : 0.0), 1.0), 0.99);
 }
 
-ViewResult measure(Renderer& r, const Settings& s, const ReferenceImage& ref, int warmup, int frames) {
+ViewResult measure(Renderer& r, const Settings& s, const ReferenceImage& ref, int warmup, int frames,
+                   const ReferenceImage* oracle) {
     Measurement m(s, warmup, frames);
-    while (!m.step(r, ref)) {
+    while (!m.step(r, ref, oracle)) {
     }
     return m.result();
 }

@@ -18,8 +18,9 @@ class Measurement {
     Measurement(const Settings& s, int warmup, int frames) : settings_(s), warmup_(warmup), frames_(frames) {}
 
     // Renders one frame on `r` (its scene, camera and size already set; it may have rendered other
-    // settings in between: each step sets this measurement's own). Returns true once done.
-    bool step(Renderer& r, const ReferenceImage& ref);
+    // settings in between: each step sets this measurement's own). With the view's screen-space
+    // oracle, the judged frame is also compared with it (ViewResult::vsOracle). Returns true once done.
+    bool step(Renderer& r, const ReferenceImage& ref, const ReferenceImage* oracle = nullptr);
     bool done() const { return phase_ == Phase::Done; }
     // 0..1: frames rendered of the frames this measurement needs (temporal frames counted as they come).
     double progress() const;
@@ -32,7 +33,7 @@ class Measurement {
 
   private:
     enum class Phase { First, Accumulating, Timing, Done };
-    void judge(Renderer& r, const ReferenceImage& ref);
+    void judge(Renderer& r, const ReferenceImage& ref, const ReferenceImage* oracle);
 
     Settings settings_;
     int warmup_ = 0, frames_ = 0;
@@ -44,6 +45,7 @@ class Measurement {
 };
 
 // Every step at once.
-ViewResult measure(Renderer& r, const Settings& s, const ReferenceImage& ref, int warmup, int frames);
+ViewResult measure(Renderer& r, const Settings& s, const ReferenceImage& ref, int warmup, int frames,
+                   const ReferenceImage* oracle = nullptr);
 
 } // namespace ssao

@@ -57,12 +57,35 @@ void rowRatios(std::vector<ViewResult>& views, size_t baseline) {
 }
 } // namespace
 
+namespace {
+// RMS over the views that have a split (NaN when none).
+SplitSummary splitOf(const std::vector<const ErrorMetrics*>& m) {
+    SplitSummary s;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    double mse = 0, edge = 0, interior = 0;
+    int edges = 0, interiors = 0;
+    for (const ErrorMetrics* e : m) {
+        mse += e->rmse * e->rmse;
+        s.bias += e->bias;
+        if (std::isfinite(e->rmseEdge)) edge += e->rmseEdge * e->rmseEdge, ++edges;
+        if (std::isfinite(e->rmseInterior)) interior += e->rmseInterior * e->rmseInterior, ++interiors;
+    }
+    if (m.empty()) return {nan, nan, nan, nan};
+    s.rmse = std::sqrt(mse / double(m.size()));
+    s.bias /= double(m.size());
+    s.rmseEdge = edges ? std::sqrt(edge / edges) : nan;
+    s.rmseInterior = interiors ? std::sqrt(interior / interiors) : nan;
+    return s;
+}
+} // namespace
+
 std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t configCount, size_t baseline) {
     rowRatios(views, baseline);
     std::vector<ConfigSummary> out(configCount);
     for (size_t c = 0; c < configCount; ++c) {
         ConfigSummary& s = out[c];
         s.config = c;
+        std::vector<const ErrorMetrics*> technique, screen;
         double mse = 0, mseGeo = 0, mseFull = 0, edge = 0, interior = 0, mseFirst = 0, logRatio = 0;
         int edgeViews = 0, interiorViews = 0, ratioViews = 0;
         s.gpuMsMin = std::numeric_limits<double>::infinity();
@@ -85,7 +108,10 @@ std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t conf
             s.ssim += v.error.ssim;
             s.nonFinite += v.error.nonFinite;
             if (std::isfinite(v.timeRatio) && v.timeRatio > 0) logRatio += std::log(v.timeRatio), ++ratioViews;
+            if (v.hasSplit) technique.push_back(&v.vsOracle), screen.push_back(&v.screen);
         }
+        s.technique = splitOf(technique);
+        s.screen = splitOf(screen);
         if (s.views == 0) {
             const double nan = std::numeric_limits<double>::quiet_NaN();
             s.gpuMs = s.gpuMsMin = s.gpuMsMax = s.rmse = s.mae = s.bias = nan;

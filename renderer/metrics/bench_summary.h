@@ -26,6 +26,16 @@ struct ViewResult {
     double baselineMs = std::numeric_limits<double>::quiet_NaN();
     double timeRatio = std::numeric_limits<double>::quiet_NaN(); // set by summarize()
     int shard = 0; // which run measured it (index into the report's shards; 0 unsharded)
+    // The error split (reference_ao.h, ReferenceVisibility::Screen): the AO against the screen-space
+    // oracle - what settings can still fix - and the oracle against the truth - what the screen does
+    // not hold, the same for every configuration of a view. Without an oracle, hasSplit is false.
+    bool hasSplit = false;
+    ErrorMetrics vsOracle, screen;
+};
+
+// RMS over views of a split's RMSE, and its edge/interior parts (NaN when no view has a split).
+struct SplitSummary {
+    double rmse = 0, bias = 0, rmseEdge = 0, rmseInterior = 0;
 };
 
 struct ConfigSummary {
@@ -41,6 +51,7 @@ struct ConfigSummary {
     // To the baseline: time = geometric mean over views of each row's ratio; error = RMSE / RMSE.
     double timeRatio = 0, rmseRatio = 0;
     bool pareto = false; // on the front of (timeRatio, rmse)
+    SplitSummary technique, screen; // the AO against the oracle; the oracle against the truth
 };
 
 double median(std::vector<double> v); // NaN when empty

@@ -235,19 +235,41 @@ TEST(CliBench, TwoShardsMergedGiveOneRunsErrorsAndFront) {
             EXPECT_EQ(rm.at(k)[f], row[f]) << k << " " << f; // identical, not close
         EXPECT_GT(rm.at(k)["time_ratio"].get<double>(), 0.0) << k;
     }
-    // The same rows in the same order, and the same front (these configurations are far apart in
-    // time: 4 and 256 kernel samples, the techniques at their defaults).
-    std::vector<std::string> oa, om, fa, fm;
+    // The same rows in the same order.
+    std::vector<std::string> oa, om;
     for (const auto& x : a["results"])
         oa.push_back(x["scene"].get<std::string>() + x["viewpoint"].get<std::string>() + x["label"].get<std::string>());
     for (const auto& x : m["results"])
         om.push_back(x["scene"].get<std::string>() + x["viewpoint"].get<std::string>() + x["label"].get<std::string>());
     EXPECT_EQ(oa, om);
-    for (const auto& c : a["configurations"])
-        if (c["pareto"].get<bool>()) fa.push_back(c["label"]);
-    for (const auto& c : m["configurations"])
-        if (c["pareto"].get<bool>()) fm.push_back(c["label"]);
-    EXPECT_EQ(fa, fm);
+    // Times are measured, so which near-tied configuration is on the front may differ between two
+    // runs; what must hold is that each run's front is the Pareto front of its own (time ratio,
+    // RMSE) and that the errors per configuration are the same. The most accurate configuration is
+    // on both fronts: its error does not depend on timing.
+    auto checkFront = [](const nlohmann::json& run) {
+        const auto& cs = run["configurations"];
+        for (const auto& c : cs) {
+            bool dominated = false;
+            for (const auto& d : cs)
+                if (&d != &c && d["time_ratio"].get<double>() <= c["time_ratio"].get<double>() &&
+                    d["rmse"].get<double>() <= c["rmse"].get<double>() &&
+                    (d["time_ratio"].get<double>() < c["time_ratio"].get<double>() ||
+                     d["rmse"].get<double>() < c["rmse"].get<double>()))
+                    dominated = true;
+            EXPECT_EQ(c["pareto"].get<bool>(), !dominated) << c.dump();
+        }
+    };
+    checkFront(a);
+    checkFront(m);
+    ASSERT_EQ(a["configurations"].size(), m["configurations"].size());
+    size_t best = 0;
+    for (size_t i = 0; i < a["configurations"].size(); ++i) {
+        EXPECT_EQ(a["configurations"][i]["label"], m["configurations"][i]["label"]);
+        EXPECT_EQ(a["configurations"][i]["rmse"], m["configurations"][i]["rmse"]) << i;
+        if (a["configurations"][i]["rmse"].get<double>() < a["configurations"][best]["rmse"].get<double>()) best = i;
+    }
+    EXPECT_TRUE(a["configurations"][best]["pareto"].get<bool>());
+    EXPECT_TRUE(m["configurations"][best]["pareto"].get<bool>());
     // The merged report names the shards and what each measured; its page embeds both shards' thumbnails.
     EXPECT_EQ(m["shards"].size(), 2u);
     const std::string md = slurp(merged + "/report.md");
