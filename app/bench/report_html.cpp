@@ -128,25 +128,37 @@ std::string svgPlot(const std::vector<Point>& pts, const std::string& title, dou
           << "\" cy=\"" << Y(p.e) << "\" r=\"" << (p.baseline ? 6 : p.front ? 4.5 : 3.2) << "\"><title>"
           << esc(p.hover) << "</title></circle>";
     }
-    // Labels: the front and the baseline only, each at the first offset that overlaps no earlier one.
+    // Labels: ~15 front points with 40-80-character keys cannot all be written on the plot
+    // without overlapping (they crowd at the low-error end). Each front point gets its number
+    // (fastest first) beside it, the baseline its name; the key under the plot spells them out.
     std::vector<std::array<double, 4>> taken;
-    for (const Point& p : pts) {
-        if (!p.front && !p.baseline) continue;
-        const double w = 6.0 * double(p.label.size()) + 4, h = 12;
-        for (auto [dx, dy] : std::vector<std::pair<double, double>>{{8, -6}, {8, 14}, {-8 - w, -6}, {-8 - w, 14}, {8, -20}, {8, 28}}) {
+    auto put = [&](const Point& p, const std::string& text) {
+        const double w = 6.0 * double(text.size()) + 4, h = 12;
+        for (auto [dx, dy] : std::vector<std::pair<double, double>>{{6, -5}, {6, 13}, {-6 - w, -5}, {-6 - w, 13}, {-w / 2, -9}, {-w / 2, 19}}) {
             const double x = X(p.t) + dx, y = Y(p.e) + dy;
             bool clash = x < 0 || x + w > W;
-            for (const auto& b : taken)
-                clash = clash || (x < b[2] && x + w > b[0] && y - h < b[3] && y > b[1]);
-            if (clash && !(dx == 8 && dy == 28)) continue;
+            for (const auto& r : taken)
+                clash = clash || (x < r[2] && x + w > r[0] && y - h < r[3] && y > r[1]);
+            if (clash && !(dx == -w / 2 && dy == 19)) continue;
             taken.push_back({x, y - h, x + w, y});
             s << "<text class=\"lbl" << (p.baseline ? " base" : "") << "\" x=\"" << x << "\" y=\"" << y << "\">"
-              << esc(p.label) << "</text>";
+              << esc(text) << "</text>";
             break;
         }
-    }
+    };
+    for (const Point& p : pts)
+        if (p.baseline) put(p, p.label);
+    for (size_t i = 0; i < front.size(); ++i)
+        if (!front[i]->baseline) put(*front[i], std::to_string(i + 1));
     s << "</svg>";
-    return s.str();
+    s << "<ol class=\"key\"" << (W < 600 ? " style=\"columns:1\"" : "") << ">";
+    for (const Point* p : front)
+        s << "<li>" << esc(p->label) << " <span class=\"num\">" << fmt(p->t, 3) << "x, RMSE " << fmt(p->e)
+          << "</span></li>";
+    s << "</ol>";
+    std::ostringstream box;
+    box << "<div class=\"plotbox\" style=\"max-width:" << W + 10 << "px\">" << s.str() << "</div>";
+    return box.str();
 }
 
 // Per configuration over `rows`: geometric mean of the time ratios, RMS of the RMSE, the min..max
@@ -200,7 +212,7 @@ svg .tick.y{text-anchor:end}svg .axis{font-size:11px;text-anchor:middle;fill:#33
 svg .grid{stroke:#eee}svg .noise{fill:#e8e8e8}svg .bar{stroke:#ccc}
 svg .pt{fill:#9a9a9a}svg .pt.on{fill:#d62728;stroke:#fff}svg .pt.base{fill:#000;stroke:#fff}
 svg .pt:hover{stroke:#000;stroke-width:2}
-svg .front{fill:none;stroke:#d62728;stroke-width:1.5;opacity:.8}svg .lbl{font-size:10px}svg .lbl.base{font-weight:700}
+svg .front{fill:none;stroke:#d62728;stroke-width:1.5;opacity:.8}svg .lbl{font-size:10px}.plotbox{display:inline-block;vertical-align:top}ol.key{font-size:11px;margin:0 0 12px 0;padding-left:26px;columns:2;column-gap:18px}ol.key .num{color:#777}svg .lbl.base{font-weight:700}
 .plots{display:flex;flex-wrap:wrap}
 table{border-collapse:collapse;font-size:12px}th,td{border:1px solid #ddd;padding:3px 6px}
 th{background:#f4f4f4;cursor:pointer;position:sticky;top:0}td.n{text-align:right;font-variant-numeric:tabular-nums}

@@ -61,7 +61,11 @@ size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, si
         std::snprintf(b, sizeof b, "%.3f", v);
         dl->AddText(ImVec2(origin.x + 2, Y(v) - 7), ink, b);
     }
-    dl->AddText(ImVec2(origin.x + L, origin.y + h - 14), ink, "GPU ms (log)  ->      RMSE ^      grey: reference noise");
+    // Axis names where they cannot run out of the plot, whatever the panel's width: time under the
+    // right end of the x axis, RMSE above the y axis's labels.
+    const char* xName = "GPU ms (log) ->";
+    dl->AddText(ImVec2(origin.x + w - R - ImGui::CalcTextSize(xName).x, origin.y + h - 14), ink, xName);
+    dl->AddText(ImVec2(origin.x + L + 4, origin.y + T), ink, "RMSE");
     // The front as a step line, fastest first.
     std::vector<const FrontPoint*> front;
     for (const auto& p : pts)
@@ -151,7 +155,10 @@ void drawFrontTab(AppCore& app) {
                 app.applyCandidate(pts[hover].candidate);
         }
     }
-    ImGui::TextDisabled("blue ring: current   black: baseline (learnopengl)   red: the front");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("blue ring: current   black: baseline (learnopengl)   red: the front   grey band: "
+                       "the reference's own noise");
+    ImGui::PopStyleColor();
     if (cur != std::string::npos) {
         answer(app, "Cheapest at <= the current error:", f.cheapestAtMostCurrentError(), "cheapest");
         answer(app, "Most accurate at <= the current time:", f.mostAccurateWithinCurrentTime(), "accurate");

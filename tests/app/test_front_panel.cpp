@@ -3,6 +3,7 @@
 // reference is finished, a click applies a point, a shift+click compares it in Split A|B, a
 // camera move cancels it and coming back finds the view's front in the cache. Waits are bounded
 // loops of frames, never timings.
+#include <cstdio>
 #include "gl_fixture.h"
 #include "ui_driver.h"
 
@@ -89,6 +90,9 @@ TEST_F(FrontPanelTest, MeasuresWhatBenchMeasuresOnTheSameView) {
         EXPECT_GE(p.result.gpuMs, b["gpu_ms_min"].get<double>() / 2.0) << p.candidate.label;
         EXPECT_LE(p.result.gpuMs, b["gpu_ms_max"].get<double>() * 2.0) << p.candidate.label;
         EXPECT_GT(p.result.gpuMs, 0.0);
+        std::printf("%-30s panel %.3f ms, bench %.3f ms (%.3f..%.3f), RMSE %.6f both\n", p.candidate.label.c_str(),
+                    p.result.gpuMs, b["gpu_ms"].get<double>(), b["gpu_ms_min"].get<double>(),
+                    b["gpu_ms_max"].get<double>(), p.result.error.rmse);
     }
     // The front is consistent: no point both faster and more accurate than a front point.
     for (const auto& a : m.points())
