@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 namespace ssao {
 
@@ -124,6 +125,7 @@ struct RenderJob {
     Camera camera;
     RunInfo info;
     ViewStyle style; // PNG previews: the same mapping as the app's views
+    std::optional<float> referenceRadius; // world units: the preset's reference_radius_scene, if any
 };
 
 // The camera: --camera, else the preset's bookmark, else the scene's own, else one framing it.
@@ -174,6 +176,7 @@ RenderJob prepareRender(const RenderOptions& o) {
     job.style.falseColor = o.falseColor;
     job.info.timingFrames = o.timingFrames;
     job.camera = chooseCamera(o, preset, job.scene, spec, job.info.cameraSource);
+    if (preset.referenceRadiusScene) job.referenceRadius = *preset.referenceRadiusScene * 2.0f * job.scene.bounds.radius();
     return job;
 }
 
@@ -200,8 +203,9 @@ nlohmann::json timePasses(Renderer& r, const FrameReport& first, int frames) {
 // --reference: traces (or loads) the reference, writes its files and the error blocks into `m`;
 // returns the summary line.
 std::string judgeAgainstReference(const RenderOptions& o, const Renderer& r, const FrameCapture& frame,
-                                  const Scene& scene, nlohmann::json& m) {
-    const ReferenceSettings rs = referenceSettingsFor(frame.radius, o.referenceRays, parseVariant(o.referenceVariant));
+                                  const Scene& scene, std::optional<float> referenceRadius, nlohmann::json& m) {
+    ReferenceSettings rs = referenceSettingsFor(frame.radius, o.referenceRays, parseVariant(o.referenceVariant));
+    if (referenceRadius) rs.radius = *referenceRadius; // the R the preset was judged against (tune)
     ReferenceProvider provider(scene, o.noCache ? std::string() : referenceCacheDir());
     bool cached = false;
     ReferenceImage ref;
@@ -307,7 +311,7 @@ int runRender(const RenderOptions& o) {
     run.checkGl("while rendering " + job.scene.name);
     const FrameCapture frame = captureFrame(*r, job.style);
     nlohmann::json m = writeOutputs(frame, o.out, job.info, first, timing);
-    const std::string line = o.reference ? judgeAgainstReference(o, *r, frame, job.scene, m) : "";
+    const std::string line = o.reference ? judgeAgainstReference(o, *r, frame, job.scene, job.referenceRadius, m) : "";
     run.checkGl("while writing the outputs");
     printRenderSummary(o, job, run.glRenderer(), first, m, timing, line);
     long bad = 0;

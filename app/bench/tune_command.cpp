@@ -33,7 +33,9 @@ namespace ssao {
 void addTuneOptions(CLI::App& cmd, TuneOptions& o) {
     cmd.add_option("--technique", o.technique, "the technique to tune (ao.technique)")->capture_default_str();
     cmd.add_option("--preset", o.preset, "starting preset (default: the technique's defaults)");
-    cmd.add_option("--scene", o.scenes, "scene (repeatable; default builtin:showcase)");
+    cmd.add_option("--scene", o.scenes, "training scene (repeatable; default builtin:showcase)");
+    cmd.add_option("--held-out-scene", o.heldOutScenes,
+                   "scene judged but never fitted on (repeatable; every viewpoint is held out)");
     cmd.add_option("--size", o.size, "render size")->capture_default_str();
     cmd.add_option("--views", o.views, "viewpoints per scene; even ones train, odd ones are held out")
         ->capture_default_str()
@@ -52,8 +54,8 @@ void addTuneOptions(CLI::App& cmd, TuneOptions& o) {
         ->check(cliRange(0.0001, 0.5));
     cmd.add_option("--set", o.sets, "KEY=VALUE applied to the start, e.g. TECHNIQUE.steps=4 (repeatable)");
     cmd.add_option("--knob", o.knobs,
-                   "fit only this knob (repeatable: a float parameter key or radius_multiplier; default: "
-                   "radius_multiplier, ao.power and the technique's float rows)");
+                   "fit only this knob (repeatable: a float parameter key of the technique, or radius_multiplier "
+                   "or ao.power, which are never fitted unless named; default: the technique's float rows)");
     cmd.add_option("--out", o.out, "where to save the tuned preset (JSON)")->capture_default_str();
     cmd.add_option("--preset-dir", o.presetDir, "folder of user presets");
     cmd.add_flag("--quiet", o.quiet, "no progress output");
@@ -66,28 +68,37 @@ struct Knob {
     double lo, hi, value;
 };
 
+// Which score a view counts in: fitted on; held out of a training scene; of a held-out scene.
+enum class Role { Train, HeldOutView, HeldOutScene };
+
 struct View {
     size_t scene;
+    std::string viewpoint;
     Camera camera;
     float radius;
     ReferenceImage ref;
-    bool train;
+    Role role;
 };
 
-// The knobs: the radius multiplier, ao.power and the technique's own float rows that apply; or only
-// those named by --knob.
+// The knobs: the technique's own float rows that apply; or those named by --knob, which may add
+// the radius multiplier and ao.power (never fitted unless asked: they fit the numbers, not the physics).
 std::vector<Knob> chooseKnobs(const TuneOptions& o, const Settings& start) {
-    std::vector<Knob> knobs = {{"radius_multiplier", 0.5, 3.0, 1.0}, {"ao.power", 0.5, 4.0, start.ao.power}};
+    std::vector<Knob> own, extra = {{"radius_multiplier", 0.5, 3.0, 1.0}, {"ao.power", 0.5, 4.0, start.ao.power}};
     for (const Param& p : paramTable())
         if (p.group() == o.technique && p.type == Param::Type::Float && p.applies(start))
-            knobs.push_back({p.key, p.min, p.max, p.get(start)});
-    if (o.knobs.empty()) return knobs;
+            own.push_back({p.key, p.min, p.max, p.get(start)});
+    if (o.knobs.empty()) {
+        if (own.empty()) throw Error(o.technique + " has no float parameter to fit (name one with --knob)");
+        return own;
+    }
+    std::vector<Knob> all = own;
+    all.insert(all.end(), extra.begin(), extra.end());
     std::vector<Knob> chosen;
     for (const std::string& key : o.knobs) {
-        auto it = std::find_if(knobs.begin(), knobs.end(), [&](const Knob& k) { return k.key == key; });
-        if (it == knobs.end()) {
+        auto it = std::find_if(all.begin(), all.end(), [&](const Knob& k) { return k.key == key; });
+        if (it == all.end()) {
             std::string known;
-            for (const Knob& k : knobs)
+            for (const Knob& k : all)
                 known += (known.empty() ? "" : ", ") + k.key;
             throw Error("--knob " + key + " is not a knob of " + o.technique + " (knobs: " + known + ")");
         }
@@ -100,8 +111,9 @@ std::vector<Knob> chooseKnobs(const TuneOptions& o, const Settings& start) {
 // it darkens an open plane.
 class Tuner {
   public:
-    Tuner(const TuneOptions& o, Settings start, std::vector<Scene> scenes, int w, int h)
-        : o_(o), start_(std::move(start)), scenes_(std::move(scenes)), r_(runner_.makeRenderer(w, h)),
+    // `scenes`: the training scenes first, then `heldOut` held-out ones.
+    Tuner(const TuneOptions& o, Settings start, std::vector<Scene> scenes, size_t heldOut, int w, int h)
+        : o_(o), start_(std::move(start)), scenes_(std::move(scenes)), heldOut_(heldOut), r_(runner_.makeRenderer(w, h)),
           plane_(loadScene("builtin:plane")), planeRenderer_(runner_.makeRenderer(160, 90)) {
         r_->setWanted(std::set<std::string>{"ao.denoised"}); // what is judged: no composite, no albedo
         planeRenderer_->setWanted(std::set<std::string>{"ao.denoised"});
@@ -109,7 +121,8 @@ class Tuner {
         planeRenderer_->setCamera(*plane_.camera);
     }
 
-    // References of every viewpoint (cached): even ones train, odd ones are held out.
+    // References of every viewpoint (cached): in a training scene even ones train and odd ones are
+    // held out; every viewpoint of a held-out scene is held out.
     void traceViews() {
         for (size_t si = 0; si < scenes_.size(); ++si) {
             const Scene& sc = scenes_[si];
@@ -124,7 +137,10 @@ class Tuner {
                 ProgressBar bar("  reference " + sc.name + " " + name, !o_.quiet);
                 ReferenceImage ref = providers_.back()->get(r_->camera(), r_->width(), r_->height(),
                                                             {radius, o_.referenceRays}, [&](double f) { bar.update(f); });
-                views_.push_back({si, r_->camera(), radius, std::move(ref), k++ % 2 == 0});
+                const bool heldOutScene = si >= scenes_.size() - heldOut_;
+                views_.push_back({si, name, r_->camera(), radius, std::move(ref),
+                                  heldOutScene ? Role::HeldOutScene : k % 2 == 0 ? Role::Train : Role::HeldOutView});
+                ++k;
             }
         }
         current_ = size_t(-1);
@@ -142,12 +158,12 @@ class Tuner {
         return s;
     }
 
-    // Mean geometry MSE over the training (or held-out) views.
-    double score(const std::vector<Knob>& ks, bool train) {
+    // Mean geometry MSE over the views of one role (NaN when there are none).
+    double score(const std::vector<Knob>& ks, Role role) {
         double mse = 0;
         int n = 0;
         for (const View& v : views_) {
-            if (v.train != train) continue;
+            if (v.role != role) continue;
             if (v.scene != current_) r_->setScene(scenes_[v.scene]), current_ = v.scene;
             r_->setCamera(v.camera);
             const Settings s = settingsWith(ks, v.radius);
@@ -156,9 +172,10 @@ class Tuner {
                 throw Error(std::to_string(res.error.nonFinite) + " non-finite AO pixels on " + scenes_[v.scene].name);
             mse += res.error.rmse * res.error.rmse;
             ++n;
+            if (&v == &views_.front()) firstRmse_ = res.error.rmse;
         }
         runner_.checkGl("while tuning");
-        return n ? mse / n : 0.0;
+        return n ? mse / n : std::numeric_limits<double>::quiet_NaN();
     }
 
     // Physics before numbers: a candidate that darkens an open plane is refused whatever it
@@ -188,7 +205,7 @@ class Tuner {
                 for (int i = 0; i < o_.grid; ++i) {
                     k.value = lo + (hi - lo) * i / double(o_.grid - 1);
                     const double s = darkensOpenPlane(knobs) ? std::numeric_limits<double>::infinity()
-                                                             : score(knobs, true);
+                                                             : score(knobs, Role::Train);
                     if (s < best) best = s, bestValue = k.value;
                     bar.update(double(++done) / total);
                 }
@@ -201,12 +218,22 @@ class Tuner {
             }
     }
 
-    size_t viewCount() const { return views_.size(); }
+    size_t count(Role r) const {
+        return size_t(std::count_if(views_.begin(), views_.end(), [&](const View& v) { return v.role == r; }));
+    }
+    const View& firstView() const { return views_.front(); }
+    const Scene& scene(size_t i) const { return scenes_[i]; }
+    size_t sceneCount() const { return scenes_.size(); }
+    size_t heldOutScenes() const { return heldOut_; }
+    // The first training view's RMSE at the last score over the training views: what
+    // `render --preset` of the saved preset reproduces.
+    double firstRmse() const { return firstRmse_; }
 
   private:
     const TuneOptions& o_;
     Settings start_;
     std::vector<Scene> scenes_;
+    size_t heldOut_;
     HeadlessRunner runner_;
     std::unique_ptr<Renderer> r_;
     Scene plane_;
@@ -214,34 +241,80 @@ class Tuner {
     std::vector<View> views_;
     std::vector<std::unique_ptr<ReferenceProvider>> providers_;
     size_t current_ = size_t(-1);
+    double firstRmse_ = std::numeric_limits<double>::quiet_NaN();
 };
 
-// The tuned preset follows the scene: radius_scene = multiplier x the reference's fraction.
-void saveTuned(const TuneOptions& o, const Tuner& t, const std::vector<Knob>& knobs, double trainBefore,
-               double trainAfter, double testBefore, double testAfter) {
+struct Scores {
+    double train, heldOutViews, heldOutScenes; // mean geometry MSE per role (NaN: no such views)
+};
+
+double rmseOf(double mse) { return std::sqrt(mse); }
+
+nlohmann::json scoresJson(const Scores& before, const Scores& after, const Tuner& t, const TuneOptions& o) {
+    auto side = [](const Scores& s) {
+        nlohmann::json j;
+        auto put = [&](const char* k, double mse) { j[k] = std::isfinite(mse) ? nlohmann::json(rmseOf(mse)) : nlohmann::json(); };
+        put("train", s.train), put("held_out_views", s.heldOutViews), put("held_out_scenes", s.heldOutScenes);
+        return j;
+    };
+    nlohmann::json train = nlohmann::json::array(), held = nlohmann::json::array();
+    for (size_t i = 0; i < t.sceneCount(); ++i)
+        (i >= t.sceneCount() - t.heldOutScenes() ? held : train).push_back(t.scene(i).name);
+    return {{"metric", "geometry RMSE against the ray-traced reference (visibility, R = " + std::to_string(o.radiusScene) +
+                           " x diagonal, " + std::to_string(o.referenceRays) + " rays), " + o.size},
+            {"training_scenes", train},
+            {"held_out_scenes", held},
+            {"views", {{"train", t.count(Role::Train)}, {"held_out_views", t.count(Role::HeldOutView)},
+                       {"held_out_scenes", t.count(Role::HeldOutScene)}}},
+            {"defaults", side(before)},
+            {"tuned", side(after)}};
+}
+
+// The tuned preset carries what reproduces tune's numbers: the first training scene, the size,
+// the first training view's camera; the radius follows the scene (radius_scene = multiplier x the
+// reference's fraction), and when a multiplier was fitted, the reference's own R
+// (reference_radius_scene) so `render --reference` judges against the R tune used.
+void saveTuned(const TuneOptions& o, const Tuner& t, const std::vector<Knob>& knobs, const Scores& before,
+               const Scores& after, int w, int h) {
     Preset p;
     p.name = o.technique + "-tuned";
     Settings tuned = t.settingsWith(knobs, 1.0f);
+    tuned.ao.radius = defaultSettings().ao.radius; // not a stray "1 x multiplier": the scene rule decides
     tuned.ao.radiusMode = RadiusMode::Scene;
     double multiplier = 1.0;
     for (const Knob& k : knobs)
         if (k.key == "radius_multiplier") multiplier = k.value;
     tuned.ao.radiusScene = float(o.radiusScene * multiplier);
+    if (multiplier != 1.0) p.referenceRadiusScene = o.radiusScene;
     p.settings = tuned;
-    char desc[512];
+    const std::string& spec = o.scenes.empty() ? std::string("builtin:showcase") : o.scenes.front();
+    std::error_code ec;
+    p.scene = spec.rfind("builtin:", 0) == 0 ? spec : std::filesystem::absolute(spec, ec).string();
+    p.size = std::make_pair(w, h);
+    p.camera = cameraToFile(t.firstView().camera, t.scene(t.firstView().scene));
+    p.scores = scoresJson(before, after, t, o);
+    char desc[640];
     std::snprintf(desc, sizeof desc,
-                  "ssaolab tune: %s fitted to the ray-traced reference (R = %.3g x diagonal) on %d training views; "
-                  "geometry RMSE train %.4f -> %.4f, held-out %.4f -> %.4f",
-                  o.technique.c_str(), o.radiusScene, int((t.viewCount() + 1) / 2), std::sqrt(trainBefore),
-                  std::sqrt(trainAfter), std::sqrt(testBefore), std::sqrt(testAfter));
+                  "ssaolab tune: %s fitted to the ray-traced reference (R = %.3g x diagonal) on %zu training views; "
+                  "geometry RMSE train %.4f -> %.4f, held-out views %.4f -> %.4f, held-out scenes %.4f -> %.4f",
+                  o.technique.c_str(), o.radiusScene, t.count(Role::Train), rmseOf(before.train), rmseOf(after.train),
+                  rmseOf(before.heldOutViews), rmseOf(after.heldOutViews), rmseOf(before.heldOutScenes),
+                  rmseOf(after.heldOutScenes));
     p.description = desc;
     writePresetFile(p, o.out);
     if (o.quiet) return;
-    std::printf("tuned %s on %zu views (%zu held out):", o.technique.c_str(), t.viewCount(), t.viewCount() / 2);
+    std::printf("tuned %s on %zu views (held out: %zu views of the same scenes, %zu views of %zu other scenes):",
+                o.technique.c_str(), t.count(Role::Train), t.count(Role::HeldOutView), t.count(Role::HeldOutScene),
+                t.heldOutScenes());
     for (const Knob& k : knobs)
-        std::printf(" %s=%.4g", k.key.c_str(), k.value);
-    std::printf("\ngeometry RMSE: training %.4f -> %.4f, held-out %.4f -> %.4f; saved %s\n", std::sqrt(trainBefore),
-                std::sqrt(trainAfter), std::sqrt(testBefore), std::sqrt(testAfter), o.out.c_str());
+        std::printf(" %s=%.4g", k.key == "radius_multiplier" ? "R x" : k.key.c_str(), k.value);
+    std::printf("\ngeometry RMSE, defaults -> tuned: training %.4f -> %.4f, held-out views %.4f -> %.4f",
+                rmseOf(before.train), rmseOf(after.train), rmseOf(before.heldOutViews), rmseOf(after.heldOutViews));
+    if (t.heldOutScenes())
+        std::printf(", held-out scenes %.4f -> %.4f", rmseOf(before.heldOutScenes), rmseOf(after.heldOutScenes));
+    std::printf("\n");
+    std::printf("saved %s; its view '%s' alone: RMSE %.6f (ssaolab render --preset %s --reference --reference-rays %d)\n",
+                o.out.c_str(), t.firstView().viewpoint.c_str(), t.firstRmse(), o.out.c_str(), o.referenceRays);
 }
 
 } // namespace
@@ -258,16 +331,26 @@ int runTune(const TuneOptions& o) {
         applyAssignment(start, a);
     validateSettings(start);
     std::vector<Scene> scenes;
+    std::set<std::string> seen;
     for (const auto& s : o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes)
+        scenes.push_back(loadNamedScene(s)), seen.insert(s);
+    for (const auto& s : o.heldOutScenes) {
+        if (seen.count(s)) throw Error("--held-out-scene " + s + " is also a training scene: a scene is one or the other");
         scenes.push_back(loadNamedScene(s));
+    }
     std::vector<Knob> knobs = chooseKnobs(o, start);
 
-    Tuner t(o, start, std::move(scenes), w, h);
+    Tuner t(o, start, std::move(scenes), o.heldOutScenes.size(), w, h);
     t.traceViews();
-    const double trainBefore = t.score(knobs, true), testBefore = t.score(knobs, false);
-    t.search(knobs, trainBefore);
-    const double trainAfter = t.score(knobs, true), testAfter = t.score(knobs, false);
-    saveTuned(o, t, knobs, trainBefore, trainAfter, testBefore, testAfter);
+    auto scores = [&] {
+        const double heldViews = t.score(knobs, Role::HeldOutView), heldScenes = t.score(knobs, Role::HeldOutScene);
+        const double train = t.score(knobs, Role::Train); // last: firstRmse() is the first training view's
+        return Scores{train, heldViews, heldScenes};
+    };
+    const Scores before = scores();
+    t.search(knobs, before.train);
+    const Scores after = scores();
+    saveTuned(o, t, knobs, before, after, w, h);
     return 0;
 }
 

@@ -31,7 +31,8 @@ float numberFrom(const nlohmann::json& j, const char* key, float def, const std:
 } // namespace
 
 bool isPresetMetadataKey(const std::string& key) {
-    return key == "name" || key == "description" || key == "camera" || key == "scene" || key == "size";
+    return key == "name" || key == "description" || key == "camera" || key == "scene" || key == "size" ||
+           key == "reference_radius_scene" || key == "scores";
 }
 
 const std::vector<std::string>& radiusKeys() {
@@ -121,6 +122,8 @@ nlohmann::json presetToJson(const Preset& p) {
     if (p.scene) j["scene"] = *p.scene;
     if (p.size) j["size"] = {p.size->first, p.size->second};
     if (p.camera) j["camera"] = cameraToJson(*p.camera);
+    if (p.referenceRadiusScene) j["reference_radius_scene"] = *p.referenceRadiusScene;
+    if (!p.scores.is_null()) j["scores"] = p.scores;
     j.update(toJson(p.settings));
     return j;
 }
@@ -155,6 +158,16 @@ Preset presetFromJson(const nlohmann::json& j, const std::string& origin, const 
         p.size = std::make_pair(s[0].get<int>(), s[1].get<int>());
     }
     if (j.contains("camera")) p.camera = cameraFromJson(j["camera"], origin);
+    if (j.contains("reference_radius_scene")) {
+        const auto& r = j["reference_radius_scene"];
+        if (!r.is_number() || !(r.get<double>() >= 1e-4 && r.get<double>() <= 0.5))
+            throw Error(origin + ": reference_radius_scene must be a number in 0.0001..0.5 (a fraction of the diagonal)");
+        p.referenceRadiusScene = r.get<float>();
+    }
+    if (j.contains("scores")) {
+        if (!j["scores"].is_object()) throw Error(origin + ": scores must be an object");
+        p.scores = j["scores"];
+    }
     return p;
 }
 

@@ -2,7 +2,8 @@
 // for, the render size and a camera bookmark.
 //   {"name": "...", "description": "...", "scene": "builtin:showcase" | "path/to/file.gltf",
 //    "size": [1280, 720], "camera": {"eye": [..], "target": [..], "up": [..], "fov_y_deg": 60,
-//    "near": 0.1, "far": 100, "clip": "fit"}, "ao": {"radius_mode": "world", "radius": 0.8}, ...}
+//    "near": 0.1, "far": 100, "clip": "fit"}, "reference_radius_scene": 0.05, "scores": {...},
+//    "ao": {"radius_mode": "world", "radius": 0.8}, ...}
 // The app saves exactly this format and `ssaolab render --preset` reads it, so a preset tuned
 // in the window reproduces the same image headless.
 #pragma once
@@ -25,6 +26,13 @@ struct Preset {
     std::optional<std::string> scene; // scene spec; a relative path is relative to the preset file
     std::optional<std::pair<int, int>> size;
     std::optional<Camera> camera;
+    // The reference's R the preset was judged against, as a fraction of the scene's diagonal, when
+    // it is not the preset's own AO radius (a tune that fitted a radius multiplier): render
+    // --reference then judges against this R, as tune did.
+    std::optional<float> referenceRadiusScene;
+    // How the preset scored where it was made (tune: training and held-out geometry RMSE, scenes);
+    // kept as written, shown, never applied.
+    nlohmann::json scores;
 
     // True when the preset chooses the AO radius itself; otherwise the radius follows the scene.
     bool fixesRadius() const;

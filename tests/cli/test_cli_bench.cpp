@@ -104,7 +104,7 @@ TEST(Cli, TuneFitsTheReferenceAndSavesAPresetThatRenders) {
     // The search starts from the defaults and keeps the best, so training error never rises.
     double before = 0, after = 0;
     ASSERT_EQ(
-        std::sscanf(r.out.substr(r.out.find("training")).c_str(), "training %lf -> %lf", &before, &after), 2)
+        std::sscanf(r.out.substr(r.out.find("training ")).c_str(), "training %lf -> %lf", &before, &after), 2)
         << r.out;
     EXPECT_LE(after, before);
     auto j = nlohmann::json::parse(slurp(preset));
@@ -114,6 +114,55 @@ TEST(Cli, TuneFitsTheReferenceAndSavesAPresetThatRenders) {
                            outDir("tuned"));
     EXPECT_EQ(again.exitCode, 0) << again.err;
     expectCleanFailure(ssaolab("tune --technique nope"), "nope");
+}
+
+// A tuned preset reproduces tune's number with `render --preset` alone: it carries the scene, the
+// size, the first training view's camera and the R it was judged against; by default only the
+// technique's own rows are fitted (no power, no radius multiplier, no stray ao.radius), and a
+// held-out scene is scored, never fitted on.
+TEST(CliTune, APresetReproducesTunesNumbersWithRenderAloneAndHeldOutScenesAreScored) {
+    const std::string dir = outDir("tune_repro");
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    for (const bool multiplier : {false, true}) {
+        const std::string preset = dir + (multiplier ? "/m.json" : "/t.json");
+        CliRun r = ssaolab("tune --technique gtao --scene builtin:corner --held-out-scene builtin:showcase --size 160x90 "
+                           "--views 2 --rounds 1 --reference-rays 16 --out " + preset + (multiplier ? " --grid 4" : " --grid 3") +
+                           (multiplier ? " --knob radius_multiplier" : ""));
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const size_t at = r.out.find("alone: RMSE ");
+        ASSERT_NE(at, std::string::npos) << r.out;
+        const double tuned = std::stod(r.out.substr(at + 12));
+        EXPECT_NE(r.out.find("held-out scenes"), std::string::npos) << r.out;
+        const auto j = nlohmann::json::parse(slurp(preset));
+        EXPECT_EQ(j["scene"], "builtin:corner");
+        EXPECT_EQ(j["size"], nlohmann::json::array({160, 90}));
+        EXPECT_TRUE(j.contains("camera"));
+        EXPECT_EQ(j["ao"]["power"].get<double>(), 1.0); // never fitted unless asked
+        EXPECT_EQ(j["ao"]["radius"].get<double>(), 0.5); // the default, not 1 x the multiplier
+        EXPECT_EQ(j["scores"]["training_scenes"], nlohmann::json::array({"builtin:corner"}));
+        EXPECT_EQ(j["scores"]["held_out_scenes"], nlohmann::json::array({"builtin:showcase"}));
+        EXPECT_EQ(j["scores"]["views"]["held_out_scenes"].get<int>(), 2);
+        EXPECT_TRUE(j["scores"]["tuned"]["held_out_scenes"].is_number());
+        if (multiplier) {
+            // GTAO at its defaults wants a longer radius on the corner (grid 0.5, 1.33, 2.17, 3).
+            ASSERT_GT(j["ao"]["radius_scene"].get<double>(), 0.06) << r.out;
+            ASSERT_TRUE(j.contains("reference_radius_scene")) << r.out;
+            EXPECT_DOUBLE_EQ(j["reference_radius_scene"].get<double>(), double(0.05f));
+        } else {
+            EXPECT_FALSE(j.contains("reference_radius_scene"));
+            EXPECT_FALSE(r.out.find("R x") != std::string::npos);
+        }
+        const std::string out = dir + (multiplier ? "/render_m" : "/render_t");
+        CliRun again = ssaolab("render --preset " + preset + " --reference --reference-rays 16 --quiet --out " + out);
+        ASSERT_EQ(again.exitCode, 0) << again.err;
+        const auto m = nlohmann::json::parse(slurp(out + "/metrics.json"));
+        EXPECT_NEAR(m["error"]["rmse"].get<double>(), tuned, 5e-7) << (multiplier ? "multiplier" : "rows only");
+        EXPECT_NEAR(m["error"]["reference"]["radius"].get<double>(), m["radius"]["world_at_centre"].get<double>() /
+                    (multiplier ? j["ao"]["radius_scene"].get<double>() / 0.05 : 1.0), 1e-4);
+    }
+    expectCleanFailure(ssaolab("tune --scene builtin:corner --held-out-scene builtin:corner --out " + dir + "/x.json"),
+                       "one or the other");
 }
 
 TEST(Cli, SkipsMeasuresEverySkipAgainstTheSameFrameWithoutIt) {
