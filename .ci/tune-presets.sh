@@ -1,17 +1,23 @@
 #!/usr/bin/env bash
 # `make presets`: fits every technique's free parameters at each quality level with `ssaolab tune`
-# on the shared scenes (even viewpoints train, odd ones are held out) and writes the shipped presets
-# assets/presets/TECHNIQUE-LEVEL.json. R stays the reference's 5 % of the diagonal and power 1: only
-# the technique's own float rows are fitted (a larger radius or a darkening power would fit the
-# numbers, not the physics). Usage: .ci/tune-presets.sh BUILD_DIR [SCENES_DIR]
+# on four of the shared scenes (even viewpoints train, odd ones are held out) and judges them on the
+# other four (never fitted on), then writes the shipped presets assets/presets/TECHNIQUE-LEVEL.json
+# with both scores. R stays the reference's 5 % of the diagonal and power 1: only the technique's own
+# float rows are fitted (a larger radius or a darkening power would fit the numbers, not the
+# physics). Usage: .ci/tune-presets.sh BUILD_DIR [SCENES_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
 SCENES=${2:-../shared/scenes}
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
-SCENE_ARGS=(--scene "$SCENES/CornellBox/cornellBox.gltf" --scene "$SCENES/FlightHelmet/FlightHelmet.gltf"
-            --scene "$SCENES/2CylinderEngine/2CylinderEngine.gltf" --scene "$SCENES/Lantern/Lantern.gltf")
+# Training: a box of slabs, a CAD assembly in millimetres, a hard-surface model and a photogrammetry-
+# like prop. Held out: the benchmark's FlightHelmet and Lantern, the saw (CAD) and ShaderBall.
+SCENE_ARGS=(--scene "$SCENES/CornellBox/cornellBox.gltf" --scene "$SCENES/2CylinderEngine/2CylinderEngine.gltf"
+            --scene "$SCENES/SciFiHelmet/SciFiHelmet.gltf" --scene "$SCENES/AntiqueCamera/AntiqueCamera.gltf"
+            --held-out-scene "$SCENES/FlightHelmet/FlightHelmet.gltf" --held-out-scene "$SCENES/Lantern/Lantern.gltf"
+            --held-out-scene "$SCENES/ReciprocatingSaw/ReciprocatingSaw.gltf"
+            --held-out-scene "$SCENES/ShaderBall/shader_ball.gltf")
 
 # technique level "KEY=VALUE ..." "knob ..."
 LEVELS=(
@@ -52,7 +58,8 @@ out = {"name": f"{tech}-{level}",
        "description": f"{tech} at {level} quality; " + t["description"].replace("ssaolab tune: ", "free parameters tuned by `ssaolab tune` (make presets): "),
        "ao": {k: t["ao"][k] for k in ("technique", "radius_mode", "radius_scene", "power")},
        tech: t[tech],
-       "denoise": {"kind": t["denoise"]["kind"]}}
+       "denoise": {"kind": t["denoise"]["kind"]},
+       "scores": t["scores"]}
 json.dump(out, open(dst, "w"), indent=2)
 open(dst, "a").write("\n")
 PY

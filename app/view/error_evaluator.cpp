@@ -48,7 +48,12 @@ void ErrorEvaluator::run() {
         pending_.reset();
         working_ = true;
         lock.unlock();
-        Result out{evaluate(r.ao, *r.reference), std::move(r.reference), r.tag};
+        Result out{evaluate(r.ao, *r.reference), std::move(r.reference), r.tag, std::move(r.oracle), {}, {}};
+        if (out.oracle) {
+            out.technique = evaluate(r.ao, *out.oracle).metrics;
+            const Image oracleImg{out.oracle->width, out.oracle->height, 1, out.oracle->ao};
+            out.screen = evaluate(oracleImg, *out.reference).metrics;
+        }
         lock.lock();
         working_ = false;
         result_ = std::move(out);

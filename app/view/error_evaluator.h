@@ -21,11 +21,16 @@ class ErrorEvaluator {
         Image ao; // read back on the GL thread
         std::shared_ptr<const ReferenceImage> reference;
         uint64_t tag = 0; // the caller's, returned with the result
+        // The view's screen-space oracle, when traced: the frame is judged against it too (the
+        // technique's share of the error) and it against the reference (the screen's share).
+        std::shared_ptr<const ReferenceImage> oracle;
     };
     struct Result {
         Evaluation evaluation;
         std::shared_ptr<const ReferenceImage> reference;
         uint64_t tag = 0;
+        std::shared_ptr<const ReferenceImage> oracle;
+        std::optional<ErrorMetrics> technique, screen; // with an oracle
     };
 
     // `wake` (may be empty) is called from the evaluator's thread when a result is ready.

@@ -19,6 +19,10 @@ bool LiveReference::Key::operator==(const Key& o) const {
 void LiveReference::forget() {
     snapshot_.reset();
     submitted_.reset();
+    if (oracleStarted_) oracleWorker_.cancel();
+    oracleStarted_ = false;
+    oracle_.reset();
+    submittedOracle_.reset();
     validFrom_ = tag_ + 1; // an evaluation under way is of the old view
     clear();
 }
@@ -26,6 +30,7 @@ void LiveReference::forget() {
 void LiveReference::clear() {
     shown_.reset();
     metrics_.reset();
+    split_.reset();
     // Bumped only when the buffers held something: while the camera moves this runs every frame,
     // and the upload pass must not run with it.
     if (!buffers_ || buffers_->width > 0) {
@@ -45,6 +50,17 @@ void LiveReference::publish(const ErrorEvaluator::Result& r) {
     b->version = ++version_;
     buffers_ = std::move(b);
     metrics_ = r.evaluation.metrics;
+    if (r.technique && r.screen)
+        split_ = Split{*r.technique, *r.screen};
+    else
+        split_.reset();
+}
+
+double LiveReference::oracleFraction() const {
+    if (!oracleStarted_) return 0.0;
+    if (oracle_) return 1.0;
+    const ReferenceWorker::Progress p = oracleWorker_.progress();
+    return p.job == oracleJob_ ? std::min(p.fraction, 0.999) : 0.0;
 }
 
 bool LiveReference::update(Renderer& r, const std::shared_ptr<const Scene>& scene, bool on, int targetRays,
@@ -52,6 +68,7 @@ bool LiveReference::update(Renderer& r, const std::shared_ptr<const Scene>& scen
                            const std::function<float()>& radiusWorld) {
     // Read first: whatever the threads do after this is news next time.
     seenTrace_ = worker_.serial();
+    seenOracle_ = oracleWorker_.serial();
     seenEvaluation_ = evaluator_.serial();
     if (!on) {
         const bool had = key_ || buffers_;
@@ -93,14 +110,37 @@ bool LiveReference::update(Renderer& r, const std::shared_ptr<const Scene>& scen
     }
     ReferenceWorker::Snapshot s = worker_.latest();
     if (s.job == job_ && s.image) snapshot_ = std::move(s.image);
+    // The reference is done: trace the oracle of the same view (same R, half the rays: its noise
+    // only has to stay below the split's differences), visibility from the depth layer alone.
+    if (!oracleStarted_ && snapshot_ && snapshot_->samples >= key_->target) {
+        ReferenceWorker::Job job;
+        job.scene = scene;
+        job.camera = key_->camera;
+        job.width = key_->width;
+        job.height = key_->height;
+        job.settings.radius = radius_;
+        job.settings.samples = std::max(16, key_->target / 2);
+        job.settings.variant = ReferenceVariant::Visibility;
+        job.settings.visibility = ReferenceVisibility::Screen;
+        job.settings.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
+        oracleJob_ = oracleWorker_.start(std::move(job));
+        oracleStarted_ = true;
+    }
+    if (oracleStarted_ && !oracle_) {
+        ReferenceWorker::Snapshot o = oracleWorker_.latest();
+        const ReferenceWorker::Progress op = oracleWorker_.progress();
+        if (o.job == oracleJob_ && o.image && op.job == oracleJob_ && op.phase == ReferenceWorker::Phase::Done)
+            oracle_ = std::move(o.image);
+    }
     // The error follows each new snapshot and ao.denoised (a parameter changed, the reference
     // stays); the evaluation runs on the evaluator's thread and is shown when it is done.
     const Resource* ao = r.graph().find("ao.denoised");
     if (snapshot_ && ao &&
-        (snapshot_ != submitted_ || ao->version != submittedAo_ ||
+        (snapshot_ != submitted_ || oracle_ != submittedOracle_ || ao->version != submittedAo_ ||
          ao->generation != submittedAoGeneration_)) {
-        evaluator_.submit({readBack(ao->texture, 1), snapshot_, ++tag_});
+        evaluator_.submit({readBack(ao->texture, 1), snapshot_, ++tag_, oracle_});
         submitted_ = snapshot_;
+        submittedOracle_ = oracle_;
         submittedAo_ = ao->version;
         submittedAoGeneration_ = ao->generation;
     }

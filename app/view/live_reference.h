@@ -48,7 +48,8 @@ class LiveReference {
         bool operator!=(const Key& o) const { return !(*this == o); }
     };
 
-    explicit LiveReference(const std::function<void()>& wake = {}) : worker_(wake), evaluator_(wake) {}
+    explicit LiveReference(const std::function<void()>& wake = {})
+        : worker_(wake), oracleWorker_(wake), evaluator_(wake) {}
 
     // Once per frame after the renderer rendered (GL context current). `scene` is what the
     // renderer shows, `fullW x fullH` the render size when input is still, `radiusWorld` the AO's
@@ -63,6 +64,16 @@ class LiveReference {
     Status status() const;
     // The error of ao.denoised against the snapshot shown; nullopt before the first snapshot.
     const std::optional<ErrorMetrics>& metrics() const { return metrics_; }
+    // Once the reference is done, the screen-space oracle of the view is traced (visibility from
+    // the depth layer only, surfaces 1 R thick: the best any screen-space technique could do) and
+    // the error splits: the technique (ao.denoised vs the oracle) and the screen (the oracle vs
+    // the reference). nullopt until both are known.
+    struct Split {
+        ErrorMetrics technique, screen;
+    };
+    const std::optional<Split>& split() const { return split_; }
+    // Where the oracle is: 0 not started, in (0, 1) tracing, 1 done.
+    double oracleFraction() const;
     // The finished reference of the view (every ray traced), null while it is not; with the key it
     // traced (the camera as rendered, the size) and its world radius R.
     std::shared_ptr<const ReferenceImage> finished() const {
@@ -70,9 +81,12 @@ class LiveReference {
     }
     const std::optional<Key>& key() const { return key_; }
     // True when the worker reported something this object has not yet looked at.
-    bool hasNews() const { return worker_.serial() != seenTrace_ || evaluator_.serial() != seenEvaluation_; }
+    bool hasNews() const {
+        return worker_.serial() != seenTrace_ || oracleWorker_.serial() != seenOracle_ ||
+               evaluator_.serial() != seenEvaluation_;
+    }
     // True while the worker thread traces (a cancelled job until it stops).
-    bool tracing() const { return worker_.running(); }
+    bool tracing() const { return worker_.running() || oracleWorker_.running(); }
     // True while an error evaluation is queued or running.
     bool evaluating() const { return evaluator_.busy(); }
 
@@ -82,6 +96,7 @@ class LiveReference {
     void publish(const ErrorEvaluator::Result& r);
 
     ReferenceWorker worker_;
+    ReferenceWorker oracleWorker_;
     ErrorEvaluator evaluator_;
     std::optional<Key> key_; // of the job started, or waiting to start
     bool started_ = false;
@@ -95,8 +110,13 @@ class LiveReference {
     uint64_t tag_ = 0, validFrom_ = 0; // evaluations tagged below validFrom_ are of an older view
     std::shared_ptr<const ReferenceBuffers> buffers_;
     std::optional<ErrorMetrics> metrics_;
+    bool oracleStarted_ = false;
+    uint64_t oracleJob_ = 0;
+    std::shared_ptr<const ReferenceImage> oracle_;          // of the current view, once done
+    std::shared_ptr<const ReferenceImage> submittedOracle_; // sent with the last request
+    std::optional<Split> split_;
     uint64_t version_ = 0;
-    uint64_t seenTrace_ = 0, seenEvaluation_ = 0;
+    uint64_t seenTrace_ = 0, seenOracle_ = 0, seenEvaluation_ = 0;
 };
 
 } // namespace ssao

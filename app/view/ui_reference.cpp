@@ -53,6 +53,54 @@ void progressLine(const LiveReference::Status& s) {
     }
 }
 
+// The error split (live_reference.h): what settings can still fix against what the depth buffer
+// does not hold. The two need not add up: RMSEs of two differences, not a sum of squares.
+void splitSection(const LiveReference& ref) {
+    const auto& sp = ref.split();
+    if (!sp) {
+        const double f = ref.oracleFraction();
+        if (f > 0 && f < 1) {
+            char text[96];
+            std::snprintf(text, sizeof text, "screen-space oracle %.0f%%", 100 * f);
+            ImGui::ProgressBar(float(f), ImVec2(-1, 0), text);
+        }
+        return;
+    }
+    if (ImGui::BeginTable("split", 3, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextDisabled("split");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("technique: ao.denoised against the screen-space oracle - the same integral and R,\n"
+                              "visibility decided only by the depth buffer (surfaces 1 R thick): what settings\n"
+                              "can still fix. screen: the oracle against the reference - what the depth buffer\n"
+                              "does not hold (back faces, hidden and off-screen occluders, true thickness).");
+        ImGui::TableNextColumn();
+        ImGui::TextDisabled("technique");
+        ImGui::TableNextColumn();
+        ImGui::TextDisabled("screen");
+        auto line = [](const char* name, const char* fmt, double a, double b) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(name);
+            for (double v : {a, b}) {
+                ImGui::TableNextColumn();
+                if (std::isfinite(v))
+                    ImGui::Text(fmt, v);
+                else
+                    ImGui::TextDisabled("-");
+            }
+        };
+        line("RMSE", "%.4f", sp->technique.rmse, sp->screen.rmse);
+        line("bias", "%+.4f", sp->technique.bias, sp->screen.bias);
+        ImGui::EndTable();
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("RMSE at edges: technique %.4f, screen %.4f\nRMSE in the interior: technique %.4f, screen %.4f",
+                              sp->technique.rmseEdge, sp->screen.rmseEdge, sp->technique.rmseInterior,
+                              sp->screen.rmseInterior);
+    }
+}
+
 } // namespace
 
 std::string referenceTag(const FrameDriver& frames) {
@@ -112,6 +160,8 @@ void drawReferenceSection(FrameDriver& frames, ViewState& view) {
     }
     rememberRect(view, "reference#metrics");
     ImGui::TextDisabled("R %.4g units, %.1f s, %.1f Mrays/s", s.radius, s.seconds, s.mraysPerSecond);
+    splitSection(frames.reference());
+    rememberRect(view, "reference#split");
 }
 
 } // namespace ssao

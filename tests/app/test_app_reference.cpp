@@ -205,6 +205,22 @@ TEST_F(AppReference, AppearsAsBuffersAndRefinesToItsTarget) {
     EXPECT_GE(hover[0], 0.0f);
     EXPECT_LE(hover[0], 1.0f);
 
+    // Then the screen-space oracle of the same view, and the error split beside the total: the
+    // screen's share (the oracle against the truth) is below the total on the showcase, whose
+    // occluders are mostly on screen; both finite.
+    ASSERT_TRUE(eventually([&] {
+        ui_->frame();
+        return app().frames().reference().split().has_value();
+    }));
+    const LiveReference::Split sp = *app().frames().reference().split();
+    for (double v : {sp.technique.rmse, sp.technique.bias, sp.screen.rmse, sp.screen.bias})
+        EXPECT_TRUE(std::isfinite(v)) << v;
+    EXPECT_GT(sp.technique.rmse, 0.0);
+    EXPECT_LT(sp.screen.rmse, app().frames().reference().metrics()->rmse);
+    EXPECT_EQ(sp.technique.nonFinite + sp.screen.nonFinite, 0);
+    ui_->frame();
+    EXPECT_TRUE(ui_->has("reference#split"));
+
     // Converged: nothing left to do, the app may sleep again.
     ui_->frames(3);
     const int rendered = app().frames().framesRendered();
