@@ -123,9 +123,8 @@ void writeBenchFiles(const BenchRun& run, const std::string& dir) {
     writeFileAtomically((fs::path(dir) / "report.html").string(), benchHtml(run, dir));
 }
 
-std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
-    const auto& cfgs = run.sweep.configs;
-    const ConfigSummary& base = run.summary[run.sweep.baseline];
+// What was run, where, on what; the reference's noise; the shards of a merged run.
+static std::string runFacts(const BenchRun& run) {
     const nlohmann::json& f = run.facts;
     std::ostringstream md;
     md << "Run: " << f.value("date", "") << ", git " << f.value("git_revision", "") << ", "
@@ -160,6 +159,14 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
                << " | " << sh.value("gl_renderer", "") << " | " << sh.value("date", "") << " | "
                << sh.value("git_revision", "") << " | " << sh.value("rows", 0) << " |\n";
     }
+    return md.str();
+}
+
+std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
+    const auto& cfgs = run.sweep.configs;
+    const ConfigSummary& base = run.summary[run.sweep.baseline];
+    std::ostringstream md;
+    md << runFacts(run);
     md << "\n\n![time against error](" << plotFile << ")\n\n";
     md << "Baseline: **" << cfgs[run.sweep.baseline].label << "**: " << num(base.gpuMs, 4)
        << " ms AO + denoise, geometry RMSE " << num(base.rmse, 4) << ", PSNR "

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <map>
 #include <sstream>
@@ -69,6 +70,39 @@ struct Point {
     bool baseline = false, front = false;
 };
 
+// Labels: ~15 front points with 40-80-character keys cannot all be written on the plot
+// without overlapping (they crowd at the low-error end). Each front point gets its number
+// (fastest first) beside it, the baseline its name; the key under the plot (after "</svg>") spells
+// them out. `front` is sorted fastest first; X, Y map a point to the plot.
+void labelsAndKey(std::ostringstream& s, const std::vector<Point>& pts, const std::vector<const Point*>& front,
+                  const std::function<double(double)>& X, const std::function<double(double)>& Y, double W) {
+    std::vector<std::array<double, 4>> taken;
+    auto put = [&](const Point& p, const std::string& text) {
+        const double w = 6.0 * double(text.size()) + 4, h = 12;
+        for (auto [dx, dy] : std::vector<std::pair<double, double>>{{6, -5}, {6, 13}, {-6 - w, -5}, {-6 - w, 13}, {-w / 2, -9}, {-w / 2, 19}}) {
+            const double x = X(p.t) + dx, y = Y(p.e) + dy;
+            bool clash = x < 0 || x + w > W;
+            for (const auto& r : taken)
+                clash = clash || (x < r[2] && x + w > r[0] && y - h < r[3] && y > r[1]);
+            if (clash && !(dx == -w / 2 && dy == 19)) continue;
+            taken.push_back({x, y - h, x + w, y});
+            s << "<text class=\"lbl" << (p.baseline ? " base" : "") << "\" x=\"" << x << "\" y=\"" << y << "\">"
+              << esc(text) << "</text>";
+            break;
+        }
+    };
+    for (const Point& p : pts)
+        if (p.baseline) put(p, p.label);
+    for (size_t i = 0; i < front.size(); ++i)
+        if (!front[i]->baseline) put(*front[i], std::to_string(i + 1));
+    s << "</svg>";
+    s << "<ol class=\"key\"" << (W < 600 ? " style=\"columns:1\"" : "") << ">";
+    for (const Point* p : front)
+        s << "<li>" << esc(p->label) << " <span class=\"num\">" << fmt(p->t, 3) << "x, RMSE " << fmt(p->e)
+          << "</span></li>";
+    s << "</ol>";
+}
+
 // Time-against-error plot: log x (time x baseline), linear y (RMSE), the front as a step line,
 // the reference's noise floor as a grey band from 0.
 std::string svgPlot(const std::vector<Point>& pts, const std::string& title, double noise, double W = 720) {
@@ -128,34 +162,7 @@ std::string svgPlot(const std::vector<Point>& pts, const std::string& title, dou
           << "\" cy=\"" << Y(p.e) << "\" r=\"" << (p.baseline ? 6 : p.front ? 4.5 : 3.2) << "\"><title>"
           << esc(p.hover) << "</title></circle>";
     }
-    // Labels: ~15 front points with 40-80-character keys cannot all be written on the plot
-    // without overlapping (they crowd at the low-error end). Each front point gets its number
-    // (fastest first) beside it, the baseline its name; the key under the plot spells them out.
-    std::vector<std::array<double, 4>> taken;
-    auto put = [&](const Point& p, const std::string& text) {
-        const double w = 6.0 * double(text.size()) + 4, h = 12;
-        for (auto [dx, dy] : std::vector<std::pair<double, double>>{{6, -5}, {6, 13}, {-6 - w, -5}, {-6 - w, 13}, {-w / 2, -9}, {-w / 2, 19}}) {
-            const double x = X(p.t) + dx, y = Y(p.e) + dy;
-            bool clash = x < 0 || x + w > W;
-            for (const auto& r : taken)
-                clash = clash || (x < r[2] && x + w > r[0] && y - h < r[3] && y > r[1]);
-            if (clash && !(dx == -w / 2 && dy == 19)) continue;
-            taken.push_back({x, y - h, x + w, y});
-            s << "<text class=\"lbl" << (p.baseline ? " base" : "") << "\" x=\"" << x << "\" y=\"" << y << "\">"
-              << esc(text) << "</text>";
-            break;
-        }
-    };
-    for (const Point& p : pts)
-        if (p.baseline) put(p, p.label);
-    for (size_t i = 0; i < front.size(); ++i)
-        if (!front[i]->baseline) put(*front[i], std::to_string(i + 1));
-    s << "</svg>";
-    s << "<ol class=\"key\"" << (W < 600 ? " style=\"columns:1\"" : "") << ">";
-    for (const Point* p : front)
-        s << "<li>" << esc(p->label) << " <span class=\"num\">" << fmt(p->t, 3) << "x, RMSE " << fmt(p->e)
-          << "</span></li>";
-    s << "</ol>";
+    labelsAndKey(s, pts, front, X, Y, W);
     std::ostringstream box;
     box << "<div class=\"plotbox\" style=\"max-width:" << W + 10 << "px\">" << s.str() << "</div>";
     return box.str();
