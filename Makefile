@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build run test screenshot goldens bench skips presets stress fuzz test-sanitize clean
+.PHONY: deps configure build run test screenshot goldens bench skips presets stress fuzz test-sanitize clean screen
 
 deps:
 	@bash .ci/install-deps.sh
@@ -52,6 +52,12 @@ skips: build
 
 presets: build
 	@bash .ci/tune-presets.sh $(BUILD) $(SCENES)
+
+# docs/benchmarks.md "What the screen cannot see": every technique's error split against the
+# screen-space oracle on every shared scene, and what a guard band or a second depth layer could
+# close at best (`ssaolab bench`, `render --reference`), then the page reassembled.
+screen: build
+	@bash .ci/screen.sh $(BUILD) $(SCENES)
 
 # docs/stability.md: every technique under extreme projections, scales, placements, precisions and
 # parameter limits (`ssaolab stress`).

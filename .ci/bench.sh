@@ -63,6 +63,17 @@ MD
   echo "hover, the AO, signed error and reference of every front configuration and the baseline, a sortable table)."
   echo
   echo "Raw data: [results.csv](bench/results.csv), [summary.csv](bench/summary.csv), [results.json](bench/results.json)."
+  if [ -f "$OUT/screen.md" ]; then
+    echo
+    echo "## What the screen cannot see (\`make screen\`, every shared scene, 640x360)"
+    echo
+    echo "Regenerate this section alone with \`make screen\` (it runs \`.ci/screen.sh\`)."
+    if [ -f docs/screen-discussion.md ]; then echo; cat docs/screen-discussion.md; fi
+    echo
+    sed -e 's/^### What the screen cannot see$/### The split per scene/' "$OUT/screen.md"
+    echo
+    echo "Raw data: [screen.json](bench/screen.json)."
+  fi
   if [ -f "$OUT/skips.md" ]; then
     echo
     echo "## Skipped work (\`ssaolab skips\`)"

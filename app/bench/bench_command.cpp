@@ -70,6 +70,9 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
     cmd.add_option("--oracle-thickness", o.oracleThickness,
                    "thickness of the oracle's surfaces, x R (inf: a height field, GTAO's assumption)")
         ->check(cliRange(1e-3, INFINITY));
+    cmd.add_option("--oracle-guard", o.oracleGuard, "pixels the oracle's G-buffer holds beyond each edge of the frame")
+        ->capture_default_str()
+        ->check(cliRange(0, 1024));
     cmd.add_option("--shard", o.shard,
                    "K/N: run the K-th of N equal parts of the work (scenes x views x configurations); join "
                    "the parts with `ssaolab bench merge`")
@@ -141,6 +144,7 @@ class SceneBench {
             os.visibility = ReferenceVisibility::Screen;
             os.layers = o_.oracleLayers;
             os.thickness = float(o_.oracleThickness);
+            os.guardBand = o_.oracleGuard;
             ProgressBar bar("  oracle " + scene.name + " " + vname, !o_.quiet);
             oracle = provider.get(r_.camera(), r_.width(), r_.height(), os, [&](double f) { bar.update(f); });
             screen = evaluate(Image{oracle->width, oracle->height, 1, oracle->ao}, ref).metrics;
@@ -283,6 +287,7 @@ int runBench(const BenchOptions& o) {
                               {"radius_scene", o.radiusScene}};
     if (o.oracle)
         run.facts["oracle"] = {{"layers", o.oracleLayers},
+                               {"guard_band_px", o.oracleGuard},
                                {"thickness_r", std::isinf(o.oracleThickness) ? nlohmann::json("inf")
                                                                              : nlohmann::json(o.oracleThickness)}};
     run.facts["scene_specs"] = specs;

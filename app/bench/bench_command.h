@@ -32,6 +32,7 @@ struct BenchOptions {
     bool oracle = true;                   // trace the screen-space oracle: split every error
     int oracleLayers = 1;                 // its depth layers (2: a deep G-buffer)
     double oracleThickness = 1.0;         // its surfaces' thickness, x R (inf: a height field)
+    int oracleGuard = 0;                  // pixels its G-buffer holds beyond each edge of the frame
     std::string shard = "1/1";            // K/N: run only this part of the work (bench/shard.h)
     double budgetMs = 0, maxError = 0;    // the question to answer (bench/bench_answer.h); 0 = none
     bool plot = true;

@@ -63,7 +63,8 @@ std::string splitMarkdown(const BenchRun& run) {
           "same integral, R and rays as the reference, with visibility decided only by what the G-buffer holds ("
        << o.value("layers", 1) << " depth layer(s), surfaces "
        << (o.contains("thickness_r") ? o["thickness_r"].dump() : std::string("inf"))
-       << " x R thick; `reference_ao.h`, `screen_layers.h`). *screen* = the oracle against the truth: what no "
+       << " x R thick, " << o.value("guard_band_px", 0)
+       << " px guard band; `reference_ao.h`, `screen_layers.h`). *screen* = the oracle against the truth: what no "
           "screen-space technique with this G-buffer can recover (the same for every configuration of a view). "
           "*technique* = the AO against the oracle: what the technique's settings can still fix. RMSE over "
           "geometry pixels, RMS over views; edge/interior as in the tables above (within 3 px of a depth "
