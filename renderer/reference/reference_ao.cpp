@@ -232,22 +232,38 @@ void ReferenceTracer::storeHit(size_t i, const RTCRayHit& rh, const glm::vec3& d
     if (coincidentFace(scene_.handle(), o, ng, n, std::max(scale, rh.ray.tfar))) ambiguous_[i] = 1.0f;
 }
 
+// The second layer: the first layer's back face when the view ray meets one next (the solid's true
+// thickness, as a back-face depth buffer holds it), else the nearest surface at least
+// layerSeparation x R behind the first (a deep G-buffer's second layer, Mara et al. 2016).
 void ReferenceTracer::storeSecondLayer(int x, int y, const glm::vec3& p, const glm::vec3& d, float far) {
-    alignas(16) RTCRayHit rh{};
-    const glm::vec3 o = p + d * (settings_.layerSeparation * settings_.radius);
-    rh.ray.org_x = o.x, rh.ray.org_y = o.y, rh.ray.org_z = o.z;
-    rh.ray.dir_x = d.x, rh.ray.dir_y = d.y, rh.ray.dir_z = d.z;
-    rh.ray.tnear = 0.0f;
-    rh.ray.tfar = far;
-    rh.ray.mask = 0xffffffffu;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    rtcIntersect1(scene_.handle(), &ctx, &rh);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return;
-    glm::vec3 ng = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+    auto nearest = [&](float offset, glm::vec3& hit, glm::vec3& ng) {
+        alignas(16) RTCRayHit rh{};
+        const glm::vec3 o = p + d * offset;
+        rh.ray.org_x = o.x, rh.ray.org_y = o.y, rh.ray.org_z = o.z;
+        rh.ray.dir_x = d.x, rh.ray.dir_y = d.y, rh.ray.dir_z = d.z;
+        rh.ray.tnear = 0.0f;
+        rh.ray.tfar = far;
+        rh.ray.mask = 0xffffffffu;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        rtcIntersect1(scene_.handle(), &ctx, &rh);
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+        ng = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+        hit = o + d * rh.ray.tfar;
+        return true;
+    };
+    glm::vec3 hit, ng;
+    // Just behind the first surface (256 ULPs of its coordinates, as the AO rays' own back-off).
+    const float eps = 256.0f * std::numeric_limits<float>::epsilon() *
+                      std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.0f});
+    if (nearest(eps, hit, ng) && glm::dot(ng, d) > 0.0f) {
+        screen_->set(1, x, y, hit, -ng, true); // stored facing the viewer, flagged a back face
+        return;
+    }
+    if (!nearest(settings_.layerSeparation * settings_.radius, hit, ng)) return;
     if (glm::dot(ng, d) > 0.0f) ng = -ng; // as a G-buffer would store it: facing the viewer
-    screen_->set(1, x, y, o + d * rh.ray.tfar, ng);
+    screen_->set(1, x, y, hit, ng);
 }
 
 // A stream of AO rays handed to Embree kBatch at a time; each result lands in its pixel's tallies.

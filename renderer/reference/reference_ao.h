@@ -39,10 +39,11 @@ struct ReferenceSettings {
     ReferenceVariant variant = ReferenceVariant::Visibility;
     int threads = 0;     // 0 = every hardware thread; the result does not depend on it
     ReferenceVisibility visibility = ReferenceVisibility::Scene;
-    // The oracle's screen (visibility = Screen): 1 depth layer (a G-buffer) or 2 (a deep G-buffer:
-    // the nearest surface at least `layerSeparation` x R behind the first; Mara, McGuire,
-    // Nowrouzezahrai and Luebke 2016), each surface solid for `thickness` x R behind itself
-    // (infinite: the height field GTAO assumes).
+    // The oracle's screen (visibility = Screen): 1 depth layer (a G-buffer) or 2: the first
+    // layer's back face when the view ray meets one next (its true thickness, as a back-face depth
+    // buffer holds it), else the nearest surface at least `layerSeparation` x R behind the first (a
+    // deep G-buffer; Mara, McGuire, Nowrouzezahrai and Luebke 2016). A front surface is solid for
+    // `thickness` x R behind itself (infinite: the height field GTAO assumes) or down to its back face.
     int layers = 1;
     float thickness = 1.0f; // x R; 1 R: the best of 0.25..inf on CornellBox (README, "The screen-space oracle")
     float layerSeparation = 0.1f;

@@ -56,7 +56,8 @@ std::string ReferenceKey::text() const {
     if (camera.orthographic()) s << " projection=orthographic"; // perspective keys stay as they were
     if (settings.visibility == ReferenceVisibility::Screen)
         s << " visibility=screen layers=" << settings.layers << " thickness=" << bits(settings.thickness)
-          << " separation=" << bits(settings.layerSeparation) << " guard=" << settings.guardBand;
+          << " separation=" << bits(settings.layerSeparation) << " guard=" << settings.guardBand
+          << " second=backface-v3"; // the second layer: the back face when it is next (screen_layers.h)
     return s.str();
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ssao {
 
@@ -19,13 +20,13 @@ ScreenLayers::ScreenLayers(const Camera& c, int width, int height, int layers, f
     surfaces_.assign(size_t(width + 2 * guard) * size_t(height + 2 * guard) * layers, Surface{});
 }
 
-void ScreenLayers::set(int layer, size_t pixel, const glm::vec3& point, const glm::vec3& normal) {
-    set(layer, int(pixel % size_t(width_)), int(pixel / size_t(width_)), point, normal);
+void ScreenLayers::set(int layer, size_t pixel, const glm::vec3& point, const glm::vec3& normal, bool backFace) {
+    set(layer, int(pixel % size_t(width_)), int(pixel / size_t(width_)), point, normal, backFace);
 }
 
-void ScreenLayers::set(int layer, int x, int y, const glm::vec3& point, const glm::vec3& normal) {
+void ScreenLayers::set(int layer, int x, int y, const glm::vec3& point, const glm::vec3& normal, bool backFace) {
     const size_t plane = size_t(width_ + 2 * guard_) * size_t(height_ + 2 * guard_);
-    surfaces_[size_t(layer) * plane + index(x, y)] = {point, normal, true};
+    surfaces_[size_t(layer) * plane + index(x, y)] = {point, normal, true, backFace && layer == 1};
 }
 
 // The rasteriser's mapping (reference_ao.cpp PrimaryRays): NDC x = 2 (x + 0.5) / W - 1, y up;
@@ -50,18 +51,13 @@ bool ScreenLayers::project(const glm::vec3& p, int& x, int& y, float& fx, float&
     return true;
 }
 
-// Whether q lies behind the surface's tangent plane, along the view ray through q, by no more than
-// the thickness. u - s = dot(P - q, N) / dot(r, N): the plane's distance along r minus q's.
-bool ScreenLayers::behind(const Surface& s, const glm::vec3& q) const {
-    if (!s.valid) return false;
+// u - s = dot(P - q, N) / dot(r, N): the plane's distance along r minus q's.
+float ScreenLayers::gapBehind(const Surface& s, const glm::vec3& q) const {
+    if (!s.valid) return std::numeric_limits<float>::quiet_NaN();
     const glm::vec3 r = ortho_ ? fwd_ : glm::normalize(q - eye_);
     const float rn = glm::dot(r, s.n);
-    float gap; // how far q lies behind the surface along r (negative: in front)
-    if (std::abs(rn) > 1e-3f)
-        gap = -glm::dot(s.p - q, s.n) / rn;
-    else // seen edge-on: compare the two points' distances along the ray
-        gap = glm::dot(q - eye_, r) - glm::dot(s.p - eye_, r);
-    return gap > 0.0f && gap <= thickness_;
+    if (std::abs(rn) > 1e-3f) return -glm::dot(s.p - q, s.n) / rn;
+    return glm::dot(q - eye_, r) - glm::dot(s.p - eye_, r); // edge-on: the two points' distances along r
 }
 
 bool ScreenLayers::occluded(const glm::vec3& o, const glm::vec3& d, float R, size_t ownPixel) const {
@@ -80,15 +76,30 @@ bool ScreenLayers::occluded(const glm::vec3& o, const glm::vec3& d, float R, siz
     const int steps = std::clamp(int(std::ceil(pixels)), 1, 512);
     const size_t plane = size_t(width_ + 2 * guard_) * size_t(height_ + 2 * guard_);
     const size_t own = index(int(ownPixel % size_t(width_)), int(ownPixel / size_t(width_)));
+    glm::vec3 prev = o;
     for (int k = 1; k <= steps; ++k) {
         const glm::vec3 q = o + d * (tEnd * float(k) / float(steps));
+        const glm::vec3 before = prev;
+        prev = q;
         int x, y;
         float fx, fy;
         if (!project(q, x, y, fx, fy)) continue; // not on the screen: unknown, occludes nothing
         const size_t px = index(x, y);
         if (px == own) continue;
-        for (int l = 0; l < layers_; ++l)
-            if (behind(surfaces_[l * plane + px], q)) return true;
+        const float g0 = gapBehind(surfaces_[px], q);
+        if (layers_ > 1 && surfaces_[plane + px].back) {
+            // The first surface's solid ends at its back face: between the two, whatever the
+            // thickness; and a step that crossed the front plane and lands beyond the back face
+            // passed through the solid (a shell thinner than a step is not stepped over).
+            if (g0 > 0.0f && (!(gapBehind(surfaces_[plane + px], q) > 0.0f) || !(gapBehind(surfaces_[px], before) > 0.0f)))
+                return true;
+            continue;
+        }
+        if (g0 > 0.0f && g0 <= thickness_) return true;
+        if (layers_ > 1) {
+            const float g1 = gapBehind(surfaces_[plane + px], q);
+            if (g1 > 0.0f && g1 <= thickness_) return true;
+        }
     }
     return false;
 }

@@ -4,6 +4,10 @@
 // infinite thickness is the height-field assumption GTAO makes). A ray is occluded when a point
 // of it within R lies behind a layer's surface, within that thickness, at a pixel other than its
 // own; a point off screen or behind the camera is unknown to the screen, so it occludes nothing.
+// A second layer that is a back face (the far side of the first layer's solid, as a back-face
+// depth buffer holds it) bounds that solid instead: the first surface is solid exactly down to it,
+// and the back face occludes nothing behind itself. A second layer that faces the camera is
+// another surface, solid for `thickness` behind itself like the first.
 // The ground truth (reference_ao.h) asks the scene instead; the difference between the two is
 // what no screen-space technique with these buffers can see.
 #pragma once
@@ -23,8 +27,9 @@ class ScreenLayers {
 
     // The surface of `layer` at `pixel` of the frame (row-major, top row first), or at (x, y) with
     // x in [-guard, width + guard) and y likewise.
-    void set(int layer, size_t pixel, const glm::vec3& point, const glm::vec3& normal);
-    void set(int layer, int x, int y, const glm::vec3& point, const glm::vec3& normal);
+    // `backFace`: the surface faces away from the camera (layer 1 only: the first layer's far side).
+    void set(int layer, size_t pixel, const glm::vec3& point, const glm::vec3& normal, bool backFace = false);
+    void set(int layer, int x, int y, const glm::vec3& point, const glm::vec3& normal, bool backFace = false);
     int guard() const { return guard_; }
 
     // Marches o + t d for t in (0, R] one pixel at a time.
@@ -39,8 +44,11 @@ class ScreenLayers {
     struct Surface {
         glm::vec3 p{0.0f}, n{0.0f};
         bool valid = false;
+        bool back = false;
     };
-    bool behind(const Surface& s, const glm::vec3& q) const;
+    // How far q lies behind the surface's tangent plane along the view ray through q (negative: in
+    // front); NaN for no surface.
+    float gapBehind(const Surface& s, const glm::vec3& q) const;
 
     glm::vec3 eye_, fwd_, right_, up_;
     float tanHalf_, aspect_, orthoHalf_, near_;
