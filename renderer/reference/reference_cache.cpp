@@ -57,7 +57,7 @@ std::string ReferenceKey::text() const {
     if (settings.visibility == ReferenceVisibility::Screen)
         s << " visibility=screen layers=" << settings.layers << " thickness=" << bits(settings.thickness)
           << " separation=" << bits(settings.layerSeparation) << " guard=" << settings.guardBand
-          << " second=backface-v3"; // the second layer: the back face when it is next (screen_layers.h)
+          << " second=backface-v5"; // the second layer: the back face when it is next (screen_layers.h)
     return s.str();
 }
 

@@ -23,6 +23,17 @@ inline void quad(Scene& s, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p
     s.indices.insert(s.indices.end(), {b, b + 1, b + 2, b, b + 2, b + 3});
 }
 
+// A closed box [lo, hi] wound counter-clockwise seen from outside (glTF's front faces).
+inline void box(Scene& s, glm::vec3 lo, glm::vec3 hi) {
+    const float x0 = lo.x, y0 = lo.y, z0 = lo.z, x1 = hi.x, y1 = hi.y, z1 = hi.z;
+    quad(s, {x0, y1, z0}, {x0, y1, z1}, {x1, y1, z1}, {x1, y1, z0}); // +y
+    quad(s, {x0, y0, z0}, {x1, y0, z0}, {x1, y0, z1}, {x0, y0, z1}); // -y
+    quad(s, {x1, y0, z0}, {x1, y1, z0}, {x1, y1, z1}, {x1, y0, z1}); // +x
+    quad(s, {x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}, {x0, y1, z0}); // -x
+    quad(s, {x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}); // +z
+    quad(s, {x0, y0, z0}, {x0, y1, z0}, {x1, y1, z0}, {x1, y0, z0}); // -z
+}
+
 // Floor y = 0 over [-L, L]^2, optionally a wall x = 0 (facing +x) of height H.
 inline Scene floorScene(bool wall, float L = 50.0f, float H = 50.0f) {
     Scene s;

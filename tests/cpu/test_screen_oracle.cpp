@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace ssao;
 using namespace ssaotest;
@@ -109,6 +110,43 @@ TEST(ScreenOracle, AThinnerSurfaceLetsRaysPassBehindIt) {
     for (size_t i = 0; i < thick.ao.size(); ++i)
         a += thick.ao[i], b += thin.ao[i];
     EXPECT_GT(b, a + 1.0) << "a thin lid occludes fewer rays than a solid block";
+}
+
+TEST(ScreenOracle, ABackFaceLayerGivesTheTrueThicknessAndStepsOverNoThinSolid) {
+    // Thin closed boxes (0.1 R thick) standing on the floor, seen obliquely. With one layer of 1 R
+    // the oracle makes each box 10 times too deep (rays that pass behind it are blocked); with the
+    // back face as the second layer the solid ends where it really does, so the oracle moves toward
+    // the truth; and every ray through a box is still blocked (a box no step can jump over).
+    Scene s = floorScene(false);
+    for (float x : {-1.0f, 0.0f, 1.0f})
+        box(s, {x - 0.05f, 0.0f, -1.5f}, {x + 0.05f, 0.8f, 1.5f});
+    s.draws.back().indexCount = uint32_t(s.indices.size());
+    s.computeBounds();
+    EmbreeScene rt(s);
+    Camera cam = lookDown({0, 0, 0}, 3.0f, 50.0f);
+    cam.eye = {0.0f, 2.5f, 2.5f};
+    cam.up = {0, 1, 0};
+    const int w = 64, h = 48;
+    const float R = 1.0f;
+    const ReferenceImage truth = traceReference(rt, cam, w, h, {R, 256});
+    const ReferenceImage one = traceReference(rt, cam, w, h, oracle(R, 256, 1, 1.0f));
+    const ReferenceImage two = traceReference(rt, cam, w, h, oracle(R, 256, 2, 1.0f));
+    double se1 = 0, se2 = 0, b1 = 0, b2 = 0;
+    long n = 0;
+    for (size_t i = 0; i < truth.ao.size(); ++i) {
+        if (!(truth.geometry[i] > 0.0f)) continue;
+        se1 += (one.ao[i] - truth.ao[i]) * (one.ao[i] - truth.ao[i]);
+        se2 += (two.ao[i] - truth.ao[i]) * (two.ao[i] - truth.ao[i]);
+        b1 += one.ao[i] - truth.ao[i], b2 += two.ao[i] - truth.ao[i];
+        ++n;
+    }
+    ASSERT_GT(n, 1000);
+    const double r1 = std::sqrt(se1 / n), r2 = std::sqrt(se2 / n);
+    std::printf("1 layer of 1 R: RMSE %.4f bias %+.4f; back-face layer: RMSE %.4f bias %+.4f\n", r1, b1 / n, r2, b2 / n);
+    EXPECT_LT(r2, 0.7 * r1);
+    EXPECT_LT(b1 / n, -0.005) << "one thick layer over-occludes";
+    EXPECT_GT(b2 / n, b1 / n) << "the true thickness removes the over-occlusion";
+    EXPECT_LT(std::abs(b2 / n), 0.012) << "what is left is what neither layer holds, not rays stepping through a box";
 }
 
 TEST(ScreenOracle, BadSettingsAreRefused) {
