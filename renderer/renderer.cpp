@@ -5,6 +5,7 @@
 #include "passes/composite_pass.h"
 #include "passes/denoise_pass.h"
 #include "passes/gbuffer_pass.h"
+#include "passes/guard_band_pass.h"
 #include "passes/position_pyramid_pass.h"
 #include "scene/view_fit.h"
 #include "settings/params.h"
@@ -160,6 +161,12 @@ void Renderer::buildGraph() {
     std::vector<FrameGraph::Node> nodes;
     std::map<std::string, std::string> aliases;
     nodes.push_back({&passFor("gbuffer", [] { return std::make_unique<GBufferPass>(); }), &settings_});
+    // The guard band, shared by both chains, as wide as the wider chain asks.
+    const int band = std::max(GuardBandPass::bandOf(settings_), settingsB_ ? GuardBandPass::bandOf(*settingsB_) : 0);
+    if (band > 0)
+        nodes.push_back({&passFor("guard_band:" + std::to_string(band),
+                                  [band] { return std::make_unique<GuardBandPass>(band); }),
+                         &settings_});
     // The position pyramid, shared by both chains, when a chain's technique reads it.
     if (usesPyramid(settings_) || (settingsB_ && usesPyramid(*settingsB_)))
         nodes.push_back({&passFor("position_mips", [] { return std::make_unique<PositionPyramidPass>(); }),

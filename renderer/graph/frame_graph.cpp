@@ -127,7 +127,7 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
     for (const Compiled& n : nodes_)
         for (const ResourceDesc& d : n.decl.writes) {
             live.insert(d.name);
-            const int rw = scaledSize(w, d.scale), rh = scaledSize(h, d.scale);
+            const int rw = scaledSize(w, d.scale) + 2 * d.margin, rh = scaledSize(h, d.scale) + 2 * d.margin;
             Resource& r = resources_[d.name];
             r.producer = n.pass->name();
             int levels = 1;

@@ -29,6 +29,7 @@ struct ResourceDesc {
     std::string help;      // one line for tooltips and the README
     bool internal = false; // scratch data (ping-pong): not listed, written or reported
     int levels = 1;        // > 1: a MIP chain of at most this many levels (fewer when the size runs out)
+    int margin = 0;        // pixels added beyond each edge of the scaled size (a guard band)
     // Stored value → meaning: value * decodeScale + decodeOffset ((n+1)/2 normals: 2, -1).
     float decodeScale = 1.0f, decodeOffset = 0.0f;
 };

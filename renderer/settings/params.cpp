@@ -54,6 +54,10 @@ std::vector<Param> coreRows() {
                  ({{"rgba16f", TargetFormat::RGBA16F},
                    {"rgba32f", TargetFormat::RGBA32F},
                    {"rgba8", TargetFormat::RGBA8}})),
+        INT_ROW("gbuffer.guard_band_px", "Guard band", gbuffer.guardBandPx, 0, 256, "pixels",
+                "Positions also rendered this many pixels beyond each edge of the frame (same pixel grid), so "
+                "taps near the border see what is just off screen (G3D's demos use 64). SAO, HBAO, GTAO and the "
+                "bitmask read it; 0 = none."),
         // ---- AO (every technique) -------------------------------------------------------------
         techniqueRow(),
         ENUM_ROW(

@@ -17,6 +17,7 @@ enum class DenoiseKind { None, Box4, Box4Centred, Gaussian, Bilateral };
 struct GBufferSettings {
     TargetFormat positionFormat = TargetFormat::RGBA32F;
     TargetFormat normalFormat = TargetFormat::RGBA16F;
+    int guardBandPx = 0; // positions also rendered this many pixels beyond each edge (0 = none)
 };
 
 // What every AO technique shares: which one runs, its radius (in one of three unit systems),

@@ -1,6 +1,7 @@
 #include "techniques/ao_pass.h"
 
 #include "gl/shader_library.h"
+#include "passes/guard_band_pass.h"
 #include "passes/position_pyramid_pass.h"
 #include "scene/camera.h"
 #include "techniques/ao_common.h"
@@ -24,11 +25,13 @@ gpu::AoCommon aoCommonFor(const Settings& s, const FrameInfo& f, AoNoise noise, 
                                    s.gbuffer.normalFormat == TargetFormat::RGBA8);
     packNoise(c, noise);
     c.estimator.w = pyramidOffset; // taps d px away read MIP log2(d) - this (0: no pyramid)
+    c.flags.w = GuardBandPass::bandOf(s) > 0 ? 1.0f : 0.0f; // taps off the frame read the band
     return c;
 }
 
-AoBindings aoBindings(const Settings& s, AoNoise noise, bool pyramid) {
+AoBindings aoBindings(const Settings& s, AoNoise noise, bool pyramid, bool band) {
     AoBindings b;
+    b.guardBand = band && GuardBandPass::bandOf(s) > 0;
     b.gbufferNormals = s.ao.normals == NormalSource::GBuffer;
     b.blueNoise = noise == AoNoise::Blue;
     b.pyramid = pyramid;
@@ -40,6 +43,7 @@ void declareAoInputs(PassBuilder& b, const Chain& chain, const Settings& s, cons
     b.read(positions);
     if (bind.gbufferNormals) b.read("gbuffer.normal"); // else rebuilt from positions
     if (bind.pyramid) b.read(PositionPyramidPass::kOutput);
+    if (bind.guardBand) b.read(GuardBandPass::kOutput);
     b.write(aoRawOutput(chain, s));
 }
 
@@ -55,6 +59,7 @@ void AoShared::bind(PassContext& ctx, const AoBindings& bind, const std::string&
         blueNoise_.bind(SSAO_TEX_BLUE_NOISE);
     }
     if (bind.pyramid) ctx.in(PositionPyramidPass::kOutput).bind(SSAO_TEX_POSITION_MIPS);
+    if (bind.guardBand) ctx.in(GuardBandPass::kOutput).bind(SSAO_TEX_POSITION_BAND);
 }
 
 void AoShared::draw(PassContext& ctx, const Chain& chain, const std::string& shader, bool inspect) {

@@ -14,3 +14,24 @@ vec4 aoTap(AoCommon_ c, sampler2D positions, vec2 uv, float offsetPx) {
     }
     return textureLod(positions, uv, 0.0);
 }
+
+// The guard band (gbuffer.guard_band_px > 0: AoCommon flags.w = 1; passes/guard_band_pass.h): the
+// positions of the frame and a margin beyond each edge, rendered with the same pixel grid. A tap
+// off the frame reads it there. False when the tap lies beyond what is held (the frame without a
+// band, or beyond the band): the screen knows nothing there.
+layout(binding = SSAO_TEX_POSITION_BAND) uniform sampler2D aoPositionBand;
+
+bool aoTapHeld(AoCommon_ c, sampler2D positions, vec2 uv, float offsetPx, out vec4 S) {
+    S = vec4(0.0);
+    if (all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)))) {
+        S = aoTap(c, positions, uv, offsetPx);
+        return true;
+    }
+    if (c.flags.w == 0.0) return false;
+    vec2 band = vec2(textureSize(aoPositionBand, 0));  // the frame plus g pixels on each side
+    vec2 g = 0.5 * (band - frame.viewport.xy);
+    vec2 uvBand = (uv * frame.viewport.xy + g) / band;
+    if (any(lessThan(uvBand, vec2(0.0))) || any(greaterThan(uvBand, vec2(1.0)))) return false;
+    S = textureLod(aoPositionBand, uvBand, 0.0);
+    return true;
+}

@@ -7,7 +7,7 @@ namespace ssao {
 
 void KernelPass::setup(PassBuilder& b, const Settings& s) const {
     const bool fromDepth = s.kernel.positionSource == PositionSource::Depth;
-    declareAoInputs(b, chain(), s, aoBindings(s, AoNoise::None, false),
+    declareAoInputs(b, chain(), s, aoBindings(s, AoNoise::None, false, false),
                     fromDepth ? "gbuffer.zbuffer" : "gbuffer.position");
 }
 
@@ -17,7 +17,7 @@ KernelConfig KernelPass::config(const Settings& s, const FrameInfo& f) const {
     // its taps are projected 3-D points.
     c.constants = packKernelConstants(s.kernel, aoCommonFor(s, f, AoNoise::None, 0.0f));
     c.frame = f.constants;
-    c.bind = aoBindings(s, AoNoise::None, false);
+    c.bind = aoBindings(s, AoNoise::None, false, false);
     c.positionsFromDepth = s.kernel.positionSource == PositionSource::Depth;
     c.noiseSeed = s.kernel.seed;
     return c;

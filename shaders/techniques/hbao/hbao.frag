@@ -47,11 +47,11 @@ void main() {
         for (int s = 0; s < steps; ++s) {
             vec2 offsetPx = round(omega * (1.0 + (float(s) + noise.y) * stepPx));
             vec2 uv = uv0 + offsetPx * frame.viewport.zw;
-            if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) {
+            vec4 S; // off the held area (the frame and its guard band): unseen, no occluder
+            if (!aoTapHeld(ssao.aoCommon, gPosition, uv, length(offsetPx), S)) {
                 INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, d);
                 continue;
             }
-            vec4 S = aoTap(ssao.aoCommon, gPosition, uv, length(offsetPx));
             if (S.w == 0.0) {
                 INSPECT_TAP(P, uv, SSAO_TAP_SKY, 0.0, d);
                 continue;

@@ -38,11 +38,11 @@ void main() {
         float alpha = (float(i) + 0.5) / float(n);
         float angle = alpha * ssao.params.x * TWO_PI + spin;
         vec2 uv = uv0 + round(alpha * radiusPx * vec2(cos(angle), sin(angle))) * frame.viewport.zw;
-        if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) {
+        vec4 Q; // off the held area (the frame and its guard band): unseen, no occluder
+        if (!aoTapHeld(ssao.aoCommon, gPosition, uv, alpha * radiusPx, Q)) {
             INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, 0);
             continue;
         }
-        vec4 Q = aoTap(ssao.aoCommon, gPosition, uv, alpha * radiusPx);
         if (Q.w == 0.0) {
             INSPECT_TAP(P, uv, SSAO_TAP_SKY, 0.0, 0);
             continue;

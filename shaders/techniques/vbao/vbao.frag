@@ -66,11 +66,11 @@ void main() {
             vec2 offsetUv = round(s * radiusPx * omega) * frame.viewport.zw;
             for (int side = 0; side < 2; ++side) {
                 vec2 uv = uv0 + (side == 0 ? offsetUv : -offsetUv);
-                if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) {
+                vec4 S; // off the held area (the frame and its guard band): unseen, no occluder
+                if (!aoTapHeld(ssao.aoCommon, gPosition, uv, s * radiusPx, S)) {
                     INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, slice);
                     continue;
                 }
-                vec4 S = aoTap(ssao.aoCommon, gPosition, uv, s * radiusPx);
                 if (S.w == 0.0) {
                     INSPECT_TAP(P, uv, SSAO_TAP_SKY, 0.0, slice);
                     continue;
