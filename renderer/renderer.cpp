@@ -2,6 +2,7 @@
 
 #include "gl/shader_library.h"
 #include "output/image.h"
+#include "passes/back_face_pass.h"
 #include "passes/composite_pass.h"
 #include "passes/denoise_pass.h"
 #include "passes/gbuffer_pass.h"
@@ -167,6 +168,9 @@ void Renderer::buildGraph() {
         nodes.push_back({&passFor("guard_band:" + std::to_string(band),
                                   [band] { return std::make_unique<GuardBandPass>(band); }),
                          &settings_});
+    // The back-face layer, shared likewise.
+    if (BackFacePass::on(settings_) || (settingsB_ && BackFacePass::on(*settingsB_)))
+        nodes.push_back({&passFor("back_faces", [] { return std::make_unique<BackFacePass>(); }), &settings_});
     // The position pyramid, shared by both chains, when a chain's technique reads it.
     if (usesPyramid(settings_) || (settingsB_ && usesPyramid(*settingsB_)))
         nodes.push_back({&passFor("position_mips", [] { return std::make_unique<PositionPyramidPass>(); }),

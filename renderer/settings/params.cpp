@@ -58,6 +58,10 @@ std::vector<Param> coreRows() {
                 "Positions also rendered this many pixels beyond each edge of the frame (same pixel grid), so "
                 "taps near the border see what is just off screen (G3D's demos use 64). SAO, HBAO, GTAO and the "
                 "bitmask read it; 0 = none."),
+        BOOL_ROW("gbuffer.back_faces", "Back faces", gbuffer.backFaces,
+                 "A second geometry pass keeps the nearest surface facing away from the camera (by its normal): "
+                 "where it lies behind a tap, the bitmask hides the sectors down to it - the surface's true "
+                 "thickness - instead of the assumed vbao.thickness."),
         // ---- AO (every technique) -------------------------------------------------------------
         techniqueRow(),
         ENUM_ROW(

@@ -18,6 +18,7 @@ struct GBufferSettings {
     TargetFormat positionFormat = TargetFormat::RGBA32F;
     TargetFormat normalFormat = TargetFormat::RGBA16F;
     int guardBandPx = 0; // positions also rendered this many pixels beyond each edge (0 = none)
+    bool backFaces = false; // the nearest surface facing away, as a linear depth (true thickness)
 };
 
 // What every AO technique shares: which one runs, its radius (in one of three unit systems),

@@ -1,6 +1,7 @@
 #include "techniques/ao_pass.h"
 
 #include "gl/shader_library.h"
+#include "passes/back_face_pass.h"
 #include "passes/guard_band_pass.h"
 #include "passes/position_pyramid_pass.h"
 #include "scene/camera.h"
@@ -25,13 +26,15 @@ gpu::AoCommon aoCommonFor(const Settings& s, const FrameInfo& f, AoNoise noise, 
                                    s.gbuffer.normalFormat == TargetFormat::RGBA8);
     packNoise(c, noise);
     c.estimator.w = pyramidOffset; // taps d px away read MIP log2(d) - this (0: no pyramid)
-    c.flags.w = GuardBandPass::bandOf(s) > 0 ? 1.0f : 0.0f; // taps off the frame read the band
+    // Taps off the frame read the band; taps' thickness from the back layer (bindings.h bits).
+    c.flags.w = float((GuardBandPass::bandOf(s) > 0 ? SSAO_AO_BAND : 0) | (BackFacePass::on(s) ? SSAO_AO_BACK_DEPTH : 0));
     return c;
 }
 
 AoBindings aoBindings(const Settings& s, AoNoise noise, bool pyramid, bool band) {
     AoBindings b;
     b.guardBand = band && GuardBandPass::bandOf(s) > 0;
+    b.backDepth = band && BackFacePass::on(s);
     b.gbufferNormals = s.ao.normals == NormalSource::GBuffer;
     b.blueNoise = noise == AoNoise::Blue;
     b.pyramid = pyramid;
@@ -44,6 +47,7 @@ void declareAoInputs(PassBuilder& b, const Chain& chain, const Settings& s, cons
     if (bind.gbufferNormals) b.read("gbuffer.normal"); // else rebuilt from positions
     if (bind.pyramid) b.read(PositionPyramidPass::kOutput);
     if (bind.guardBand) b.read(GuardBandPass::kOutput);
+    if (bind.backDepth) b.read(BackFacePass::kOutput);
     b.write(aoRawOutput(chain, s));
 }
 
@@ -60,6 +64,7 @@ void AoShared::bind(PassContext& ctx, const AoBindings& bind, const std::string&
     }
     if (bind.pyramid) ctx.in(PositionPyramidPass::kOutput).bind(SSAO_TEX_POSITION_MIPS);
     if (bind.guardBand) ctx.in(GuardBandPass::kOutput).bind(SSAO_TEX_POSITION_BAND);
+    if (bind.backDepth) ctx.in(BackFacePass::kOutput).bind(SSAO_TEX_BACK_DEPTH);
 }
 
 void AoShared::draw(PassContext& ctx, const Chain& chain, const std::string& shader, bool inspect) {

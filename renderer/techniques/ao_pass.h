@@ -23,6 +23,7 @@ struct AoBindings {
     int32_t blueNoise = 0;      // binds the blue-noise tile (the technique's noise is `blue`)
     int32_t pyramid = 0;        // reads and binds gbuffer.position_mips (passes/position_pyramid_pass.h)
     int32_t guardBand = 0;      // reads and binds gbuffer.guard_band (passes/guard_band_pass.h)
+    int32_t backDepth = 0;      // reads and binds gbuffer.back_depth (passes/back_face_pass.h)
 };
 
 // The config of a technique that is one constant block and one shader.
@@ -39,8 +40,8 @@ ResourceDesc aoRawOutput(const Chain& chain, const Settings& s);
 // mode), power, target size, sky skip, adaptive samples, the G-buffer's normal encoding, and the
 // technique's noise kind and position-pyramid offset (0 = no pyramid).
 gpu::AoCommon aoCommonFor(const Settings& s, const FrameInfo& f, AoNoise noise, float pyramidOffset);
-// `band`: the technique reads the guard band when the settings have one (its taps go through
-// aoTapHeld, shaders/include/position_taps.glsl).
+// `band`: the technique reads the guard band and the back-face layer when the settings have them
+// (its taps go through aoTapHeld and aoBackGap, shaders/include/position_taps.glsl).
 AoBindings aoBindings(const Settings& s, AoNoise noise, bool pyramid, bool band = true);
 // Declares `positions` (the G-buffer's positions, or the depth buffer it rebuilds them from), the
 // reads AoBindings imply (gbuffer.normal, gbuffer.position_mips) and the ao.raw write.

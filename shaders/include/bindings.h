@@ -16,6 +16,7 @@
 #define SSAO_TEX_VIEW_MASK 8    // geometry mask for the view pass (linear depth > 0)
 #define SSAO_TEX_VIEW_SOURCE_B 9 // second buffer of a difference view
 #define SSAO_TEX_TECHNIQUE 10   // first unit free for a technique's own textures
+#define SSAO_TEX_BACK_DEPTH 12 // gbuffer.back_depth: linear depth of the nearest surface facing away
 #define SSAO_TEX_POSITION_BAND 13 // gbuffer.guard_band: positions of the frame and a margin beyond it
 #define SSAO_TEX_BLUE_NOISE 14  // 64x64 blue noise, two channels (techniques/noise/blue_noise.h)
 #define SSAO_TEX_POSITION_MIPS 15 // gbuffer.position with a MIP pyramid (techniques/position_pyramid.h)
@@ -31,6 +32,10 @@
 #define SSAO_DENOISE_NORMAL_UNORM 1     // bilateral: normals stored as (n+1)/2
 #define SSAO_DENOISE_SKIP_SKY 2         // separable, last pass: sky pixels return 1 unfiltered
 #define SSAO_INSPECT_MAX_TAPS 1024
+
+// AoCommon.flags.w bits.
+#define SSAO_AO_BAND 1
+#define SSAO_AO_BACK_DEPTH 2
 
 // Radius modes as the shaders see them (scene mode is resolved to world units on the CPU).
 #define SSAO_RADIUS_WORLD 0
@@ -88,8 +93,9 @@ SSAO_STRUCT AoCommon_ {
                     // w: position-pyramid offset: taps d pixels away read MIP log2(d) - w (0 = no pyramid)
     vec4 target;    // AO target width, height, 1/width, 1/height (pixels)
     vec4 flags;     // x: 1 = sky pixels return at once (skip.sky), y: adaptive samples' pixels per
-                    // sample (0 = off), z: 1 = normals stored as (n+1)/2 (an RGBA8 target), w: 1 = a
-                    // guard band is bound (taps off the frame read it; position_taps.glsl)
+                    // sample (0 = off), z: 1 = normals stored as (n+1)/2 (an RGBA8 target), w: bits
+                    // SSAO_AO_BAND (a guard band is bound: taps off the frame read it) and
+                    // SSAO_AO_BACK_DEPTH (back-face depth is bound; position_taps.glsl)
 };
 
 SSAO_STRUCT DenoiseConstants_ {

@@ -82,7 +82,9 @@ void main() {
                     continue;
                 }
                 front = aoSliceDelta(sl, front); // the angles in the slice plane (slice.glsl)
-                vec3 back = front + normalize(P + front) * thickness; // along the view ray through it
+                // Along the view ray through it: the assumed thickness, or the true one where the
+                // back-face layer holds the far side of this surface (gbuffer.back_faces).
+                vec3 back = front + normalize(P + front) * aoBackGap(ssao.aoCommon, uv, S.xyz, thickness);
                 float sgn = side == 0 ? 1.0 : -1.0; // side 0 at positive angles from V
                 float hFront = sgn * safeAcos(dot(normalize(front), V));
                 float hBack = sgn * safeAcos(dot(normalize(back), V));
