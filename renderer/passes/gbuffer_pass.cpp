@@ -73,33 +73,32 @@ void GBufferPass::run(PassContext& ctx, const GBufferConfig& c) {
     }
     outputs.push_back("gbuffer.zbuffer"); // the depth test needs it
     ctx.bindOutputs(outputs);
-    GLint fbo = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
-    const float zero[4] = {0, 0, 0, 0};
-    for (size_t i = 0; i + 1 < outputs.size(); ++i)
-        glClearNamedFramebufferfv(GLuint(fbo), GL_COLOR, GLint(i), zero); // w = 0: sky
-    // Reversed depth (scene/camera.h): z_ndc in [0, 1] written as is, 1 at near, cleared to 0 (far)
-    // and tested with GREATER; the other passes draw with the default clip control.
     const bool reversed = c.frame.camera.y != 0.0f;
-    const float clearDepth = reversed ? 0.0f : 1.0f;
-    glClearNamedFramebufferfv(GLuint(fbo), GL_DEPTH, 0, &clearDepth);
-    if (reversed) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-    struct RestoreClip {
-        bool on;
-        ~RestoreClip() {
-            if (on) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
-        }
-    } restoreClip{reversed};
-
+    const SceneDrawState state(reversed, int(outputs.size()) - 1); // every colour target; the depth
     if (c.normalUnorm) defs.push_back({"NORMAL_UNORM", "1"});
     glUseProgram(ctx.shaders.program("passes/gbuffer.vert", "passes/gbuffer.frag", defs));
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(reversed ? GL_GREATER : GL_LESS);
-    glDisable(GL_CULL_FACE); // glTF doubleSided and CAD winding: shade what is visible
     const glm::mat4 viewProj = c.frame.proj * c.frame.view;
     // Location 0 is uBaseColor; without the albedo target it is compiled out (-1: ignored).
     const bool albedo = std::find(outputs.begin(), outputs.end(), "gbuffer.albedo") != outputs.end();
     stats_ = ctx.scene()->draw(albedo ? 0 : -1, c.cull ? &viewProj : nullptr, reversed);
+}
+
+SceneDrawState::SceneDrawState(bool reversed, int colourTargets) : reversed_(reversed) {
+    GLint fbo = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
+    const float zero[4] = {0, 0, 0, 0};
+    for (int i = 0; i < colourTargets; ++i)
+        glClearNamedFramebufferfv(GLuint(fbo), GL_COLOR, i, zero);
+    const float clearDepth = reversed ? 0.0f : 1.0f;
+    glClearNamedFramebufferfv(GLuint(fbo), GL_DEPTH, 0, &clearDepth);
+    if (reversed) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(reversed ? GL_GREATER : GL_LESS);
+    glDisable(GL_CULL_FACE);
+}
+
+SceneDrawState::~SceneDrawState() {
+    if (reversed_) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
     glDisable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
 }

@@ -33,4 +33,20 @@ class GBufferPass final : public ConfiguredPass<GBufferConfig> {
 
 GLenum glFormat(TargetFormat f);
 
+// The state every pass that draws the scene needs, for its scope: the bound framebuffer's first
+// `colourTargets` colour attachments cleared to 0 (w = 0: sky), its depth cleared to the far end of
+// the mapping, the depth test of the mapping (reversed-Z: GREATER, clip control [0, 1], 1 at near;
+// scene/camera.h) and no face culling (glTF doubleSided and CAD winding: shade what is visible).
+// The other passes draw with the default state again once it goes.
+class SceneDrawState {
+  public:
+    SceneDrawState(bool reversed, int colourTargets);
+    ~SceneDrawState();
+    SceneDrawState(const SceneDrawState&) = delete;
+    SceneDrawState& operator=(const SceneDrawState&) = delete;
+
+  private:
+    bool reversed_;
+};
+
 } // namespace ssao

@@ -44,33 +44,18 @@ GuardBandConfig GuardBandPass::config(const Settings& s, const FrameInfo& f) con
 
 void GuardBandPass::run(PassContext& ctx, const GuardBandConfig& c) {
     ctx.bindOutputs({kOutput, "gbuffer.guard_band_z"});
-    GLint fbo = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
-    const float zero[4] = {0, 0, 0, 0};
-    glClearNamedFramebufferfv(GLuint(fbo), GL_COLOR, 0, zero); // w = 0: sky
-    const bool reversed = c.frame.camera.y != 0.0f; // as passes/gbuffer_pass.cpp draws
-    const float clearDepth = reversed ? 0.0f : 1.0f;
-    glClearNamedFramebufferfv(GLuint(fbo), GL_DEPTH, 0, &clearDepth);
+    const bool reversed = c.frame.camera.y != 0.0f;
+    const SceneDrawState state(reversed, 1);
     // The widened frame block for this draw only; the frame's own is bound again after it.
     GLint previous = 0;
     glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, SSAO_UBO_FRAME, &previous);
     frameUbo_.upload(&c.frame, sizeof c.frame);
     frameUbo_.bind(SSAO_UBO_FRAME);
     struct Restore {
-        bool reversed;
         GLuint ubo;
-        ~Restore() {
-            if (reversed) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
-            glBindBufferBase(GL_UNIFORM_BUFFER, SSAO_UBO_FRAME, ubo);
-            glDisable(GL_DEPTH_TEST);
-            glDepthFunc(GL_LESS);
-        }
-    } restore{reversed, GLuint(previous)};
-    if (reversed) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+        ~Restore() { glBindBufferBase(GL_UNIFORM_BUFFER, SSAO_UBO_FRAME, ubo); }
+    } restore{GLuint(previous)};
     glUseProgram(ctx.shaders.program("passes/gbuffer.vert", "passes/gbuffer.frag", {{"WRITE_POSITION", "0"}}));
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(reversed ? GL_GREATER : GL_LESS);
-    glDisable(GL_CULL_FACE);
     const glm::mat4 viewProj = c.frame.proj * c.frame.view;
     ctx.scene()->draw(-1, c.cull ? &viewProj : nullptr, reversed);
 }
