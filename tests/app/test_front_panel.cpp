@@ -85,10 +85,13 @@ TEST_F(FrontPanelTest, MeasuresWhatBenchMeasuresOnTheSameView) {
         EXPECT_EQ(p.result.error.bias, b["bias"].get<double>()) << p.candidate.label;
         EXPECT_EQ(p.result.error.ssim, b["ssim"].get<double>()) << p.candidate.label;
         EXPECT_EQ(p.result.error.psnrGeometrySrgb, b["psnr_geometry_srgb"].get<double>()) << p.candidate.label;
-        // Times from two runs: the panel's median lies within bench's min..max, widened by 2x for a
-        // machine running other tests at the same time.
-        EXPECT_GE(p.result.gpuMs, b["gpu_ms_min"].get<double>() / 2.0) << p.candidate.label;
-        EXPECT_LE(p.result.gpuMs, b["gpu_ms_max"].get<double>() * 2.0) << p.candidate.label;
+        // Times from two runs on a machine that runs other tests at the same time (CI: 2 cores,
+        // ctest -j2): the same measurement code gives the panel's median within bench's min..max
+        // when the machine is quiet (the printout below); the bound is 4x either way so that load
+        // alone cannot fail it - a different measurement (a wrong size, frames not timed) is off by
+        // far more. Times are judged by benchmarks, not by tests.
+        EXPECT_GE(p.result.gpuMs, b["gpu_ms_min"].get<double>() / 4.0) << p.candidate.label;
+        EXPECT_LE(p.result.gpuMs, b["gpu_ms_max"].get<double>() * 4.0) << p.candidate.label;
         EXPECT_GT(p.result.gpuMs, 0.0);
         std::printf("%-30s panel %.3f ms, bench %.3f ms (%.3f..%.3f), RMSE %.6f both\n", p.candidate.label.c_str(),
                     p.result.gpuMs, b["gpu_ms"].get<double>(), b["gpu_ms_min"].get<double>(),
