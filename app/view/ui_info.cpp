@@ -108,6 +108,10 @@ void inspectorSection(FrameDriver& frames, Inspector& inspector, ViewState& view
                 counts[int(TapState::Open)], counts[int(TapState::Occluded)],
                 counts[int(TapState::Offscreen)], counts[int(TapState::BehindEye)],
                 counts[int(TapState::Sky)]);
+    int band = 0;
+    for (const auto& t : pi->taps)
+        band += fromGuardBand(t);
+    if (band > 0) ImGui::Text("%d of them off the frame, read from the guard band", band);
     ImGui::Text("occlusion %.3f / %.0f, radius %.4g units -> AO %.4f", pi->occlusion, pi->normaliser,
                 pi->radius, pi->ao);
 }

@@ -18,6 +18,13 @@ struct InspectTap {
     int set = 0; // technique-defined group (separable kernel: 0 = x-plane set, 1 = y-plane set)
 };
 
+// A tap that left the frame and still found a surface: it read the guard band
+// (gbuffer.guard_band_px; passes/guard_band_pass.h).
+inline bool fromGuardBand(const InspectTap& t) {
+    const bool outside = t.uv.x < 0.0f || t.uv.y < 0.0f || t.uv.x > 1.0f || t.uv.y > 1.0f;
+    return outside && t.state != TapState::Offscreen && t.state != TapState::BehindEye;
+}
+
 struct PixelInspection {
     bool geometry = false;
     glm::ivec2 pixel{-1};     // in the AO buffer's own resolution

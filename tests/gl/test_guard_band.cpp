@@ -130,3 +130,27 @@ TEST_F(GuardBand, ItsInnerPixelsAreTheGBuffersPositions) {
         maxViewY = std::max(maxViewY, band.data[size_t(4 * (y * 192 + 96) + 1)]);
     EXPECT_GT(maxViewY, 1.5f) << "the band reaches toward the wall";
 }
+
+TEST_F(GuardBand, TheInspectorTellsWhichTapsReadTheBand) {
+    // A floor pixel by the top edge, facing the wall just above the frame: without a band its taps
+    // that leave the frame are off screen; with one they find the wall and say so.
+    Settings s = defaultSettings();
+    s.ao.technique = "vbao";
+    s.ao.radiusMode = RadiusMode::World;
+    s.ao.radius = 1.0f;
+    const Scene scene = loadScene("builtin:corner");
+    int counts[2][2] = {}; // [band][from band, off screen]
+    for (int b = 0; b < 2; ++b) {
+        s.gbuffer.guardBandPx = b ? 64 : 0;
+        auto r = makeRenderer(scene, s, 160, 90, facingTheWall());
+        r->render();
+        const std::optional<PixelInspection> pi = r->inspect(0, {80, 87}); // GL origin: 3 rows below the top
+        ASSERT_TRUE(pi && pi->geometry);
+        for (const InspectTap& t : pi->taps)
+            counts[b][0] += fromGuardBand(t), counts[b][1] += t.state == TapState::Offscreen;
+    }
+    EXPECT_EQ(counts[0][0], 0);
+    EXPECT_GT(counts[0][1], 0) << "without a band the taps above the frame see nothing";
+    EXPECT_GT(counts[1][0], 0) << "with one they read it";
+    EXPECT_LT(counts[1][1], counts[0][1]);
+}
