@@ -66,39 +66,22 @@ void splitSection(const LiveReference& ref) {
         }
         return;
     }
-    if (ImGui::BeginTable("split", 3, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        ImGui::TextDisabled("split");
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("technique: ao.denoised against the screen-space oracle - the same integral and R,\n"
-                              "visibility decided only by the depth buffer (surfaces 1 R thick): what settings\n"
-                              "can still fix. screen: the oracle against the reference - what the depth buffer\n"
-                              "does not hold (back faces, hidden and off-screen occluders, true thickness).");
-        ImGui::TableNextColumn();
-        ImGui::TextDisabled("technique");
-        ImGui::TableNextColumn();
-        ImGui::TextDisabled("screen");
-        auto line = [](const char* name, const char* fmt, double a, double b) {
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(name);
-            for (double v : {a, b}) {
-                ImGui::TableNextColumn();
-                if (std::isfinite(v))
-                    ImGui::Text(fmt, v);
-                else
-                    ImGui::TextDisabled("-");
-            }
-        };
-        line("RMSE", "%.4f", sp->technique.rmse, sp->screen.rmse);
-        line("bias", "%+.4f", sp->technique.bias, sp->screen.bias);
-        ImGui::EndTable();
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("RMSE at edges: technique %.4f, screen %.4f\nRMSE in the interior: technique %.4f, screen %.4f",
-                              sp->technique.rmseEdge, sp->screen.rmseEdge, sp->technique.rmseInterior,
-                              sp->screen.rmseInterior);
-    }
+    // One line, so the strip's height holds it; the rest on hover.
+    ImGui::Text("split: technique %.4f  screen %.4f", sp->technique.rmse, sp->screen.rmse);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("RMSE of ao.denoised against the screen-space oracle (technique: what settings can\n"
+                          "still fix) and of the oracle against the reference (screen: what the depth buffer\n"
+                          "does not hold - back faces, hidden and off-screen occluders, true thickness).\n"
+                          "The oracle: the same integral and R, visibility decided by the depth buffer alone\n"
+                          "(surfaces 1 R thick).\n\n"
+                          "            technique   screen\n"
+                          "RMSE        %.4f      %.4f\n"
+                          "bias        %+.4f     %+.4f\n"
+                          "edge        %.4f      %.4f\n"
+                          "interior    %.4f      %.4f",
+                          sp->technique.rmse, sp->screen.rmse, sp->technique.bias, sp->screen.bias,
+                          sp->technique.rmseEdge, sp->screen.rmseEdge, sp->technique.rmseInterior,
+                          sp->screen.rmseInterior);
 }
 
 } // namespace
