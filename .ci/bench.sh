@@ -63,27 +63,21 @@ MD
   echo "hover, the AO, signed error and reference of every front configuration and the baseline, a sortable table)."
   echo
   echo "Raw data: [results.csv](bench/results.csv), [summary.csv](bench/summary.csv), [results.json](bench/results.json)."
-  if [ -f "$OUT/screen.md" ]; then
+  # A section made by its own make target: title, target, the hand-written reading, the data.
+  section() { # TITLE TARGET SCRIPT DISCUSSION DATA_MD RAW
+    [ -f "$5" ] || return 0
     echo
-    echo "## What the screen cannot see (\`make screen\`, every shared scene, 640x360)"
+    echo "## $1"
     echo
-    echo "Regenerate this section alone with \`make screen\` (it runs \`.ci/screen.sh\`)."
-    if [ -f docs/screen-discussion.md ]; then echo; cat docs/screen-discussion.md; fi
+    echo "Regenerate this section alone with \`make $2\` (it runs \`.ci/$3\`)."
+    if [ -f "$4" ]; then echo; cat "$4"; fi
     echo
-    sed -e 's/^### What the screen cannot see$/### The split per scene/' "$OUT/screen.md"
+    sed -e 's/^### What the screen cannot see$/### The split per scene/' "$5"
     echo
-    echo "Raw data: [screen.json](bench/screen.json)."
-  fi
-  if [ -f "$OUT/skips.md" ]; then
-    echo
-    echo "## Skipped work (\`ssaolab skips\`)"
-    echo
-    echo "Regenerate this section alone with \`make skips\` (it runs \`.ci/skips.sh\`)."
-    if [ -f docs/skips-discussion.md ]; then echo; cat docs/skips-discussion.md; fi
-    echo
-    cat "$OUT/skips.md"
-    echo
-    echo "Raw data: [skips.json](bench/skips.json)."
-  fi
+    echo "Raw data: [$6](bench/$6)."
+  }
+  section "What the screen cannot see (\`make screen\`, every shared scene, 640x360)" screen screen.sh \
+    docs/screen-discussion.md "$OUT/screen.md" screen.json
+  section "Skipped work (\`ssaolab skips\`)" skips skips.sh docs/skips-discussion.md "$OUT/skips.md" skips.json
 } > docs/benchmarks.md
 echo "wrote docs/benchmarks.md"
