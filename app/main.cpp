@@ -48,6 +48,7 @@ struct Commands {
                  "headless into ./out/)."};
     double maxTriangles = double(ssao::SceneBudget{}.triangles);
     double maxSceneMib = double(ssao::SceneBudget{}.bytes >> 20);
+    std::string transparent = "skip";
     ssao::RenderOptions render;
     ssao::BenchOptions bench;
     ssao::BenchMergeOptions benchMerge;
@@ -66,6 +67,11 @@ struct Commands {
                        "refuse scenes that expand to more triangles once instances are flattened")
             ->capture_default_str()
             ->check(ssao::cliRange(1.0, 2e9));
+        app.add_option("--transparent", transparent,
+                       "BLEND and transmissive glTF surfaces: skip (default: as engines draw them after the AO, "
+                       "neither in the G-buffer nor occluding in the reference) or opaque (drawn and traced as solids)")
+            ->capture_default_str()
+            ->check(CLI::IsMember({"skip", "opaque"}));
         app.add_option("--max-scene-mib", maxSceneMib,
                        "refuse scenes whose buffers, or what they expand to, take more memory (MiB)")
             ->capture_default_str()
@@ -130,6 +136,7 @@ struct Commands {
 
     int run() {
         ssao::setSceneBudget({size_t(maxTriangles), size_t(maxSceneMib) << 20});
+        ssao::setTransparentMode(ssao::parseTransparent(transparent));
         if (app.got_subcommand("params")) {
             printParams();
             return 0;

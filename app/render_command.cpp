@@ -171,6 +171,7 @@ RenderJob prepareRender(const RenderOptions& o) {
     job.scene = loadScene(spec);
     job.info.sceneName = job.scene.name;
     job.info.triangles = job.scene.triangleCount();
+    job.info.materials = job.scene.materials;
     job.info.sceneOrigin = job.scene.origin;
     job.style.fit = o.fitRange;
     job.style.falseColor = o.falseColor;

@@ -36,6 +36,15 @@ void sceneSection(AppCore& app) {
     ImGui::TextWrapped("%s", sc.name.c_str());
     ImGui::TextDisabled("%zu triangles, bounding-box diagonal %.4g units", sc.triangleCount(),
                         2.0f * sc.bounds.radius());
+    const MaterialCounts& mc = sc.materials;
+    if (mc.mask + mc.blend > 0) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("materials: %zu opaque, %zu mask (drawn solid), %zu blend triangles %s", mc.opaque, mc.mask,
+                           mc.blend,
+                           mc.blendSkipped ? "- skipped, as engines draw them after the AO (--transparent opaque draws them)"
+                                           : "- drawn and traced as opaque (--transparent opaque)");
+        ImGui::PopStyleColor();
+    }
     static std::string path;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.7f);
     const bool enter = inputText("##scenepath", path, true);

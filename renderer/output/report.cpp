@@ -72,6 +72,14 @@ nlohmann::json writeOutputs(const FrameCapture& c, const std::string& dir, const
     }
     const Camera& cam = c.camera;
     m["scene"] = {{"name", info.sceneName}, {"triangles", info.triangles}, {"diagonal", 2.0f * c.sceneRadius}};
+    // Triangles per glTF material class, and what became of the transparent ones (scene.h Transparent).
+    m["scene"]["materials"] = {{"opaque_triangles", info.materials.opaque},
+                               {"mask_triangles", info.materials.mask},
+                               {"blend_triangles", info.materials.blend},
+                               {"blend", info.materials.blend == 0 ? "none"
+                                         : info.materials.blendSkipped ? "skipped (not drawn, not an occluder)"
+                                                                       : "drawn and traced as opaque"},
+                               {"mask", "drawn and traced as opaque (alpha cut-outs not applied)"}};
     if (info.sceneOrigin != glm::dvec3(0.0))
         m["scene"]["origin"] = {info.sceneOrigin.x, info.sceneOrigin.y, info.sceneOrigin.z};
     Camera fileCamera = cam; // in the file's coordinates, as --camera and presets take it

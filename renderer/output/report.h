@@ -2,6 +2,7 @@
 // and its PNG preview (the app's display mapping), and metrics.json. No GL: the capture holds it all.
 #pragma once
 #include "output/frame_capture.h"
+#include "scene/scene.h"
 
 #include <nlohmann/json.hpp>
 
@@ -12,6 +13,7 @@ namespace ssao {
 struct RunInfo {
     std::string sceneName;
     size_t triangles = 0;
+    MaterialCounts materials; // the scene's material classes (Scene::materials)
     glm::dvec3 sceneOrigin{0.0}; // Scene::origin: metrics.json gives the camera in file coordinates
     std::string cameraSource; // "file", "builtin", "framed", "preset" or "--camera"
     std::string glRenderer;

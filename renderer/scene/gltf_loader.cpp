@@ -242,6 +242,23 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
         throw Error(what + ": the scene expands past the budget of " + std::to_string(budget) +
                     " triangles (raise it with ssaolab --max-triangles N)");
 
+    // The material class: BLEND and transmissive surfaces are skipped by default, as engines draw
+    // them after the AO (scene.h Transparent); counted either way.
+    const size_t tris = idx.size() / 3;
+    const tinygltf::Material* mat =
+        p.material >= 0 && p.material < int(m.materials.size()) ? &m.materials[size_t(p.material)] : nullptr;
+    const bool blend = mat && (mat->alphaMode == "BLEND" || mat->extensions.count("KHR_materials_transmission"));
+    if (blend) {
+        s.materials.blend += tris;
+        if (transparentMode() == Transparent::Skip) {
+            s.materials.blendSkipped = true;
+            return;
+        }
+    } else if (mat && mat->alphaMode == "MASK") {
+        s.materials.mask += tris;
+    } else {
+        s.materials.opaque += tris;
+    }
     const glm::mat3 normalMat = glm::mat3(glm::transpose(glm::inverse(glm::dmat3(world))));
     const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
     Draw d;
@@ -473,7 +490,10 @@ class NodeWalker {
 // Positions into the scene frame, cameras with it, the extent checked, far planes for infinite
 // projections and orbit targets placed.
 void finishScene(Scene& s, const NodeWalker& w, const std::string& path) {
-    if (s.indices.empty()) throw Error("glTF " + path + " has no triangles to render");
+    if (s.indices.empty())
+        throw Error("glTF " + path + " has no triangles to render" +
+                    (s.materials.blendSkipped ? std::string(" (its transparent surfaces are skipped: ssaolab --transparent opaque draws them)")
+                                              : std::string()));
     s.setWorldPositions(w.worldPos);
     for (size_t i = 0; i < s.cameras.size(); ++i) { // eye and target in the scene frame
         Camera& c = s.cameras[i].second;

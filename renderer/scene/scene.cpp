@@ -1,5 +1,7 @@
 #include "scene/scene.h"
 
+#include "util/error.h"
+
 #include "scene/builtin_scenes.h"
 #include "scene/gltf_loader.h"
 
@@ -10,7 +12,20 @@ namespace ssao {
 
 namespace {
 SceneBudget gBudget;
+Transparent gTransparent = Transparent::Skip;
 } // namespace
+
+void setTransparentMode(Transparent t) {
+    gTransparent = t;
+}
+Transparent transparentMode() {
+    return gTransparent;
+}
+Transparent parseTransparent(const std::string& s) {
+    if (s == "skip") return Transparent::Skip;
+    if (s == "opaque") return Transparent::Opaque;
+    throw Error("transparent surfaces: '" + s + "' is not skip or opaque");
+}
 
 void setSceneBudget(SceneBudget b) {
     gBudget = b;

@@ -41,6 +41,13 @@ struct Bounds {
     float radius() const { return glm::length(max - min) * 0.5f; }
 };
 
+// glTF material classes by alphaMode (and KHR_materials_transmission, which is BLEND to a
+// rasteriser), counted in triangles as loaded.
+struct MaterialCounts {
+    size_t opaque = 0, mask = 0, blend = 0;
+    bool blendSkipped = false; // BLEND triangles left out (Transparent::Skip): not in the scene at all
+};
+
 struct Scene {
     std::string name;
     std::vector<Vertex> vertices;
@@ -50,6 +57,7 @@ struct Scene {
     std::optional<Camera> camera; // the file's first camera, or a built-in scene's designed view
     std::vector<std::pair<std::string, Camera>> cameras; // every perspective camera of the file, named
     glm::dvec3 origin{0.0}; // file coordinates of the scene frame's origin
+    MaterialCounts materials; // glTF scenes: what each material class holds (built-in: all opaque)
 
     size_t triangleCount() const { return indices.size() / 3; }
     void computeBounds();
@@ -79,6 +87,15 @@ struct SceneBudget {
 };
 void setSceneBudget(SceneBudget b);
 SceneBudget sceneBudget();
+
+// What becomes of BLEND (and transmissive) surfaces when a glTF scene loads. Skip, the default: as
+// engines draw them - after the AO, so they are neither in the G-buffer nor an occluder of the
+// reference (both read the same Scene, so they agree). Opaque: drawn and traced as solids
+// (`ssaolab --transparent opaque`). MASK materials are drawn as solids either way (no cut-out yet).
+enum class Transparent { Skip, Opaque };
+void setTransparentMode(Transparent t);
+Transparent transparentMode();
+Transparent parseTransparent(const std::string& s); // "skip" | "opaque", else throws naming both
 
 // "builtin:NAME" → procedural scene, anything else → glTF file. Throws ssao::Error.
 Scene loadScene(const std::string& spec);
