@@ -99,6 +99,35 @@ struct PrimaryRays {
     }
 };
 
+// One pixel's primary ray against the scene, limited to what lies between the clip planes (the
+// rasteriser draws nothing else; view depth = t * cosFwd): the frame's pixels and the guard band's.
+struct PrimaryHit {
+    bool hit = false;
+    alignas(16) RTCRayHit rh{};
+    glm::dvec3 org{0.0}, d{0.0};
+    double cosFwd = 1.0;
+    float far = INFINITY; // the far plane along this ray
+    glm::vec3 point() const { return glm::vec3(org + d * double(rh.ray.tfar)); }
+};
+
+PrimaryHit tracePrimary(RTCScene scene, RTCIntersectContext& ctx, const PrimaryRays& rays, const Camera& camera,
+                        int x, int y) {
+    PrimaryHit h;
+    rays.ray(x, y, h.org, h.d);
+    h.cosFwd = glm::dot(h.d, rays.fwd);
+    h.far = std::isinf(camera.farZ) ? INFINITY : float(camera.farZ / h.cosFwd);
+    RTCRayHit& rh = h.rh;
+    rh.ray.org_x = float(h.org.x), rh.ray.org_y = float(h.org.y), rh.ray.org_z = float(h.org.z);
+    rh.ray.dir_x = float(h.d.x), rh.ray.dir_y = float(h.d.y), rh.ray.dir_z = float(h.d.z);
+    rh.ray.tnear = float(camera.nearZ / h.cosFwd);
+    rh.ray.tfar = h.far;
+    rh.ray.mask = 0xffffffffu;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene, &ctx, &rh);
+    h.hit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    return h;
+}
+
 // Whether a surface lies within a few ULPs of `o` along either normal (coincident faces: the
 // shortest way to a parallel twin): of the hit's own coordinates or of the primary distance,
 // whichever is coarser - a camera far away orders two faces closer than its ULPs at random, and
@@ -150,26 +179,13 @@ ReferenceTracer::ReferenceTracer(const EmbreeScene& scene, const Camera& camera,
         rtcInitIntersectContext(&ctx);
         ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
         for (int x = 0; x < width; ++x) {
-            glm::dvec3 org, d;
-            rays.ray(x, y, org, d);
-            const double cosFwd = glm::dot(d, rays.fwd);
-            alignas(16) RTCRayHit rh{};
-            rh.ray.org_x = float(org.x), rh.ray.org_y = float(org.y), rh.ray.org_z = float(org.z);
-            rh.ray.dir_x = float(d.x), rh.ray.dir_y = float(d.y), rh.ray.dir_z = float(d.z);
-            // Only what lies between the clip planes is rasterised (view depth = t * cosFwd).
-            rh.ray.tnear = float(camera.nearZ / cosFwd);
-            rh.ray.tfar = std::isinf(camera.farZ) ? INFINITY : float(camera.farZ / cosFwd);
-            rh.ray.mask = 0xffffffffu;
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            rtcIntersect1(scene.handle(), &ctx, &rh);
-            if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+            const PrimaryHit h = tracePrimary(scene.handle(), ctx, rays, camera, x, y);
+            if (!h.hit) continue;
             const size_t i = size_t(y) * width + x;
-            storeHit(i, rh, glm::vec3(d));
-            depth_[i] = float(double(rh.ray.tfar) * cosFwd);
+            storeHit(i, h.rh, glm::vec3(h.d));
+            depth_[i] = float(double(h.rh.ray.tfar) * h.cosFwd);
             geometry_[i] = 1.0f;
-            if (screen_ && settings.layers > 1)
-                storeSecondLayer(x, y, glm::vec3(org + d * double(rh.ray.tfar)), glm::vec3(d),
-                                 std::isinf(camera.farZ) ? INFINITY : float(camera.farZ / cosFwd));
+            if (screen_ && settings.layers > 1) storeSecondLayer(x, y, h.point(), glm::vec3(h.d), h.far);
         }
     }, {});
     if (screen_ && settings.guardBand > 0) traceGuardBand(camera);
@@ -184,24 +200,15 @@ void ReferenceTracer::traceGuardBand(const Camera& camera) {
         rtcInitIntersectContext(&ctx);
         for (int x = -g; x < width_ + g; ++x) {
             if (x >= 0 && x < width_ && y >= 0 && y < height_) continue; // the frame: traced already
-            glm::dvec3 org, d;
-            rays.ray(x, y, org, d);
-            const double cosFwd = glm::dot(d, rays.fwd);
-            alignas(16) RTCRayHit rh{};
-            rh.ray.org_x = float(org.x), rh.ray.org_y = float(org.y), rh.ray.org_z = float(org.z);
-            rh.ray.dir_x = float(d.x), rh.ray.dir_y = float(d.y), rh.ray.dir_z = float(d.z);
-            rh.ray.tnear = float(camera.nearZ / cosFwd);
-            const float far = std::isinf(camera.farZ) ? INFINITY : float(camera.farZ / cosFwd);
-            rh.ray.tfar = far;
-            rh.ray.mask = 0xffffffffu;
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            rtcIntersect1(scene_.handle(), &ctx, &rh);
-            if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+            const PrimaryHit h = tracePrimary(scene_.handle(), ctx, rays, camera, x, y);
+            if (!h.hit) continue;
+            const RTCRayHit& rh = h.rh;
+            const glm::dvec3 d = h.d;
             glm::vec3 ng = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
             if (glm::dot(ng, glm::vec3(d)) > 0.0f) ng = -ng;
-            const glm::vec3 p(org + d * double(rh.ray.tfar));
+            const glm::vec3 p = h.point();
             screen_->set(0, x, y, p, ng);
-            if (settings_.layers > 1) storeSecondLayer(x, y, p, glm::vec3(d), far);
+            if (settings_.layers > 1) storeSecondLayer(x, y, p, glm::vec3(d), h.far);
         }
     }, {});
 }
