@@ -48,6 +48,7 @@ struct Commands {
                  "headless into ./out/)."};
     double maxTriangles = double(ssao::SceneBudget{}.triangles);
     double maxSceneMib = double(ssao::SceneBudget{}.bytes >> 20);
+    double maxMaskMpix = double(ssao::SceneBudget{}.maskPixels >> 20);
     std::string transparent = "skip";
     ssao::RenderOptions render;
     ssao::BenchOptions bench;
@@ -76,6 +77,11 @@ struct Commands {
                        "refuse scenes whose buffers, or what they expand to, take more memory (MiB)")
             ->capture_default_str()
             ->check(ssao::cliRange(1.0, 1 << 20));
+        app.add_option("--max-mask-mpix", maxMaskMpix,
+                       "refuse scenes whose MASK materials' base-colour textures (the only images decoded, for their "
+                       "alpha cut-outs) hold more pixels in total (millions of 2^20), checked from each image's header")
+            ->capture_default_str()
+            ->check(ssao::cliRange(1.0, 1 << 14));
         ssao::addRenderOptions(*sub("render", "render a scene headless (EGL) into EXR/PNG buffers and metrics.json"),
                                render);
         benchCmd = sub("bench", "run time against error: every configuration of a sweep against the ray-traced reference");
@@ -135,7 +141,7 @@ struct Commands {
     }
 
     int run() {
-        ssao::setSceneBudget({size_t(maxTriangles), size_t(maxSceneMib) << 20});
+        ssao::setSceneBudget({size_t(maxTriangles), size_t(maxSceneMib) << 20, size_t(maxMaskMpix) << 20});
         ssao::setTransparentMode(ssao::parseTransparent(transparent));
         if (app.got_subcommand("params")) {
             printParams();

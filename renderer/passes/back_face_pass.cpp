@@ -26,9 +26,9 @@ void BackFacePass::run(PassContext& ctx, const BackFaceConfig& c) {
     ctx.bindOutputs({kOutput, "gbuffer.back_z"});
     const bool reversed = c.frame.camera.y != 0.0f;
     const SceneDrawState state(reversed, 1); // no face culling: facing by the normal, in the shader
-    glUseProgram(ctx.shaders.program("passes/gbuffer.vert", "passes/back_faces.frag", {}));
     const glm::mat4 viewProj = c.frame.proj * c.frame.view;
-    ctx.scene()->draw(-1, c.cull ? &viewProj : nullptr, reversed);
+    ctx.scene()->draw(scenePrograms(ctx, "passes/gbuffer.vert", "passes/back_faces.frag", {}, -1), c.cull ? &viewProj : nullptr,
+                      reversed);
 }
 
 } // namespace ssao

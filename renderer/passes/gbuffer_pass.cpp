@@ -76,11 +76,23 @@ void GBufferPass::run(PassContext& ctx, const GBufferConfig& c) {
     const bool reversed = c.frame.camera.y != 0.0f;
     const SceneDrawState state(reversed, int(outputs.size()) - 1); // every colour target; the depth
     if (c.normalUnorm) defs.push_back({"NORMAL_UNORM", "1"});
-    glUseProgram(ctx.shaders.program("passes/gbuffer.vert", "passes/gbuffer.frag", defs));
     const glm::mat4 viewProj = c.frame.proj * c.frame.view;
     // Location 0 is uBaseColor; without the albedo target it is compiled out (-1: ignored).
     const bool albedo = std::find(outputs.begin(), outputs.end(), "gbuffer.albedo") != outputs.end();
-    stats_ = ctx.scene()->draw(albedo ? 0 : -1, c.cull ? &viewProj : nullptr, reversed);
+    const ScenePrograms programs = scenePrograms(ctx, "passes/gbuffer.vert", "passes/gbuffer.frag", defs, albedo ? 0 : -1);
+    stats_ = ctx.scene()->draw(programs, c.cull ? &viewProj : nullptr, reversed);
+}
+
+ScenePrograms scenePrograms(PassContext& ctx, const std::string& vert, const std::string& frag, gl::Defines defines,
+                            GLint colorLocation) {
+    ScenePrograms p;
+    p.colorLocation = colorLocation;
+    p.opaque = ctx.shaders.program(vert, frag, defines);
+    if (ctx.scene()->hasMask()) {
+        defines.push_back({"ALPHA_MASK", "1"});
+        p.mask = ctx.shaders.program(vert, frag, defines);
+    }
+    return p;
 }
 
 SceneDrawState::SceneDrawState(bool reversed, int colourTargets) : reversed_(reversed) {

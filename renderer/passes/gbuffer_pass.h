@@ -2,6 +2,7 @@
 // hardware depth buffer — the inputs every AO technique reads.
 #pragma once
 #include "graph/pass.h"
+#include "gl/shader_library.h"
 #include "scene/gpu_scene.h"
 
 namespace ssao {
@@ -32,6 +33,11 @@ class GBufferPass final : public ConfiguredPass<GBufferConfig> {
 };
 
 GLenum glFormat(TargetFormat f);
+
+// The programs a scene pass draws with: `vert` + `frag` with `defines`, and, when the scene has
+// MASK draws, the same with ALPHA_MASK (include/alpha_mask.glsl).
+ScenePrograms scenePrograms(PassContext& ctx, const std::string& vert, const std::string& frag, gl::Defines defines,
+                            GLint colorLocation);
 
 // The state every pass that draws the scene needs, for its scope: the bound framebuffer's first
 // `colourTargets` colour attachments cleared to 0 (w = 0: sky), its depth cleared to the far end of

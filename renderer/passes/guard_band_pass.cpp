@@ -55,9 +55,9 @@ void GuardBandPass::run(PassContext& ctx, const GuardBandConfig& c) {
         GLuint ubo;
         ~Restore() { glBindBufferBase(GL_UNIFORM_BUFFER, SSAO_UBO_FRAME, ubo); }
     } restore{GLuint(previous)};
-    glUseProgram(ctx.shaders.program("passes/gbuffer.vert", "passes/gbuffer.frag", {{"WRITE_POSITION", "0"}}));
     const glm::mat4 viewProj = c.frame.proj * c.frame.view;
-    ctx.scene()->draw(-1, c.cull ? &viewProj : nullptr, reversed);
+    ctx.scene()->draw(scenePrograms(ctx, "passes/gbuffer.vert", "passes/gbuffer.frag", {{"WRITE_POSITION", "0"}}, -1),
+                      c.cull ? &viewProj : nullptr, reversed);
 }
 
 } // namespace ssao

@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace ssao {
 
@@ -22,7 +23,14 @@ class EmbreeScene {
     const Scene& scene() const { return *source_; }
     double buildMs() const { return buildMs_; }
 
+    // What the MASK filter reads (alpha_mask.h): per triangle its draw, -1 when not MASK.
+    struct MaskData {
+        const Scene* scene = nullptr;
+        std::vector<int32_t> drawOf;
+    };
+
   private:
+    std::unique_ptr<MaskData> mask_; // set when the scene has MASK draws
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
     const Scene* source_;

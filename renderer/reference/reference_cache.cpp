@@ -43,6 +43,20 @@ uint64_t sceneContentHash(const Scene& scene) {
     uint64_t h = kFnvOffset;
     h = fnv(h, scene.vertices.data(), scene.vertices.size() * sizeof(Vertex));
     h = fnv(h, scene.indices.data(), scene.indices.size() * sizeof(uint32_t));
+    // MASK cut-outs change what occludes (scenes without them hash as before).
+    h = fnv(h, scene.uvs.data(), scene.uvs.size() * sizeof(glm::vec2));
+    for (const Draw& d : scene.draws)
+        if (d.mask) {
+            h = fnv(h, &d.firstIndex, sizeof d.firstIndex);
+            h = fnv(h, &d.alphaCutoff, sizeof d.alphaCutoff);
+            h = fnv(h, &d.baseColor.w, sizeof d.baseColor.w);
+            if (d.alphaTexture >= 0) {
+                const AlphaTexture& t = scene.alphaTextures[size_t(d.alphaTexture)];
+                const int32_t meta[4] = {t.width, t.height, int32_t(t.wrapS), int32_t(t.wrapT)};
+                h = fnv(h, meta, sizeof meta);
+                h = fnv(h, t.alpha.data(), t.alpha.size());
+            }
+        }
     return h;
 }
 

@@ -1,7 +1,9 @@
 // glTF 2.0 → Scene: meshes under the default scene's node hierarchy, flattened to world space.
 #include "scene/gltf_loader.h"
 
+#include "scene/gltf_accessors.h"
 #include "scene/gltf_guard.h"
+#include "scene/gltf_materials.h"
 #include "scene/view_fit.h"
 #include "util/error.h"
 
@@ -98,94 +100,6 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
 const char* kUnsupportedExtensions[] = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
                                         "KHR_mesh_quantization", "KHR_texture_basisu"};
 
-// Reads element i of a float VEC3 accessor honouring byteStride.
-struct Vec3Reader {
-    const unsigned char* base = nullptr;
-    size_t stride = 0;
-    size_t count = 0;
-    glm::vec3 operator[](size_t i) const {
-        glm::vec3 v;
-        std::memcpy(&v, base + i * stride, sizeof v);
-        return v;
-    }
-};
-
-const unsigned char* accessorData(const tinygltf::Model& m, const tinygltf::Accessor& a,
-                                  const std::string& what, size_t elemSize, size_t& stride) {
-    if (a.sparse.isSparse) throw Error(what + ": sparse accessors are not supported");
-    if (a.bufferView < 0 || a.bufferView >= int(m.bufferViews.size()))
-        throw Error(what + ": accessor has no bufferView");
-    const auto& bv = m.bufferViews[a.bufferView];
-    if (bv.buffer < 0 || bv.buffer >= int(m.buffers.size())) throw Error(what + ": bufferView has no buffer");
-    const auto& buf = m.buffers[bv.buffer];
-    stride = bv.byteStride ? bv.byteStride : elemSize;
-    // Every size here comes from the file: check in a form that cannot wrap around (offsets near
-    // 2^64 or counts near 2^62 would otherwise pass a naive `offset + size <= length`).
-    const size_t bufLen = buf.data.size();
-    if (bv.byteOffset > bufLen || bv.byteLength > bufLen - bv.byteOffset)
-        throw Error(what + ": bufferView lies outside its buffer");
-    if (bv.byteStride && (bv.byteStride < elemSize || bv.byteStride > 252)) // glTF: [4, 252]
-        throw Error(what + ": byteStride " + std::to_string(bv.byteStride) + " is invalid");
-    if (a.byteOffset > bv.byteLength) throw Error(what + ": accessor starts past the end of its bufferView");
-    const size_t room = bv.byteLength - a.byteOffset; // bytes the accessor may read
-    if (a.count > 0 && (elemSize > room || a.count - 1 > (room - elemSize) / stride))
-        throw Error(what + ": accessor reads past the end of its buffer");
-    const size_t begin = bv.byteOffset + a.byteOffset;
-    return buf.data.data() + begin;
-}
-
-Vec3Reader vec3Accessor(const tinygltf::Model& m, int index, const std::string& what) {
-    if (index < 0 || index >= int(m.accessors.size())) throw Error(what + ": bad accessor index");
-    const auto& a = m.accessors[index];
-    if (a.type != TINYGLTF_TYPE_VEC3 || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || a.normalized)
-        throw Error(what +
-                    ": only float VEC3 is supported (quantized attributes need KHR_mesh_quantization)");
-    Vec3Reader r;
-    r.count = a.count;
-    r.base = accessorData(m, a, what, sizeof(glm::vec3), r.stride);
-    return r;
-}
-
-std::vector<uint32_t> readIndices(const tinygltf::Model& m, const tinygltf::Primitive& p, size_t vertexCount,
-                                  const std::string& what) {
-    std::vector<uint32_t> idx;
-    if (p.indices < 0) {
-        idx.resize(vertexCount);
-        for (size_t i = 0; i < vertexCount; ++i)
-            idx[i] = uint32_t(i);
-        return idx;
-    }
-    if (p.indices >= int(m.accessors.size())) throw Error(what + ": bad index accessor");
-    const auto& a = m.accessors[p.indices];
-    size_t size = 0;
-    switch (a.componentType) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-        size = 1;
-        break;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        size = 2;
-        break;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        size = 4;
-        break;
-    default:
-        throw Error(what + ": index component type " + std::to_string(a.componentType) +
-                    " is not an unsigned integer");
-    }
-    size_t stride = 0;
-    const unsigned char* data = accessorData(m, a, what + " indices", size, stride);
-    idx.resize(a.count);
-    for (size_t i = 0; i < a.count; ++i) {
-        const unsigned char* e = data + i * stride;
-        uint32_t v = size == 1   ? *e
-                     : size == 2 ? uint32_t(e[0] | (e[1] << 8))
-                                 : uint32_t(e[0] | (e[1] << 8) | (e[2] << 16) | (uint32_t(e[3]) << 24));
-        if (v >= vertexCount) throw Error(what + ": index " + std::to_string(v) + " out of range");
-        idx[i] = v;
-    }
-    return idx;
-}
-
 // Converts strips and fans to lists; returns an empty list for points/lines (no surface, no AO).
 std::vector<uint32_t> toTriangleList(const std::vector<uint32_t>& in, int mode) {
     if (mode == TINYGLTF_MODE_TRIANGLES) return in;
@@ -229,7 +143,7 @@ bool finite3(const glm::dvec3& p) {
 // Appends the primitive's triangles; positions go to `world` (file coordinates, double), one per
 // vertex, to be made relative to the scene's origin once every mesh is in.
 void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, const glm::dmat4& world, Scene& s,
-                     std::vector<glm::dvec3>& worldPos, const std::string& what) {
+                     std::vector<glm::dvec3>& worldPos, const std::string& what, MaskTextures& masks) {
     auto posIt = p.attributes.find("POSITION");
     if (posIt == p.attributes.end()) throw Error(what + ": primitive has no POSITION");
     Vec3Reader pos = vec3Accessor(m, posIt->second, what + " POSITION");
@@ -247,14 +161,14 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
     const size_t tris = idx.size() / 3;
     const tinygltf::Material* mat =
         p.material >= 0 && p.material < int(m.materials.size()) ? &m.materials[size_t(p.material)] : nullptr;
-    const bool blend = mat && (mat->alphaMode == "BLEND" || mat->extensions.count("KHR_materials_transmission"));
-    if (blend) {
+    const MaterialClass cls = materialClass(mat);
+    if (cls == MaterialClass::Blend) {
         s.materials.blend += tris;
         if (transparentMode() == Transparent::Skip) {
             s.materials.blendSkipped = true;
             return;
         }
-    } else if (mat && mat->alphaMode == "MASK") {
+    } else if (cls == MaterialClass::Mask) {
         s.materials.mask += tris;
     } else {
         s.materials.opaque += tris;
@@ -263,10 +177,21 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
     const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
     Draw d;
     d.firstIndex = uint32_t(s.indices.size());
-    if (p.material >= 0 && p.material < int(m.materials.size())) {
-        const auto& f = m.materials[p.material].pbrMetallicRoughness.baseColorFactor;
+    if (mat) {
+        const auto& f = mat->pbrMetallicRoughness.baseColorFactor;
         if (f.size() == 4) d.baseColor = glm::vec4(f[0], f[1], f[2], f[3]);
     }
+    // MASK: the alpha test, and the UVs it reads (kept per vertex once any draw needs them).
+    std::vector<glm::vec2> uv;
+    if (cls == MaterialClass::Mask) {
+        uv = maskAlphaTest(m, p, *mat, pos.count, d, masks, s, what);
+        if (d.alphaTexture < 0 && d.baseColor.w < d.alphaCutoff) return; // cut out everywhere
+        if (d.alphaTexture < 0) d.mask = false;                          // solid everywhere
+    }
+    if (!uv.empty() || !s.uvs.empty()) s.uvs.resize(s.vertices.size());
+    auto pushUv = [&](uint32_t i) {
+        if (!s.uvs.empty()) s.uvs.push_back(uv.empty() ? glm::vec2(0.0f) : uv[i]);
+    };
     auto nrmIt = p.attributes.find("NORMAL");
     const uint32_t base = uint32_t(s.vertices.size());
     if (nrmIt != p.attributes.end()) {
@@ -281,6 +206,7 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
             n = (len > 1e-20f && std::isfinite(len)) ? n / len : glm::vec3(0, 1, 0);
             s.vertices.push_back({glm::vec3(0.0f), n});
             worldPos.push_back(wp);
+            pushUv(uint32_t(i));
         }
         for (size_t t = 0; t + 2 < idx.size(); t += 3) {
             uint32_t a = idx[t], b = idx[t + 1], c = idx[t + 2];
@@ -296,7 +222,8 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
             for (const glm::dvec3& q : {p0, p1, p2})
                 if (!finite3(q) || !finite3(glm::dvec3(glm::vec3(q))))
                     throw Error(what + ": a POSITION is not finite");
-            if (mirrored) std::swap(p1, p2);
+            uint32_t corner[3] = {idx[t], idx[t + 1], idx[t + 2]};
+            if (mirrored) std::swap(p1, p2), std::swap(corner[1], corner[2]);
             glm::dvec3 nd = glm::cross(p1 - p0, p2 - p0);
             const double len = glm::length(nd);
             const glm::vec3 n = len > 1e-30 && std::isfinite(len) ? glm::vec3(nd / len) : glm::vec3(0, 1, 0);
@@ -305,6 +232,8 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
                 s.vertices.push_back({glm::vec3(0.0f), n});
                 worldPos.push_back(q);
             }
+            for (uint32_t k : corner)
+                pushUv(k);
             s.indices.insert(s.indices.end(), {v0, v0 + 1, v0 + 2});
         }
     }
@@ -338,9 +267,8 @@ namespace {
 
 // The file as tinygltf reads it: regular files only, buffers inside the scene's folder, images
 // never decoded; glTF 1.0 and geometry-changing extensions refused by name.
-tinygltf::Model readModel(const GuardedGltf& g, const std::string& path) {
+tinygltf::Model readModel(const GuardedGltf& g, const std::string& path, SceneFolder& folder) {
     tinygltf::TinyGLTF loader;
-    SceneFolder folder{g.file.parent_path(), sceneBudget().bytes, 0};
     loader.SetFsCallbacks({fileExistsInFolder, keepPath, readFileInFolder, refuseWrite, &folder});
     loader.SetImageLoader(skipImage, nullptr);
     tinygltf::Model model;
@@ -437,9 +365,9 @@ struct Expansion {
 // node its own ancestor) are caught on the walk; the visit bound stays as a guard.
 class NodeWalker {
   public:
-    // countOnly: adds up `expansion` and allocates nothing.
-    NodeWalker(const tinygltf::Model& m, const std::string& path, Scene& s, bool countOnly = false)
-        : m_(m), path_(path), s_(s), onPath_(m.nodes.size(), 0), countOnly_(countOnly) {}
+    // masks = nullptr: counts only (adds up `expansion` and allocates nothing).
+    NodeWalker(const tinygltf::Model& m, const std::string& path, Scene& s, MaskTextures* masks)
+        : m_(m), path_(path), s_(s), onPath_(m.nodes.size(), 0), countOnly_(!masks), masks_(masks) {}
 
     void visit(int ni, const glm::dmat4& parent, int depth) {
         if (ni < 0 || ni >= int(m_.nodes.size()))
@@ -458,7 +386,7 @@ class NodeWalker {
                 if (countOnly_)
                     expansion.add(m_, p);
                 else
-                    appendPrimitive(m_, p, world, s_, worldPos, meshLabel(mesh, n.mesh));
+                    appendPrimitive(m_, p, world, s_, worldPos, meshLabel(mesh, n.mesh), *masks_);
         }
         if (!countOnly_ && n.camera >= 0 && n.camera < int(m_.cameras.size())) {
             glm::dvec3 eye;
@@ -485,11 +413,41 @@ class NodeWalker {
     std::vector<char> onPath_;
     size_t visits_ = 0;
     bool countOnly_ = false;
+    MaskTextures* masks_ = nullptr;
 };
+
+// Where the MASK textures' bytes come from: files through the same folder and byte budget as the
+// buffers, bufferViews checked to lie inside their buffer.
+ImageSources imageSources(const GuardedGltf& g, const tinygltf::Model& model, SceneFolder& folder) {
+    ImageSources src;
+    src.images = &g.images;
+    src.readUri = [&folder](const std::string& uri) {
+        std::vector<unsigned char> bytes;
+        std::string err;
+        const std::string file = (folder.root / uri).string();
+        if (!readFileInFolder(&bytes, &err, file, &folder)) {
+            while (!err.empty() && err.back() == '\n')
+                err.pop_back();
+            throw Error(err);
+        }
+        return bytes;
+    };
+    src.bufferView = [&model](int i) {
+        if (i < 0 || i >= int(model.bufferViews.size())) throw Error("bufferView " + std::to_string(i) + " does not exist");
+        const auto& bv = model.bufferViews[size_t(i)];
+        if (bv.buffer < 0 || bv.buffer >= int(model.buffers.size())) throw Error("its bufferView has no buffer");
+        const size_t len = model.buffers[size_t(bv.buffer)].data.size();
+        if (bv.byteOffset > len || bv.byteLength > len - bv.byteOffset)
+            throw Error("its bufferView " + std::to_string(i) + " lies outside its buffer");
+        return std::make_pair(model.buffers[size_t(bv.buffer)].data.data() + bv.byteOffset, size_t(bv.byteLength));
+    };
+    return src;
+}
 
 // Positions into the scene frame, cameras with it, the extent checked, far planes for infinite
 // projections and orbit targets placed.
 void finishScene(Scene& s, const NodeWalker& w, const std::string& path) {
+    if (!s.uvs.empty()) s.uvs.resize(s.vertices.size());
     if (s.indices.empty())
         throw Error("glTF " + path + " has no triangles to render" +
                     (s.materials.blendSkipped ? std::string(" (its transparent surfaces are skipped: ssaolab --transparent opaque draws them)")
@@ -520,11 +478,12 @@ void finishScene(Scene& s, const NodeWalker& w, const std::string& path) {
 
 Scene loadGltf(const std::string& path) {
     const GuardedGltf guarded = guardGltf(path, sceneBudget()); // checks tinygltf does not make
-    const tinygltf::Model model = readModel(guarded, path);
+    SceneFolder folder{guarded.file.parent_path(), sceneBudget().bytes, 0};
+    const tinygltf::Model model = readModel(guarded, path, folder);
     Scene s;
     s.name = path;
     const std::vector<int> roots = sceneRoots(model, path);
-    NodeWalker count(model, path, s, true);
+    NodeWalker count(model, path, s, nullptr);
     for (int r : roots)
         count.visit(r, glm::dmat4(1.0), 0);
     const SceneBudget budget = sceneBudget();
@@ -536,7 +495,8 @@ Scene loadGltf(const std::string& path) {
         throw Error("glTF " + path + " expands to " + std::to_string((long long)(count.expansion.bytes() / (1 << 20))) +
                     " MiB of vertices and indices, past the budget of " + std::to_string(budget.bytes >> 20) +
                     " MiB (raise it with ssaolab --max-scene-mib N)");
-    NodeWalker walker(model, path, s);
+    MaskTextures masks(imageSources(guarded, model, folder), budget.maskPixels, "glTF " + path);
+    NodeWalker walker(model, path, s, &masks);
     for (int r : roots)
         walker.visit(r, glm::dmat4(1.0), 0);
     finishScene(s, walker, path);

@@ -17,18 +17,31 @@ struct DrawStats {
 // a box that straddles corners of the frustum may be kept - never wrong the other way.
 bool outsideFrustum(const Bounds& box, const glm::mat4& viewProj, bool zeroToOneDepth);
 
+// The programs a pass draws the scene with: `opaque` for every draw without a cut-out, `mask`
+// (the same shaders built with ALPHA_MASK: include/alpha_mask.glsl) for MASK draws, which get
+// their alpha test at the uniform locations and texture unit alpha_mask.glsl declares. The mask
+// variant is separate because a shader that may discard loses the early depth test.
+struct ScenePrograms {
+    GLuint opaque = 0, mask = 0;
+    GLint colorLocation = -1; // receives the base colour (-1: none), in both programs
+};
+
 class GpuScene {
   public:
     GpuScene() = default;
     explicit GpuScene(const Scene& scene);
-    // Binds the VAO and issues the draws; `colorLocation` receives the base colour. With
-    // `cullViewProj`, draws whose bounds lie outside that view are skipped.
-    DrawStats draw(GLint colorLocation, const glm::mat4* cullViewProj = nullptr, bool zeroToOneDepth = false) const;
+    // Binds the VAO and issues the draws, MASK draws last. With `cullViewProj`, draws whose bounds
+    // lie outside that view are skipped.
+    DrawStats draw(const ScenePrograms& programs, const glm::mat4* cullViewProj = nullptr, bool zeroToOneDepth = false) const;
     float radius() const { return radius_; }
+    bool hasMask() const { return hasMask_; } // a MASK draw: callers build ScenePrograms::mask
 
   private:
     gl::VertexArray vao_;
-    gl::Buffer vbo_, ibo_;
+    gl::Buffer vbo_, ibo_, uvs_;
+    std::vector<gl::Texture2D> alpha_; // per Scene::alphaTextures, R8
+    std::vector<glm::ivec2> alphaWrap_;
+    bool hasMask_ = false;
     std::vector<Draw> draws_;
     std::vector<Bounds> drawBounds_; // per draw, scene frame
     float radius_ = 1.0f;

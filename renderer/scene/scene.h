@@ -27,6 +27,20 @@ struct Draw {
     uint32_t firstIndex = 0;
     uint32_t indexCount = 0;
     glm::vec4 baseColor{1.0f}; // glTF pbrMetallicRoughness.baseColorFactor (linear)
+    // glTF alphaMode MASK: a point is cut out where baseColor.w x the alpha texture's texel there
+    // (Scene::alphaTextures[alphaTexture], -1: none) is below alphaCutoff (scene/alpha_mask.h).
+    bool mask = false;
+    float alphaCutoff = 0.5f;
+    int alphaTexture = -1;
+};
+
+// The alpha channel of a MASK material's base-colour texture, decoded (scene/mask_textures.h),
+// with its sampler's wrap modes. Row 0 is the image's top row, at v = 0 (glTF's UV convention).
+enum class Wrap : int32_t { Repeat = 0, Clamp = 1, Mirror = 2 }; // the shader's codes (alpha_mask.glsl)
+struct AlphaTexture {
+    int width = 0, height = 0;
+    std::vector<uint8_t> alpha; // width x height, row-major
+    Wrap wrapS = Wrap::Repeat, wrapT = Wrap::Repeat;
 };
 
 struct Bounds {
@@ -46,11 +60,17 @@ struct Bounds {
 struct MaterialCounts {
     size_t opaque = 0, mask = 0, blend = 0;
     bool blendSkipped = false; // BLEND triangles left out (Transparent::Skip): not in the scene at all
+    size_t maskTextures = 0, maskPixels = 0; // MASK alpha textures decoded, and their pixels
+    double maskDecodeMs = 0;                 // time spent reading and decoding them
 };
 
 struct Scene {
     std::string name;
     std::vector<Vertex> vertices;
+    // Texture coordinates per vertex, only when a draw is MASK-textured (else empty): the UV set
+    // its base-colour texture names, KHR_texture_transform applied.
+    std::vector<glm::vec2> uvs;
+    std::vector<AlphaTexture> alphaTextures;
     std::vector<uint32_t> indices;
     std::vector<Draw> draws;
     Bounds bounds;
@@ -84,6 +104,10 @@ struct SceneBudget {
     // whole file) and, separately, the scene they expand to (vertices, positions, indices), each
     // checked before it is allocated. `ssaolab --max-scene-mib N` raises it.
     size_t bytes = size_t(1) << 30; // 1 GiB
+    // Pixels of the MASK materials' base-colour textures (the only images ssaolab decodes), in
+    // total, checked from each image's header before it is decoded: 64 M pixels is eight 2K x 4K
+    // textures, 256 MiB while one decodes as RGBA, 1 byte a pixel kept. `--max-mask-mpix N`.
+    size_t maskPixels = size_t(64) << 20;
 };
 void setSceneBudget(SceneBudget b);
 SceneBudget sceneBudget();
@@ -91,7 +115,7 @@ SceneBudget sceneBudget();
 // What becomes of BLEND (and transmissive) surfaces when a glTF scene loads. Skip, the default: as
 // engines draw them - after the AO, so they are neither in the G-buffer nor an occluder of the
 // reference (both read the same Scene, so they agree). Opaque: drawn and traced as solids
-// (`ssaolab --transparent opaque`). MASK materials are drawn as solids either way (no cut-out yet).
+// (`ssaolab --transparent opaque`). MASK materials are cut out either way (Draw::mask).
 enum class Transparent { Skip, Opaque };
 void setTransparentMode(Transparent t);
 Transparent transparentMode();

@@ -13,6 +13,7 @@
 #define SSAO_TEX_AO 5           // AO input of the denoise / composite passes
 #define SSAO_TEX_LINEAR_DEPTH 6 // gbuffer.depth: linear view distance (positive), 0 = sky
 #define SSAO_TEX_VIEW_SOURCE 7  // buffer shown by the view pass
+#define SSAO_TEX_SCENE_ALPHA 7  // scene passes: a MASK draw's alpha texture (alpha_mask.glsl); the view pass binds its own
 #define SSAO_TEX_VIEW_MASK 8    // geometry mask for the view pass (linear depth > 0)
 #define SSAO_TEX_VIEW_SOURCE_B 9 // second buffer of a difference view
 #define SSAO_TEX_TECHNIQUE 10   // first unit free for a technique's own textures

@@ -1,9 +1,11 @@
 #version 450 core
 // G-buffer in view space (seeds 000/003/004): position, normal, albedo, linear depth.
 #include "include/frame.glsl"
+#include "include/alpha_mask.glsl"
 
 in vec3 vViewPos;
 in vec3 vViewNormal;
+in vec2 vUv;
 
 layout(location = 0) uniform vec4 uBaseColor;
 
@@ -23,6 +25,7 @@ layout(location = WRITE_DEPTH) out float oLinearDepth; // distance along -z, sce
 #endif
 
 void main() {
+    alphaMaskTest(vUv); // MASK draws: cut-outs are not surfaces
 #ifdef WRITE_POSITION
     oPosition = vec4(vViewPos, 1.0);
 #endif

@@ -1,0 +1,152 @@
+#include "scene/mask_textures.h"
+
+#include "util/error.h"
+
+#include <stb_image.h>
+
+#include <chrono>
+#include <limits>
+
+namespace ssao {
+
+std::vector<unsigned char> decodeBase64(const std::string& s, size_t begin) {
+    auto value = [](char c) -> int {
+        if (c >= 'A' && c <= 'Z') return c - 'A';
+        if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+        if (c >= '0' && c <= '9') return c - '0' + 52;
+        if (c == '+' || c == '-') return 62; // '-' and '_': the URL-safe alphabet
+        if (c == '/' || c == '_') return 63;
+        return -1;
+    };
+    std::vector<unsigned char> out;
+    out.reserve((s.size() - std::min(begin, s.size())) / 4 * 3);
+    uint32_t acc = 0;
+    int bits = 0;
+    for (size_t i = begin; i < s.size(); ++i) {
+        const char c = s[i];
+        if (c == '=') break;
+        if (c == '\n' || c == '\r' || c == ' ') continue;
+        const int v = value(c);
+        if (v < 0) throw Error("a data URI holds '" + std::string(1, c) + "', which is not base64");
+        acc = (acc << 6) | uint32_t(v);
+        bits += 6;
+        if (bits >= 8) {
+            bits -= 8;
+            out.push_back(static_cast<unsigned char>(acc >> bits));
+            acc &= (1u << bits) - 1;
+        }
+    }
+    return out;
+}
+
+std::string percentDecode(const std::string& uri) {
+    auto hex = [](char c) -> int {
+        if (c >= '0' && c <= '9') return c - '0';
+        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+        if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+        return -1;
+    };
+    std::string out;
+    for (size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
+            out.push_back(char(hex(uri[i + 1]) * 16 + hex(uri[i + 2])));
+            i += 2;
+        } else {
+            out.push_back(uri[i]);
+        }
+    }
+    return out;
+}
+
+std::vector<unsigned char> MaskTextures::encoded(int image, const std::string& who, const unsigned char*& data,
+                                                 size_t& size) {
+    const std::string at = what_ + ": image " + std::to_string(image) + " (the base-colour texture of " + who + ")";
+    if (!src_.images || !src_.images->is_array() || image < 0 || size_t(image) >= src_.images->size())
+        throw Error(at + " does not exist");
+    const nlohmann::json& img = (*src_.images)[size_t(image)];
+    if (!img.is_object()) throw Error(at + " is not an object");
+    std::vector<unsigned char> owned;
+    try {
+        if (img.contains("bufferView")) {
+            if (!img["bufferView"].is_number_integer()) throw Error("its bufferView is not an index");
+            const auto view = src_.bufferView(img["bufferView"].get<int>());
+            data = view.first, size = view.second;
+            return owned;
+        }
+        if (!img.contains("uri") || !img["uri"].is_string()) throw Error("it has neither a uri nor a bufferView");
+        const std::string uri = img["uri"].get<std::string>();
+        if (uri.rfind("data:", 0) == 0) {
+            const size_t comma = uri.find(',');
+            if (comma == std::string::npos || uri.rfind(";base64", comma) == std::string::npos)
+                throw Error("its data URI is not base64");
+            owned = decodeBase64(uri, comma + 1);
+        } else {
+            owned = src_.readUri(percentDecode(uri));
+        }
+    } catch (const Error& e) {
+        throw Error(at + ": " + e.what());
+    }
+    data = owned.data(), size = owned.size();
+    return owned;
+}
+
+int MaskTextures::alphaOf(int image, Wrap s, Wrap t, const std::string& who, Scene& scene) {
+    const auto key = std::make_pair(image, std::make_pair(int(s), int(t)));
+    if (auto it = done_.find(key); it != done_.end()) return it->second;
+    if (decoded_.find(image) == decoded_.end()) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const unsigned char* data = nullptr;
+        size_t size = 0;
+        const std::vector<unsigned char> owned = encoded(image, who, data, size);
+        const std::string at = what_ + ": image " + std::to_string(image) + " (the base-colour texture of " + who + ")";
+        if (size > size_t(std::numeric_limits<int>::max())) throw Error(at + " is over 2 GiB");
+        int w = 0, h = 0, comp = 0;
+        // The header alone, before anything is allocated for the pixels.
+        if (!stbi_info_from_memory(data, int(size), &w, &h, &comp))
+            throw Error(at + " is not a PNG or JPEG that can be read (" +
+                        std::string(stbi_failure_reason() ? stbi_failure_reason() : "unknown format") + ")");
+        const uint64_t pixels = uint64_t(std::max(w, 0)) * uint64_t(std::max(h, 0));
+        if (w <= 0 || h <= 0) throw Error(at + " has no pixels");
+        if (pixels > budget_ - std::min(used_, budget_))
+            throw Error(at + " is " + std::to_string(w) + "x" + std::to_string(h) + " pixels: past the budget of " +
+                        std::to_string(budget_ >> 20) + " M pixels for MASK textures" +
+                        (used_ ? " (" + std::to_string(used_ >> 20) + " M already decoded)" : std::string()) +
+                        " (raise it with ssaolab --max-mask-mpix N)");
+        used_ += size_t(pixels);
+        int w2 = 0, h2 = 0, c2 = 0;
+        stbi_uc* px = stbi_load_from_memory(data, int(size), &w2, &h2, &c2, 0);
+        if (!px)
+            throw Error(at + " cannot be decoded (" +
+                        std::string(stbi_failure_reason() ? stbi_failure_reason() : "corrupt data") + ")");
+        std::vector<uint8_t> alpha;
+        if (w2 != w || h2 != h) {
+            stbi_image_free(px);
+            throw Error(at + " decodes to another size than its header says");
+        }
+        if (c2 == 2 || c2 == 4) {
+            alpha.resize(size_t(w) * size_t(h));
+            for (size_t i = 0; i < alpha.size(); ++i)
+                alpha[i] = px[i * size_t(c2) + size_t(c2 - 1)];
+        } else {
+            alpha.assign(1, 255); // no alpha channel: opaque everywhere, one texel holds it
+            w2 = h2 = 1;
+        }
+        stbi_image_free(px);
+        sizes_[image] = {w2, h2};
+        decoded_[image] = std::move(alpha);
+        scene.materials.maskPixels += size_t(pixels);
+        scene.materials.maskDecodeMs +=
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    }
+    AlphaTexture tex;
+    tex.width = sizes_[image].first, tex.height = sizes_[image].second;
+    tex.alpha = decoded_[image];
+    tex.wrapS = s, tex.wrapT = t;
+    scene.alphaTextures.push_back(std::move(tex));
+    ++scene.materials.maskTextures;
+    const int index = int(scene.alphaTextures.size()) - 1;
+    done_[key] = index;
+    return index;
+}
+
+} // namespace ssao
