@@ -3,6 +3,7 @@
 
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_guard.h"
+#include "scene/gltf_instancing.h"
 #include "scene/gltf_materials.h"
 #include "scene/view_fit.h"
 #include "util/error.h"
@@ -97,8 +98,20 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
     return true;
 }
 
-const char* kUnsupportedExtensions[] = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
-                                        "KHR_mesh_quantization", "KHR_texture_basisu"};
+// A file that requires an extension a loader does not support must be refused (glTF 2.0 §3.12).
+// ssaolab honours instancing, texture transforms and transmission (as BLEND); the rest of this list
+// changes neither geometry nor coverage (shading, lights, texture formats: images are decoded only
+// for MASK cut-outs, which name a texture they cannot read). Anything else - compressed or quantised
+// geometry, an extension this list does not know - is refused by name.
+bool supportedRequirement(const std::string& ext) {
+    static const char* exact[] = {"EXT_mesh_gpu_instancing", "KHR_texture_transform", "KHR_lights_punctual",
+                                  "KHR_texture_basisu", "EXT_texture_webp", "KHR_xmp_json_ld"};
+    for (const char* e : exact)
+        if (ext == e) return true;
+    // Material models (transmission, volume, ior, specular, clearcoat, sheen, unlit, ...) shade; they
+    // do not move a surface. KHR_materials_variants only switches among materials.
+    return ext.rfind("KHR_materials_", 0) == 0;
+}
 
 // Converts strips and fans to lists; returns an empty list for points/lines (no surface, no AO).
 std::vector<uint32_t> toTriangleList(const std::vector<uint32_t>& in, int mode) {
@@ -293,8 +306,9 @@ tinygltf::Model readModel(const GuardedGltf& g, const std::string& path, SceneFo
         throw Error("glTF " + path + " is glTF " + model.asset.version +
                     "; only glTF 2.0 is supported (convert it, e.g. with gltf-pipeline)");
     for (const auto& ext : model.extensionsRequired)
-        for (const char* bad : kUnsupportedExtensions)
-            if (ext == bad) throw Error("glTF " + path + " requires unsupported extension " + ext);
+        if (!supportedRequirement(ext))
+            throw Error("glTF " + path + " requires unsupported extension " + ext +
+                        " (ssaolab reads uncompressed float geometry; it honours EXT_mesh_gpu_instancing and KHR_texture_transform)");
     return model;
 }
 
@@ -346,7 +360,7 @@ std::string meshLabel(const tinygltf::Mesh& mesh, int index) {
 // before anything is allocated (900 primitives sharing one accessor once took 5.4 GiB first).
 struct Expansion {
     double triangles = 0, vertices = 0;
-    void add(const tinygltf::Model& m, const tinygltf::Primitive& p) {
+    void add(const tinygltf::Model& m, const tinygltf::Primitive& p, double copies) {
         auto pos = p.attributes.find("POSITION");
         if (pos == p.attributes.end() || pos->second < 0 || pos->second >= int(m.accessors.size())) return;
         const double pc = double(m.accessors[size_t(pos->second)].count);
@@ -354,8 +368,8 @@ struct Expansion {
         const double tris = p.mode == TINYGLTF_MODE_TRIANGLES ? std::floor(ic / 3)
                             : (p.mode == TINYGLTF_MODE_TRIANGLE_STRIP || p.mode == TINYGLTF_MODE_TRIANGLE_FAN) ? std::max(ic - 2, 0.0)
                                                                                                               : 0.0;
-        triangles += tris;
-        vertices += p.attributes.count("NORMAL") ? pc : 3 * tris; // flat normals give every corner a vertex
+        triangles += copies * tris;
+        vertices += copies * (p.attributes.count("NORMAL") ? pc : 3 * tris); // flat normals: a vertex per corner
     }
     // Vertices (scene frame), their file positions (double) and three indices a triangle.
     double bytes() const { return vertices * double(sizeof(Vertex) + sizeof(glm::dvec3)) + triangles * 12; }
@@ -382,11 +396,21 @@ class NodeWalker {
         if (n.mesh >= 0) {
             if (n.mesh >= int(m_.meshes.size())) throw Error("glTF " + path_ + ": node refers to missing mesh");
             const auto& mesh = m_.meshes[size_t(n.mesh)];
-            for (const auto& p : mesh.primitives)
-                if (countOnly_)
-                    expansion.add(m_, p);
-                else
-                    appendPrimitive(m_, p, world, s_, worldPos, meshLabel(mesh, n.mesh), *masks_);
+            const std::string what = "glTF " + path_ + ": node " + std::to_string(ni);
+            // EXT_mesh_gpu_instancing: the mesh once per instance (1 without it), counted before any
+            // instance is read so the budget sees the whole expansion.
+            const size_t instances = instanceCount(m_, n, what);
+            if (instances > kMaxVisits - std::min(visits_, kMaxVisits))
+                throw Error("glTF " + path_ + ": more than 1 million node instances (shared nodes and GPU instances multiply)");
+            visits_ += instances > 0 ? instances - 1 : 0;
+            if (countOnly_) {
+                for (const auto& p : mesh.primitives)
+                    expansion.add(m_, p, double(instances));
+            } else {
+                for (const glm::dmat4& instance : instanceTransforms(m_, n, what))
+                    for (const auto& p : mesh.primitives)
+                        appendPrimitive(m_, p, world * instance, s_, worldPos, meshLabel(mesh, n.mesh), *masks_);
+            }
         }
         if (!countOnly_ && n.camera >= 0 && n.camera < int(m_.cameras.size())) {
             glm::dvec3 eye;
