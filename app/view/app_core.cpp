@@ -141,6 +141,18 @@ bool AppCore::openScene(const std::string& spec) {
     });
 }
 
+bool AppCore::setTransparent(Transparent mode) {
+    const Transparent before = transparentMode();
+    setTransparentMode(mode);
+    const bool ok = attempt("reload the scene", [&] {
+        adoptScene(loadScene(sceneSpec_), sceneSpec_, true);
+        return std::string(mode == Transparent::Skip ? "transparent surfaces skipped" : "transparent surfaces drawn as opaque") +
+               " (" + std::to_string(scene_->triangleCount()) + " triangles)";
+    });
+    if (!ok) setTransparentMode(before);
+    return ok;
+}
+
 bool AppCore::openPreset(const std::string& nameOrPath) {
     return attempt("load preset", [&] {
         Preset p = store_.open(nameOrPath);

@@ -55,6 +55,9 @@ class AppCore {
     bool deletePreset(const std::string& name);
     void resetCamera();
     void selectSceneCamera(int index);
+    // BLEND/transmissive surfaces skipped or drawn as opaque (scene.h Transparent): the scene is
+    // loaded again with the camera kept; on failure the mode and the scene stay as they were.
+    bool setTransparent(Transparent mode);
     // A point of the front: its settings become the current ones (with the user's radius), or B of
     // the split view, so A | B compares it with the current setting.
     void applyCandidate(const Candidate& c);

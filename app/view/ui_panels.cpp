@@ -4,6 +4,7 @@
 #include "view/app_core.h"
 
 #include <cstring>
+#include <functional>
 #include <vector>
 
 namespace ssao {
@@ -32,6 +33,9 @@ bool tab(AppCore& app, const char* name) {
 }
 
 void sceneSection(AppCore& app) {
+    // What replaces the scene (opening one, the transparent toggle) runs at the end: `sc` and what
+    // points into it must outlive every widget drawn from them.
+    std::function<void()> replaceScene;
     const Scene& sc = app.scene();
     ImGui::TextWrapped("%s", sc.name.c_str());
     ImGui::TextDisabled("%zu triangles, bounding-box diagonal %.4g units", sc.triangleCount(),
@@ -39,21 +43,31 @@ void sceneSection(AppCore& app) {
     const MaterialCounts& mc = sc.materials;
     if (mc.mask + mc.blend > 0) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("materials: %zu opaque, %zu mask (drawn solid), %zu blend triangles %s", mc.opaque, mc.mask,
-                           mc.blend,
-                           mc.blendSkipped ? "- skipped, as engines draw them after the AO (--transparent opaque draws them)"
-                                           : "- drawn and traced as opaque (--transparent opaque)");
+        ImGui::TextWrapped("materials: %zu opaque, %zu mask, %zu blend triangles", mc.opaque, mc.mask, mc.blend);
+        if (mc.mask > 0)
+            ImGui::TextWrapped("mask: cut out where alpha < cutoff (%zu textures, %.1f M pixels decoded in %.0f ms)",
+                               mc.maskTextures, double(mc.maskPixels) / double(1 << 20), mc.maskDecodeMs);
         ImGui::PopStyleColor();
+    }
+    if (mc.blend > 0) {
+        bool opaque = !mc.blendSkipped;
+        if (ImGui::Checkbox("draw BLEND surfaces as opaque", &opaque))
+            replaceScene = [&app, opaque] { app.setTransparent(opaque ? Transparent::Opaque : Transparent::Skip); };
+        rememberRect(app.view(), "scene#transparent");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("off (default): BLEND and transmissive surfaces are skipped, as engines draw them after the AO -\n"
+                              "neither in the G-buffer nor an occluder of the reference. On: drawn and traced as solids\n"
+                              "(ssaolab --transparent opaque).");
     }
     static std::string path;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.7f);
     const bool enter = inputText("##scenepath", path, true);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("a .gltf/.glb path; Enter or Open loads it");
     ImGui::SameLine();
-    if (ImGui::Button("Open") || enter) app.openScene(path);
+    if (ImGui::Button("Open") || enter) replaceScene = [&app] { app.openScene(path); };
     rememberRect(app.view(), "scene#open");
     for (const auto& name : builtinSceneNames()) {
-        if (ImGui::SmallButton(name.c_str())) app.openScene("builtin:" + name);
+        if (ImGui::SmallButton(name.c_str())) replaceScene = [&app, name] { app.openScene("builtin:" + name); };
         ImGui::SameLine();
     }
     ImGui::NewLine();
@@ -106,6 +120,7 @@ void sceneSection(AppCore& app) {
                         c.target.y, c.target.z);
     ImGui::TextDisabled("fov %.0f  near %.4g  far %.4g (as rendered)%s", e.fovYDeg, e.nearZ, e.farZ,
                         e.orthographic() ? "; view height = 2 |target - eye| tan(fov/2)" : "");
+    if (replaceScene) replaceScene();
 }
 
 void presetSection(AppCore& app) {

@@ -79,7 +79,11 @@ nlohmann::json writeOutputs(const FrameCapture& c, const std::string& dir, const
                                {"blend", info.materials.blend == 0 ? "none"
                                          : info.materials.blendSkipped ? "skipped (not drawn, not an occluder)"
                                                                        : "drawn and traced as opaque"},
-                               {"mask", "drawn and traced as opaque (alpha cut-outs not applied)"}};
+                               {"mask", info.materials.mask == 0 ? "none"
+                                        : "cut out where base-colour alpha < alphaCutoff (G-buffer discard, reference hit filter)"},
+                               {"mask_textures", info.materials.maskTextures},
+                               {"mask_texture_pixels", info.materials.maskPixels},
+                               {"mask_decode_ms", info.materials.maskDecodeMs}};
     if (info.sceneOrigin != glm::dvec3(0.0))
         m["scene"]["origin"] = {info.sceneOrigin.x, info.sceneOrigin.y, info.sceneOrigin.z};
     Camera fileCamera = cam; // in the file's coordinates, as --camera and presets take it

@@ -395,3 +395,28 @@ TEST_F(AppUi, WindowResizeAndHiDpiScaleTheRenderSize) {
     io.DisplayFramebufferScale = ImVec2(1, 1);
     EXPECT_TRUE(finiteInRange(aoRaw(), 0.0f, 1.0f));
 }
+
+TEST_F(AppUi, TheTransparentToggleReloadsTheSceneKeepingTheCamera) {
+    struct Restore {
+        Transparent saved = transparentMode();
+        ~Restore() { setTransparentMode(saved); }
+    } restore;
+    ASSERT_TRUE(ui_->app().openScene(std::string(SSAOLAB_SCENES_DIR) + "/CornellBox/cornellBox.gltf"));
+    ui_->frames(2);
+    const size_t skipped = ui_->app().scene().triangleCount();
+    ASSERT_TRUE(ui_->app().scene().materials.blendSkipped);
+    ui_->app().selectSceneCamera(0);
+    ui_->frames(1);
+    const glm::vec3 eye = ui_->app().cameraController().camera().eye;
+    ui_->click("tab#Scene & camera");
+    ui_->frames(2);
+    ui_->click("scene#transparent", 0.05f);
+    ui_->frames(2);
+    EXPECT_EQ(transparentMode(), Transparent::Opaque);
+    EXPECT_FALSE(ui_->app().scene().materials.blendSkipped);
+    EXPECT_EQ(ui_->app().scene().triangleCount(), skipped + ui_->app().scene().materials.blend) << "the glass sphere is back";
+    EXPECT_LT(glm::length(ui_->app().cameraController().camera().eye - eye), 1e-5f) << "the camera stays";
+    ui_->click("scene#transparent", 0.05f);
+    ui_->frames(2);
+    EXPECT_EQ(ui_->app().scene().triangleCount(), skipped);
+}
