@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 using namespace ssao;
@@ -69,6 +70,9 @@ TEST(Transparent, WithoutTheGlassSphereTheReferenceOnlyOpensUp) {
         sumSkip += rs.ao[i], sumOpaque += ro.ao[i];
         opened += rs.ao[i] > ro.ao[i] + 0.05f;
     }
+    std::printf("CornellBox %dx%d, R = %.3f, 64 rays: where both see the same surface (%ld pixels) the reference "
+                "reads %.4f with the glass sphere skipped, %.4f with it opaque; %ld pixels open up by more than 0.05\n",
+                w, h, R, same, sumSkip / double(same), sumOpaque / double(same), opened);
     ASSERT_GT(same, 1000);
     EXPECT_EQ(darker, 0);
     EXPECT_GT(sumSkip, sumOpaque);
