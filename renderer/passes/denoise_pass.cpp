@@ -3,6 +3,7 @@
 #include "gl/shader_library.h"
 #include "passes/denoise_weights.h"
 #include "techniques/ao_common.h"
+#include "techniques/technique.h"
 
 namespace ssao {
 
@@ -11,7 +12,7 @@ void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
     ResourceDesc tmp =
         describe(chain().res("denoise.tmp"), GL_R32F, 1, Display::Unit, "x pass of the denoiser");
     // The bilateral's passes all run at full resolution (its first pass upsamples jointly).
-    const bool bilateral = s.denoise.kind == DenoiseKind::Bilateral;
+    const bool bilateral = effectiveDenoise(s).kind == DenoiseKind::Bilateral;
     tmp.scale = bilateral ? 1.0f : resolutionScale(s.ao.resolution);
     tmp.internal = true;
     if (bilateral || s.temporal.enabled || s.skip.sky) b.read("gbuffer.depth");
@@ -23,7 +24,7 @@ void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
 
 DenoiseConfig DenoisePass::config(const Settings& s, const FrameInfo& f) const {
     DenoiseConfig c{};
-    const DenoiseSettings& d = s.denoise;
+    const DenoiseSettings d = effectiveDenoise(s); // auto: the technique's own
     c.bilateral = d.kind == DenoiseKind::Bilateral;
     c.skipSky = s.skip.sky;
     if (c.bilateral) {

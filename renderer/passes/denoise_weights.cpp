@@ -45,7 +45,8 @@ gpu::DenoiseConstants packBilateralConstants(const DenoiseSettings& d, bool norm
     // is the bilateral's own limit, not a range check.
     c.taps = {std::min(d.halfWidth, SSAO_BILATERAL_MAX_HALF_WIDTH), 0, normalUnorm ? SSAO_DENOISE_NORMAL_UNORM : 0, 0};
     // Normal term cos^8: 0.5 at ~25 degrees, so creases split while curved surfaces stay smooth.
-    c.offsetsWeights[0] = {d.sigma, d.sharpness, 8.0f, 0.0f};
+    // w: 1 / the AO range sigma (0: no range term).
+    c.offsetsWeights[0] = {d.sigma, d.sharpness, 8.0f, d.aoSigma > 0.0f ? 1.0f / d.aoSigma : 0.0f};
     return c;
 }
 

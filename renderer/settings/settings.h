@@ -12,7 +12,8 @@ enum class TargetFormat { RGBA16F, RGBA32F, RGBA8 }; // RGBA8: normals only, sto
 enum class RadiusMode { World, Scene, Screen };
 enum class AoResolution { Full, Half, Quarter };
 enum class NormalSource { GBuffer, Depth }; // SSAO_NORMALS_* (bindings.h)
-enum class DenoiseKind { None, Box4, Box4Centred, Gaussian, Bilateral };
+// Auto: the technique's own denoiser (TechniqueInfo::denoiser), the one measured to lower its raw error.
+enum class DenoiseKind { Auto, None, Box4, Box4Centred, Gaussian, Bilateral };
 
 struct GBufferSettings {
     TargetFormat positionFormat = TargetFormat::RGBA32F;
@@ -40,12 +41,15 @@ struct AoSettings {
 };
 
 struct DenoiseSettings {
-    DenoiseKind kind = DenoiseKind::Box4;
+    DenoiseKind kind = DenoiseKind::Auto;
     float sigma = 1.5f;   // gaussian standard deviation, in taps
     int halfWidth = 2;    // gaussian taps each side of the centre (2 → the seed's 5x5)
     float spacing = 1.0f; // pixels between gaussian taps
     float sharpness = 16.0f; // bilateral: relative depth difference d weighs exp(-(d * sharpness)^2)
     int passes = 2;          // bilateral: repeated edge-aware passes (XeGTAO runs 1-3)
+    // bilateral: a neighbour whose AO differs by d from the pixel's weighs exp(-(d / aoSigma)^2)
+    // (a range term: detail larger than the noise survives); 0 = off (depth and normal only).
+    float aoSigma = 0.0f;
 };
 
 // Temporal accumulation: the denoised AO of successive frames, each with its own noise, blended

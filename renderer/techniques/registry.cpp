@@ -50,6 +50,11 @@ bool usesPyramid(const Settings& s) {
     return t.pyramid && t.pyramid(s);
 }
 
+DenoiseSettings effectiveDenoise(const Settings& s) {
+    if (s.denoise.kind != DenoiseKind::Auto) return s.denoise;
+    return findTechnique(s.ao.technique).denoiser;
+}
+
 double adaptiveShare(const Settings& s, float radiusPx) {
     const TechniqueInfo& t = findTechnique(s.ao.technique);
     if (!s.ao.adaptive || !t.adaptive) return 1.0;

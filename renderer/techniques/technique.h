@@ -38,6 +38,14 @@ struct TechniqueInfo {
     // purpose), or "" when the technique must hold the physics with them: an open plane unoccluded,
     // a corner darkening toward the wall (tests/gl/test_physics_limits.cpp, `ssaolab stress`).
     std::function<std::string(const Settings&)> unphysical;
+    // What denoise.kind = auto runs for it: the denoiser that lowers (never raises) its raw AO's
+    // geometry RMSE, edges and interior, on every scene of the denoiser sweep (docs/benchmarks.md,
+    // "Denoisers"); none where every filter raises it.
+    DenoiseSettings denoiser = [] {
+        DenoiseSettings d;
+        d.kind = DenoiseKind::None;
+        return d;
+    }();
 };
 
 // makePasses for a technique that is one pass of type P.
@@ -56,6 +64,8 @@ const TechniqueInfo& findTechnique(const std::string& id);
 // The capabilities of `s`'s technique.
 std::string unphysicalReason(const Settings& s); // "" when it has none
 bool usesPyramid(const Settings& s);
+// s.denoise, with auto resolved to the technique's own denoiser.
+DenoiseSettings effectiveDenoise(const Settings& s);
 // The share of the technique's full count that ao.adaptive takes at a pixel whose radius spans
 // `radiusPx` pixels (1 without adaptive or for a technique without a count): what the shaders
 // compute, from the same function (shaders/include/adaptive.h).

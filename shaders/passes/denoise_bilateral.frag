@@ -3,6 +3,8 @@
 //   exp(-d²/2σ²)                      spatial, d in input texels
 // × exp(-(|z - z₀| / z₀ · sharpness)²) depth similarity (relative: the same at any distance)
 // × max(0, n·n₀)^p                    normal similarity (creases stay sharp)
+// × exp(-((a - a₀) / σ_a)²)              AO similarity, when σ_a > 0 (a range term, Tomasi and
+//                                      Manduchi 1998: detail that stands out of the noise stays)
 // with z, n read from the full-resolution G-buffer at the neighbour's centre, so a reduced-
 // resolution input is upsampled jointly (Kopf et al. 2007, "Joint Bilateral Upsampling") rather
 // than bilinearly across silhouettes. Not separable: a 2-D window (the bilateral is not a
@@ -34,7 +36,8 @@ void main() {
     }
     vec3 n0 = normalAt(vUv);
     float sigma = denoise.offsetsWeights[0].x, sharp = denoise.offsetsWeights[0].y;
-    float npow = denoise.offsetsWeights[0].z;
+    float npow = denoise.offsetsWeights[0].z, invAoSigma = denoise.offsetsWeights[0].w;
+    float a0 = texelFetch(aoIn, c, 0).r;
     int r = denoise.taps.x;
     float sum = 0.0, wsum = 0.0;
     for (int dy = -r; dy <= r; ++dy)
@@ -45,12 +48,14 @@ void main() {
             float z = textureLod(gDepth, tuv, 0.0).r;
             if (!(z > 0.0)) continue; // sky holds no AO of a surface
             float rel = abs(z - z0) / z0 * sharp;
+            float a = texelFetch(aoIn, t, 0).r;
+            float ra = (a - a0) * invAoSigma;
             float w = exp(-float(dx * dx + dy * dy) / (2.0 * sigma * sigma)) * exp(-rel * rel) *
-                      pow(max(dot(normalAt(tuv), n0), 0.0), npow);
-            sum += texelFetch(aoIn, t, 0).r * w;
+                      pow(max(dot(normalAt(tuv), n0), 0.0), npow) * exp(-ra * ra);
+            sum += a * w;
             wsum += w;
         }
     // No similar neighbour at all (a lone pixel): keep its own value rather than divide by ~0.
-    float ao = wsum > 1e-6 ? sum / wsum : texelFetch(aoIn, c, 0).r;
+    float ao = wsum > 1e-6 ? sum / wsum : a0;
     oAO = ao > 1.0 ? 1.0 : ao; // a weighted mean of ones may round past 1; a NaN stays visible
 }

@@ -1,5 +1,6 @@
 #include "settings/params.h"
 #include "settings/preset.h"
+#include "techniques/technique.h"
 #include "util/error.h"
 
 #include "test_util.h"
@@ -254,4 +255,25 @@ TEST(Presets, SceneSizeAndKeysAreRead) {
     Preset round = presetFromJson(presetToJson(p), "round trip");
     EXPECT_EQ(round.scene, p.scene);
     EXPECT_EQ(round.size, p.size);
+}
+
+TEST(Params, AutoDenoiseIsEachTechniquesOwnChoiceAndAnExplicitKindStays) {
+    Settings s = defaultSettings();
+    ASSERT_EQ(s.denoise.kind, DenoiseKind::Auto);
+    // Measured on the denoiser sweep (techniques/*/technique.cpp): a bilateral pass lowers the
+    // kernel's and SAO's raw error on every scene, every filter raises the others'.
+    const std::pair<const char*, DenoiseKind> expected[] = {{"kernel", DenoiseKind::Bilateral}, {"sao", DenoiseKind::Bilateral},
+                                                            {"hbao", DenoiseKind::None}, {"gtao", DenoiseKind::None},
+                                                            {"vbao", DenoiseKind::None}};
+    for (const auto& [tech, kind] : expected) {
+        s.ao.technique = tech;
+        EXPECT_EQ(effectiveDenoise(s).kind, kind) << tech;
+        EXPECT_NE(effectiveDenoise(s).kind, DenoiseKind::Auto) << tech;
+    }
+    s.ao.technique = "kernel";
+    EXPECT_EQ(effectiveDenoise(s).passes, 1);
+    setParam(s, "denoise.kind", "box4");
+    EXPECT_EQ(effectiveDenoise(s).kind, DenoiseKind::Box4);
+    setParam(s, "denoise.kind", "auto");
+    EXPECT_EQ(effectiveDenoise(s).kind, DenoiseKind::Bilateral);
 }

@@ -43,6 +43,11 @@ TechniqueInfo saoTechnique() {
             "(Alchemy AO), McGuire, Mara, Luebke 2012 (SAO)",
                     saoParams);
     t.adaptive = [](const Settings& s) { return AdaptiveCount{s.sao.samples, false}; }; // taps on a disc
+    // denoise.kind = auto: one depth- and normal-aware bilateral pass, 5x5, lowers the raw AO's
+    // error on all 5 scenes of the denoiser sweep (mean -0.0173; box4 raised it by up to 0.022).
+    t.denoiser.kind = DenoiseKind::Bilateral;
+    t.denoiser.passes = 1;
+    t.denoiser.halfWidth = 2;
     return t;
 }
 
