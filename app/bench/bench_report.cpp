@@ -36,7 +36,8 @@ std::string num(double v, int digits = 6) {
 
 const char* kMetricHeader =
     "gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,p99_abs,max_abs,psnr_geometry_srgb,"
-    "psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,reference_noise,frames,rmse_first_frame";
+    "psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,reference_noise,frames,rmse_first_frame,"
+    "gbuffer_ms,ao_ms,denoise_ms,composite_ms";
 
 std::string metricCells(const ViewResult& v) {
     const ErrorMetrics& e = v.error;
@@ -44,7 +45,8 @@ std::string metricCells(const ViewResult& v) {
            num(e.mae) + "," + num(e.bias) + "," + num(e.p99Abs) + "," + num(e.maxAbs) + "," +
            num(e.psnrGeometrySrgb) + "," + num(e.psnrFullSrgb) + "," + num(e.rmseEdge) + "," +
            num(e.rmseInterior) + "," + num(e.ssim) + "," + std::to_string(e.nonFinite) + "," +
-           num(e.referenceNoise) + "," + std::to_string(v.frames) + "," + num(v.rmseFirstFrame);
+           num(e.referenceNoise) + "," + std::to_string(v.frames) + "," + num(v.rmseFirstFrame) + "," +
+           num(v.passMs.gbuffer) + "," + num(v.passMs.ao) + "," + num(v.passMs.denoise) + "," + num(v.passMs.composite);
 }
 
 } // namespace
@@ -94,7 +96,7 @@ std::string summaryCsv(const BenchRun& run) {
     f << "label,technique,baseline,pareto,views,gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,"
          "psnr_geometry_srgb,psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,time_ratio,rmse_ratio,"
          "rmse_first_frame,rmse_vs_oracle,rmse_edge_vs_oracle,rmse_interior_vs_oracle,rmse_screen,"
-         "rmse_edge_screen,rmse_interior_screen,settings\n";
+         "rmse_edge_screen,rmse_interior_screen,gbuffer_ms,ao_ms,denoise_ms,composite_ms,settings\n";
     for (const auto& s : run.summary) {
         const BenchConfig& c = cfgs[s.config];
         f << csvField(c.label) << "," << c.settings.ao.technique << "," << c.baseline << "," << s.pareto
@@ -104,7 +106,9 @@ std::string summaryCsv(const BenchRun& run) {
           << num(s.rmseInterior) << "," << num(s.ssim) << "," << s.nonFinite << "," << num(s.timeRatio)
           << "," << num(s.rmseRatio) << "," << num(s.rmseFirstFrame) << "," << num(s.technique.rmse) << ","
           << num(s.technique.rmseEdge) << "," << num(s.technique.rmseInterior) << "," << num(s.screen.rmse) << ","
-          << num(s.screen.rmseEdge) << "," << num(s.screen.rmseInterior) << "," << csvField(c.keys.dump())
+          << num(s.screen.rmseEdge) << "," << num(s.screen.rmseInterior) << "," << num(s.passMs.gbuffer) << ","
+          << num(s.passMs.ao) << "," << num(s.passMs.denoise) << "," << num(s.passMs.composite) << ","
+          << csvField(c.keys.dump())
           << "\n";
     }
     return f.str();
@@ -162,6 +166,28 @@ static std::string runFacts(const BenchRun& run) {
     return md.str();
 }
 
+// Where the time goes: each pass of a frame for the front and the baseline (the G-buffer and the
+// composite are the same fixed cost for every row; AO + denoise is what the rows compare).
+std::string passMarkdown(const BenchRun& run) {
+    std::ostringstream md;
+    std::vector<const ConfigSummary*> rows;
+    for (const auto& s : run.summary)
+        if ((s.pareto || s.config == run.sweep.baseline) && std::isfinite(s.passMs.ao)) rows.push_back(&s);
+    if (rows.empty()) return "";
+    std::sort(rows.begin(), rows.end(), [](auto* a, auto* b) { return a->timeRatio < b->timeRatio; });
+    md << "\n### Where the time goes (front and baseline)\n\nGPU ms per pass, mean over views of each view's median; "
+          "G-buffer includes its layers (guard band, back faces), AO the position pyramid, denoise the "
+          "upsample and temporal blend.\n\n| configuration | G-buffer | AO | denoise | composite | whole frame |\n"
+          "|---|---:|---:|---:|---:|---:|\n";
+    for (const ConfigSummary* s : rows) {
+        const PassTimes& t = s->passMs;
+        md << "| " << run.sweep.configs[s->config].label << " | " << num(t.gbuffer, 3) << " | " << num(t.ao, 3) << " | "
+           << num(t.denoise, 3) << " | " << num(t.composite, 3) << " | " << num(t.gbuffer + t.ao + t.denoise + t.composite, 4)
+           << " |\n";
+    }
+    return md.str();
+}
+
 std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
     const auto& cfgs = run.sweep.configs;
     const ConfigSummary& base = run.summary[run.sweep.baseline];
@@ -200,6 +226,7 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
     };
     md << "### Pareto front (and the baseline), fastest first\n\n";
     table(true);
+    md << passMarkdown(run);
     md << splitMarkdown(run);
     md << "\n### Every configuration\n\n";
     table(false);

@@ -32,6 +32,11 @@ nlohmann::json configJson(const BenchConfig& c, const ConfigSummary& s) {
     return j;
 }
 
+// Where the time went (bench_summary.h PassTimes), ms.
+nlohmann::json passJson(const PassTimes& t) {
+    return {{"gbuffer", jnum(t.gbuffer)}, {"ao", jnum(t.ao)}, {"denoise", jnum(t.denoise)}, {"composite", jnum(t.composite)}};
+}
+
 nlohmann::json configFields(const BenchConfig& c, const ConfigSummary& s) {
     return {{"label", c.label},
             {"group", c.group},
@@ -43,6 +48,7 @@ nlohmann::json configFields(const BenchConfig& c, const ConfigSummary& s) {
             {"gpu_ms", jnum(s.gpuMs)},
             {"gpu_ms_min", jnum(s.gpuMsMin)},
             {"gpu_ms_max", jnum(s.gpuMsMax)},
+            {"pass_ms", passJson(s.passMs)},
             {"rmse", jnum(s.rmse)},
             {"mae", jnum(s.mae)},
             {"bias", jnum(s.bias)},
@@ -75,6 +81,7 @@ nlohmann::json viewFields(const ViewResult& v, const std::string& label) {
             {"gpu_ms", jnum(v.gpuMs)},
             {"gpu_ms_min", jnum(v.gpuMsMin)},
             {"gpu_ms_max", jnum(v.gpuMsMax)},
+            {"pass_ms", passJson(v.passMs)},
             {"baseline_ms", jnum(v.baselineMs)},
             {"time_ratio", jnum(v.timeRatio)},
             {"rmse", jnum(v.error.rmse)},
@@ -159,6 +166,11 @@ ViewResult readView(const Reader& rd, const nlohmann::json& j, const std::string
     v.gpuMsMin = rd.number(j, "gpu_ms_min", where);
     v.gpuMsMax = rd.number(j, "gpu_ms_max", where);
     v.baselineMs = rd.number(j, "baseline_ms", where);
+    if (j.contains("pass_ms")) { // runs before the per-pass breakdown have none
+        const nlohmann::json& t = j["pass_ms"];
+        v.passMs = {rd.number(t, "gbuffer", where + ".pass_ms"), rd.number(t, "ao", where + ".pass_ms"),
+                    rd.number(t, "denoise", where + ".pass_ms"), rd.number(t, "composite", where + ".pass_ms")};
+    }
     ErrorMetrics& e = v.error;
     e.rmse = rd.number(j, "rmse", where);
     e.mae = rd.number(j, "mae", where);

@@ -38,12 +38,22 @@ bool Measurement::step(Renderer& r, const ReferenceImage& ref, const ReferenceIm
         r.setSettings(settings_);
         r.invalidate(); // every pass runs: the time of a whole frame of this configuration
         const FrameReport fr = r.render();
-        double sum = 0;
-        for (const auto& p : fr.passes)
-            if (p.name != "gbuffer" && p.name != "composite" && p.gpuMs >= 0) sum += p.gpuMs;
-        if (timed_++ >= warmup_) ms_.push_back(sum);
+        double part[4] = {0, 0, 0, 0};
+        bool timedAll = true;
+        for (const auto& p : fr.passes) {
+            const int k = passCategory(p.name);
+            if (k < 0) continue;
+            if (p.gpuMs >= 0) part[k] += p.gpuMs;
+            else timedAll = false;
+        }
+        if (timed_++ >= warmup_) {
+            ms_.push_back(part[1] + part[2]); // AO + denoise, as every row compares
+            for (int k = 0; k < 4; ++k)
+                parts_[k].push_back(timedAll ? part[k] : std::numeric_limits<double>::quiet_NaN());
+        }
         if (timed_ >= warmup_ + frames_) {
             result_.gpuMs = median(ms_);
+            result_.passMs = {median(parts_[0]), median(parts_[1]), median(parts_[2]), median(parts_[3])};
             result_.gpuMsMin = *std::min_element(ms_.begin(), ms_.end());
             result_.gpuMsMax = *std::max_element(ms_.begin(), ms_.end());
             phase_ = Phase::Done;

@@ -6,8 +6,17 @@
 
 namespace ssao {
 
+int passCategory(const std::string& n) {
+    if (n == "gbuffer" || n == "guard_band" || n == "back_faces" || n.rfind("gbuffer", 0) == 0) return 0;
+    if (n.rfind("denoise", 0) == 0 || n.rfind("temporal", 0) == 0 || n.rfind("upsample", 0) == 0) return 2;
+    if (n.rfind("composite", 0) == 0) return 3;
+    if (n.rfind("reference", 0) == 0) return -1; // the explorer's upload of the reference, not the frame
+    return 1; // the technique's passes and the position pyramid
+}
+
 double median(std::vector<double> v) {
-    if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+    if (v.empty() || std::any_of(v.begin(), v.end(), [](double x) { return std::isnan(x); }))
+        return std::numeric_limits<double>::quiet_NaN();
     std::sort(v.begin(), v.end());
     const size_t n = v.size();
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
@@ -90,10 +99,13 @@ std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t conf
         int edgeViews = 0, interiorViews = 0, ratioViews = 0;
         s.gpuMsMin = std::numeric_limits<double>::infinity();
         s.gpuMsMax = -s.gpuMsMin;
+        double passSum[4] = {0, 0, 0, 0};
         for (const ViewResult& v : views) {
             if (v.config != c) continue;
             ++s.views;
             s.gpuMs += v.gpuMs;
+            passSum[0] += v.passMs.gbuffer, passSum[1] += v.passMs.ao, passSum[2] += v.passMs.denoise,
+                passSum[3] += v.passMs.composite;
             s.gpuMsMin = std::min(s.gpuMsMin, v.gpuMsMin);
             s.gpuMsMax = std::max(s.gpuMsMax, v.gpuMsMax);
             mse += v.error.rmse * v.error.rmse;
@@ -121,6 +133,7 @@ std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t conf
         }
         const double n = s.views;
         s.gpuMs /= n;
+        s.passMs = {passSum[0] / n, passSum[1] / n, passSum[2] / n, passSum[3] / n}; // NaN if a view lacks one
         s.rmse = std::sqrt(mse / n);
         s.rmseFirstFrame = std::sqrt(mseFirst / n);
         s.mae /= n;

@@ -14,8 +14,19 @@
 
 namespace ssao {
 
+// Where a frame's GPU time goes, ms (NaN: not measured): the G-buffer with its layers (guard band,
+// back faces), the AO (the technique's passes and the position pyramid), the denoise stage
+// (denoise, upsample, temporal) and the composite. ViewResult::gpuMs is ao + denoise.
+struct PassTimes {
+    double gbuffer = std::numeric_limits<double>::quiet_NaN(), ao = gbuffer, denoise = gbuffer, composite = gbuffer;
+};
+// The category of a frame-graph pass by its name, for PassTimes: 0 gbuffer, 1 ao, 2 denoise, 3 composite
+// (-1: not part of the frame).
+int passCategory(const std::string& passName);
+
 struct ViewResult {
     std::string scene, viewpoint;
+    PassTimes passMs; // medians over the timed frames
     size_t config = 0;
     double gpuMs = 0, gpuMsMin = 0, gpuMsMax = 0; // AO + denoise: median, min, max over timed frames
     ErrorMetrics error;        // of the image judged: after temporal accumulation when it is on
@@ -42,6 +53,7 @@ struct ConfigSummary {
     size_t config = 0;
     int views = 0;
     double gpuMs = 0, gpuMsMin = 0, gpuMsMax = 0;  // mean of the views' medians; min of mins; max of maxes
+    PassTimes passMs;                               // mean of the views' medians
     double rmse = 0, mae = 0, bias = 0;            // RMSE = sqrt(mean of the views' MSE)
     double psnrGeometrySrgb = 0, psnrFullSrgb = 0; // 10 log10(1 / mean MSE) over views
     double rmseEdge = 0, rmseInterior = 0;         // RMS over the views that have such pixels
