@@ -116,7 +116,8 @@ struct Commands {
     void addView(CLI::App& view) {
         ssao::WindowOptions& wo = window;
         view.add_option("--scene", wo.app.scene, "builtin:NAME or a .gltf/.glb file (default: the preset's, else showcase)");
-        view.add_option("--preset", wo.app.preset, "preset name or JSON file");
+        wo.app.preset = ssao::kStartPreset; // a new user's first frame: a point of the front (settings/preset.h)
+        view.add_option("--preset", wo.app.preset, "preset name or JSON file")->capture_default_str();
         view.add_option("--shaders", wo.app.shaderDir, "shader folder (edits are hot-reloaded)");
         view.add_option("--preset-dir", wo.app.userPresetDir,
                         "folder for saved presets (default $XDG_CONFIG_HOME/ssaolab/presets)");
@@ -160,10 +161,12 @@ struct Commands {
         if (app.got_subcommand("stress")) return ssao::runStress(stress);
         if (app.got_subcommand("skips")) return ssao::runSkips(skips);
         if (app.got_subcommand("view") || (!app.got_subcommand("render") && ssao::haveDisplay())) return runWindow();
-        if (!app.got_subcommand("render"))
+        if (!app.got_subcommand("render")) {
             std::printf("no display: rendering headless into %s/ (for the window run `xvfb-run -a ssaolab` "
                         "or set DISPLAY)\n",
                         render.out.c_str());
+            if (render.preset.empty()) render.preset = window.app.preset; // the window's first frame, headless
+        }
         return ssao::runRender(render);
     }
 };

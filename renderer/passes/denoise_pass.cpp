@@ -32,6 +32,8 @@ DenoiseConfig DenoisePass::config(const Settings& s, const FrameInfo& f) const {
         c.x = packBilateralConstants(d, s.gbuffer.normalFormat == TargetFormat::RGBA8);
     } else {
         c.bilinearTaps = d.kind == DenoiseKind::Box4Centred;
+        // none: one full-screen copy (bilinear upsample of reduced AO, sky to 1) instead of two.
+        c.passes = d.kind == DenoiseKind::None ? 1 : 2;
         c.x = packDenoiseConstants(d, 0);
         c.y = packDenoiseConstants(d, 1, s.skip.sky); // the last pass skips sky pixels
     }
@@ -54,14 +56,14 @@ void DenoisePass::separable(PassContext& ctx, const DenoiseConfig& c) {
     const bool upsample = ctx.size(tmp) != ctx.size(out);
     glUseProgram(ctx.shaders.program("passes/fullscreen.vert", "passes/denoise.frag"));
     if (c.skipSky) ctx.in("gbuffer.depth").bind(SSAO_TEX_LINEAR_DEPTH);
-    for (int dir = 0; dir < 2; ++dir) {
+    for (int dir = 2 - c.passes; dir < 2; ++dir) { // none: the y pass alone, from ao.raw
         if (!ubo_[dir])
             ubo_[dir] =
                 gl::UniformBuffer(sizeof(gpu::DenoiseConstants), name() + (dir ? ".y" : ".x") + ".constants");
         const gpu::DenoiseConstants& k = dir == 0 ? c.x : c.y;
         ubo_[dir].upload(&k, sizeof k);
         ubo_[dir].bind(SSAO_UBO_DENOISE);
-        ctx.in(dir == 0 ? raw : tmp).bind(SSAO_TEX_AO);
+        ctx.in(dir == 0 || c.passes == 1 ? raw : tmp).bind(SSAO_TEX_AO);
         // Reduced-resolution AO is brought to full size bilinearly by the y pass; the centred box
         // reads between texels in both passes.
         if ((dir == 1 && upsample) || c.bilinearTaps)

@@ -11,7 +11,7 @@ namespace ssao {
 SSAO_CONFIG_BEGIN
 struct DenoiseConfig {
     int32_t bilateral;     // the edge-aware filter (x: its constants), else the separable x and y passes
-    int32_t passes;        // bilateral passes
+    int32_t passes;        // bilateral passes; separable: 2 (x, then y), or 1 for none (one copy, upsampling)
     int32_t bilinearTaps;  // both passes read bilinearly (the centred box's half-texel taps)
     int32_t skipSky;       // reads gbuffer.depth: the last pass returns 1 on sky pixels
     gpu::DenoiseConstants x, y;

@@ -39,6 +39,12 @@ struct Preset {
 };
 
 // Top-level keys that are preset metadata, not parameter groups.
+// The shipped preset a new user's first frame uses (the window, and the headless render the
+// README's first command runs without a display): a point of the time-against-error front that
+// shows AO clearly on every shared scene at less than the learnopengl seed's cost
+// (tests/gl/test_start_preset.cpp). The seeds' kernel is one click away in the preset list.
+inline constexpr const char* kStartPreset = "vbao-medium";
+
 bool isPresetMetadataKey(const std::string& key);
 
 nlohmann::json cameraToJson(const Camera& c);
