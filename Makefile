@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build run test screenshot goldens bench skips presets stress fuzz test-sanitize clean screen
+.PHONY: deps configure build run test screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling
 
 deps:
 	@bash .ci/install-deps.sh
@@ -58,6 +58,11 @@ presets: build
 # close at best (`ssaolab bench`, `render --reference`), then the page reassembled.
 screen: build
 	@bash .ci/screen.sh $(BUILD) $(SCENES)
+
+# docs/benchmarks.md "Scaling": AO + denoise time against pixels and radius per technique, G-buffer
+# time against triangles, reference time against rays and pixels, with each curve's exponent.
+scaling: build
+	@bash .ci/scaling.sh $(BUILD) $(SCENES)
 
 # docs/stability.md: every technique under extreme projections, scales, placements, precisions and
 # parameter limits (`ssaolab stress`).

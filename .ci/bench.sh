@@ -79,5 +79,6 @@ MD
   section "What the screen cannot see (\`make screen\`, every shared scene, 640x360)" screen screen.sh \
     docs/screen-discussion.md "$OUT/screen.md" screen.json
   section "Skipped work (\`ssaolab skips\`)" skips skips.sh docs/skips-discussion.md "$OUT/skips.md" skips.json
+  section "Scaling (\`make scaling\`)" scaling scaling.sh docs/scaling-discussion.md "$OUT/scaling.md" scaling.json
 } > docs/benchmarks.md
 echo "wrote docs/benchmarks.md"

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# `make scaling`: how cost grows (docs/benchmarks.md, "Scaling"), on this machine's GL (llvmpipe in
+# CI; the device tool's GPU when one is lent):
+#  1. AO + denoise time against pixels (640x360 .. 3840x2160), per technique (its medium preset)
+#     and the learnopengl baseline, CornellBox;
+#  2. against the radius in pixels (R = 1.25 % .. 20 % of the diagonal at 1280x720): the
+#     texture-cache effect;
+#  3. G-buffer time against triangles: a generated height field of 10 k .. 10 M triangles;
+#  4. reference (Embree) time against rays per pixel and against pixels.
+# Each curve's log-log slope is its exponent (.ci/scaling.py fits and plots them).
+# Writes docs/bench/scaling.{md,json,png,svg}, then reassembles docs/benchmarks.md.
+# Usage: .ci/scaling.sh BUILD_DIR [SCENES_DIR]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD=${1:-build}
+SCENES=${2:-../shared/scenes}
+RUN="$BUILD/scaling-run"
+rm -rf "$RUN"
+mkdir -p "$RUN"
+SSAO="$BUILD/app/ssaolab"
+SCENE="$SCENES/CornellBox/cornellBox.gltf"
+PRESETS=(learnopengl kernel-medium sao-medium hbao-medium gtao-medium vbao-medium)
+FR=${SCALING_FRAMES:-3}
+render() { # OUT ARGS...: one render, its metrics.json kept
+  local out=$1
+  shift
+  "$SSAO" render --quiet --timing-frames "$FR" --out "$RUN/tmp" "$@" >/dev/null
+  cp "$RUN/tmp/metrics.json" "$out"
+}
+mkdir -p "$RUN/pixels" "$RUN/radius" "$RUN/triangles" "$RUN/reference"
+for p in "${PRESETS[@]}"; do
+  for size in 640x360 960x540 1280x720 1920x1080 2560x1440 3840x2160; do
+    render "$RUN/pixels/${p}_${size}.json" --scene "$SCENE" --preset "$p" --size "$size"
+  done
+  for r in 0.0125 0.025 0.05 0.1 0.2; do
+    render "$RUN/radius/${p}_${r}.json" --scene "$SCENE" --preset "$p" --size 1280x720 --set ao.radius_mode=scene \
+      --set ao.radius_scene="$r"
+  done
+  echo "scaling: $p"
+done
+for n in 10000 100000 1000000 3000000 10000000; do
+  /usr/bin/python3 .ci/scaling.py grid "$n" "$RUN/grid_$n.gltf"
+  render "$RUN/triangles/$n.json" --scene "$RUN/grid_$n.gltf" --preset vbao-medium --size 1280x720
+  rm -f "$RUN/grid_$n.gltf" "$RUN/grid_$n.bin"
+  echo "scaling: $n triangles"
+done
+# The reference, uncached (a private cache folder per run).
+for rays in 32 64 128 256 512; do
+  XDG_CACHE_HOME="$RUN/cache_r$rays" render "$RUN/reference/rays_$rays.json" --scene "$SCENE" --preset vbao-medium \
+    --size 320x180 --reference --reference-rays "$rays"
+done
+for size in 160x90 320x180 640x360 1280x720; do
+  XDG_CACHE_HOME="$RUN/cache_p$size" render "$RUN/reference/pixels_$size.json" --scene "$SCENE" --preset vbao-medium \
+    --size "$size" --reference --reference-rays 32
+done
+rm -rf "$RUN"/cache_*
+/usr/bin/python3 .ci/scaling.py report "$RUN" docs/bench
+BENCH_REPORT_ONLY=1 bash .ci/bench.sh "$BUILD" "$SCENES"
