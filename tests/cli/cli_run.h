@@ -36,6 +36,27 @@ inline CliRun ssaolab(const std::string& args, const std::string& env = "") {
     return r;
 }
 
+// Runs the shell command `cmd` on a virtual display (xvfb-run -a) and returns the command's own
+// exit status (-1: it never ran). xvfb-run's own failures - a display number taken by a test
+// starting at the same moment, "problem while cleaning up temporary directory" (exit 5) - are
+// not the command's: the status is the command's, written by the shell xvfb-run starts, and a
+// server that never came up is tried again.
+inline int underXvfb(const std::string& cmd, const std::string& tag) {
+    const std::string status = std::string(SSAOLAB_TEST_TMP) + "/xvfb_status_" + tag + "_" + std::to_string(::getpid());
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        std::filesystem::remove(status);
+        std::string quoted; // cmd inside single quotes for sh -c
+        for (char c : cmd)
+            quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        const std::string line = "xvfb-run -a -s '-screen 0 1280x800x24' sh -c '" + quoted + "; echo $? > " + status +
+                                 "' </dev/null >/dev/null 2>&1";
+        std::system(line.c_str());
+        const std::string s = slurp(status);
+        if (!s.empty()) return std::atoi(s.c_str());
+    }
+    return -1;
+}
+
 inline std::string outDir(const std::string& name) {
     return std::string(SSAOLAB_TEST_TMP) + "/out_" + name;
 }

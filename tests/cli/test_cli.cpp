@@ -240,12 +240,9 @@ TEST(Cli, WindowAppUnderXvfbRendersFramesAndExitsCleanly) {
     const std::string presets = std::string(SSAOLAB_TEST_TMP) + "/xvfb_presets";
     CliRun r = ssaolab("--help"); // sanity
     ASSERT_EQ(r.exitCode, 0);
-    const std::string cmd = "xvfb-run -a -s '-screen 0 1280x800x24' '" + std::string(SSAOLAB_BINARY) +
-                            "' view --size 1200x700 --frames 6 --screenshot " + shot + " --preset-dir " +
-                            presets + " >" + SSAOLAB_TEST_TMP + "/xvfb.out 2>&1";
-    const int status = std::system(cmd.c_str());
-    ASSERT_TRUE(WIFEXITED(status)) << slurp(std::string(SSAOLAB_TEST_TMP) + "/xvfb.out");
-    ASSERT_EQ(WEXITSTATUS(status), 0) << slurp(std::string(SSAOLAB_TEST_TMP) + "/xvfb.out");
+    const std::string cmd = "'" + std::string(SSAOLAB_BINARY) + "' view --size 1200x700 --frames 6 --screenshot " + shot +
+                            " --preset-dir " + presets + " >" + SSAOLAB_TEST_TMP + "/xvfb.out 2>&1";
+    ASSERT_EQ(underXvfb(cmd, "shot"), 0) << slurp(std::string(SSAOLAB_TEST_TMP) + "/xvfb.out");
     ASSERT_TRUE(std::filesystem::exists(shot));
     // The screenshot shows a UI and rendered buffers: many distinct grey levels, not a blank frame.
     std::ifstream in(shot, std::ios::binary);
