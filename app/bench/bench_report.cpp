@@ -37,7 +37,14 @@ std::string num(double v, int digits = 6) {
 const char* kMetricHeader =
     "gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,p99_abs,max_abs,psnr_geometry_srgb,"
     "psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,reference_noise,frames,rmse_first_frame,"
-    "gbuffer_ms,ao_ms,denoise_ms,composite_ms";
+    "gbuffer_ms,layers_ms,ao_ms,denoise_ms,composite_ms";
+
+std::string passCells(const PassTimes& t) {
+    std::string out;
+    for (int k = 0; k < PassTimes::kParts; ++k)
+        out += (k ? "," : "") + num(t.ms[k], 6);
+    return out;
+}
 
 std::string metricCells(const ViewResult& v) {
     const ErrorMetrics& e = v.error;
@@ -46,7 +53,7 @@ std::string metricCells(const ViewResult& v) {
            num(e.psnrGeometrySrgb) + "," + num(e.psnrFullSrgb) + "," + num(e.rmseEdge) + "," +
            num(e.rmseInterior) + "," + num(e.ssim) + "," + std::to_string(e.nonFinite) + "," +
            num(e.referenceNoise) + "," + std::to_string(v.frames) + "," + num(v.rmseFirstFrame) + "," +
-           num(v.passMs.gbuffer) + "," + num(v.passMs.ao) + "," + num(v.passMs.denoise) + "," + num(v.passMs.composite);
+           passCells(v.passMs);
 }
 
 } // namespace
@@ -96,7 +103,7 @@ std::string summaryCsv(const BenchRun& run) {
     f << "label,technique,baseline,pareto,views,gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,"
          "psnr_geometry_srgb,psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,time_ratio,rmse_ratio,"
          "rmse_first_frame,rmse_vs_oracle,rmse_edge_vs_oracle,rmse_interior_vs_oracle,rmse_screen,"
-         "rmse_edge_screen,rmse_interior_screen,gbuffer_ms,ao_ms,denoise_ms,composite_ms,settings\n";
+         "rmse_edge_screen,rmse_interior_screen,gbuffer_ms,layers_ms,ao_ms,denoise_ms,composite_ms,settings\n";
     for (const auto& s : run.summary) {
         const BenchConfig& c = cfgs[s.config];
         f << csvField(c.label) << "," << c.settings.ao.technique << "," << c.baseline << "," << s.pareto
@@ -106,8 +113,7 @@ std::string summaryCsv(const BenchRun& run) {
           << num(s.rmseInterior) << "," << num(s.ssim) << "," << s.nonFinite << "," << num(s.timeRatio)
           << "," << num(s.rmseRatio) << "," << num(s.rmseFirstFrame) << "," << num(s.technique.rmse) << ","
           << num(s.technique.rmseEdge) << "," << num(s.technique.rmseInterior) << "," << num(s.screen.rmse) << ","
-          << num(s.screen.rmseEdge) << "," << num(s.screen.rmseInterior) << "," << num(s.passMs.gbuffer) << ","
-          << num(s.passMs.ao) << "," << num(s.passMs.denoise) << "," << num(s.passMs.composite) << ","
+          << num(s.screen.rmseEdge) << "," << num(s.screen.rmseInterior) << "," << passCells(s.passMs) << ","
           << csvField(c.keys.dump())
           << "\n";
     }
@@ -172,18 +178,20 @@ std::string passMarkdown(const BenchRun& run) {
     std::ostringstream md;
     std::vector<const ConfigSummary*> rows;
     for (const auto& s : run.summary)
-        if ((s.pareto || s.config == run.sweep.baseline) && std::isfinite(s.passMs.ao)) rows.push_back(&s);
+        if ((s.pareto || s.config == run.sweep.baseline) && std::isfinite(s.passMs.ms[2])) rows.push_back(&s);
     if (rows.empty()) return "";
     std::sort(rows.begin(), rows.end(), [](auto* a, auto* b) { return a->timeRatio < b->timeRatio; });
-    md << "\n### Where the time goes (front and baseline)\n\nGPU ms per pass, mean over views of each view's median; "
-          "G-buffer includes its layers (guard band, back faces), AO the position pyramid, denoise the "
-          "upsample and temporal blend.\n\n| configuration | G-buffer | AO | denoise | composite | whole frame |\n"
-          "|---|---:|---:|---:|---:|---:|\n";
+    md << "\n### Where the time goes (front and baseline)\n\nGPU ms per part of the frame, mean over views of each "
+          "view's median: the G-buffer, its extra layers (guard band, back faces), the AO (with the position "
+          "pyramid), the denoise stage (upsample and temporal blend included). The composite does not run "
+          "in `bench`, which judges the AO.\n\n| configuration | G-buffer | layers | AO | denoise |\n"
+          "|---|---:|---:|---:|---:|\n";
     for (const ConfigSummary* s : rows) {
         const PassTimes& t = s->passMs;
-        md << "| " << run.sweep.configs[s->config].label << " | " << num(t.gbuffer, 3) << " | " << num(t.ao, 3) << " | "
-           << num(t.denoise, 3) << " | " << num(t.composite, 3) << " | " << num(t.gbuffer + t.ao + t.denoise + t.composite, 4)
-           << " |\n";
+        md << "| " << run.sweep.configs[s->config].label;
+        for (int k = 0; k < 4; ++k)
+            md << " | " << (std::isfinite(t.ms[k]) ? num(t.ms[k], 3) : std::string("-"));
+        md << " |\n";
     }
     return md.str();
 }

@@ -34,7 +34,10 @@ nlohmann::json configJson(const BenchConfig& c, const ConfigSummary& s) {
 
 // Where the time went (bench_summary.h PassTimes), ms.
 nlohmann::json passJson(const PassTimes& t) {
-    return {{"gbuffer", jnum(t.gbuffer)}, {"ao", jnum(t.ao)}, {"denoise", jnum(t.denoise)}, {"composite", jnum(t.composite)}};
+    nlohmann::json j = nlohmann::json::object();
+    for (int k = 0; k < PassTimes::kParts; ++k)
+        j[PassTimes::kNames[k]] = jnum(t.ms[k]);
+    return j;
 }
 
 nlohmann::json configFields(const BenchConfig& c, const ConfigSummary& s) {
@@ -168,8 +171,8 @@ ViewResult readView(const Reader& rd, const nlohmann::json& j, const std::string
     v.baselineMs = rd.number(j, "baseline_ms", where);
     if (j.contains("pass_ms")) { // runs before the per-pass breakdown have none
         const nlohmann::json& t = j["pass_ms"];
-        v.passMs = {rd.number(t, "gbuffer", where + ".pass_ms"), rd.number(t, "ao", where + ".pass_ms"),
-                    rd.number(t, "denoise", where + ".pass_ms"), rd.number(t, "composite", where + ".pass_ms")};
+        for (int k = 0; k < PassTimes::kParts; ++k)
+            v.passMs.ms[k] = rd.number(t, PassTimes::kNames[k], where + ".pass_ms");
     }
     ErrorMetrics& e = v.error;
     e.rmse = rd.number(j, "rmse", where);

@@ -38,22 +38,27 @@ bool Measurement::step(Renderer& r, const ReferenceImage& ref, const ReferenceIm
         r.setSettings(settings_);
         r.invalidate(); // every pass runs: the time of a whole frame of this configuration
         const FrameReport fr = r.render();
-        double part[4] = {0, 0, 0, 0};
-        bool timedAll = true;
+        // Per category, the passes that ran (a pass that did not - the composite when only the AO
+        // is wanted, as bench judges it - has no time: its category stays NaN, "not run").
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        double part[PassTimes::kParts] = {nan, nan, nan, nan, nan};
         for (const auto& p : fr.passes) {
             const int k = passCategory(p.name);
-            if (k < 0) continue;
-            if (p.gpuMs >= 0) part[k] += p.gpuMs;
-            else timedAll = false;
+            if (k < 0 || p.culled || !(p.gpuMs >= 0)) continue;
+            part[k] = (std::isnan(part[k]) ? 0.0 : part[k]) + p.gpuMs;
         }
         if (timed_++ >= warmup_) {
-            ms_.push_back(part[1] + part[2]); // AO + denoise, as every row compares
-            for (int k = 0; k < 4; ++k)
-                parts_[k].push_back(timedAll ? part[k] : std::numeric_limits<double>::quiet_NaN());
+            double sum = 0; // every pass but the G-buffer and the composite, as every row compares
+            for (int k = 1; k <= 3; ++k)
+                sum += std::isnan(part[k]) ? 0.0 : part[k];
+            ms_.push_back(sum);
+            for (int k = 0; k < PassTimes::kParts; ++k)
+                parts_[k].push_back(part[k]);
         }
         if (timed_ >= warmup_ + frames_) {
             result_.gpuMs = median(ms_);
-            result_.passMs = {median(parts_[0]), median(parts_[1]), median(parts_[2]), median(parts_[3])};
+            for (int k = 0; k < PassTimes::kParts; ++k)
+                result_.passMs.ms[k] = median(parts_[k]);
             result_.gpuMsMin = *std::min_element(ms_.begin(), ms_.end());
             result_.gpuMsMax = *std::max_element(ms_.begin(), ms_.end());
             phase_ = Phase::Done;

@@ -40,7 +40,7 @@ class Measurement {
     Phase phase_ = Phase::First;
     int timed_ = 0; // timing frames rendered (warm-up included)
     std::vector<double> ms_;
-    std::vector<double> parts_[4]; // per timed frame: gbuffer, ao, denoise, composite (PassTimes)
+    std::vector<double> parts_[PassTimes::kParts]; // per timed frame, per part (PassTimes)
     ViewResult result_;
     Evaluation eval_;
 };

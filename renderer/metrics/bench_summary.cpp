@@ -7,11 +7,12 @@
 namespace ssao {
 
 int passCategory(const std::string& n) {
-    if (n == "gbuffer" || n == "guard_band" || n == "back_faces" || n.rfind("gbuffer", 0) == 0) return 0;
-    if (n.rfind("denoise", 0) == 0 || n.rfind("temporal", 0) == 0 || n.rfind("upsample", 0) == 0) return 2;
-    if (n.rfind("composite", 0) == 0) return 3;
+    if (n == "guard_band" || n == "back_faces") return 1;
+    if (n.rfind("gbuffer", 0) == 0) return 0;
+    if (n.rfind("denoise", 0) == 0 || n.rfind("temporal", 0) == 0 || n.rfind("upsample", 0) == 0) return 3;
+    if (n.rfind("composite", 0) == 0) return 4;
     if (n.rfind("reference", 0) == 0) return -1; // the explorer's upload of the reference, not the frame
-    return 1; // the technique's passes and the position pyramid
+    return 2; // the technique's passes and the position pyramid
 }
 
 double median(std::vector<double> v) {
@@ -99,13 +100,13 @@ std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t conf
         int edgeViews = 0, interiorViews = 0, ratioViews = 0;
         s.gpuMsMin = std::numeric_limits<double>::infinity();
         s.gpuMsMax = -s.gpuMsMin;
-        double passSum[4] = {0, 0, 0, 0};
+        double passSum[PassTimes::kParts] = {0, 0, 0, 0, 0};
         for (const ViewResult& v : views) {
             if (v.config != c) continue;
             ++s.views;
             s.gpuMs += v.gpuMs;
-            passSum[0] += v.passMs.gbuffer, passSum[1] += v.passMs.ao, passSum[2] += v.passMs.denoise,
-                passSum[3] += v.passMs.composite;
+            for (int k = 0; k < PassTimes::kParts; ++k)
+                passSum[k] += v.passMs.ms[k];
             s.gpuMsMin = std::min(s.gpuMsMin, v.gpuMsMin);
             s.gpuMsMax = std::max(s.gpuMsMax, v.gpuMsMax);
             mse += v.error.rmse * v.error.rmse;
@@ -133,7 +134,8 @@ std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t conf
         }
         const double n = s.views;
         s.gpuMs /= n;
-        s.passMs = {passSum[0] / n, passSum[1] / n, passSum[2] / n, passSum[3] / n}; // NaN if a view lacks one
+        for (int k = 0; k < PassTimes::kParts; ++k)
+            s.passMs.ms[k] = passSum[k] / n; // NaN if a view lacks one
         s.rmse = std::sqrt(mse / n);
         s.rmseFirstFrame = std::sqrt(mseFirst / n);
         s.mae /= n;

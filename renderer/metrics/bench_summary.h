@@ -14,14 +14,18 @@
 
 namespace ssao {
 
-// Where a frame's GPU time goes, ms (NaN: not measured): the G-buffer with its layers (guard band,
-// back faces), the AO (the technique's passes and the position pyramid), the denoise stage
-// (denoise, upsample, temporal) and the composite. ViewResult::gpuMs is ao + denoise.
+// Where a frame's GPU time goes, ms (NaN: not run): the G-buffer, its extra layers (guard band,
+// back faces: a remedy's own cost), the AO (the technique's passes and the position pyramid), the
+// denoise stage (denoise, upsample, temporal) and the composite. ViewResult::gpuMs, what every row
+// compares, is layers + ao + denoise: every pass but the G-buffer and the composite.
 struct PassTimes {
-    double gbuffer = std::numeric_limits<double>::quiet_NaN(), ao = gbuffer, denoise = gbuffer, composite = gbuffer;
+    static constexpr int kParts = 5;
+    static constexpr const char* kNames[kParts] = {"gbuffer", "layers", "ao", "denoise", "composite"};
+    double ms[kParts] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
+                         std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
+                         std::numeric_limits<double>::quiet_NaN()};
 };
-// The category of a frame-graph pass by its name, for PassTimes: 0 gbuffer, 1 ao, 2 denoise, 3 composite
-// (-1: not part of the frame).
+// The part of a frame-graph pass by its name, an index into PassTimes (-1: not part of the frame).
 int passCategory(const std::string& passName);
 
 struct ViewResult {
