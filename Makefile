@@ -40,7 +40,8 @@ goldens: build
 	  cp $$d/ao.denoised.png assets/golden/showcase_$$p\_ao.png && rm -rf $$d && echo "golden: $$p"; done
 
 # docs/benchmarks.md: reference rays/s and the time-against-error sweep on the shared scenes
-# (1280x720 on whatever GL the machine has; llvmpipe without a GPU; ~20-40 minutes on 2 cores).
+# (640x360 on whatever GL the machine has; llvmpipe without a GPU; ~25 minutes on 2 cores;
+# BENCH_SIZE=1280x720 for a larger frame).
 SCENES ?= ../shared/scenes
 bench: build
 	@bash .ci/bench.sh $(BUILD) $(SCENES)

@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # `make bench`: the reference tracer's rays/s (Google Benchmark) and `ssaolab bench` (built-in sweep
-# on the shared scenes at 1280x720), assembled into docs/benchmarks.md with the plot in docs/bench/.
+# on the shared scenes at 640x360), assembled into docs/benchmarks.md with the plot in docs/bench/.
 # Usage: .ci/bench.sh BUILD_DIR [SCENES_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
 SCENES=${2:-../shared/scenes}
-SIZE=${BENCH_SIZE:-1280x720}
+SIZE=${BENCH_SIZE:-640x360}
 OUT=docs/bench
 mkdir -p "$OUT"
 
