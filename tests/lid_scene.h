@@ -24,19 +24,6 @@ struct LidSpec {
     std::vector<unsigned char> png; // overrides the checkerboard (hostile images)
 };
 
-inline std::string base64Of(const std::vector<unsigned char>& in) {
-    static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (size_t i = 0; i < in.size(); i += 3) {
-        unsigned v = in[i] << 16 | (i + 1 < in.size() ? in[i + 1] << 8 : 0) | (i + 2 < in.size() ? in[i + 2] : 0);
-        out += t[(v >> 18) & 63];
-        out += t[(v >> 12) & 63];
-        out += i + 1 < in.size() ? t[(v >> 6) & 63] : '=';
-        out += i + 2 < in.size() ? t[v & 63] : '=';
-    }
-    return out;
-}
-
 // RGBA PNG bytes of the checkerboard (alpha 255 solid, 0 open).
 inline std::vector<unsigned char> checkerPng(int cells, int texelsPerCell) {
     const int n = cells * texelsPerCell;
@@ -82,7 +69,7 @@ inline std::string writeLidScene(const std::string& name, const LidSpec& s) {
     if (s.image == LidSpec::Image::BufferView) bin.insert(bin.end(), png.begin(), png.end());
     nlohmann::json j;
     j["asset"] = {{"version", "2.0"}};
-    j["buffers"] = {{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64Of(bin)}}};
+    j["buffers"] = {{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}};
     j["bufferViews"] = {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", sizeof pos}},
                         {{"buffer", 0}, {"byteOffset", sizeof pos}, {"byteLength", sizeof nrm}},
                         {{"buffer", 0}, {"byteOffset", sizeof pos + sizeof nrm}, {"byteLength", sizeof uv}},
@@ -101,7 +88,7 @@ inline std::string writeLidScene(const std::string& name, const LidSpec& s) {
     j["samplers"] = {{{"magFilter", 9728}, {"minFilter", 9728}, {"wrapS", 33071}, {"wrapT", 33071}}};
     j["textures"] = {{{"sampler", 0}, {"source", 0}}};
     if (s.image == LidSpec::Image::DataUri)
-        j["images"] = {{{"uri", "data:image/png;base64," + base64Of(png)}}};
+        j["images"] = {{{"uri", "data:image/png;base64," + base64(png)}}};
     else if (s.image == LidSpec::Image::File) {
         writeTemp(name + ".png", std::string(png.begin(), png.end()));
         j["images"] = {{{"uri", name + ".png"}}};

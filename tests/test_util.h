@@ -36,6 +36,20 @@ inline std::string slurp(const std::string& path) {
     return ss.str();
 }
 
+// Standard base64 (RFC 4648), for data URIs in generated glTF files.
+inline std::string base64(const std::vector<unsigned char>& in) {
+    static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < in.size(); i += 3) {
+        unsigned v = in[i] << 16 | (i + 1 < in.size() ? in[i + 1] << 8 : 0) | (i + 2 < in.size() ? in[i + 2] : 0);
+        out += t[(v >> 18) & 63];
+        out += t[(v >> 12) & 63];
+        out += i + 1 < in.size() ? t[(v >> 6) & 63] : '=';
+        out += i + 2 < in.size() ? t[v & 63] : '=';
+    }
+    return out;
+}
+
 // Every .gltf of the third-party scenes beside the repository (../shared/scenes), sorted.
 inline std::vector<std::filesystem::path> sharedSceneFiles() {
     std::vector<std::filesystem::path> out;

@@ -3,42 +3,13 @@
 #include "util/error.h"
 
 #include <stb_image.h>
+#include <tiny_gltf.h>
 
 #include <algorithm>
 #include <chrono>
 #include <limits>
 
 namespace ssao {
-
-std::vector<unsigned char> decodeBase64(const std::string& s, size_t begin) {
-    auto value = [](char c) -> int {
-        if (c >= 'A' && c <= 'Z') return c - 'A';
-        if (c >= 'a' && c <= 'z') return c - 'a' + 26;
-        if (c >= '0' && c <= '9') return c - '0' + 52;
-        if (c == '+' || c == '-') return 62; // '-' and '_': the URL-safe alphabet
-        if (c == '/' || c == '_') return 63;
-        return -1;
-    };
-    std::vector<unsigned char> out;
-    out.reserve((s.size() - std::min(begin, s.size())) / 4 * 3);
-    uint32_t acc = 0;
-    int bits = 0;
-    for (size_t i = begin; i < s.size(); ++i) {
-        const char c = s[i];
-        if (c == '=') break;
-        if (c == '\n' || c == '\r' || c == ' ') continue;
-        const int v = value(c);
-        if (v < 0) throw Error("a data URI holds '" + std::string(1, c) + "', which is not base64");
-        acc = (acc << 6) | uint32_t(v);
-        bits += 6;
-        if (bits >= 8) {
-            bits -= 8;
-            out.push_back(static_cast<unsigned char>(acc >> bits));
-            acc &= (1u << bits) - 1;
-        }
-    }
-    return out;
-}
 
 std::string percentDecode(const std::string& uri) {
     auto hex = [](char c) -> int {
@@ -77,10 +48,9 @@ std::vector<unsigned char> MaskTextures::encoded(int image, const std::string& w
         if (!img.contains("uri") || !img["uri"].is_string()) throw Error("it has neither a uri nor a bufferView");
         const std::string uri = img["uri"].get<std::string>();
         if (uri.rfind("data:", 0) == 0) {
-            const size_t comma = uri.find(',');
-            if (comma == std::string::npos || uri.rfind(";base64", comma) == std::string::npos)
-                throw Error("its data URI is not base64");
-            owned = decodeBase64(uri, comma + 1);
+            std::string mime; // tinygltf's decoder: the base64 data URIs glTF allows for images
+            if (!tinygltf::DecodeDataURI(&owned, mime, uri, 0, false))
+                throw Error("its data URI is not a base64 image or octet-stream");
         } else {
             owned = src_.readUri(percentDecode(uri));
         }
@@ -94,7 +64,10 @@ std::vector<unsigned char> MaskTextures::encoded(int image, const std::string& w
 int MaskTextures::alphaOf(int image, Wrap s, Wrap t, const std::string& who, Scene& scene) {
     const auto key = std::make_pair(image, std::make_pair(int(s), int(t)));
     if (auto it = done_.find(key); it != done_.end()) return it->second;
-    if (decoded_.find(image) == decoded_.end()) {
+    AlphaTexture tex;
+    if (auto first = firstOf_.find(image); first != firstOf_.end()) {
+        tex = scene.alphaTextures[size_t(first->second)]; // the same image under other wrap modes
+    } else {
         const auto t0 = std::chrono::steady_clock::now();
         const unsigned char* data = nullptr;
         size_t size = 0;
@@ -145,19 +118,17 @@ int MaskTextures::alphaOf(int image, Wrap s, Wrap t, const std::string& who, Sce
             w2 = h2 = 1;
         }
         stbi_image_free(px);
-        sizes_[image] = {w2, h2};
-        decoded_[image] = std::move(alpha);
+        tex.width = w2, tex.height = h2;
+        tex.alpha = std::move(alpha);
         scene.materials.maskPixels += size_t(pixels);
         scene.materials.maskDecodeMs +=
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     }
-    AlphaTexture tex;
-    tex.width = sizes_[image].first, tex.height = sizes_[image].second;
-    tex.alpha = decoded_[image];
     tex.wrapS = s, tex.wrapT = t;
     scene.alphaTextures.push_back(std::move(tex));
     ++scene.materials.maskTextures;
     const int index = int(scene.alphaTextures.size()) - 1;
+    firstOf_.emplace(image, index);
     done_[key] = index;
     return index;
 }

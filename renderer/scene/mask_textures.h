@@ -40,11 +40,9 @@ class MaskTextures {
     size_t budget_, used_ = 0;
     std::string what_;
     std::map<std::pair<int, std::pair<int, int>>, int> done_;  // (image, wrap) -> index
-    std::map<int, std::vector<uint8_t>> decoded_;              // image -> alpha, shared by wraps
-    std::map<int, std::pair<int, int>> sizes_;
+    std::map<int, int> firstOf_; // image -> its first entry in scene.alphaTextures (decoded once)
 };
 
-std::vector<unsigned char> decodeBase64(const std::string& text, size_t begin); // throws on a bad character
 std::string percentDecode(const std::string& uri);
 
 } // namespace ssao

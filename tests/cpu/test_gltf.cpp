@@ -15,23 +15,11 @@
 #include <sys/stat.h>
 
 using namespace ssao;
+using ssaotest::base64;
 using ssaotest::writeTemp;
 
 namespace {
 
-std::string base64(const std::vector<unsigned char>& in) {
-    static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (size_t i = 0; i < in.size(); i += 3) {
-        unsigned v =
-            in[i] << 16 | (i + 1 < in.size() ? in[i + 1] << 8 : 0) | (i + 2 < in.size() ? in[i + 2] : 0);
-        out += t[(v >> 18) & 63];
-        out += t[(v >> 12) & 63];
-        out += i + 1 < in.size() ? t[(v >> 6) & 63] : '=';
-        out += i + 2 < in.size() ? t[v & 63] : '=';
-    }
-    return out;
-}
 
 // One triangle (no normals) with uint8 indices under a translated node, as a .gltf with a data URI.
 std::string triangleGltf(const std::string& extra = "") {

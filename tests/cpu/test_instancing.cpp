@@ -38,7 +38,7 @@ nlohmann::json instanced(const std::vector<glm::vec3>& t, const std::vector<glm:
     j["asset"] = {{"version", "2.0"}};
     j["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
     j["extensionsRequired"] = {"EXT_mesh_gpu_instancing"};
-    j["buffers"] = {{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64Of(bin)}}};
+    j["buffers"] = {{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}};
     j["bufferViews"] = views;
     j["accessors"] = accessors;
     j["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}}};
