@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build run test screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling
+.PHONY: deps configure build run test screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers
 
 deps:
 	@bash .ci/install-deps.sh
@@ -64,6 +64,12 @@ screen: build
 # time against triangles, reference time against rays and pixels, with each curve's exponent.
 scaling: build
 	@bash .ci/scaling.sh $(BUILD) $(SCENES)
+
+# docs/benchmarks.md "The web peers": three.js SSAOPass, SAOPass, GTAOPass and N8AO (from npm, pinned
+# by app/bench/peers/package-lock.json) in Debian's Chromium on the same GL, against every shipped
+# preset, in one run (~5 minutes on llvmpipe; needs Node.js with npm).
+peers: build
+	@bash .ci/peers.sh $(BUILD) $(SCENES)
 
 # docs/stability.md: every technique under extreme projections, scales, placements, precisions and
 # parameter limits (`ssaolab stress`).

@@ -78,6 +78,8 @@ MD
   }
   section "What the screen cannot see (\`make screen\`, every shared scene, 640x360)" screen screen.sh \
     docs/screen-discussion.md "$OUT/screen.md" screen.json
+  section "The web peers (\`make peers\`, CornellBox, one run)" peers peers.sh docs/peers-discussion.md \
+    "$OUT/peers.md" peers.json
   section "Skipped work (\`ssaolab skips\`)" skips skips.sh docs/skips-discussion.md "$OUT/skips.md" skips.json
   section "Scaling (\`make scaling\`)" scaling scaling.sh docs/scaling-discussion.md "$OUT/scaling.md" scaling.json
 } > docs/benchmarks.md

@@ -71,6 +71,10 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--oracle-guard", o.oracleGuard, "with --reference: pixels the oracle's G-buffer holds beyond each edge")
         ->capture_default_str()
         ->check(cliRange(0, 4096));
+    cmd.add_option("--score", o.score,
+                   "with --reference: also judge this AO image of the same view and size (PNG, PGM or EXR; "
+                   "channel 0, 1 = open), e.g. another renderer's; repeatable")
+        ->check(CLI::ExistingFile);
     cmd.add_option("--shaders", o.shaderDir,
                    "shader folder (default: the installed or source tree's shaders/)");
     cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)");
@@ -201,6 +205,38 @@ nlohmann::json timePasses(Renderer& r, const FrameReport& first, int frames) {
     return timing;
 }
 
+// --score: AO images made elsewhere (another renderer, a web peer) of the same view, judged
+// against the same reference and oracle as the frame: metrics.json "scored", one line each.
+std::string scoreImages(const RenderOptions& o, const ReferenceImage& ref, const ReferenceSettings& rs,
+                        const ReferenceImage* oracle, nlohmann::json& m) {
+    std::string lines;
+    for (const std::string& file : o.score) {
+        const std::string ext = std::filesystem::path(file).extension().string();
+        Image img = ext == ".exr" || ext == ".EXR" ? readExr(file) : readPng(file); // PNG, PGM (stb)
+        if (img.width != ref.width || img.height != ref.height)
+            throw Error("--score " + file + ": " + std::to_string(img.width) + "x" + std::to_string(img.height) +
+                        ", the render is " + std::to_string(ref.width) + "x" + std::to_string(ref.height));
+        Image ao{img.width, img.height, 1, std::vector<float>(size_t(img.width) * img.height)};
+        for (size_t i = 0; i < ao.data.size(); ++i) ao.data[i] = img.data[i * size_t(img.channels)]; // channel 0
+        for (float v : ao.data)
+            if (!std::isfinite(v)) throw Error("--score " + file + ": non-finite AO values");
+        const ErrorMetrics e = evaluate(ao, ref).metrics;
+        nlohmann::json entry = {{"file", file}, {"error", metricsJson(e, ref, rs)}};
+        char b[300];
+        std::snprintf(b, sizeof b, "\nscored %s: RMSE %.4f, bias %+.4f, edge %.4f, interior %.4f", file.c_str(), e.rmse,
+                      e.bias, e.rmseEdge, e.rmseInterior);
+        lines += b;
+        if (oracle) {
+            const ErrorMetrics t = evaluate(ao, *oracle).metrics;
+            entry["technique"] = metricsJson(t, *oracle, rs);
+            std::snprintf(b, sizeof b, "; technique (vs the oracle) %.4f", t.rmse);
+            lines += b;
+        }
+        m["scored"].push_back(entry);
+    }
+    return lines;
+}
+
 // --reference: traces (or loads) the reference, writes its files and the error blocks into `m`;
 // returns the summary line.
 std::string judgeAgainstReference(const RenderOptions& o, const Renderer& r, const FrameCapture& frame,
@@ -223,6 +259,7 @@ std::string judgeAgainstReference(const RenderOptions& o, const Renderer& r, con
     // The split: the screen-space oracle of the same view (what the G-buffer alone decides), the
     // AO against it (the technique's share) and it against the truth (the screen's).
     std::string split;
+    std::optional<ReferenceImage> oracleKept; // for --score
     if (rs.variant == ReferenceVariant::Visibility) {
         ReferenceSettings os = rs;
         os.visibility = ReferenceVisibility::Screen;
@@ -251,7 +288,9 @@ std::string judgeAgainstReference(const RenderOptions& o, const Renderer& r, con
         std::snprintf(b, sizeof b, "; split: technique (vs the screen-space oracle) %.4f, screen (oracle vs truth) %.4f",
                       tech.rmse, screen.rmse);
         split = b;
+        oracleKept = std::move(oracle);
     }
+    split += scoreImages(o, ref, rs, oracleKept ? &*oracleKept : nullptr, m);
     writeFileAtomically((std::filesystem::path(o.out) / "metrics.json").string(), dumpJson(m) + "\n");
     const auto& j = m["error"];
     char line[768];
@@ -297,6 +336,7 @@ void printRenderSummary(const RenderOptions& o, const RenderJob& job, const std:
 } // namespace
 
 int runRender(const RenderOptions& o) {
+    if (!o.score.empty() && !o.reference) throw Error("--score judges an image against the reference: add --reference");
     RenderJob job = prepareRender(o);
     HeadlessRunner run({o.shaderDir, o.verboseGl});
     job.info.glRenderer = run.glRenderer();

@@ -32,6 +32,7 @@ struct RenderOptions {
     int oracleLayers = 1;          // the screen-space oracle's depth layers (2: a deep G-buffer)
     double oracleThickness = 1.0;  // its surfaces' thickness, x R (inf: a height field)
     int oracleGuard = 0;           // pixels its G-buffer holds beyond each edge
+    std::vector<std::string> score; // AO images of the same view made elsewhere, judged alike
     bool verboseGl = false;
     bool quiet = false;
 };

@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# `make peers`: the four web peers (three.js SSAOPass, SAOPass, GTAOPass; N8AO) against every
+# shipped ssaolab preset, in one run on this machine's GL (llvmpipe without a GPU; the peers run in
+# Debian's Chromium through ANGLE on the same Mesa). Same scene, camera, size and R as the
+# reference; errors from `ssaolab render --reference --score` (one metric code for both sides).
+# Writes docs/bench/peers.{md,json}, then reassembles docs/benchmarks.md.
+# Usage: .ci/peers.sh BUILD_DIR [SCENES_DIR]; PEERS_SIZE (640x360), PEERS_FRAMES (20).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD=${1:-build}
+SCENES=${2:-../shared/scenes}
+SIZE=${PEERS_SIZE:-640x360}
+FR=${PEERS_FRAMES:-20}
+SCENE="$SCENES/CornellBox/cornellBox.gltf"
+SSAO="$BUILD/app/ssaolab"
+RUN="$BUILD/peers-run"
+MODS="$BUILD/peers"
+for tool in node npm /usr/bin/chromium; do
+  command -v "$tool" >/dev/null || { echo "peers: $tool not found (Node.js with npm, and Debian's chromium)" >&2; exit 1; }
+done
+# The peers' packages, at the versions the lock pins (from the npm registry, once per lock).
+if ! cmp -s app/bench/peers/package-lock.json "$MODS/package-lock.json" || [ ! -d "$MODS/node_modules/three" ]; then
+  rm -rf "$MODS" && mkdir -p "$MODS"
+  cp app/bench/peers/package.json app/bench/peers/package-lock.json "$MODS/"
+  (cd "$MODS" && npm ci --no-audit --no-fund >/dev/null)
+fi
+rm -rf "$RUN"
+mkdir -p "$RUN/ours"
+# Every configuration at the same R, 5 % of the scene's diagonal (as `bench`): the baseline's own
+# preset has a world radius of 0.5.
+R_SET=(--set ao.radius_mode=scene --set ao.radius_scene=0.05)
+ours() { # PRESET [ARGS...]: one render against the reference, its metrics.json kept
+  local p=$1
+  shift
+  "$SSAO" render --quiet --scene "$SCENE" --size "$SIZE" --preset "$p" "${R_SET[@]}" --reference \
+    --timing-frames "$FR" --out "$RUN/tmp" "$@"
+  cp "$RUN/tmp/metrics.json" "$RUN/ours/$p.json"
+}
+# The baseline first: its metrics.json gives the peers the camera (clip planes included) and R.
+ours learnopengl
+R=$(/usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['error']['reference']['radius'])" \
+  "$RUN/ours/learnopengl.json")
+node app/bench/peers/run_peers.mjs --modules "$MODS/node_modules" --scene "$SCENE" \
+  --metrics "$RUN/ours/learnopengl.json" --radius "$R" --size "$SIZE" --frames "$FR" \
+  --peers ssao,ssao:min=0.25,ssao:min=0.5,ssao:min=0.75,sao,gtao,n8ao --out "$RUN/peers"
+scored=()
+for f in "$RUN"/peers/*.pgm; do scored+=(--score "$f"); done
+"$SSAO" render --quiet --scene "$SCENE" --size "$SIZE" --preset learnopengl "${R_SET[@]}" --reference --timing-frames 1 \
+  --out "$RUN/scored" "${scored[@]}"
+for f in assets/presets/{kernel,sao,hbao,gtao,vbao}-*.json; do
+  ours "$(basename "$f" .json)"
+  echo "peers: $(basename "$f" .json)"
+done
+/usr/bin/python3 .ci/peers.py "$RUN" docs/bench
+BENCH_REPORT_ONLY=1 bash .ci/bench.sh "$BUILD" "$SCENES"

@@ -1,0 +1,204 @@
+// The web peers on one glTF scene (run_peers.mjs drives this page through Chromium).
+// Each peer is three.js's EffectComposer with a RenderPass and the peer's pass writing its
+// denoised AO (linear, 1 = open) to the canvas; its time is the median frame with the peer minus
+// the median frame with the RenderPass alone, each frame ended by a 1-pixel readPixels (WebGL
+// has no GPU timer on llvmpipe, and the read waits for the GPU process to finish the frame).
+// Every length a peer takes is set from ssaolab's R (the radius itself; SSAOPass's depth range
+// as a fraction of the clip range; GTAOPass's thickness at the 4:1 ratio of three.js's example,
+// radius 0.25, thickness 1); every other setting is the peer's own default, as a user who adds
+// the pass would get.
+import * as THREE from 'three';
+import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
+import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
+import { SSAOPass } from 'three/addons/postprocessing/SSAOPass.js';
+import { SAOPass } from 'three/addons/postprocessing/SAOPass.js';
+import { GTAOPass } from 'three/addons/postprocessing/GTAOPass.js';
+import { N8AOPass } from 'n8ao';
+
+let renderer, scene, camera, cfg;
+
+// cfg: { scene (URL of the .gltf/.glb), width, height, radius (world units),
+//        camera: ssaolab's metrics.json camera (eye, target, up, fov_y_deg, near, far) }
+window.setupPeers = async (config) => {
+    cfg = config;
+    const canvas = document.createElement('canvas');
+    document.body.appendChild(canvas);
+    renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true,
+                                         powerPreference: 'high-performance' });
+    renderer.setPixelRatio(1);
+    renderer.setSize(cfg.width, cfg.height, false);
+    const gltf = await new GLTFLoader().loadAsync(cfg.scene);
+    scene = gltf.scene;
+    scene.background = new THREE.Color(1, 1, 1);
+    scene.add(new THREE.AmbientLight(0xffffff, 1.0));
+    // ssaolab skips BLEND and transmissive surfaces by default (README, "Transparent surfaces"):
+    // hide them here too so both sides occlude with the same geometry.
+    // ssaolab draws every face without culling and shades the side it sees (gbuffer.frag: the
+    // normal turned towards the viewer). three.js culls back faces and MeshNormalMaterial flips
+    // a normal only on back faces of double-sided materials, so scenes whose normals disagree
+    // with their winding (CornellBox's walls) would read as occluded from inside: turn each
+    // vertex normal to the side its triangles' winding faces, and draw both sides.
+    let hidden = 0, meshes = 0, flipped = 0;
+    scene.traverse((o) => {
+        if (!o.isMesh) return;
+        ++meshes;
+        const mats = Array.isArray(o.material) ? o.material : [o.material];
+        if (mats.some((m) => m.transparent || (m.transmission ?? 0) > 0)) { o.visible = false; ++hidden; }
+        for (const m of mats) m.side = THREE.DoubleSide;
+        flipped += orientNormals(o.geometry);
+    });
+    const c = cfg.camera;
+    const far = c.far === 'inf' ? 1e7 : c.far;
+    camera = new THREE.PerspectiveCamera(c.fov_y_deg, cfg.width / cfg.height, c.near, far);
+    camera.position.fromArray(c.eye);
+    camera.up.fromArray(c.up);
+    camera.lookAt(new THREE.Vector3().fromArray(c.target));
+    camera.updateMatrixWorld(true);
+    const gl = renderer.getContext();
+    const info = gl.getExtension('WEBGL_debug_renderer_info');
+    return { renderer: info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER),
+             three: THREE.REVISION, meshes, hidden, flipped };
+};
+
+// Turns each vertex normal towards the sum of its triangles' winding normals; returns how many
+// were turned.
+function orientNormals(g) {
+    const pos = g.getAttribute('position'), nrm = g.getAttribute('normal');
+    if (!pos || !nrm) return 0;
+    const idx = g.index, n = idx ? idx.count : pos.count, acc = new Float32Array(pos.count * 3);
+    const a = new THREE.Vector3(), b = new THREE.Vector3(), c = new THREE.Vector3();
+    for (let t = 0; t + 2 < n; t += 3) {
+        const i = idx ? [idx.getX(t), idx.getX(t + 1), idx.getX(t + 2)] : [t, t + 1, t + 2];
+        a.fromBufferAttribute(pos, i[0]); b.fromBufferAttribute(pos, i[1]); c.fromBufferAttribute(pos, i[2]);
+        c.sub(b); b.sub(a); b.cross(c); // (b - a) x (c - b): the winding's normal, area-weighted
+        for (const v of i) { acc[3 * v] += b.x; acc[3 * v + 1] += b.y; acc[3 * v + 2] += b.z; }
+    }
+    let turned = 0;
+    for (let v = 0; v < pos.count; ++v) {
+        const d = nrm.getX(v) * acc[3 * v] + nrm.getY(v) * acc[3 * v + 1] + nrm.getZ(v) * acc[3 * v + 2];
+        if (d < 0) { nrm.setXYZ(v, -nrm.getX(v), -nrm.getY(v), -nrm.getZ(v)); ++turned; }
+    }
+    if (turned) nrm.needsUpdate = true;
+    return turned;
+}
+
+// One peer's pass, at its defaults but for the radius. SAOPass's kernel radius is in pixels: R
+// projected at the distance from the eye to the camera's target.
+function makePass(name, opts) {
+    const p = makePeerPass(name, opts);
+    if (p.normalMaterial) p.normalMaterial = viewFacingNormals();
+    return p;
+}
+
+// The passes' normal pre-pass, as ssaolab's G-buffer writes normals: both sides drawn, the
+// interpolated normal turned towards the viewer, packed (n + 1) / 2 as MeshNormalMaterial
+// packs it. MeshNormalMaterial's own double-sided flip keys on gl_FrontFacing, which reads
+// inverted through ANGLE into three.js's render targets here (every wall read as facing away:
+// GTAOPass returned 0 on flat walls), so it is not used.
+function viewFacingNormals() {
+    return new THREE.ShaderMaterial({
+        side: THREE.DoubleSide,
+        blending: THREE.NoBlending,
+        vertexShader: `
+            varying vec3 vNormalView;
+            varying vec3 vPosView;
+            void main() {
+                vec4 pv = modelViewMatrix * vec4(position, 1.0);
+                vPosView = pv.xyz;
+                vNormalView = normalMatrix * normal;
+                gl_Position = projectionMatrix * pv;
+            }`,
+        fragmentShader: `
+            varying vec3 vNormalView;
+            varying vec3 vPosView;
+            void main() {
+                vec3 n = normalize(vNormalView);
+                if (dot(n, -vPosView) < 0.0) n = -n;
+                gl_FragColor = vec4(n * 0.5 + 0.5, 1.0);
+            }`,
+    });
+}
+
+function makePeerPass(name, opts) {
+    const w = cfg.width, h = cfg.height, R = cfg.radius;
+    if (name === 'ssao') {
+        const p = new SSAOPass(scene, camera, w, h);
+        p.kernelRadius = R;
+        const c = cfg.camera, far = c.far === 'inf' ? 1e7 : c.far;
+        p.maxDistance = R / (far - c.near); // in linear depth over the clip range
+        // Its self-occlusion bias, as a fraction of maxDistance: the defaults' ratio is 0.05
+        // (0.005 : 0.1), which darkens flat walls (CornellBox: RMSE 0.39, bias -0.30); .ci/peers.sh
+        // tries several ('ssao:min=0.5') and keeps the best.
+        p.minDistance = (opts.min ?? 0.05) * p.maxDistance;
+        p.output = SSAOPass.OUTPUT.Blur;
+        return p;
+    }
+    if (name === 'sao') {
+        const p = new SAOPass(scene, camera, new THREE.Vector2(w, h));
+        const dist = new THREE.Vector3().fromArray(cfg.camera.eye).distanceTo(new THREE.Vector3().fromArray(cfg.camera.target));
+        p.params.saoKernelRadius = R / (2 * dist * Math.tan(THREE.MathUtils.degToRad(cfg.camera.fov_y_deg) / 2)) * h;
+        // SAO's falloff is 1 / (1 + (saoScale x distance / far)^2): half at R with saoScale = far / R.
+        const far = cfg.camera.far === 'inf' ? 1e7 : cfg.camera.far;
+        p.params.saoScale = far / R;
+        p.params.output = SAOPass.OUTPUT.SAO;
+        return p;
+    }
+    if (name === 'gtao') {
+        const p = new GTAOPass(scene, camera, w, h);
+        p.updateGtaoMaterial({ radius: R, thickness: 4 * R });
+        p.output = GTAOPass.OUTPUT.Denoise;
+        // Normals from depth (GTAOPass's own fallback): with its normal pre-pass it returned AO 0
+        // on walls facing the camera, on llvmpipe and SwiftShader alike, with MeshNormalMaterial
+        // or viewFacingNormals(); from depth the same walls read 0.99.
+        for (const m of [p.gtaoMaterial, p.pdMaterial]) { m.defines.NORMAL_VECTOR_TYPE = 0; m.needsUpdate = true; }
+        return p;
+    }
+    if (name === 'n8ao') {
+        const p = new N8AOPass(scene, camera, w, h);
+        p.configuration.aoRadius = R;
+        p.configuration.renderMode = 1;         // AO only: 1 - (1 - ao) x black = ao
+        p.configuration.gammaCorrection = false; // linear AO, as ssaolab scores it
+        return p;
+    }
+    throw new Error(`unknown peer '${name}'`);
+}
+
+function timeFrames(draw, frames) {
+    const gl = renderer.getContext(), px = new Uint8Array(4), times = [];
+    for (let i = 0; i < frames + 3; ++i) { // 3 warm-up frames: shader compiles, first uploads
+        const t0 = performance.now();
+        draw();
+        gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+        if (i >= 3) times.push(performance.now() - t0);
+    }
+    times.sort((a, b) => a - b);
+    return times[Math.floor(times.length / 2)];
+}
+
+// Returns the median frame times (with the peer, and the RenderPass alone) and the AO read back
+// from the canvas: one byte per pixel, rows bottom-up as GL reads them, base64.
+window.runPeer = (name, opts, frames) => {
+    const plain = new EffectComposer(renderer);
+    plain.setPixelRatio(1);
+    plain.setSize(cfg.width, cfg.height);
+    plain.addPass(new RenderPass(scene, camera));
+    const composer = new EffectComposer(renderer);
+    composer.setPixelRatio(1);
+    composer.setSize(cfg.width, cfg.height);
+    composer.addPass(new RenderPass(scene, camera));
+    composer.addPass(makePass(name, opts));
+    const plainMs = timeFrames(() => plain.render(), frames);
+    const peerMs = timeFrames(() => composer.render(), frames);
+    const gl = renderer.getContext(), w = cfg.width, h = cfg.height;
+    const rgba = new Uint8Array(w * h * 4);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
+    const ao = new Uint8Array(w * h);
+    for (let i = 0; i < w * h; ++i) ao[i] = rgba[4 * i];
+    let s = '';
+    for (let i = 0; i < ao.length; i += 0x8000) s += String.fromCharCode.apply(null, ao.subarray(i, i + 0x8000));
+    plain.dispose();
+    composer.dispose();
+    return { name, frame_ms: peerMs, plain_ms: plainMs, ao_ms: peerMs - plainMs, width: w, height: h, ao: btoa(s) };
+};
+window.peersReady = true;
