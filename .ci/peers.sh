@@ -4,14 +4,14 @@
 # Debian's Chromium through ANGLE on the same Mesa). Same scene, camera, size and R as the
 # reference; errors from `ssaolab render --reference --score` (one metric code for both sides).
 # Writes docs/bench/peers.{md,json}, then reassembles docs/benchmarks.md.
-# Usage: .ci/peers.sh BUILD_DIR [SCENES_DIR]; PEERS_SIZE (640x360), PEERS_FRAMES (20).
+# Usage: .ci/peers.sh BUILD_DIR [SCENES_DIR]; PEERS_SCENES (folders of SCENES_DIR: CornellBox, the
+# issue's scene, and three held out from the presets' tuning), PEERS_SIZE (640x360), PEERS_FRAMES (20).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
 SCENES=${2:-../shared/scenes}
 SIZE=${PEERS_SIZE:-640x360}
 FR=${PEERS_FRAMES:-20}
-SCENE="$SCENES/CornellBox/cornellBox.gltf"
 SSAO="$BUILD/app/ssaolab"
 RUN="$BUILD/peers-run"
 MODS="$BUILD/peers"
@@ -24,32 +24,35 @@ if ! cmp -s app/bench/peers/package-lock.json "$MODS/package-lock.json" || [ ! -
   cp app/bench/peers/package.json app/bench/peers/package-lock.json "$MODS/"
   (cd "$MODS" && npm ci --no-audit --no-fund >/dev/null)
 fi
-rm -rf "$RUN"
-mkdir -p "$RUN/ours"
 # Every configuration at the same R, 5 % of the scene's diagonal (as `bench`): the baseline's own
 # preset has a world radius of 0.5.
 R_SET=(--set ao.radius_mode=scene --set ao.radius_scene=0.05)
-ours() { # PRESET [ARGS...]: one render against the reference, its metrics.json kept
-  local p=$1
-  shift
-  "$SSAO" render --quiet --scene "$SCENE" --size "$SIZE" --preset "$p" "${R_SET[@]}" --reference \
-    --timing-frames "$FR" --out "$RUN/tmp" "$@"
-  cp "$RUN/tmp/metrics.json" "$RUN/ours/$p.json"
-}
-# The baseline first: its metrics.json gives the peers the camera (clip planes included) and R.
-ours learnopengl
-R=$(/usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['error']['reference']['radius'])" \
-  "$RUN/ours/learnopengl.json")
-node app/bench/peers/run_peers.mjs --modules "$MODS/node_modules" --scene "$SCENE" \
-  --metrics "$RUN/ours/learnopengl.json" --radius "$R" --size "$SIZE" --frames "$FR" \
-  --peers ssao,ssao:min=0.25,ssao:min=0.5,ssao:min=0.75,sao,gtao,n8ao --out "$RUN/peers"
-scored=()
-for f in "$RUN"/peers/*.pgm; do scored+=(--score "$f"); done
-"$SSAO" render --quiet --scene "$SCENE" --size "$SIZE" --preset learnopengl "${R_SET[@]}" --reference --timing-frames 1 \
-  --out "$RUN/scored" "${scored[@]}"
-for f in assets/presets/{kernel,sao,hbao,gtao,vbao}-*.json; do
-  ours "$(basename "$f" .json)"
-  echo "peers: $(basename "$f" .json)"
+rm -rf "$RUN"
+for name in ${PEERS_SCENES:-CornellBox FlightHelmet Lantern ShaderBall}; do
+  files=("$SCENES/$name"/*.gltf "$SCENES/$name"/*.glb)
+  scene=""
+  for f in "${files[@]}"; do [[ -f $f && $f != *upstream* ]] && { scene=$f; break; }; done
+  [ -n "$scene" ] || { echo "peers: no .gltf/.glb in $SCENES/$name" >&2; exit 1; }
+  dir="$RUN/$name"
+  mkdir -p "$dir/ours"
+  ours() { # PRESET: one render against the reference, its metrics.json kept
+    "$SSAO" render --quiet --scene "$scene" --size "$SIZE" --preset "$1" "${R_SET[@]}" --reference \
+      --timing-frames "$FR" --out "$dir/tmp"
+    cp "$dir/tmp/metrics.json" "$dir/ours/$1.json"
+  }
+  # The baseline first: its metrics.json gives the peers the camera (clip planes included) and R.
+  ours learnopengl
+  R=$(/usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['error']['reference']['radius'])" \
+    "$dir/ours/learnopengl.json")
+  node app/bench/peers/run_peers.mjs --modules "$MODS/node_modules" --scene "$scene" \
+    --metrics "$dir/ours/learnopengl.json" --radius "$R" --size "$SIZE" --frames "$FR" \
+    --peers ssao,ssao:min=0.25,ssao:min=0.5,ssao:min=0.75,sao,gtao,n8ao --out "$dir/peers"
+  scored=()
+  for f in "$dir"/peers/*.pgm; do scored+=(--score "$f"); done
+  "$SSAO" render --quiet --scene "$scene" --size "$SIZE" --preset learnopengl "${R_SET[@]}" --reference \
+    --timing-frames 1 --out "$dir/scored" "${scored[@]}"
+  for f in assets/presets/{kernel,sao,hbao,gtao,vbao}-*.json; do ours "$(basename "$f" .json)"; done
+  echo "peers: $name"
 done
 /usr/bin/python3 .ci/peers.py "$RUN" docs/bench
 BENCH_REPORT_ONLY=1 bash .ci/bench.sh "$BUILD" "$SCENES"

@@ -9,15 +9,25 @@ namespace ssao {
 
 void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
     b.read(chain().res("ao.raw"));
+    const DenoiseSettings d = effectiveDenoise(s);
+    const bool bilateral = d.kind == DenoiseKind::Bilateral;
+    const float scale = resolutionScale(s.ao.resolution);
+    const bool joint = scale < 1.0f && d.upsample == DenoiseUpsample::Joint;
     ResourceDesc tmp =
         describe(chain().res("denoise.tmp"), GL_R32F, 1, Display::Unit, "x pass of the denoiser");
-    // The bilateral's passes all run at full resolution (its first pass upsamples jointly).
-    const bool bilateral = effectiveDenoise(s).kind == DenoiseKind::Bilateral;
-    tmp.scale = bilateral ? 1.0f : resolutionScale(s.ao.resolution);
+    // Filter upsampling: the bilateral's passes all run at full resolution (its first upsamples).
+    tmp.scale = bilateral && !joint ? 1.0f : scale;
     tmp.internal = true;
-    if (bilateral || s.temporal.enabled || s.skip.sky) b.read("gbuffer.depth");
+    if (bilateral || joint || s.temporal.enabled || s.skip.sky) b.read("gbuffer.depth");
     if (bilateral) b.read("gbuffer.normal");
     b.write(tmp);
+    if (joint && d.kind != DenoiseKind::None) { // the filter's last pass, before the upsample
+        ResourceDesc low = describe(chain().res("denoise.low"), GL_R32F, 1, Display::Unit,
+                                    "filtered AO at the AO's resolution, before the joint upsample");
+        low.scale = scale;
+        low.internal = true;
+        b.write(low);
+    }
     b.write(describe(chain().res("ao.denoised"), GL_R32F, 1, Display::Unit,
                      "AO after the denoise stage, at full resolution (what the composite uses)"));
 }
@@ -27,9 +37,17 @@ DenoiseConfig DenoisePass::config(const Settings& s, const FrameInfo& f) const {
     const DenoiseSettings d = effectiveDenoise(s); // auto: the technique's own
     c.bilateral = d.kind == DenoiseKind::Bilateral;
     c.skipSky = s.skip.sky;
+    const int k = s.ao.resolution == AoResolution::Half ? 2 : s.ao.resolution == AoResolution::Quarter ? 4 : 1;
+    c.joint = k > 1 && d.upsample == DenoiseUpsample::Joint;
+    if (c.joint) c.up = packJointUpsampleConstants();
     if (c.bilateral) {
         c.passes = d.passes;
-        c.x = packBilateralConstants(d, s.gbuffer.normalFormat == TargetFormat::RGBA8);
+        c.x = packBilateralConstants(d, s.gbuffer.normalFormat == TargetFormat::RGBA8, c.joint ? k : 0);
+    } else if (c.joint) { // x and y at the AO's resolution (none: no pass), then the upsample
+        c.bilinearTaps = d.kind == DenoiseKind::Box4Centred;
+        c.passes = d.kind == DenoiseKind::None ? 0 : 2;
+        c.x = packDenoiseConstants(d, 0);
+        c.y = packDenoiseConstants(d, 1);
     } else {
         c.bilinearTaps = d.kind == DenoiseKind::Box4Centred;
         // none: one full-screen copy (bilinear upsample of reduced AO, sky to 1) instead of two.
@@ -43,16 +61,40 @@ DenoiseConfig DenoisePass::config(const Settings& s, const FrameInfo& f) const {
 
 void DenoisePass::run(PassContext& ctx, const DenoiseConfig& c) {
     if (!linear_) linear_ = gl::Sampler(GL_LINEAR, GL_CLAMP_TO_EDGE, name() + ".upsample");
-    if (c.bilateral)
-        bilateral(ctx, c);
-    else
-        separable(ctx, c);
+    const std::string raw = chain().res("ao.raw"), tmp = chain().res("denoise.tmp"),
+                      low = chain().res("denoise.low"), out = chain().res("ao.denoised");
+    if (c.joint) {
+        std::string filtered = raw;
+        if (c.bilateral) {
+            bilateral(ctx, c, raw, tmp, low);
+            filtered = low;
+        } else if (c.passes == 2) {
+            separable(ctx, c, low);
+            filtered = low;
+        }
+        jointUpsample(ctx, c, filtered);
+    } else if (c.bilateral) {
+        bilateral(ctx, c, raw, tmp, out);
+    } else {
+        separable(ctx, c, out);
+    }
     if (c.temporal.enabled) temporal_.run(ctx, c.temporal, chain().res("ao.denoised"), name());
 }
 
-void DenoisePass::separable(PassContext& ctx, const DenoiseConfig& c) {
-    const std::string raw = chain().res("ao.raw"), tmp = chain().res("denoise.tmp"),
-                      out = chain().res("ao.denoised");
+void DenoisePass::jointUpsample(PassContext& ctx, const DenoiseConfig& c, const std::string& input) {
+    if (!ubo_[2]) ubo_[2] = gl::UniformBuffer(sizeof(gpu::DenoiseConstants), name() + ".upsample.constants");
+    ubo_[2].upload(&c.up, sizeof c.up);
+    ubo_[2].bind(SSAO_UBO_DENOISE);
+    glUseProgram(ctx.shaders.program("passes/fullscreen.vert", "passes/upsample_joint.frag"));
+    ctx.in("gbuffer.depth").bind(SSAO_TEX_LINEAR_DEPTH);
+    ctx.in(input).bind(SSAO_TEX_AO);
+    gl::Sampler::unbind(SSAO_TEX_AO); // texelFetch: whole AO texels
+    ctx.bindOutputs({chain().res("ao.denoised")});
+    ctx.drawFullscreen();
+}
+
+void DenoisePass::separable(PassContext& ctx, const DenoiseConfig& c, const std::string& out) {
+    const std::string raw = chain().res("ao.raw"), tmp = chain().res("denoise.tmp");
     const bool upsample = ctx.size(tmp) != ctx.size(out);
     glUseProgram(ctx.shaders.program("passes/fullscreen.vert", "passes/denoise.frag"));
     if (c.skipSky) ctx.in("gbuffer.depth").bind(SSAO_TEX_LINEAR_DEPTH);
@@ -76,9 +118,8 @@ void DenoisePass::separable(PassContext& ctx, const DenoiseConfig& c) {
     gl::Sampler::unbind(SSAO_TEX_AO);
 }
 
-void DenoisePass::bilateral(PassContext& ctx, const DenoiseConfig& c) {
-    const std::string raw = chain().res("ao.raw"), tmp = chain().res("denoise.tmp"),
-                      out = chain().res("ao.denoised");
+void DenoisePass::bilateral(PassContext& ctx, const DenoiseConfig& c, const std::string& raw,
+                            const std::string& tmp, const std::string& out) {
     if (!ubo_[0]) ubo_[0] = gl::UniformBuffer(sizeof(gpu::DenoiseConstants), name() + ".x.constants");
     ubo_[0].upload(&c.x, sizeof c.x);
     ubo_[0].bind(SSAO_UBO_DENOISE);

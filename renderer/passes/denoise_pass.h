@@ -1,7 +1,9 @@
-// The denoise stage: a separable filter of the raw AO (box 4x4 of seed 004 or gaussian of seed 003),
-// x pass at the AO's resolution, y pass at full resolution — so reduced-resolution AO is
-// upsampled (bilinearly) here — or the edge-aware bilateral, which reads depth and normals and
-// upsamples jointly; then, when on, temporal accumulation.
+// The denoise stage: a separable filter of the raw AO (box 4x4 of seed 004 or gaussian of seed 003)
+// or the edge-aware bilateral (depth and normals); then, when on, temporal accumulation.
+// Reduced-resolution AO (denoise.upsample): joint - every filter pass at the AO's resolution, then
+// one joint-bilateral 2x2 upsample (passes/upsample_joint.frag); filter - the separable y pass (or
+// the copy of none) upsamples bilinearly, the bilateral runs at full resolution and upsamples with
+// its own weights.
 #pragma once
 #include "graph/pass.h"
 #include "passes/temporal_accumulator.h"
@@ -14,7 +16,8 @@ struct DenoiseConfig {
     int32_t passes;        // bilateral passes; separable: 2 (x, then y), or 1 for none (one copy, upsampling)
     int32_t bilinearTaps;  // both passes read bilinearly (the centred box's half-texel taps)
     int32_t skipSky;       // reads gbuffer.depth: the last pass returns 1 on sky pixels
-    gpu::DenoiseConstants x, y;
+    int32_t joint;         // reduced AO: filter at its resolution, then the joint 2x2 upsample (up)
+    gpu::DenoiseConstants x, y, up;
     TemporalConfig temporal;
 };
 SSAO_CONFIG_END
@@ -27,9 +30,12 @@ class DenoisePass final : public ConfiguredPass<DenoiseConfig> {
 
   private:
     void run(PassContext& ctx, const DenoiseConfig& c) override;
-    void separable(PassContext& ctx, const DenoiseConfig& c); // box or gaussian, x then y
-    void bilateral(PassContext& ctx, const DenoiseConfig& c); // edge-aware, 1-3 passes at full resolution
-    gl::UniformBuffer ubo_[2];
+    void separable(PassContext& ctx, const DenoiseConfig& c, const std::string& out); // box or gaussian, x then y
+    // Edge-aware, 1-3 passes from `input`, ending in `last` (the other target is `spare`).
+    void bilateral(PassContext& ctx, const DenoiseConfig& c, const std::string& input, const std::string& spare,
+                   const std::string& last);
+    void jointUpsample(PassContext& ctx, const DenoiseConfig& c, const std::string& input);
+    gl::UniformBuffer ubo_[3]; // x, y, upsample
     gl::Sampler linear_;
     TemporalAccumulator temporal_; // when temporal.enabled: accumulates ao.denoised over frames
 };

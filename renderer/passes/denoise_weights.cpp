@@ -39,11 +39,19 @@ gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int directi
     return c;
 }
 
-gpu::DenoiseConstants packBilateralConstants(const DenoiseSettings& d, bool normalUnorm) {
+gpu::DenoiseConstants packJointUpsampleConstants() {
+    gpu::DenoiseConstants c{};
+    // 1 % of the depth on top of the slope's share: a curved surface's 2x2 corners stay similar,
+    // an object in front of another (a gap of far more than 1 %) does not blend.
+    c.taps = {4, 0, 0, 10};
+    return c;
+}
+
+gpu::DenoiseConstants packBilateralConstants(const DenoiseSettings& d, bool normalUnorm, int k) {
     gpu::DenoiseConstants c{};
     // The bilateral's 2-D window is at most 17x17: a wider half-width (the gaussian's rows allow 32)
     // is the bilateral's own limit, not a range check.
-    c.taps = {std::min(d.halfWidth, SSAO_BILATERAL_MAX_HALF_WIDTH), 0, normalUnorm ? SSAO_DENOISE_NORMAL_UNORM : 0, 0};
+    c.taps = {std::min(d.halfWidth, SSAO_BILATERAL_MAX_HALF_WIDTH), k, normalUnorm ? SSAO_DENOISE_NORMAL_UNORM : 0, 0};
     // Normal term cos^8: 0.5 at ~25 degrees, so creases split while curved surfaces stay smooth.
     // w: 1 / the AO range sigma (0: no range term).
     c.offsetsWeights[0] = {d.sigma, d.sharpness, 8.0f, d.aoSigma > 0.0f ? 1.0f / d.aoSigma : 0.0f};

@@ -13,8 +13,14 @@ namespace ssao {
 // values at sky pixels feed the y pass's neighbours).
 gpu::DenoiseConstants packDenoiseConstants(const DenoiseSettings& d, int direction, bool skipSky = false);
 
-// Bilateral: taps = (half-width clamped to 8, unused, flags, unused); offsetsWeights[0] =
+// Bilateral: taps = (half-width clamped to 8, k below, flags, unused); offsetsWeights[0] =
 // (sigma, depth sharpness, normal power, unused). Flags: SSAO_DENOISE_NORMAL_UNORM.
-gpu::DenoiseConstants packBilateralConstants(const DenoiseSettings& d, bool normalUnorm);
+// taps.y = k > 0: the filter runs at the AO's resolution, 1/k of the G-buffer's, and reads the
+// G-buffer texel each AO texel was computed at (t·k); 0: output at the G-buffer's resolution.
+gpu::DenoiseConstants packBilateralConstants(const DenoiseSettings& d, bool normalUnorm, int k = 0);
+
+// The joint 2x2 upsample (passes/upsample_joint.frag): taps.w = the relative depth tolerance
+// added to the local slope's, in thousandths of the pixel's depth (10: 1 %).
+gpu::DenoiseConstants packJointUpsampleConstants();
 
 } // namespace ssao

@@ -139,6 +139,13 @@ std::vector<Param> coreRows() {
                   "Bilateral: a neighbour whose AO differs from the pixel's by d weighs exp(-(d / range)^2), so "
                   "detail that stands out of the noise (ribs, seams) is kept; 0 = off (depth and normal only).")
             .onlyWhen("denoise.kind", {"bilateral"}),
+        ENUM_ROW("denoise.upsample", "Upsample", denoise.upsample, DenoiseUpsample,
+                 "Reduced-resolution AO back to full size: joint (default) filters at the AO's resolution, then one "
+                 "joint-bilateral 2x2 upsample weighted by depth, so AO does not bleed across silhouettes; filter lets "
+                 "the filter's last pass run at full resolution and upsample (bilinearly; the bilateral with its own "
+                 "weights) - the behaviour before joint.",
+                 ({{"joint", DenoiseUpsample::Joint}, {"filter", DenoiseUpsample::Filter}}))
+            .onlyWhen("ao.resolution", {"half", "quarter"}),
         // ---- Temporal ---------------------------------------------------------------------------
         BOOL_ROW("temporal.enabled", "Temporal", temporal.enabled,
                  "Accumulate the denoised AO over frames, each with new noise, reprojecting the history "

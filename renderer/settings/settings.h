@@ -14,6 +14,10 @@ enum class AoResolution { Full, Half, Quarter };
 enum class NormalSource { GBuffer, Depth }; // SSAO_NORMALS_* (bindings.h)
 // Auto: the technique's own denoiser (TechniqueInfo::denoiser), the one measured to lower its raw error.
 enum class DenoiseKind { Auto, None, Box4, Box4Centred, Gaussian, Bilateral };
+// How reduced-resolution AO returns to full size: Joint filters at the AO's resolution, then one
+// joint-bilateral 2x2 upsample (passes/upsample_joint.frag); Filter lets the filter's last pass run
+// at full resolution and upsample (bilinearly; the bilateral with its own depth and normal weights).
+enum class DenoiseUpsample { Joint, Filter };
 
 struct GBufferSettings {
     TargetFormat positionFormat = TargetFormat::RGBA32F;
@@ -50,6 +54,7 @@ struct DenoiseSettings {
     // bilateral: a neighbour whose AO differs by d from the pixel's weighs exp(-(d / aoSigma)^2)
     // (a range term: detail larger than the noise survives); 0 = off (depth and normal only).
     float aoSigma = 0.0f;
+    DenoiseUpsample upsample = DenoiseUpsample::Joint; // reduced-resolution AO only
 };
 
 // Temporal accumulation: the denoised AO of successive frames, each with its own noise, blended

@@ -52,7 +52,9 @@ bool usesPyramid(const Settings& s) {
 
 DenoiseSettings effectiveDenoise(const Settings& s) {
     if (s.denoise.kind != DenoiseKind::Auto) return s.denoise;
-    return findTechnique(s.ao.technique).denoiser;
+    DenoiseSettings d = findTechnique(s.ao.technique).denoiser;
+    d.upsample = s.denoise.upsample; // how reduced AO returns to full size stays the user's choice
+    return d;
 }
 
 double adaptiveShare(const Settings& s, float radiusPx) {

@@ -7,8 +7,11 @@
 //                                      Manduchi 1998: detail that stands out of the noise stays)
 // with z, n read from the full-resolution G-buffer at the neighbour's centre, so a reduced-
 // resolution input is upsampled jointly (Kopf et al. 2007, "Joint Bilateral Upsampling") rather
-// than bilinearly across silhouettes. Not separable: a 2-D window (the bilateral is not a
-// product of 1-D filters). Sky pixels pass through as 1.
+// than bilinearly across silhouettes (denoise.upsample=filter). With denoise.upsample=joint the
+// filter runs at the AO's own resolution (taps.y = k: 1/k of the G-buffer's) and reads, for AO
+// texel t, the G-buffer texel its AO was computed at (t·k, aoPixelUv); passes/upsample_joint.frag
+// then brings it to full size. Not separable: a 2-D window (the bilateral is not a product of 1-D
+// filters). Sky pixels pass through as 1.
 #include "include/bindings.h"
 
 layout(std140, binding = SSAO_UBO_DENOISE) uniform DenoiseBlock { DenoiseConstants_ denoise; };
@@ -26,15 +29,23 @@ vec3 normalAt(vec2 uv) {
     return l2 > 1e-12 ? n * inversesqrt(l2) : vec3(0.0, 0.0, 1.0);
 }
 
+// The G-buffer sample of AO texel t: its centre when the output is at the G-buffer's resolution,
+// texel t·k when the filter runs at the AO's resolution (taps.y = k).
+vec2 gbufferUv(ivec2 t, ivec2 inSize) {
+    int k = denoise.taps.y;
+    return k > 0 ? (vec2(t * k) + 0.5) / vec2(textureSize(gDepth, 0)) : (vec2(t) + 0.5) / vec2(inSize);
+}
+
 void main() {
-    float z0 = textureLod(gDepth, vUv, 0.0).r;
     ivec2 inSize = textureSize(aoIn, 0);
     ivec2 c = clamp(ivec2(vUv * vec2(inSize)), ivec2(0), inSize - 1);
+    vec2 uv0 = denoise.taps.y > 0 ? gbufferUv(c, inSize) : vUv; // this output pixel's own sample
+    float z0 = textureLod(gDepth, uv0, 0.0).r;
     if (!(z0 > 0.0)) { // sky
         oAO = 1.0;
         return;
     }
-    vec3 n0 = normalAt(vUv);
+    vec3 n0 = normalAt(uv0);
     float sigma = denoise.offsetsWeights[0].x, sharp = denoise.offsetsWeights[0].y;
     float npow = denoise.offsetsWeights[0].z, invAoSigma = denoise.offsetsWeights[0].w;
     float a0 = texelFetch(aoIn, c, 0).r;
@@ -44,7 +55,7 @@ void main() {
         for (int dx = -r; dx <= r; ++dx) {
             ivec2 t = c + ivec2(dx, dy);
             if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, inSize))) continue;
-            vec2 tuv = (vec2(t) + 0.5) / vec2(inSize);
+            vec2 tuv = gbufferUv(t, inSize);
             float z = textureLod(gDepth, tuv, 0.0).r;
             if (!(z > 0.0)) continue; // sky holds no AO of a surface
             float rel = abs(z - z0) / z0 * sharp;

@@ -95,6 +95,16 @@ TEST(BilateralPack, WindowSigmaSharpnessAndFlags) {
     EXPECT_EQ(c.offsetsWeights[0].y, 20.0f);
     EXPECT_GT(c.offsetsWeights[0].z, 1.0f); // a normal term that separates creases
     EXPECT_EQ(packBilateralConstants(d, false).taps.z, 0);
+    // At full-resolution output taps.y is 0; at the AO's resolution it is the G-buffer's ratio k.
+    EXPECT_EQ(c.taps.y, 0);
+    EXPECT_EQ(packBilateralConstants(d, false, 2).taps.y, 2);
+    EXPECT_EQ(packBilateralConstants(d, false, 4).taps.y, 4);
+}
+
+TEST(DenoisePack, JointUpsampleTakesTheFourCornersWithAOnePercentDepthTolerance) {
+    const auto c = packJointUpsampleConstants();
+    EXPECT_EQ(c.taps.x, 4);
+    EXPECT_EQ(c.taps.w, 10); // thousandths of the depth
 }
 
 TEST(HbaoPack, CountsAndBias) {

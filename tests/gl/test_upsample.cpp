@@ -1,0 +1,91 @@
+// Reduced-resolution AO back to full size (denoise.upsample): joint filters at the AO's resolution
+// and upsamples with passes/upsample_joint.frag; filter lets the filter's last pass upsample.
+#include "gl_fixture.h"
+
+#include "scene/scene.h"
+#include "settings/params.h"
+
+#include <cmath>
+#include <string>
+
+using namespace ssao;
+using namespace ssaotest;
+
+namespace {
+class Upsample : public GlTest {};
+
+Settings with(const std::string& technique, const std::string& kind, const std::string& res, const std::string& up) {
+    Settings s = defaultSettings();
+    setParam(s, "ao.technique", technique);
+    setParam(s, "denoise.kind", kind);
+    setParam(s, "ao.resolution", res);
+    setParam(s, "denoise.upsample", up);
+    return s;
+}
+
+// Top-row-first image row of GL row y (gl_FragCoord counts from the bottom).
+int row(int glY, int height) { return height - 1 - glY; }
+} // namespace
+
+TEST_F(Upsample, EveryDenoiserAtEveryReducedResolutionKeepsAPlaneOpenAndAoInRange) {
+    for (const char* technique : {"vbao", "kernel", "sao"})
+        for (const char* kind : {"auto", "none", "box4", "gaussian", "bilateral"})
+            for (const char* res : {"half", "quarter"})
+                for (const char* up : {"joint", "filter"}) {
+                    const std::string what = std::string(technique) + " " + kind + " " + res + " " + up;
+                    const Rendered plane = render("builtin:plane", with(technique, kind, res, up), 160, 90);
+                    EXPECT_TRUE(finiteInRange(plane.ao, 0.0f, 1.0f)) << what;
+                    // A flat plane is unoccluded at any setting (the kernel's own floor aside: its
+                    // hemisphere test may self-occlude a few % on llvmpipe's depth).
+                    EXPECT_GT(geometryMean(plane, plane.ao), 0.97) << what;
+                    const Rendered show = render("builtin:showcase", with(technique, kind, res, up), 160, 90);
+                    EXPECT_TRUE(finiteInRange(show.ao, 0.0f, 1.0f)) << what;
+                }
+}
+
+TEST_F(Upsample, JointKeepsEachAoTexelAtTheGBufferTexelItWasComputedAt) {
+    // denoise none at half resolution: AO texel (i, j) was computed at G-buffer texel (2i, 2j)
+    // (aoPixelUv), so there the joint upsample returns it unchanged - one corner, weight 1.
+    const int w = 160, h = 90;
+    const Rendered r = render("builtin:showcase", with("vbao", "none", "half", "joint"), w, h);
+    long checked = 0, differ = 0;
+    for (int j = 0; j < h / 2; ++j)
+        for (int i = 0; i < w / 2; ++i) {
+            const int fy = row(2 * j, h), ly = row(j, h / 2);
+            if (r.position.at(2 * i, fy, 3) == 0.0f) continue; // sky
+            ++checked;
+            if (r.ao.at(2 * i, fy) != r.aoRaw.at(i, ly)) ++differ;
+        }
+    EXPECT_GT(checked, 2000);
+    EXPECT_EQ(differ, 0) << "of " << checked;
+}
+
+TEST_F(Upsample, JointBleedsLessAcrossSilhouettesThanBilinear) {
+    // Against the same technique at full resolution: near depth discontinuities (a neighbour 5 %
+    // nearer or farther) the joint upsample stays closer than the bilinear one, which blends AO of
+    // the surface behind into the one in front.
+    const int w = 320, h = 180;
+    const Rendered full = render("builtin:showcase", with("vbao", "none", "full", "joint"), w, h);
+    const Rendered joint = render("builtin:showcase", with("vbao", "none", "half", "joint"), w, h);
+    const Rendered bilinear = render("builtin:showcase", with("vbao", "none", "half", "filter"), w, h);
+    double ej = 0, eb = 0;
+    long n = 0;
+    for (int y = 1; y + 1 < h; ++y)
+        for (int x = 1; x + 1 < w; ++x) {
+            const float z = full.depth.at(x, y);
+            if (!(z > 0.0f)) continue;
+            bool edge = false;
+            for (int d = 0; d < 4; ++d) {
+                const float zn = full.depth.at(x + (d == 0) - (d == 1), y + (d == 2) - (d == 3));
+                edge |= !(zn > 0.0f) || std::abs(zn - z) > 0.05f * z;
+            }
+            if (!edge) continue;
+            ej += std::pow(joint.ao.at(x, y) - full.ao.at(x, y), 2.0);
+            eb += std::pow(bilinear.ao.at(x, y) - full.ao.at(x, y), 2.0);
+            ++n;
+        }
+    ASSERT_GT(n, 300);
+    ej = std::sqrt(ej / double(n));
+    eb = std::sqrt(eb / double(n));
+    EXPECT_LT(ej, eb * 0.9) << "edge RMSE to full resolution: joint " << ej << ", bilinear " << eb << " over " << n;
+}
