@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build run test screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers
+.PHONY: deps configure build run test screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer
 
 deps:
 	@bash .ci/install-deps.sh
@@ -70,6 +70,11 @@ scaling: build
 # preset, in one run (~5 minutes on llvmpipe; needs Node.js with npm).
 peers: build
 	@bash .ci/peers.sh $(BUILD) $(SCENES)
+
+# docs/benchmarks.md "The explorer's frame times": still, drag and idle frames through the real UI,
+# the start preset against learnopengl, per shared scene (~2 minutes on llvmpipe).
+explorer: build
+	@bash .ci/explorer.sh $(BUILD) $(SCENES)
 
 # docs/stability.md: every technique under extreme projections, scales, placements, precisions and
 # parameter limits (`ssaolab stress`).

@@ -80,6 +80,8 @@ MD
     docs/screen-discussion.md "$OUT/screen.md" screen.json
   section "The web peers (\`make peers\`, CornellBox, one run)" peers peers.sh docs/peers-discussion.md \
     "$OUT/peers.md" peers.json
+  section "The explorer's frame times (\`make explorer\`)" explorer explorer.sh docs/explorer-discussion.md \
+    "$OUT/explorer.md" explorer.md
   section "Skipped work (\`ssaolab skips\`)" skips skips.sh docs/skips-discussion.md "$OUT/skips.md" skips.json
   section "Scaling (\`make scaling\`)" scaling scaling.sh docs/scaling-discussion.md "$OUT/scaling.md" scaling.json
 } > docs/benchmarks.md

@@ -1,19 +1,24 @@
 #include "view/buffer_views.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace ssao {
 
-void BufferViews::update(Renderer& r, const ViewStyle& style, const std::vector<std::string>& names) {
+void BufferViews::update(Renderer& r, const ViewStyle& style, const std::vector<std::string>& names, int maxWidth,
+                         bool keepRanges) {
     const Resource& mask = r.resource("gbuffer.depth");
     for (const auto& name : names) {
         const Resource* res = r.graph().find(name);
         if (!res) continue;
         View& v = views_[name];
+        const int width = maxWidth > 0 ? std::min(maxWidth, res->width()) : res->width();
         if (v.target.texture() && v.version == res->version && v.generation == res->generation &&
-            v.style == style && v.target.texture().width() == res->width())
+            v.style == style && v.target.texture().width() == width)
             continue;
-        v.range = painter_.paint(*res, mask, style, v.target, r.shaders(), r.triangle());
+        const bool keep = keepRanges && v.range.fitted && v.style == style && v.target.texture();
+        v.range = painter_.paint(*res, mask, style, v.target, r.shaders(), r.triangle(), nullptr, width,
+                                 keep ? &v.range : nullptr);
         v.version = res->version;
         v.generation = res->generation;
         v.style = style;

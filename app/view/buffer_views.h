@@ -20,8 +20,12 @@ class BufferViews {
         ViewStyle style;
         std::string label; // "ao.raw  0 .. 1"
     };
-    // Brings the views of `names` up to date (others are left as they are).
-    void update(Renderer& r, const ViewStyle& style, const std::vector<std::string>& names);
+    // Brings the views of `names` up to date (others are left as they are), each painted at most
+    // `maxWidth` pixels wide (0: the buffer's own size; a grid cell: the cell's).
+    // keepRanges: fitted ranges stay those of the last fit (while the camera moves: the view does not
+    // flicker as the range follows every frame, and nothing is read back).
+    void update(Renderer& r, const ViewStyle& style, const std::vector<std::string>& names, int maxWidth = 0,
+                bool keepRanges = false);
     // The signed difference (a - b) * scale; repainted when either buffer or the scale changed.
     const View& difference(Renderer& r, const std::string& a, const std::string& b, float scale);
     const View* find(const std::string& name) const;

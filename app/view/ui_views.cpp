@@ -282,6 +282,7 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
             cover(dl, p, ImVec2(p.x + sz.x, p.y + sz.y), referenceEmptyReason(app.frames(), name));
             label(dl, p, (v ? v->label : name) + tag(app, name), sz.x);
             app.view().widgetRects["view#" + name] = ImVec4(p.x, p.y, p.x + sz.x, p.y + sz.y);
+            app.view().gridCellPx = std::max(1, int(std::ceil(sz.x * fbScale.x))); // painted at this size next frame
             if (clicked) {
                 app.view().enlarged = name;
                 app.view().mode = ViewMode::Single;

@@ -34,6 +34,7 @@ struct ViewState {
     // resolution independent, so it stays put when the render size changes while moving.
     glm::vec2 hoverUv{-1.0f, -1.0f};
     float viewWidth = 1000.0f;  // pixels of the main view (orbit speed: its width = half a turn)
+    int gridCellPx = 0;         // width of a grid cell's image in framebuffer pixels (0: not drawn yet)
     bool cursorOnImage = false; // the cursor was over the image last frame (the readout wants every buffer)
     int hoverChain = 0; // 1 when the cursor was last over the B half of the split view
     // The cursor is on chain B now: the split view shows B there (not the grid, not A - B).

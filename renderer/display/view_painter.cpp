@@ -5,6 +5,9 @@
 
 #include "../../shaders/include/bindings.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace ssao {
 
 const Image& ViewPainter::maskImage(const Resource& mask) {
@@ -18,19 +21,28 @@ const Image& ViewPainter::maskImage(const Resource& mask) {
 
 DisplayRange ViewPainter::paint(const Resource& r, const Resource& mask, const ViewStyle& style,
                                 gl::RenderTarget& out, gl::ShaderLibrary& shaders,
-                                const gl::FullscreenTriangle& tri, const Image* raw) {
+                                const gl::FullscreenTriangle& tri, const Image* raw, int maxWidth,
+                                const DisplayRange* keep) {
     const ResourceDesc& d = r.desc;
     DisplayRange range;
     if (needsFit(d, style)) {
-        if (raw)
+        if (keep)
+            range = *keep;
+        else if (raw)
             range = displayRange(*raw, d, &maskImage(mask), style);
         else
             range = displayRange(readBack(r.texture, std::max(1, d.channels)), d, &maskImage(mask), style);
     } else {
         range = displayRange(Image{}, d, nullptr, style);
     }
-    out.ensure(r.width(), r.height(), GL_RGBA8, "view." + d.name);
+    int w = r.width(), h = r.height();
+    if (maxWidth > 0 && maxWidth < w) {
+        h = std::max(1, int(std::lround(double(h) * maxWidth / w)));
+        w = maxWidth;
+    }
+    out.ensure(w, h, GL_RGBA8, "view." + d.name);
     out.bind();
+    glViewport(0, 0, w, h);
     const GLuint prog = shaders.program("passes/fullscreen.vert", "display/view.frag");
     glUseProgram(prog);
     const int mode = d.display == Display::Color                                         ? SSAO_VIEW_COLOR

@@ -14,12 +14,14 @@ class ShaderLibrary;
 
 class ViewPainter {
   public:
-    // Paints `r` into `out` (resized to r's size); `mask` marks geometry (gbuffer.depth > 0).
-    // When its range must be fitted, uses `raw` (r read back, undecoded) or reads r back itself.
-    // Returns the range used.
+    // Paints `r` into `out`, resized to r's size or, with maxWidth > 0, to at most that many
+    // pixels wide at r's aspect (a grid cell: each output pixel takes the texel at its centre, so a
+    // thumbnail costs its own pixels, not the buffer's); `mask` marks geometry (gbuffer.depth > 0).
+    // When its range must be fitted, uses `keep` if given (no read-back), else `raw` (r read back,
+    // undecoded), else reads r back itself. Returns the range used.
     DisplayRange paint(const Resource& r, const Resource& mask, const ViewStyle& style, gl::RenderTarget& out,
                        gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri,
-                       const Image* raw = nullptr);
+                       const Image* raw = nullptr, int maxWidth = 0, const DisplayRange* keep = nullptr);
     // Signed difference (a - b) * scale of two same-kind buffers, red where a is larger, blue where
     // b is, grey where equal.
     void paintDifference(const Resource& a, const Resource& b, float scale, const Resource& mask,

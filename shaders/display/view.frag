@@ -29,7 +29,9 @@ vec3 viridis(float t) {
 }
 
 void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
+    // The texel under this output pixel's centre: 1:1 at the buffer's size, one texel per pixel of a
+    // smaller thumbnail (BufferViews paints grid cells at their own size).
+    ivec2 p = ivec2(vUv * vec2(textureSize(src, 0)));
     vec4 v = texelFetch(src, p, 0);
     bool geometry = texture(mask, vUv).r > 0.0; // the mask may have another resolution
     if (uMode == SSAO_VIEW_DIFF) v = (v - texture(srcB, vUv)) * uDecode.x; // B may have another size

@@ -181,14 +181,20 @@ TEST_F(AppReference, AppearsAsBuffersAndRefinesToItsTarget) {
     EXPECT_GE(double(skyOne), 0.99 * double(sky)) << "sky is 1 (pixel-centre rays, as the raster's)";
 
     // The error view: error.png's diverging map, white at 0, red where the AO is too bright.
+    // A grid cell is painted at its own size: each of its pixels shows the texel under its centre.
     const Image painted = readBack(app().frames().views().find("reference.error")->target.texture(), 3);
     int red = 0, white = 0;
-    for (size_t i = 0; i < error.data.size(); ++i) {
-        if (!(depth.data[i] > 0.0f)) continue;
-        const float r = painted.data[3 * i], g = painted.data[3 * i + 1], b = painted.data[3 * i + 2];
-        if (error.data[i] > 0.2f) red += r > 0.9f && g < 0.3f && b < 0.3f;
-        if (error.data[i] == 0.0f) white += r > 0.99f && g > 0.99f && b > 0.99f;
-    }
+    for (int y = 0; y < painted.height; ++y)
+        for (int x = 0; x < painted.width; ++x) {
+            const int glY = painted.height - 1 - y; // rows top first; the paint's uv counts from the bottom
+            const int tx = int((x + 0.5) * error.width / painted.width);
+            const int ty = error.height - 1 - int((glY + 0.5) * error.height / painted.height);
+            const size_t i = size_t(ty) * size_t(error.width) + size_t(tx);
+            if (!(depth.data[i] > 0.0f)) continue;
+            const float r = painted.at(x, y, 0), g = painted.at(x, y, 1), b = painted.at(x, y, 2);
+            if (error.data[i] > 0.2f) red += r > 0.9f && g < 0.3f && b < 0.3f;
+            if (error.data[i] == 0.0f) white += r > 0.99f && g > 0.99f && b > 0.99f;
+        }
     EXPECT_GT(red, 0);
     EXPECT_GT(white, 0);
 
