@@ -112,6 +112,10 @@ void inspectorSection(FrameDriver& frames, Inspector& inspector, ViewState& view
     for (const auto& t : pi->taps)
         band += fromGuardBand(t);
     if (band > 0) ImGui::Text("%d of them off the frame, read from the guard band", band);
+    int back = 0;
+    for (const auto& t : pi->taps)
+        back += t.backLayer;
+    if (back > 0) ImGui::Text("%d of them took their solid's far side from the back-face layer (ringed)", back);
     ImGui::Text("occlusion %.3f / %.0f, radius %.4g units -> AO %.4f", pi->occlusion, pi->normaliser,
                 pi->radius, pi->ao);
 }

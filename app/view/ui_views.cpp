@@ -141,6 +141,7 @@ void drawSamples(AppCore& app, ImDrawList* dl, ImVec2 pos, ImVec2 size) {
                     : t.state == TapState::Sky    ? IM_COL32(80, 160, 255, 255)
                                                   : IM_COL32(150, 150, 150, 255);
         dl->AddCircleFilled(p, 2.5f, col);
+        if (t.backLayer) dl->AddCircle(p, 4.5f, IM_COL32(255, 255, 255, 200), 10, 1.0f); // read the back layer
     }
 }
 

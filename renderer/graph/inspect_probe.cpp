@@ -64,7 +64,9 @@ void InspectProbe::run(glm::ivec2 pixel, glm::ivec2 size, const std::function<vo
         t.viewPos = glm::vec3(taps[i].posContribution);
         t.contribution = taps[i].posContribution.w;
         t.uv = glm::vec2(taps[i].uvStateSet);
-        t.state = TapState(int(taps[i].uvStateSet.z));
+        const int state = int(taps[i].uvStateSet.z);
+        t.state = TapState(state & (SSAO_TAP_BACK_LAYER - 1));
+        t.backLayer = (state & SSAO_TAP_BACK_LAYER) != 0;
         t.set = int(taps[i].uvStateSet.w);
         out.taps.push_back(t);
     }

@@ -16,6 +16,7 @@ struct InspectTap {
     float contribution = 0.0f; // occlusion it added (range-check weight included)
     TapState state = TapState::Open;
     int set = 0; // technique-defined group (separable kernel: 0 = x-plane set, 1 = y-plane set)
+    bool backLayer = false; // its solid's far side came from the back-face layer (gbuffer.back_faces)
 };
 
 // A tap that left the frame and still found a surface: it read the guard band

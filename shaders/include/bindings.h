@@ -59,6 +59,9 @@
 #define SSAO_TAP_BEHIND_EYE 2
 #define SSAO_TAP_OFFSCREEN 3
 #define SSAO_TAP_SKY 4
+// OR-ed into a tap's state: the layer it read beyond the G-buffer's front surface (the inspector
+// shows which). BACK_LAYER: the back-face layer gave its solid's far side (gbuffer.back_faces).
+#define SSAO_TAP_BACK_LAYER 16
 
 // View modes (display/view.frag), one per Display kind plus the difference of two buffers.
 #define SSAO_VIEW_COLOR 0

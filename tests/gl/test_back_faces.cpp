@@ -58,3 +58,35 @@ TEST_F(BackFaces, HoldTheFarSideOfTheWallAndNeverBrightenTheBitmask) {
         EXPECT_TRUE(finiteInRange(b.ao, 0.0f, 1.0f)) << name;
     }
 }
+
+TEST_F(BackFaces, TheInspectorShowsWhichTapsReadTheBackLayer) {
+    // builtin:corner's wall is 0.2 thick; with an assumed thickness of 0.05 R the back layer holds a
+    // solid deeper than assumed behind every tap on the wall: those taps say so (inspection.h
+    // backLayer, SSAO_TAP_BACK_LAYER), and none does without the layer.
+    const Scene scene = loadScene("builtin:corner");
+    for (bool on : {false, true}) {
+        Settings s = defaultSettings();
+        s.ao.technique = "vbao";
+        s.vbao.thickness = 0.05f;
+        s.gbuffer.backFaces = on;
+        auto r = makeRenderer(scene, s, 160, 90);
+        r->render();
+        long taps = 0, fromBack = 0, states = 0;
+        for (int y = 10; y < 90; y += 10)
+            for (int x = 10; x < 160; x += 10) {
+                const auto pi = r->inspect(0, {x, y});
+                if (!pi || !pi->geometry) continue;
+                for (const InspectTap& t : pi->taps) {
+                    ++taps;
+                    fromBack += t.backLayer;
+                    states += int(t.state) <= int(TapState::Sky); // the layer bit does not leak into the state
+                }
+            }
+        ASSERT_GT(taps, 1000);
+        EXPECT_EQ(states, taps);
+        if (on)
+            EXPECT_GT(fromBack, taps / 20) << fromBack << " of " << taps;
+        else
+            EXPECT_EQ(fromBack, 0);
+    }
+}

@@ -84,7 +84,9 @@ void main() {
                 front = aoSliceDelta(sl, front); // the angles in the slice plane (slice.glsl)
                 // Along the view ray through it: the assumed thickness, or the true one where the
                 // back-face layer holds the far side of this surface (gbuffer.back_faces).
-                vec3 back = front + normalize(P + front) * aoBackGap(ssao.aoCommon, uv, S.xyz, thickness);
+                float gap = aoBackGap(ssao.aoCommon, uv, S.xyz, thickness);
+                vec3 back = front + normalize(P + front) * gap;
+                int layer = gap > thickness ? SSAO_TAP_BACK_LAYER : 0; // the inspector shows it
                 float sgn = side == 0 ? 1.0 : -1.0; // side 0 at positive angles from V
                 float hFront = sgn * safeAcos(dot(normalize(front), V));
                 float hBack = sgn * safeAcos(dot(normalize(back), V));
@@ -92,7 +94,7 @@ void main() {
                 uint bits = b - a >= 32 ? 0xFFFFFFFFu : ((1u << uint(b - a)) - 1u) << uint(a);
                 bool hides = (bits & ~mask) != 0u;
                 mask |= bits;
-                INSPECT_TAP(S.xyz, uv, hides ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN, float(bitCount(bits)) / 32.0, slice);
+                INSPECT_TAP(S.xyz, uv, (hides ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN) | layer, float(bitCount(bits)) / 32.0, slice);
             }
         }
         // Open measure of the whole hemisphere minus that of each run of hidden sectors.
