@@ -83,7 +83,7 @@ MD
   }
   section "What the screen cannot see (\`make screen\`, every shared scene, 640x360)" screen screen.sh \
     docs/screen-discussion.md "$OUT/screen.md" screen.json
-  section "The web peers (\`make peers\`, CornellBox, one run)" peers peers.sh docs/peers-discussion.md \
+  section "The web peers (\`make peers\`, four scenes, one run)" peers peers.sh docs/peers-discussion.md \
     "$OUT/peers.md" peers.json
   section "The explorer's frame times (\`make explorer\`)" explorer explorer.sh docs/explorer-discussion.md \
     "$OUT/explorer.md" explorer.md

@@ -37,6 +37,11 @@ void main() {
     vec2 q = vec2(p) / float(k);               // AO texel t sits at t (its G-buffer texel t·k)
     ivec2 i0 = ivec2(floor(q));
     vec2 f = q - vec2(i0);
+    if (f == vec2(0.0)) { // the G-buffer texel this AO texel was computed at: its own value
+        float own = texelFetch(aoIn, clamp(i0, ivec2(0), inSize - 1), 0).r;
+        oAO = own > 1.0 ? 1.0 : own;
+        return;
+    }
     // Tolerance: what a continuous surface changes over k pixels on each axis (its slope), plus
     // a relative term for curvature (denoise.taps.w / 1000 of the depth).
     float tol = float(k) * (slope(p, ivec2(1, 0), z0, full) + slope(p, ivec2(0, 1), z0, full)) +
@@ -44,6 +49,8 @@ void main() {
     float sum = 0.0, wsum = 0.0, nearestAo = 1.0, nearestGap = 1e30;
     for (int j = 0; j < 4; ++j) {
         ivec2 o = ivec2(j & 1, j >> 1);
+        float bw = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+        if (bw == 0.0) continue; // a corner the pixel does not lie between
         ivec2 t = clamp(i0 + o, ivec2(0), inSize - 1);
         float z = depthAt(t * k, full);
         if (!(z > 0.0)) continue; // a sky texel holds no AO of a surface
@@ -53,7 +60,6 @@ void main() {
             nearestGap = gap;
             nearestAo = a;
         }
-        float bw = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
         float r = gap / max(tol, 1e-30);
         float w = bw * exp(-r * r);
         sum += a * w;
