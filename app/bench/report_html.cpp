@@ -224,7 +224,7 @@ svg .front{fill:none;stroke:#d62728;stroke-width:1.5;opacity:.8}svg .lbl{font-si
 table{border-collapse:collapse;font-size:12px}th,td{border:1px solid #ddd;padding:3px 6px}
 th{background:#f4f4f4;cursor:pointer;position:sticky;top:0}td.n{text-align:right;font-variant-numeric:tabular-nums}
 tr.on td:first-child{border-left:4px solid #d62728}tr.base td{font-weight:700}
-.thumbs td{vertical-align:top}.thumbs img{display:block;width:240px;image-rendering:auto}
+.thumbs td{vertical-align:top}.thumbs img{display:block;width:192px;image-rendering:auto}
 .missing{width:240px;color:#999;font-size:11px}.cap{font-size:11px;color:#555}
 </style>)";
 

@@ -9,7 +9,7 @@
 
 namespace ssao {
 
-constexpr int kThumbnailWidth = 240; // px; the height keeps the view's aspect
+constexpr int kThumbnailWidth = 192; // px; the height keeps the view's aspect (6 scenes x the front fit report.html in 2 MiB)
 
 // OUT/thumbs/<scene>__<viewpoint> with every character but [A-Za-z0-9._-] replaced by '_'.
 std::string thumbnailDir(const std::string& outDir, const std::string& scene, const std::string& viewpoint);

@@ -41,8 +41,7 @@ DisplayRange ViewPainter::paint(const Resource& r, const Resource& mask, const V
         w = maxWidth;
     }
     out.ensure(w, h, GL_RGBA8, "view." + d.name);
-    out.bind();
-    glViewport(0, 0, w, h);
+    out.bind(); // the viewport of its w x h attachment
     const GLuint prog = shaders.program("passes/fullscreen.vert", "display/view.frag");
     glUseProgram(prog);
     const int mode = d.display == Display::Color                                         ? SSAO_VIEW_COLOR

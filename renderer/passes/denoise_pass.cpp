@@ -5,6 +5,8 @@
 #include "techniques/ao_common.h"
 #include "techniques/technique.h"
 
+#include <cmath>
+
 namespace ssao {
 
 void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
@@ -20,7 +22,7 @@ void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
     tmp.internal = true;
     if (bilateral || joint || s.temporal.enabled || s.skip.sky) b.read("gbuffer.depth");
     if (bilateral) b.read("gbuffer.normal");
-    b.write(tmp);
+    if (!joint || d.kind != DenoiseKind::None) b.write(tmp); // joint + none: the upsample alone
     if (joint && d.kind != DenoiseKind::None) { // the filter's last pass, before the upsample
         ResourceDesc low = describe(chain().res("denoise.low"), GL_R32F, 1, Display::Unit,
                                     "filtered AO at the AO's resolution, before the joint upsample");
@@ -37,7 +39,7 @@ DenoiseConfig DenoisePass::config(const Settings& s, const FrameInfo& f) const {
     const DenoiseSettings d = effectiveDenoise(s); // auto: the technique's own
     c.bilateral = d.kind == DenoiseKind::Bilateral;
     c.skipSky = s.skip.sky;
-    const int k = s.ao.resolution == AoResolution::Half ? 2 : s.ao.resolution == AoResolution::Quarter ? 4 : 1;
+    const int k = int(std::lround(1.0f / resolutionScale(s.ao.resolution))); // G-buffer texels per AO texel
     c.joint = k > 1 && d.upsample == DenoiseUpsample::Joint;
     if (c.joint) c.up = packJointUpsampleConstants();
     if (c.bilateral) {

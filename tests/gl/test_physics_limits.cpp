@@ -67,7 +67,7 @@ void makeApply(Settings& s, const Param& p) {
 // The technique's own rows and the shared rows a user sets beside them, each at its limits.
 std::vector<Config> limits(const std::string& id) {
     static const std::set<std::string> shared = {"ao.power",    "ao.resolution", "ao.normals", "ao.adaptive",
-                                                 "ao.adaptive_px", "denoise.kind"};
+                                                 "ao.adaptive_px", "denoise.kind", "denoise.upsample"};
     std::vector<Config> out;
     for (const Param& p : paramTable()) {
         if (p.group() != id && !shared.count(p.key)) continue;
