@@ -8,7 +8,7 @@
 //    resolution: what a user waits for after letting go);
 //  - idle: a frame where nothing changed.
 // Each scene with the start preset and with the learnopengl baseline, in the same run.
-// Usage: bench_explorer [--no-reference] [--single] [SCENE ...] (default: the shared scenes named below).
+// Usage: bench_explorer [--no-reference] [--single] [--preset NAME] [SCENE ...] (default: the shared scenes named below).
 #include "gl/context.h"
 #include "settings/preset.h"
 #include "ui_driver.h"
@@ -90,6 +90,7 @@ Times measure(const std::string& scene, const std::string& preset, bool referenc
 
 int main(int argc, char** argv) {
     bool reference = true, single = false;
+    std::string startPreset = kStartPreset; // --preset: another candidate for the first frame
     std::vector<std::string> scenes;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -97,6 +98,8 @@ int main(int argc, char** argv) {
             reference = false;
         else if (a == "--single")
             single = true;
+        else if (a == "--preset" && i + 1 < argc)
+            startPreset = argv[++i];
         else
             scenes.push_back(a);
     }
@@ -113,9 +116,9 @@ int main(int argc, char** argv) {
         std::printf("|---|---|---:|---:|---:|---:|---:|---|---|\n");
         for (const std::string& scene : scenes) {
             const Times base = measure(scene, "learnopengl", reference, single);
-            const Times start = measure(scene, kStartPreset, reference, single);
+            const Times start = measure(scene, startPreset, reference, single);
             const std::string name = std::filesystem::path(scene).stem().string();
-            for (const auto& [preset, t] : {std::pair<std::string, Times>{kStartPreset, start}, {"learnopengl", base}})
+            for (const auto& [preset, t] : {std::pair<std::string, Times>{startPreset, start}, {"learnopengl", base}})
                 std::printf("| %s | %s | %.1f (%dx%d) | %.1f / %.1f (%dx%d) | %.1f | %.2f | %.2f | %s | %s |\n",
                             name.c_str(), preset.c_str(), t.still, t.stillW, t.stillH, t.dragMedian, t.dragMax, t.dragW,
                             t.dragH, t.idle, t.still / base.still, t.dragMedian / base.dragMedian, t.passes.c_str(),
