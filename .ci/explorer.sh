@@ -20,8 +20,8 @@ cmake --build "$BUILD" --target bench_explorer -j 2 >/dev/null
   echo
   "$BUILD/tests/bench_explorer" --single --no-reference
   echo
-  echo "Grid as above, the half-resolution preset vbao-half-medium in place of the start preset (the one"
-  echo "shipped configuration whose still frame stays under 100 ms here; docs/explorer-discussion.md):"
+  echo "Grid as above, the half-resolution preset vbao-half-medium in place of the start preset (a point"
+  echo "of the front; whether its still frame stays under 100 ms: docs/explorer-discussion.md):"
   echo
   "$BUILD/tests/bench_explorer" --preset vbao-half-medium
 } > "$OUT.tmp"

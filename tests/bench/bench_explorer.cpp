@@ -7,10 +7,11 @@
 //  - still: the first frame after the button is released and input settles (every pass at full
 //    resolution: what a user waits for after letting go);
 //  - idle: a frame where nothing changed.
-// Each scene with the start preset and with the learnopengl baseline, in the same run.
+// Each scene with the start preset (or --preset NAME) and with the learnopengl baseline, in the same run.
 // Usage: bench_explorer [--no-reference] [--single] [--preset NAME] [SCENE ...] (default: the shared scenes named below).
 #include "gl/context.h"
 #include "settings/preset.h"
+#include "settings/preset_store.h"
 #include "ui_driver.h"
 
 #include <epoxy/gl.h>
@@ -98,8 +99,13 @@ int main(int argc, char** argv) {
             reference = false;
         else if (a == "--single")
             single = true;
-        else if (a == "--preset" && i + 1 < argc)
+        else if (a == "--preset") {
+            if (i + 1 >= argc) {
+                std::fprintf(stderr, "bench_explorer: --preset needs a preset name\n");
+                return 2;
+            }
             startPreset = argv[++i];
+        }
         else
             scenes.push_back(a);
     }
@@ -108,6 +114,7 @@ int main(int argc, char** argv) {
                               "ShaderBall/shader_ball.gltf", "2CylinderEngine/2CylinderEngine.gltf"})
             scenes.push_back(std::string(SSAOLAB_SCENES_DIR) + "/" + s);
     try {
+        PresetStore::standard().open(startPreset); // an unknown name stops here, before any timing
         gl::HeadlessContext ctx;
         std::printf("GL renderer: %s via %s; window 1600x900, %s view; reference %s\n", ctx.renderer().c_str(),
                     ctx.platform().c_str(), single ? "single" : "grid (as the app opens)",
