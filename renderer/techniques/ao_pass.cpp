@@ -67,8 +67,19 @@ void AoShared::bind(PassContext& ctx, const AoBindings& bind, const std::string&
     if (bind.backDepth) ctx.in(BackFacePass::kOutput).bind(SSAO_TEX_BACK_DEPTH);
 }
 
-void AoShared::draw(PassContext& ctx, const Chain& chain, const std::string& shader, bool inspect) {
+gl::Defines aoFeatureDefines(const gpu::AoCommon& c) {
     gl::Defines defs;
+    const int inputs = int(c.flags.w);
+    if (c.estimator.w > 0.0f) defs.push_back({"AO_PYRAMID", "1"});
+    if (inputs & SSAO_AO_BAND) defs.push_back({"AO_BAND", "1"});
+    if (inputs & SSAO_AO_BACK_DEPTH) defs.push_back({"AO_BACK_DEPTH", "1"});
+    if (int(c.estimator.z) == SSAO_NORMALS_DEPTH) defs.push_back({"AO_NORMALS_DEPTH", "1"});
+    return defs;
+}
+
+void AoShared::draw(PassContext& ctx, const Chain& chain, const std::string& shader, const gpu::AoCommon& common,
+                    bool inspect) {
+    gl::Defines defs = aoFeatureDefines(common);
     if (inspect)
         defs.push_back({"INSPECT", "1"});
     else

@@ -6,6 +6,7 @@
 // and the inspector use nothing else.
 #pragma once
 #include "graph/inspect_probe.h"
+#include "gl/shader_library.h"
 #include "graph/pass.h"
 #include "techniques/noise/noise.h"
 
@@ -48,13 +49,21 @@ AoBindings aoBindings(const Settings& s, AoNoise noise, bool pyramid, bool band 
 void declareAoInputs(PassBuilder& b, const Chain& chain, const Settings& s, const AoBindings& bind,
                      const std::string& positions);
 
+// The shader variant for a packed block: AO_PYRAMID, AO_BAND, AO_BACK_DEPTH and AO_NORMALS_DEPTH
+// for the optional inputs and the depth-normal estimator the block enables (position_taps.glsl,
+// ao_common.glsl). Derived from the packed words themselves, so the variant cannot disagree with
+// its constants; what they leave off is not compiled in (a uniform branch is not free on llvmpipe).
+gl::Defines aoFeatureDefines(const gpu::AoCommon& c);
+
 // GL state an AO pass keeps: the blue-noise tile (made on first use) and the inspector's probe.
 class AoShared {
   public:
     // Binds gbuffer.normal, the blue-noise tile and the pyramid as `bind` says.
     void bind(PassContext& ctx, const AoBindings& bind, const std::string& pass);
-    // Draws `shader` over the chain's ao.raw (or, inspect = true, the INSPECT variant into the probe).
-    static void draw(PassContext& ctx, const Chain& chain, const std::string& shader, bool inspect);
+    // Draws `shader`, in the variant `common` calls for, over the chain's ao.raw (or, inspect =
+    // true, the INSPECT variant into the probe).
+    static void draw(PassContext& ctx, const Chain& chain, const std::string& shader, const gpu::AoCommon& common,
+                     bool inspect);
     bool inspect(PassContext& ctx, const Chain& chain, glm::ivec2 pixel, PixelInspection& out,
                  const std::function<void()>& drawInspect);
 
@@ -79,7 +88,7 @@ template <class Config> class AoPass : public ConfiguredPass<Config> {
 
   private:
     void draw(PassContext& ctx, const Config& c, bool inspect) {
-        AoShared::draw(ctx, this->chain(), prepare(ctx, c), inspect);
+        AoShared::draw(ctx, this->chain(), prepare(ctx, c), c.constants.aoCommon, inspect);
     }
 };
 

@@ -34,6 +34,7 @@ float aoNeighbourGap(vec4 S, vec2 uv, vec3 P) {
 // screen derivatives mixes the two sides of a silhouette and bends the normal of every edge pixel.
 vec3 aoNormal(AoCommon_ c, sampler2D positions, sampler2D normals, vec2 uv, vec3 P) {
     vec3 N;
+#ifdef AO_NORMALS_DEPTH // compiled in only with that estimator (ao_pass.cpp aoFeatureDefines)
     if (int(c.estimator.z) == SSAO_NORMALS_DEPTH) {
         // Whole texels around the pixel's own texel (see aoPixelUv), never a boundary.
         vec2 t = 1.0 / vec2(textureSize(positions, 0));
@@ -53,6 +54,7 @@ vec3 aoNormal(AoCommon_ c, sampler2D positions, sampler2D normals, vec2 uv, vec3
         N = normalize(N);
         return dot(N, V) < 0.0 ? -N : N; // face the camera, as the G-buffer's normals do
     }
+#endif
     N = texture(normals, uv).xyz;
     if (c.flags.z != 0.0) N = N * 2.0 - 1.0; // an RGBA8 target stores (n+1)/2
     float l2 = dot(N, N);

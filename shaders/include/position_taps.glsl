@@ -3,15 +3,23 @@
 // A tap d G-buffer pixels from the pixel reads level floor(log2(d) - offset) (SAO's
 // "log2(ssR) - LOG_MAX_OFFSET"; XeGTAO's offset is 3.3): nearby taps stay exact, far taps touch
 // few cache lines. Needs bindings.h.
+//
+// The optional inputs (pyramid, guard band, back-face layer) are compiled in only where the
+// constants enable them: AO_PYRAMID, AO_BAND and AO_BACK_DEPTH are defined from the packed block
+// itself (renderer/techniques/ao_pass.cpp, aoFeatureDefines), so a variant never disagrees with
+// its constants. A branch on a uniform is not free on llvmpipe: with all three compiled in and off,
+// the bitmask's AO took 97-101 ms against 75-82 ms without (CornellBox 1172x616, 32 taps a pixel).
 
 layout(binding = SSAO_TEX_POSITION_MIPS) uniform sampler2D aoPositionMips;
 
 vec4 aoTap(AoCommon_ c, sampler2D positions, vec2 uv, float offsetPx) {
+#ifdef AO_PYRAMID
     if (c.estimator.w > 0.0) {
         float top = float(textureQueryLevels(aoPositionMips) - 1);
         float lod = clamp(floor(log2(max(offsetPx, 1.0)) - c.estimator.w), 0.0, top);
         return textureLod(aoPositionMips, uv, lod);
     }
+#endif
     return textureLod(positions, uv, 0.0);
 }
 
@@ -22,18 +30,22 @@ vec4 aoTap(AoCommon_ c, sampler2D positions, vec2 uv, float offsetPx) {
 layout(binding = SSAO_TEX_POSITION_BAND) uniform sampler2D aoPositionBand;
 
 bool aoTapHeld(AoCommon_ c, sampler2D positions, vec2 uv, float offsetPx, out vec4 S) {
-    S = vec4(0.0);
-    if (all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)))) {
-        S = aoTap(c, positions, uv, offsetPx);
+    bool inside = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
+    // Read whether or not the tap is on the frame (off it, the clamped edge texel, discarded):
+    // a read under a divergent branch costs more on llvmpipe than the read itself.
+    vec4 T = aoTap(c, positions, uv, offsetPx);
+    S = inside ? T : vec4(0.0);
+#ifdef AO_BAND
+    if (!inside && (int(c.flags.w) & SSAO_AO_BAND) != 0) {
+        vec2 band = vec2(textureSize(aoPositionBand, 0));  // the frame plus g pixels on each side
+        vec2 g = 0.5 * (band - frame.viewport.xy);
+        vec2 uvBand = (uv * frame.viewport.xy + g) / band;
+        if (any(lessThan(uvBand, vec2(0.0))) || any(greaterThan(uvBand, vec2(1.0)))) return false;
+        S = textureLod(aoPositionBand, uvBand, 0.0);
         return true;
     }
-    if ((int(c.flags.w) & SSAO_AO_BAND) == 0) return false;
-    vec2 band = vec2(textureSize(aoPositionBand, 0));  // the frame plus g pixels on each side
-    vec2 g = 0.5 * (band - frame.viewport.xy);
-    vec2 uvBand = (uv * frame.viewport.xy + g) / band;
-    if (any(lessThan(uvBand, vec2(0.0))) || any(greaterThan(uvBand, vec2(1.0)))) return false;
-    S = textureLod(aoPositionBand, uvBand, 0.0);
-    return true;
+#endif
+    return inside;
 }
 
 // The back-face layer (gbuffer.back_faces: passes/back_face_pass.h): the nearest surface facing away
@@ -47,10 +59,14 @@ bool aoTapHeld(AoCommon_ c, sampler2D positions, vec2 uv, float offsetPx, out ve
 layout(binding = SSAO_TEX_BACK_DEPTH) uniform sampler2D aoBackDepth;
 
 float aoBackGap(AoCommon_ c, vec2 uv, vec3 S, float assumed) {
+#ifndef AO_BACK_DEPTH
+    return assumed;
+#else
     if ((int(c.flags.w) & SSAO_AO_BACK_DEPTH) == 0) return assumed;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return assumed;
     float back = textureLod(aoBackDepth, uv, 0.0).r, front = -S.z;
     if (!(back > front)) return assumed; // no back face behind it (an open surface, or none at all)
     float gap = frame.camera.x != 0.0 ? back - front : length(S) * (back / front - 1.0); // along the view ray
     return max(gap, assumed);
+#endif
 }
