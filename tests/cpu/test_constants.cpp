@@ -3,6 +3,7 @@
 #include "renderer.h"
 #include "settings/params.h"
 #include "techniques/ao_common.h"
+#include "techniques/ao_pass.h"
 #include "techniques/kernel/pack.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -99,6 +100,34 @@ TEST(AoCommon, RadiusInEachModeInWorldUnitsAndPixels) {
     // The G-buffer's normal encoding is shared too (flags.z), so no technique defines its own flag.
     EXPECT_EQ(d.flags.z, 0.0f);
     EXPECT_EQ(packAoCommon(a, diag, upp, {64, 32}, true, /*normalUnorm=*/true).flags.z, 1.0f);
+}
+
+// The AO shader variant follows the packed words it runs with, so an input the block enables is
+// always compiled in and one it leaves off never is.
+TEST(AoCommon, FeatureDefinesFollowThePackedBlock) {
+    auto has = [](const gl::Defines& d, const char* name) {
+        for (const auto& [k, v] : d)
+            if (k == name) return true;
+        return false;
+    };
+    Settings s = defaultSettings();
+    FrameInfo f;
+    f.width = 64, f.height = 32;
+    f.constants.proj = glm::perspective(1.0f, 2.0f, 0.1f, 10.0f);
+    EXPECT_TRUE(aoFeatureDefines(aoCommonFor(s, f, AoNoise::Ign, 0.0f)).empty());
+    const gl::Defines pyr = aoFeatureDefines(aoCommonFor(s, f, AoNoise::Ign, 3.3f));
+    EXPECT_TRUE(has(pyr, "AO_PYRAMID"));
+    EXPECT_EQ(pyr.size(), 1u);
+    s.gbuffer.guardBandPx = 16;
+    s.gbuffer.backFaces = true;
+    s.ao.normals = NormalSource::Depth;
+    const gpu::AoCommon all = aoCommonFor(s, f, AoNoise::Ign, 0.0f);
+    const gl::Defines d = aoFeatureDefines(all);
+    EXPECT_TRUE(has(d, "AO_BAND"));
+    EXPECT_TRUE(has(d, "AO_BACK_DEPTH"));
+    EXPECT_TRUE(has(d, "AO_NORMALS_DEPTH"));
+    EXPECT_FALSE(has(d, "AO_PYRAMID"));
+    EXPECT_EQ(int(all.flags.w), SSAO_AO_BAND | SSAO_AO_BACK_DEPTH); // what the shader checks inside
 }
 
 TEST(AoCommon, UnitsPerPixelMatchTheFieldOfView) {
