@@ -77,6 +77,13 @@ void DenoisePass::run(PassContext& ctx, const DenoiseConfig& c) {
         jointUpsample(ctx, c, filtered);
     } else if (c.bilateral) {
         bilateral(ctx, c, raw, tmp, out);
+    } else if (c.passes == 1 && ctx.size(raw) == ctx.size(out)) {
+        // None at full resolution: the identity tap over ao.raw, whose sky is already 1 (the AO
+        // passes write 1 there, AO_SKY_EARLY_OUT / AO_RESULT) and whose values are already <= 1
+        // (aoFinish): the same texels copied, without a fullscreen pass (4-5 ms at 1172x616 on llvmpipe).
+        const glm::ivec2 size = ctx.size(out);
+        glCopyImageSubData(ctx.in(raw).id(), GL_TEXTURE_2D, 0, 0, 0, 0, ctx.in(out).id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                           size.x, size.y, 1);
     } else {
         separable(ctx, c, out);
     }

@@ -7,6 +7,7 @@
 #include "techniques/technique.h"
 #include "util/error.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -240,6 +241,33 @@ TEST_F(Passes, AoAtHalfAndQuarterResolutionFlowsThroughTheGraph) {
         // The same AO, only coarser: close to full resolution on average.
         EXPECT_NEAR(geometryMean(out, out.ao), geometryMean(full, full.ao), 0.02) << res;
     }
+}
+
+// Denoise `none` at full resolution copies ao.raw instead of running the identity tap: that is
+// exact only because every technique's raw AO is already <= 1 and 1 on the sky, at every power.
+TEST_F(Passes, NoDenoiserAtFullResolutionIsAnExactCopyOfTheRawAo) {
+    for (const auto& t : techniques())
+        for (const char* power : {"1", "3"})
+            for (const char* sky : {"true", "false"}) {
+                Settings s = defaultSettings();
+                s.ao.technique = t.id;
+                setParam(s, "denoise.kind", "none");
+                setParam(s, "ao.power", power);
+                setParam(s, "skip.sky", sky);
+                auto r = makeRenderer(scene_, s, 160, 90);
+                const std::vector<std::string> ran = r->render().ran();
+                EXPECT_NE(std::find(ran.begin(), ran.end(), "denoise"), ran.end()) << t.id;
+                Rendered out = readAll(*r);
+                ASSERT_EQ(out.ao.data.size(), out.aoRaw.data.size()) << t.id;
+                EXPECT_TRUE(finiteInRange(out.aoRaw, 0.0f, 1.0f)) << t.id << " power " << power;
+                size_t differ = 0, skyNotOne = 0;
+                for (size_t i = 0; i < out.ao.data.size(); ++i) {
+                    differ += out.ao.data[i] != out.aoRaw.data[i];
+                    skyNotOne += out.depth.data[i] == 0.0f && out.ao.data[i] != 1.0f;
+                }
+                EXPECT_EQ(differ, 0u) << t.id << " power " << power << " skip.sky " << sky;
+                EXPECT_EQ(skyNotOne, 0u) << t.id << " power " << power << " skip.sky " << sky;
+            }
 }
 
 TEST_F(Passes, ChainBOffAndOnAgainRendersIntoItsNewBuffers) {
