@@ -59,31 +59,31 @@ void main() {
             for (int side = 0; side < 2; ++side) {
                 vec2 uv = uv0 + (side == 0 ? offsetUv : -offsetUv);
                 vec4 S; // off the held area (the frame and its guard band): unseen, no occluder
-                if (!aoTapHeld(ssao.aoCommon, gPosition, uv, s * radiusPx, S)) {
-                    INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, slice); // unseen: no occluder
-                    continue;
-                }
-                if (S.w == 0.0) {
-                    INSPECT_TAP(P, uv, SSAO_TAP_SKY, 0.0, slice);
-                    continue;
-                }
+                bool held = aoTapHeld(ssao.aoCommon, gPosition, uv, s * radiusPx, S);
                 vec3 delta = S.xyz - P;
                 float dist = length(delta);
-                if (!(dist > 0.0)) { // the same texel: no direction to a horizon
-                    INSPECT_TAP(S.xyz, uv, SSAO_TAP_OPEN, 0.0, slice);
-                    continue;
-                }
+                // Off the frame, on the sky or the same texel (no direction to a horizon): the tap
+                // leaves the horizon where it is. A select, not a branch per case (vbao.frag: on
+                // llvmpipe the branches only cost); the same AO to the last bit.
+                bool counts = held && S.w != 0.0 && dist > 0.0;
                 vec3 inSlice = aoSliceDelta(sl, delta); // the angle in the slice plane (slice.glsl)
                 float shc = dot(inSlice, V) / max(length(inSlice), 1e-30);
                 // Thin-occluder heuristic: depth differences count (1 + t) times in the falloff.
                 float falloffBase = length(vec3(delta.xy, delta.z * (1.0 + ssao.thin.x)));
                 float w = clamp(falloffBase * falloffMul + falloffAdd, 0.0, 1.0);
                 float low = side == 0 ? lowCos0 : lowCos1;
-                shc = mix(low, shc, w); // beyond the radius an occluder fades to the tangent plane
+                // Beyond the radius an occluder fades to the tangent plane; a tap that does not
+                // count is the tangent plane itself, which never raises a horizon (hCos >= low).
+                shc = counts ? mix(low, shc, w) : low;
                 bool raises = side == 0 ? shc > hCos0 : shc > hCos1;
                 if (side == 0) hCos0 = max(hCos0, shc);
                 else hCos1 = max(hCos1, shc);
-                INSPECT_TAP(S.xyz, uv, raises && w > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN, w, slice);
+                INSPECT_TAP(held && S.w != 0.0 ? S.xyz : P, uv,
+                            !held         ? SSAO_TAP_OFFSCREEN
+                            : S.w == 0.0  ? SSAO_TAP_SKY
+                            : !counts     ? SSAO_TAP_OPEN
+                            : raises && w > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN,
+                            counts ? w : 0.0, slice);
             }
         }
         // Horizon angles from V (side 0 positive), kept within the hemisphere around the normal.

@@ -48,25 +48,22 @@ void main() {
             vec2 offsetPx = round(omega * (1.0 + (float(s) + noise.y) * stepPx));
             vec2 uv = uv0 + offsetPx * frame.viewport.zw;
             vec4 S; // off the held area (the frame and its guard band): unseen, no occluder
-            if (!aoTapHeld(ssao.aoCommon, gPosition, uv, length(offsetPx), S)) {
-                INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, d);
-                continue;
-            }
-            if (S.w == 0.0) {
-                INSPECT_TAP(P, uv, SSAO_TAP_SKY, 0.0, d);
-                continue;
-            }
+            bool held = aoTapHeld(ssao.aoCommon, gPosition, uv, length(offsetPx), S);
             vec3 H = S.xyz - P;
             float r = length(H);
             float sinS = r > 0.0 ? dot(N, H) / r : -1.0; // elevation above the tangent plane
-            float contribution = 0.0;
-            if (sinS > sinH) {
-                float W = max(0.0, 1.0 - r / R); // Bavoil 2008 eq. 3: linear falloff
-                contribution = (sinS - sinH) * W;
-                occ += contribution;
-                sinH = sinS;
-            }
-            INSPECT_TAP(S.xyz, uv, contribution > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN, contribution, d);
+            // Off the frame or on the sky: no occluder. A select, not a branch per case (vbao.frag:
+            // on llvmpipe the branches only cost); the same AO to the last bit.
+            bool raises = held && S.w != 0.0 && sinS > sinH;
+            float W = max(0.0, 1.0 - r / R); // Bavoil 2008 eq. 3: linear falloff
+            float contribution = raises ? (sinS - sinH) * W : 0.0;
+            occ += contribution;
+            sinH = raises ? sinS : sinH;
+            INSPECT_TAP(held && S.w != 0.0 ? S.xyz : P, uv,
+                        !held        ? SSAO_TAP_OFFSCREEN
+                        : S.w == 0.0 ? SSAO_TAP_SKY
+                        : contribution > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN,
+                        contribution, d);
         }
         occlusion += occ;
     }

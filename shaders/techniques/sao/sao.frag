@@ -39,21 +39,21 @@ void main() {
         float angle = alpha * ssao.params.x * TWO_PI + spin;
         vec2 uv = uv0 + round(alpha * radiusPx * vec2(cos(angle), sin(angle))) * frame.viewport.zw;
         vec4 Q; // off the held area (the frame and its guard band): unseen, no occluder
-        if (!aoTapHeld(ssao.aoCommon, gPosition, uv, alpha * radiusPx, Q)) {
-            INSPECT_TAP(P, uv, SSAO_TAP_OFFSCREEN, 0.0, 0);
-            continue;
-        }
-        if (Q.w == 0.0) {
-            INSPECT_TAP(P, uv, SSAO_TAP_SKY, 0.0, 0);
-            continue;
-        }
+        bool held = aoTapHeld(ssao.aoCommon, gPosition, uv, alpha * radiusPx, Q);
         vec3 v = (Q.xyz - P) / R;
         float vv = dot(v, v), vn = dot(v, N);
         float f = max(1.0 - vv, 0.0);
         // ε keeps taps at the pixel itself (v = 0) finite and stops crevices over-darkening.
         float term = f * f * f * max(vn - ssao.params.z, 0.0) / (vv + ssao.params.w) * ssao.params.y;
+        // Off the frame or on the sky: no occluder. A select, not a branch per case (vbao.frag:
+        // on llvmpipe the branches only cost); the same AO to the last bit.
+        term = held && Q.w != 0.0 ? term : 0.0;
         occlusion += term;
-        INSPECT_TAP(Q.xyz, uv, term > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN, term, 0);
+        INSPECT_TAP(held && Q.w != 0.0 ? Q.xyz : P, uv,
+                    !held        ? SSAO_TAP_OFFSCREEN
+                    : Q.w == 0.0 ? SSAO_TAP_SKY
+                    : term > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN,
+                    term, 0);
     }
     occlusion *= float(ssao.modes.x) / float(n); // params.y holds 2 sigma / modes.x (pack.cpp)
     oAO = AO_RESULT(aoFinish(ssao.aoCommon, 1.0 - occlusion));
