@@ -9,6 +9,10 @@
 
 namespace ssao {
 
+bool copiesRaw(const Settings& s) {
+    return effectiveDenoise(s).kind == DenoiseKind::None && resolutionScale(s.ao.resolution) == 1.0f;
+}
+
 void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
     b.read(chain().res("ao.raw"));
     const DenoiseSettings d = effectiveDenoise(s);
@@ -20,9 +24,11 @@ void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
     // Filter upsampling: the bilateral's passes all run at full resolution (its first upsamples).
     tmp.scale = bilateral && !joint ? 1.0f : scale;
     tmp.internal = true;
-    if (bilateral || joint || s.temporal.enabled || s.skip.sky) b.read("gbuffer.depth");
+    // The copy needs no depth: the raw AO is already 1 on the sky (run()), so the G-buffer may skip
+    // that target where nothing else reads it (skip.unused_targets).
+    if (bilateral || joint || s.temporal.enabled || (s.skip.sky && !copiesRaw(s))) b.read("gbuffer.depth");
     if (bilateral) b.read("gbuffer.normal");
-    if (!joint || d.kind != DenoiseKind::None) b.write(tmp); // joint + none: the upsample alone
+    if ((!joint || d.kind != DenoiseKind::None) && !copiesRaw(s)) b.write(tmp); // joint + none: the upsample alone
     if (joint && d.kind != DenoiseKind::None) { // the filter's last pass, before the upsample
         ResourceDesc low = describe(chain().res("denoise.low"), GL_R32F, 1, Display::Unit,
                                     "filtered AO at the AO's resolution, before the joint upsample");
@@ -57,6 +63,7 @@ DenoiseConfig DenoisePass::config(const Settings& s, const FrameInfo& f) const {
         c.x = packDenoiseConstants(d, 0);
         c.y = packDenoiseConstants(d, 1, s.skip.sky); // the last pass skips sky pixels
     }
+    c.copy = copiesRaw(s);
     c.temporal = temporalConfig(s, f);
     return c;
 }
@@ -77,7 +84,7 @@ void DenoisePass::run(PassContext& ctx, const DenoiseConfig& c) {
         jointUpsample(ctx, c, filtered);
     } else if (c.bilateral) {
         bilateral(ctx, c, raw, tmp, out);
-    } else if (c.passes == 1 && ctx.size(raw) == ctx.size(out)) {
+    } else if (c.copy) {
         // None at full resolution: the identity tap over ao.raw, whose sky is already 1 (the AO
         // passes write 1 there, AO_SKY_EARLY_OUT / AO_RESULT) and whose values are already <= 1
         // (aoFinish): the same texels copied, without a fullscreen pass (4-5 ms at 1172x616 on llvmpipe).

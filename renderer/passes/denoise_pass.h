@@ -17,10 +17,15 @@ struct DenoiseConfig {
     int32_t bilinearTaps;  // both passes read bilinearly (the centred box's half-texel taps)
     int32_t skipSky;       // reads gbuffer.depth: the last pass returns 1 on sky pixels
     int32_t joint;         // reduced AO: filter at its resolution, then the joint 2x2 upsample (up)
+    int32_t copy;          // none at full resolution: ao.raw copied as it is (copiesRaw)
     gpu::DenoiseConstants x, y, up;
     TemporalConfig temporal;
 };
 SSAO_CONFIG_END
+
+// Denoise `none` with the AO at full resolution is the identity: ao.raw is copied, no pass runs a
+// shader and nothing else (the depth for the sky) is read.
+bool copiesRaw(const Settings& s);
 
 class DenoisePass final : public ConfiguredPass<DenoiseConfig> {
   public:
