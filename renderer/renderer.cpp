@@ -125,7 +125,9 @@ std::vector<Pass*> Renderer::techniquePasses(const Chain& b, const Settings& s) 
 std::vector<Pass*> Renderer::chainPasses(const Chain& c, const Settings& s) {
     std::vector<Pass*> passes = techniquePasses(c, s);
     passes.push_back(&passFor(c.prefix + "denoise", [&] { return std::make_unique<DenoisePass>(c); }));
-    passes.push_back(&passFor(c.prefix + "composite", [&] { return std::make_unique<CompositePass>(c); }));
+    Pass& composite = passFor(c.prefix + "composite", [&] { return std::make_unique<CompositePass>(c); });
+    static_cast<CompositePass&>(composite).allowFusedUpsample(c.prefix.empty() ? fuseA_ : fuseB_);
+    passes.push_back(&composite);
     return passes;
 }
 
@@ -256,6 +258,11 @@ std::optional<PixelInspection> Renderer::inspect(int chain, glm::ivec2 pixel) {
 
 void Renderer::setWanted(std::optional<std::set<std::string>> buffers) {
     if (buffers) buffers->insert("gbuffer.depth");
+    const bool fuseA = buffers && !buffers->count(Chain::a().res("ao.denoised"));
+    const bool fuseB = buffers && !buffers->count(Chain::b().res("ao.denoised"));
+    if (fuseA != fuseA_ || fuseB != fuseB_) graphStale_ = true; // the composite's inputs change
+    fuseA_ = fuseA;
+    fuseB_ = fuseB;
     graph_.setWanted(std::move(buffers));
 }
 

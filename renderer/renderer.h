@@ -113,6 +113,9 @@ class Renderer {
     float displayScale_ = 1.0f;
     FrameGraph graph_;
     bool graphStale_ = true; // settings, chain B, size or reference on/off changed since compile()
+    // Per chain (A, B): nothing outside the graph wants its ao.denoised, so its composite may
+    // upsample reduced AO inline (CompositePass::allowFusedUpsample).
+    bool fuseA_ = false, fuseB_ = false;
     int temporalFrame_ = 0;  // frames accumulated since the camera or the settings changed
     // What the accumulated history was made with: settings, size or scene differing drop it; a
     // different camera only restarts the count (compared directly, not serialised, every frame).

@@ -98,6 +98,15 @@ std::string skipsMarkdown(const SkipsRun& run) {
                num(r.extra.value("targets_written", 4.0), "%.0f") + " | " + num(r.with) + " | " + num(r.without) +
                " | " + ratio(r) + " | " + change(r.errorChange) + " |";
     });
+
+    table(md, "The joint upsample inside the composite (half-resolution AO, a composite view nothing else reads)",
+          "| scene | view | frame GPU ms fused | own upsample pass | ratio | wall ms fused / own pass | composite change |",
+          "|---|---|---:|---:|---:|---:|---|");
+    rows(md, run, "fused", [](const SkipRow& r) {
+        return "| " + r.scene + " | " + r.view + " | " + num(r.with) + " | " + num(r.without) + " | " + ratio(r) +
+               " | " + num(r.wallWith, "%.1f") + " / " + num(r.wallWithout, "%.1f") + " | " + change(r.errorChange) +
+               " |";
+    });
     return md.str();
 }
 

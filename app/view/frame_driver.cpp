@@ -25,13 +25,16 @@ FrameReport merged(const FrameReport& first, const FrameReport& second) {
 }
 
 // What is on screen is all the frame needs: a single AO view culls the composite and the G-buffer
-// targets only it reads. The error evaluation reads the denoised AO of each chain.
+// targets only it reads. The error evaluation (reference on) reads the denoised AO of each chain;
+// without it a composite view of reduced AO leaves ao.denoised unwritten and upsamples inline
+// (CompositePass::allowFusedUpsample).
 // While the cursor (or a pinned pixel) is on the image, the readout lists every buffer at it, so
 // every buffer is computed: a culled one printed "-" (reference.ao, composite in a single AO view).
 // Passes are config-keyed, so each of those runs once and stays clean while nothing changes.
-std::optional<std::set<std::string>> wantedBuffers(const Renderer& r, const ViewState& view) {
+std::optional<std::set<std::string>> wantedBuffers(const Renderer& r, const ViewState& view, bool error) {
     if (view.mode == ViewMode::Grid || view.cursorOnImage || view.pinPixel) return std::nullopt;
-    std::set<std::string> wanted = {"ao.denoised", "b.ao.denoised"};
+    std::set<std::string> wanted;
+    if (error) wanted = {"ao.denoised", "b.ao.denoised"};
     if (view.mode == ViewMode::Single)
         wanted.insert(r.graph().find(view.enlarged) ? view.enlarged : "composite");
     else
@@ -87,7 +90,7 @@ void FrameDriver::render(const Input& in, const ViewState& view, int viewW, int 
         r.setSettings(in.settings);
         r.setSettingsB(in.settingsB);
         r.setReferenceBuffers(reference_.buffers());
-        r.setWanted(wantedBuffers(r, view));
+        r.setWanted(wantedBuffers(r, view, referenceOn));
         FrameReport rep = r.render(); // cheap when nothing changed: no pass runs
         if (r.accumulating()) keepAwake(); // temporal accumulation: keep drawing until its frames are in
         // The reference after the frame: a trace starts from the view as just rendered (its radius

@@ -10,6 +10,9 @@ struct CompositeConfig {
     float ambient, light;
     int32_t useAo;       // reads the chain's ao.denoised
     int32_t normalUnorm; // normals stored as (n+1)/2
+    int32_t fused;       // does the joint upsample itself, from the reduced AO (up: its constants)
+    int32_t reducedRaw;  // that AO is ao.raw (no filter before the upsample), else denoise.low
+    gpu::DenoiseConstants up;
 };
 SSAO_CONFIG_END
 
@@ -18,9 +21,19 @@ class CompositePass final : public ConfiguredPass<CompositeConfig> {
     explicit CompositePass(const Chain& c) : ConfiguredPass(c.res("composite"), c) {}
     void setup(PassBuilder& b, const Settings& s) const override;
     CompositeConfig config(const Settings& s, const FrameInfo& f) const override;
+    // Whether nothing outside the graph reads this chain's ao.denoised (the renderer knows what
+    // is wanted): then, where the settings call for the joint upsample of reduced AO without
+    // temporal accumulation, this pass upsamples inline and the denoise pass leaves
+    // ao.denoised unwritten - one full-resolution pass fewer (the issue's "fused where the view
+    // allows"). The composite is the same either way (tests/gl/test_upsample.cpp).
+    void allowFusedUpsample(bool allowed) { fuseAllowed_ = allowed; }
+    bool fusesUpsample(const Settings& s) const;
 
   private:
     void run(PassContext& ctx, const CompositeConfig& c) override;
+    std::string reducedAo(bool raw) const { return chain().res(raw ? "ao.raw" : "denoise.low"); }
+    bool fuseAllowed_ = false;
+    gl::UniformBuffer ubo_;
 };
 
 } // namespace ssao

@@ -81,7 +81,11 @@ void DenoisePass::run(PassContext& ctx, const DenoiseConfig& c) {
             separable(ctx, c, low);
             filtered = low;
         }
-        jointUpsample(ctx, c, filtered);
+        // Unwritten where nothing reads it: the composite then upsamples inline (composite_pass.h).
+        if (ctx.needed(out))
+            jointUpsample(ctx, c, filtered);
+        else
+            ctx.leaveUnwritten(out);
     } else if (c.bilateral) {
         bilateral(ctx, c, raw, tmp, out);
     } else if (c.copy) {

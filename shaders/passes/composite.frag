@@ -3,11 +3,18 @@
 // quadratic 0.9 attenuation — distances measured in scene radii so mm and m scenes look alike.
 #include "include/bindings.h"
 #include "include/frame.glsl"
+#include "include/joint_upsample.glsl"
 
 layout(binding = SSAO_TEX_POSITION) uniform sampler2D gPosition;
 layout(binding = SSAO_TEX_NORMAL) uniform sampler2D gNormal;
 layout(binding = SSAO_TEX_ALBEDO) uniform sampler2D gAlbedo;
-layout(binding = SSAO_TEX_AO) uniform sampler2D aoIn;
+layout(binding = SSAO_TEX_AO) uniform sampler2D aoIn; // ao.denoised, or with FUSED_UPSAMPLE the reduced AO
+#ifdef FUSED_UPSAMPLE
+// The joint upsample done here, per pixel, when nothing shows or judges ao.denoised itself
+// (passes/composite_pass.h): one full-resolution pass fewer.
+layout(std140, binding = SSAO_UBO_DENOISE) uniform DenoiseBlock { DenoiseConstants_ denoise; };
+layout(binding = SSAO_TEX_LINEAR_DEPTH) uniform sampler2D gDepth;
+#endif
 
 layout(location = 0) uniform vec2 uAmbientLight; // x: ambient strength, y: light intensity
 layout(location = 1) uniform float uUseAo;       // 1: apply AO, 0: AO off (comparison)
@@ -27,7 +34,12 @@ void main() {
 #endif
     N = normalize(N);
     vec3 albedo = texture(gAlbedo, vUv).rgb;
-    float ao = uUseAo > 0.5 ? texture(aoIn, vUv).r : 1.0; // AO off: no AO texture is bound
+    float ao = 1.0; // AO off: no AO texture is bound
+#ifdef FUSED_UPSAMPLE
+    if (uUseAo > 0.5) ao = jointUpsample(aoIn, gDepth, ivec2(gl_FragCoord.xy), denoise.taps.w);
+#else
+    if (uUseAo > 0.5) ao = texture(aoIn, vUv).r;
+#endif
 
     float R = max(frame.clip.z, 1e-6);
     vec3 lightPos = vec3(-0.6, 0.9, 0.3) * R; // view space: above-left of the camera

@@ -8,7 +8,9 @@
 //    resolution: what a user waits for after letting go);
 //  - idle: a frame where nothing changed.
 // Each scene with the start preset (or --preset NAME) and with the learnopengl baseline, in the same run.
-// Usage: bench_explorer [--no-reference] [--single] [--preset NAME] [SCENE ...] (default: the shared scenes named below).
+// --cursor-away: after the release the cursor leaves the image (as when a slider is tweaked next), so
+// the per-pixel readout does not ask for every buffer.
+// Usage: bench_explorer [--no-reference] [--single] [--cursor-away] [--preset NAME] [SCENE ...] (default: the shared scenes named below).
 #include "gl/context.h"
 #include "settings/preset.h"
 #include "settings/preset_store.h"
@@ -44,7 +46,7 @@ double median(std::vector<double> v) {
     return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
-Times measure(const std::string& scene, const std::string& preset, bool reference, bool single) {
+Times measure(const std::string& scene, const std::string& preset, bool reference, bool single, bool away) {
     AppOptions o;
     o.scene = scene;
     o.preset = preset;
@@ -56,6 +58,8 @@ Times measure(const std::string& scene, const std::string& preset, bool referenc
     for (const auto& [key, r] : ui.app().view().widgetRects)
         if (key.rfind("view#", 0) == 0 && (r.z - r.x) * (r.w - r.y) > (v.z - v.x) * (v.w - v.y)) v = r;
     const float cx = (v.x + v.z) * 0.5f, cy = (v.y + v.w) * 0.5f;
+    // Where the cursor rests after the release: on the image, or just beside it.
+    const float rx = away ? (v.x > 8.0f ? v.x - 4.0f : v.z + 4.0f) : cx + 150.0f, ry = away ? cy : cy + 24.0f;
     Times t;
     for (int round = 0; round < 2; ++round) { // the first round warms shaders of the moving size
         ui.frame(cx, cy, false);
@@ -65,17 +69,18 @@ Times measure(const std::string& scene, const std::string& preset, bool referenc
         t.dragW = ui.app().renderer().width(), t.dragH = ui.app().renderer().height();
         drag.erase(drag.begin()); // the press frame renders the last still size
         ui.frame(cx + 150.0f, cy + 24.0f, false);
+        ui.frame(rx, ry, false); // not timed: the still frames follow (the app settles after 0.25 s)
         // Frames with no input until the app renders at full resolution: the still frame is the
         // slowest of them (the one that re-runs every pass at full size).
         double still = 0;
         for (int i = 0; i < 200 && (ui.app().frames().interacting() || i < 3); ++i)
-            still = std::max(still, timed(ui, cx + 150.0f, cy + 24.0f, false));
-        for (int i = 0; i < 3; ++i) still = std::max(still, timed(ui, cx + 150.0f, cy + 24.0f, false));
+            still = std::max(still, timed(ui, rx, ry, false));
+        for (int i = 0; i < 3; ++i) still = std::max(still, timed(ui, rx, ry, false));
         t.still = still;
         t.stillW = ui.app().renderer().width(), t.stillH = ui.app().renderer().height();
         t.dragMedian = median(drag);
         t.dragMax = *std::max_element(drag.begin(), drag.end());
-        t.idle = timed(ui, cx + 150.0f, cy + 24.0f, false);
+        t.idle = timed(ui, rx, ry, false);
     }
     for (bool moving : {false, true})
         for (const auto& [pass, runs] : ui.app().frames().timing(moving).ms) {
@@ -90,7 +95,7 @@ Times measure(const std::string& scene, const std::string& preset, bool referenc
 } // namespace
 
 int main(int argc, char** argv) {
-    bool reference = true, single = false;
+    bool reference = true, single = false, away = false;
     std::string startPreset = kStartPreset; // --preset: another candidate for the first frame
     std::vector<std::string> scenes;
     for (int i = 1; i < argc; ++i) {
@@ -99,6 +104,8 @@ int main(int argc, char** argv) {
             reference = false;
         else if (a == "--single")
             single = true;
+        else if (a == "--cursor-away")
+            away = true;
         else if (a == "--preset") {
             if (i + 1 >= argc) {
                 std::fprintf(stderr, "bench_explorer: --preset needs a preset name\n");
@@ -116,14 +123,15 @@ int main(int argc, char** argv) {
     try {
         PresetStore::standard().open(startPreset); // an unknown name stops here, before any timing
         gl::HeadlessContext ctx;
-        std::printf("GL renderer: %s via %s; window 1600x900, %s view; reference %s\n", ctx.renderer().c_str(),
-                    ctx.platform().c_str(), single ? "single" : "grid (as the app opens)",
-                    reference ? "on (tracing in the background, as the app opens)" : "off");
+        std::printf("GL renderer: %s via %s; window 1600x900, %s view; reference %s; cursor %s\n",
+                    ctx.renderer().c_str(), ctx.platform().c_str(), single ? "single" : "grid (as the app opens)",
+                    reference ? "on (tracing in the background, as the app opens)" : "off",
+                    away ? "beside the image after the release" : "on the image");
         std::printf("| scene | preset | still ms (size) | drag ms median / max (size) | idle ms | still x baseline | drag x baseline | GPU ms per pass: still | moving |\n");
         std::printf("|---|---|---:|---:|---:|---:|---:|---|---|\n");
         for (const std::string& scene : scenes) {
-            const Times base = measure(scene, "learnopengl", reference, single);
-            const Times start = measure(scene, startPreset, reference, single);
+            const Times base = measure(scene, "learnopengl", reference, single, away);
+            const Times start = measure(scene, startPreset, reference, single, away);
             const std::string name = std::filesystem::path(scene).stem().string();
             for (const auto& [preset, t] : {std::pair<std::string, Times>{startPreset, start}, {"learnopengl", base}})
                 std::printf("| %s | %s | %.1f (%dx%d) | %.1f / %.1f (%dx%d) | %.1f | %.2f | %.2f | %s | %s |\n",

@@ -1,11 +1,14 @@
 // Reduced-resolution AO back to full size (denoise.upsample): joint filters at the AO's resolution
 // and upsamples with passes/upsample_joint.frag; filter lets the filter's last pass upsample.
 #include "gl_fixture.h"
+#include "gl/readback.h"
 
 #include "scene/scene.h"
 #include "settings/params.h"
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 #include <string>
 
 using namespace ssao;
@@ -88,4 +91,46 @@ TEST_F(Upsample, JointBleedsLessAcrossSilhouettesThanBilinear) {
     ej = std::sqrt(ej / double(n));
     eb = std::sqrt(eb / double(n));
     EXPECT_LT(ej, eb * 0.9) << "edge RMSE to full resolution: joint " << ej << ", bilinear " << eb << " over " << n;
+}
+
+// Where nothing reads ao.denoised (a composite view without the error), the composite does the
+// joint upsample itself and the upsample pass writes nothing: the same lit frame, one pass fewer.
+TEST_F(Upsample, TheCompositeUpsamplesInlineWhereNothingElseReadsTheFullResolutionAo) {
+    const Scene scene = loadScene("builtin:showcase");
+    for (const char* kind : {"auto", "none", "gaussian", "bilateral"})
+        for (const char* res : {"half", "quarter"}) {
+            const std::string what = std::string(kind) + " " + res;
+            const Settings s = with("vbao", kind, res, "joint");
+            auto separate = makeRenderer(scene, s, 160, 90);
+            separate->render();
+            const Image expected = readBack(separate->texture("composite"), 4);
+            auto fused = makeRenderer(scene, s, 160, 90);
+            fused->setWanted(std::set<std::string>{"composite"});
+            const std::vector<std::string> ran = fused->render().ran();
+            EXPECT_FALSE(fused->graph().current("ao.denoised")) << what; // left unwritten
+            if (std::string(kind) == "none") { // no filter: the denoise pass has nothing left to do
+                EXPECT_EQ(std::find(ran.begin(), ran.end(), "denoise"), ran.end()) << what;
+            }
+            const Image got = readBack(fused->texture("composite"), 4);
+            ASSERT_EQ(got.data.size(), expected.data.size()) << what;
+            size_t differ = 0;
+            for (size_t i = 0; i < got.data.size(); ++i)
+                differ += got.data[i] != expected.data[i];
+            EXPECT_EQ(differ, 0u) << what;
+            // Wanting ao.denoised again brings its pass back, with the same composite.
+            fused->setWanted(std::set<std::string>{"composite", "ao.denoised"});
+            fused->render();
+            EXPECT_TRUE(fused->graph().current("ao.denoised")) << what;
+            const Image again = readBack(fused->texture("composite"), 4);
+            EXPECT_EQ(again.data, expected.data) << what;
+            const Image ao = readBack(fused->texture("ao.denoised"), 1);
+            EXPECT_EQ(ao.data, readBack(separate->texture("ao.denoised"), 1).data) << what;
+        }
+    // Temporal accumulation needs ao.denoised as its history: never fused.
+    Settings t = with("vbao", "auto", "half", "joint");
+    setParam(t, "temporal.enabled", "true");
+    auto r = makeRenderer(scene, t, 160, 90);
+    r->setWanted(std::set<std::string>{"composite"});
+    r->render();
+    EXPECT_TRUE(r->graph().current("ao.denoised"));
 }
