@@ -293,31 +293,22 @@ void gbufferRows(Context& c, const Camera& cam, const std::string& view) {
         row.extra["targets_written"] = 3;
         c.run.rows.push_back(row);
     }
-    // The joint upsample fused into the composite: half-resolution AO, a composite view with
-    // nothing else reading ao.denoised (the app without the error or the readout), against the
-    // same view with ao.denoised wanted too (its own pass). Whole frame, forced.
+    // The joint upsample fused into the composite (skip.fused_upsample): half-resolution AO, a
+    // composite view with nothing else reading ao.denoised (the app without the error or the
+    // readout), against the same view with the upsample as its own pass. Whole frame, forced.
     {
-        Settings half = defaultSettings();
-        applyAssignment(half, "ao.resolution=half");
-        applyAssignment(half, "denoise.upsample=joint");
-        r.setSettings(half);
-        std::vector<double> gpu[2], wall[2];
-        Image out[2];
-        for (int f = -1; f < c.o.frames; ++f)
-            for (int k = 0; k < 2; ++k) {
-                if (k == 0)
-                    r.setWanted(std::set<std::string>{"composite"});
-                else
-                    r.setWanted(std::set<std::string>{"composite", "ao.denoised"});
-                const FrameTime t = timeFrame(r, true);
-                if (f == -1) out[k] = readBack(r.texture("composite"), 4);
-                if (f >= 0) gpu[k].push_back(t.all()), wall[k].push_back(t.wallMs);
-            }
+        Settings fused = defaultSettings();
+        applyAssignment(fused, "ao.resolution=half");
+        applyAssignment(fused, "denoise.upsample=joint");
+        Settings own = fused;
+        applyAssignment(fused, "skip.fused_upsample=true");
+        r.setWanted(std::set<std::string>{"composite"});
+        auto all = [](const FrameTime& t) { return t.all(); };
+        const AbResult f = compare(r, fused, own, c.o.frames, all, "composite");
         SkipRow row{"fused", c.scene, view, "half-res AO: joint upsample inside the composite (whole frame)",
                     "frame GPU ms"};
-        row.with = median(gpu[0]), row.without = median(gpu[1]);
-        row.wallWith = median(wall[0]), row.wallWithout = median(wall[1]);
-        row.errorChange = maxDiff(out[0], out[1], geometryMask(r));
+        row.with = f.a, row.without = f.b, row.wallWith = f.wallA, row.wallWithout = f.wallB;
+        row.errorChange = f.diff;
         c.run.rows.push_back(row);
         r.setSettings(on);
     }

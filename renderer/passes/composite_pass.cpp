@@ -10,7 +10,7 @@
 namespace ssao {
 
 bool CompositePass::fusesUpsample(const Settings& s) const {
-    return fuseAllowed_ && s.composite.useAo && resolutionScale(s.ao.resolution) < 1.0f &&
+    return fuseAllowed_ && s.skip.fusedUpsample && s.composite.useAo && resolutionScale(s.ao.resolution) < 1.0f &&
            effectiveDenoise(s).upsample == DenoiseUpsample::Joint && !s.temporal.enabled;
 }
 

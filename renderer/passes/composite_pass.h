@@ -23,9 +23,10 @@ class CompositePass final : public ConfiguredPass<CompositeConfig> {
     CompositeConfig config(const Settings& s, const FrameInfo& f) const override;
     // Whether nothing outside the graph reads this chain's ao.denoised (the renderer knows what
     // is wanted): then, where the settings call for the joint upsample of reduced AO without
-    // temporal accumulation, this pass upsamples inline and the denoise pass leaves
-    // ao.denoised unwritten - one full-resolution pass fewer (the issue's "fused where the view
-    // allows"). The composite is the same either way (tests/gl/test_upsample.cpp).
+    // temporal accumulation and skip.fused_upsample is on, this pass upsamples inline and the
+    // denoise pass leaves ao.denoised unwritten - one full-resolution pass fewer. The composite
+    // is the same either way (tests/gl/test_upsample.cpp); on llvmpipe the frame is no faster
+    // (`ssaolab skips`, row "fused"), hence off by default.
     void allowFusedUpsample(bool allowed) { fuseAllowed_ = allowed; }
     bool fusesUpsample(const Settings& s) const;
 

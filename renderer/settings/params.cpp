@@ -174,6 +174,12 @@ std::vector<Param> coreRows() {
         BOOL_ROW("skip.unused_targets", "Skip unused targets", skip.unusedTargets,
                  "The G-buffer writes only the targets that the technique, the denoiser, the composite or a "
                  "shown buffer reads (e.g. no albedo while only AO is shown)."),
+        BOOL_ROW("skip.fused_upsample", "Fused upsample", skip.fusedUpsample,
+                 "Reduced AO with the joint upsample: the composite upsamples it itself and the full-resolution AO "
+                 "is not written, wherever nothing else reads it (a composite view with the reference off and the "
+                 "cursor off the image); the same image. Off by default: on llvmpipe it saves nothing "
+                 "(`ssaolab skips`), and each time the cursor enters or leaves the image the graph changes.")
+            .onlyWhen("ao.resolution", {"half", "quarter"}),
     };
     return rows;
 }

@@ -66,7 +66,9 @@ vec3 aoNormal(AoCommon_ c, sampler2D positions, sampler2D normals, vec2 uv, vec3
 // the camera two scene radii away and AO_RESULT discards it: the same image, and the time shows
 // what the skip saves (`ssaolab skips`). A uniform, not a shader variant: geometry pixels run the
 // same compiled code either way (two variants may round a multiply-add differently and flip a
-// sample's depth test).
+// sample's depth test). The optional inputs (pyramid, guard band, back-face layer, normals from
+// depth) are variants instead (AO_* defines, ao_pass.cpp aoFeatureDefines): they are other
+// settings, not a skip measured against the same frame, and on llvmpipe a uniform branch costs.
 #define AO_SKY_EARLY_OUT(P4, uv)                                                                   \
     bool aoSky = P4.w == 0.0;                                                                      \
     if (aoSky && ssao.aoCommon.flags.x != 0.0) {                                                   \

@@ -7,8 +7,9 @@
 // The optional inputs (pyramid, guard band, back-face layer) are compiled in only where the
 // constants enable them: AO_PYRAMID, AO_BAND and AO_BACK_DEPTH are defined from the packed block
 // itself (renderer/techniques/ao_pass.cpp, aoFeatureDefines), so a variant never disagrees with
-// its constants. A branch on a uniform is not free on llvmpipe: with all three compiled in and off,
-// the bitmask's AO took 97-101 ms against 75-82 ms without (CornellBox 1172x616, 32 taps a pixel).
+// its constants. A branch on a uniform is not free on llvmpipe: with all of them compiled in and off,
+// the bitmask's AO took 105.5 / 114.9 ms against 78.6 / 77.3 ms without (one A/B run, CornellBox
+// 1172x616, vbao-medium's 32 taps a pixel; the same AO to the last bit).
 
 layout(binding = SSAO_TEX_POSITION_MIPS) uniform sampler2D aoPositionMips;
 

@@ -257,6 +257,11 @@ TEST_F(Passes, NoDenoiserAtFullResolutionIsAnExactCopyOfTheRawAo) {
                 auto r = makeRenderer(scene_, s, 160, 90);
                 const std::vector<std::string> ran = r->render().ran();
                 EXPECT_NE(std::find(ran.begin(), ran.end(), "denoise"), ran.end()) << t.id;
+                // A copy: no scratch target, no depth read for the sky (the raw AO is 1 there).
+                EXPECT_EQ(r->graph().find("denoise.tmp"), nullptr) << t.id;
+                const PassDecl* d = r->graph().declaration("denoise");
+                ASSERT_NE(d, nullptr);
+                EXPECT_EQ(std::find(d->reads.begin(), d->reads.end(), "gbuffer.depth"), d->reads.end()) << t.id;
                 Rendered out = readAll(*r);
                 ASSERT_EQ(out.ao.data.size(), out.aoRaw.data.size()) << t.id;
                 EXPECT_TRUE(finiteInRange(out.aoRaw, 0.0f, 1.0f)) << t.id << " power " << power;
@@ -268,6 +273,34 @@ TEST_F(Passes, NoDenoiserAtFullResolutionIsAnExactCopyOfTheRawAo) {
                 EXPECT_EQ(differ, 0u) << t.id << " power " << power << " skip.sky " << sky;
                 EXPECT_EQ(skyNotOne, 0u) << t.id << " power " << power << " skip.sky " << sky;
             }
+}
+
+// The optional AO inputs are compiled in only where their settings enable them (AO_* defines,
+// ao_pass.cpp aoFeatureDefines): each one, switched on, must reach the AO.
+TEST_F(Passes, EachOptionalAoInputReachesTheAoWhenSwitchedOn) {
+    for (const char* technique : {"vbao", "gtao", "hbao", "sao"}) {
+        const std::string t = technique;
+        // {settings both frames share, the input switched on in the second}
+        std::vector<std::pair<std::string, std::string>> cases = {
+            {"ao.radius_scene=0.15", "gbuffer.guard_band_px=32"},
+            {"ao.radius_scene=0.15", t + ".pyramid=true"}, // far taps: the pyramid's coarser levels
+            {"ao.radius_scene=0.15", "ao.normals=depth"}};
+        // Only the bitmask has a thickness; a thin assumed one lets the true one show.
+        if (t == "vbao") cases.push_back({"vbao.thickness=0.1", "gbuffer.back_faces=true"});
+        for (const auto& [common, on] : cases) {
+            Settings base = defaultSettings();
+            setParam(base, "ao.technique", technique);
+            applyAssignment(base, common);
+            const Rendered ref = render("builtin:showcase", base, 320, 180);
+            Settings s = base;
+            applyAssignment(s, on);
+            const Rendered out = render("builtin:showcase", s, 320, 180);
+            size_t differ = 0;
+            for (size_t i = 0; i < out.aoRaw.data.size(); ++i)
+                differ += out.aoRaw.data[i] != ref.aoRaw.data[i];
+            EXPECT_GT(differ, 0u) << t << " " << on;
+        }
+    }
 }
 
 TEST_F(Passes, ChainBOffAndOnAgainRendersIntoItsNewBuffers) {

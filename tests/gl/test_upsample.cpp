@@ -100,14 +100,23 @@ TEST_F(Upsample, TheCompositeUpsamplesInlineWhereNothingElseReadsTheFullResoluti
     for (const char* kind : {"auto", "none", "gaussian", "bilateral"})
         for (const char* res : {"half", "quarter"}) {
             const std::string what = std::string(kind) + " " + res;
-            const Settings s = with("vbao", kind, res, "joint");
+            Settings s = with("vbao", kind, res, "joint");
+            setParam(s, "skip.fused_upsample", "true");
             auto separate = makeRenderer(scene, s, 160, 90);
             separate->render();
             const Image expected = readBack(separate->texture("composite"), 4);
             auto fused = makeRenderer(scene, s, 160, 90);
             fused->setWanted(std::set<std::string>{"composite"});
+            fused->render();
+            // A sentinel in ao.denoised survives a forced frame: the upsample pass wrote nothing.
+            const float sentinel = 7.0f;
+            glClearTexImage(fused->texture("ao.denoised").id(), 0, GL_RED, GL_FLOAT, &sentinel);
+            fused->invalidate();
             const std::vector<std::string> ran = fused->render().ran();
-            EXPECT_FALSE(fused->graph().current("ao.denoised")) << what; // left unwritten
+            EXPECT_FALSE(fused->graph().current("ao.denoised")) << what;
+            const Image untouched = readBack(fused->texture("ao.denoised"), 1);
+            EXPECT_EQ(std::count(untouched.data.begin(), untouched.data.end(), sentinel), long(untouched.data.size()))
+                << what;
             if (std::string(kind) == "none") { // no filter: the denoise pass has nothing left to do
                 EXPECT_EQ(std::find(ran.begin(), ran.end(), "denoise"), ran.end()) << what;
             }
@@ -126,11 +135,20 @@ TEST_F(Upsample, TheCompositeUpsamplesInlineWhereNothingElseReadsTheFullResoluti
             const Image ao = readBack(fused->texture("ao.denoised"), 1);
             EXPECT_EQ(ao.data, readBack(separate->texture("ao.denoised"), 1).data) << what;
         }
-    // Temporal accumulation needs ao.denoised as its history: never fused.
+    // Temporal accumulation needs ao.denoised as its history, and the setting is off by default:
+    // neither is fused (the upsample pass writes over the sentinel).
     Settings t = with("vbao", "auto", "half", "joint");
+    setParam(t, "skip.fused_upsample", "true");
     setParam(t, "temporal.enabled", "true");
-    auto r = makeRenderer(scene, t, 160, 90);
-    r->setWanted(std::set<std::string>{"composite"});
-    r->render();
-    EXPECT_TRUE(r->graph().current("ao.denoised"));
+    for (const Settings& s : {t, with("vbao", "auto", "half", "joint")}) {
+        auto r = makeRenderer(scene, s, 160, 90);
+        r->setWanted(std::set<std::string>{"composite"});
+        r->render();
+        const float sentinel = 7.0f;
+        glClearTexImage(r->texture("ao.denoised").id(), 0, GL_RED, GL_FLOAT, &sentinel);
+        r->invalidate();
+        r->render();
+        const Image ao = readBack(r->texture("ao.denoised"), 1);
+        EXPECT_EQ(std::count(ao.data.begin(), ao.data.end(), sentinel), 0);
+    }
 }

@@ -73,7 +73,7 @@ void main() {
                 // Off the frame, on the sky, the pixel itself or beyond the radius: hides nothing.
                 // One select at the end rather than a branch per case: llvmpipe runs every side of a
                 // branch its lanes disagree on, so the branches only cost (measured: CornellBox
-                // 1172x616, the bitmask's AO 73.7-74.7 -> 61.9-62.5 ms; GTAO 40 -> 34-35, HBAO 25 -> 21-22, SAO 22-23 -> 20; the same AO to the last bit).
+                // 1172x616, one A/B run: the bitmask's AO 73.7 / 74.7 -> 61.9 / 62.5 ms; GTAO 40 -> 34-35, HBAO 25 -> 21-22, SAO 22-23 -> 20; the same AO to the last bit).
                 bool counts = held && S.w != 0.0 && dist > 0.0 && dist <= R;
                 front = aoSliceDelta(sl, front); // the angles in the slice plane (slice.glsl)
                 // Along the view ray through it: the assumed thickness, or the true one where the
