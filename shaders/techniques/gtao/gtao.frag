@@ -50,7 +50,10 @@ void main() {
         vec2 omega = sl.omega;
         float projNLen = sl.projNLen, cosNorm = sl.cosN, n = sl.n; // n: the normal's angle from V
         // With no occluder the horizons are the tangent plane: n ± π/2.
-        float lowCos0 = cos(n + HALF_PI), lowCos1 = cos(n - HALF_PI);
+        // cos(n ± π/2) = ∓sin n, and sin n = ±sqrt(1 - cos² n): no trigonometry (measured: CornellBox
+        // 1172x616 gtao-medium AO 29.9-34.4 -> 27.2-28.7 ms).
+        float sinN = sign(n) * sqrt(max(1.0 - cosNorm * cosNorm, 0.0));
+        float lowCos0 = -sinN, lowCos1 = sinN;
         float hCos0 = lowCos0, hCos1 = lowCos1;
         for (int step = 0; step < steps; ++step) {
             float s = pow((float(step) + noise.y) / float(steps), ssao.search.w) + minS;
@@ -90,7 +93,6 @@ void main() {
         float h0 = -safeAcos(hCos1), h1 = safeAcos(hCos0);
         h0 = n + clamp(h0 - n, -HALF_PI, HALF_PI);
         h1 = n + clamp(h1 - n, -HALF_PI, HALF_PI);
-        float sinN = sin(n);
         float iarc0 = (cosNorm + 2.0 * h0 * sinN - cos(2.0 * h0 - n)) * 0.25;
         float iarc1 = (cosNorm + 2.0 * h1 * sinN - cos(2.0 * h1 - n)) * 0.25;
         visibility += projNLen * (iarc0 + iarc1);
