@@ -74,6 +74,8 @@ gl::Defines aoFeatureDefines(const gpu::AoCommon& c) {
     if (inputs & SSAO_AO_BAND) defs.push_back({"AO_BAND", "1"});
     if (inputs & SSAO_AO_BACK_DEPTH) defs.push_back({"AO_BACK_DEPTH", "1"});
     if (int(c.estimator.z) == SSAO_NORMALS_DEPTH) defs.push_back({"AO_NORMALS_DEPTH", "1"});
+    defs.push_back({"AO_NOISE", std::to_string(int(c.estimator.y))}); // the kind as a constant (noise.glsl)
+    if (c.estimator.x == 1.0f) defs.push_back({"AO_POWER_ONE", "1"});
     return defs;
 }
 

@@ -8,8 +8,14 @@ float aoRadius(AoCommon_ c, float depth) {
 }
 
 // Seed 001's contrast: AO = visibility^power (its 1 - (1 - occ/N)^power is the occlusion).
+// AO_POWER_ONE (ao_pass.cpp aoFeatureDefines, where the packed power is 1): no pow, which on
+// llvmpipe is an exp2 and a log2 per pixel and returns x only to rounding.
 float aoFinish(AoCommon_ c, float visibility) {
+#ifdef AO_POWER_ONE
+    return clamp(visibility, 0.0, 1.0);
+#else
     return pow(clamp(visibility, 0.0, 1.0), c.estimator.x);
+#endif
 }
 
 // The G-buffer texel an AO pixel stands for, as a uv at that texel's centre. At half or quarter

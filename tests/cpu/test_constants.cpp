@@ -105,19 +105,30 @@ TEST(AoCommon, RadiusInEachModeInWorldUnitsAndPixels) {
 // The AO shader variant follows the packed words it runs with, so an input the block enables is
 // always compiled in and one it leaves off never is.
 TEST(AoCommon, FeatureDefinesFollowThePackedBlock) {
-    auto has = [](const gl::Defines& d, const char* name) {
+    auto value = [](const gl::Defines& d, const char* name) -> std::string {
         for (const auto& [k, v] : d)
-            if (k == name) return true;
-        return false;
+            if (k == name) return v;
+        return "";
     };
+    auto has = [&](const gl::Defines& d, const char* name) { return !value(d, name).empty(); };
     Settings s = defaultSettings();
     FrameInfo f;
     f.width = 64, f.height = 32;
     f.constants.proj = glm::perspective(1.0f, 2.0f, 0.1f, 10.0f);
-    EXPECT_TRUE(aoFeatureDefines(aoCommonFor(s, f, AoNoise::Ign, 0.0f)).empty());
-    const gl::Defines pyr = aoFeatureDefines(aoCommonFor(s, f, AoNoise::Ign, 3.3f));
-    EXPECT_TRUE(has(pyr, "AO_PYRAMID"));
-    EXPECT_EQ(pyr.size(), 1u);
+    const gpu::AoCommon plain = aoCommonFor(s, f, AoNoise::Ign, 0.0f);
+    const gl::Defines none = aoFeatureDefines(plain);
+    EXPECT_FALSE(has(none, "AO_PYRAMID") || has(none, "AO_BAND") || has(none, "AO_BACK_DEPTH") ||
+                 has(none, "AO_NORMALS_DEPTH"));
+    EXPECT_EQ(value(none, "AO_NOISE"), std::to_string(int(plain.estimator.y))); // the packed kind
+    EXPECT_EQ(value(none, "AO_NOISE"), std::to_string(SSAO_NOISE_IGN));
+    EXPECT_EQ(value(aoFeatureDefines(aoCommonFor(s, f, AoNoise::Blue, 0.0f)), "AO_NOISE"),
+              std::to_string(SSAO_NOISE_BLUE));
+    EXPECT_EQ(has(none, "AO_POWER_ONE"), plain.estimator.x == 1.0f);
+    EXPECT_TRUE(has(aoFeatureDefines(aoCommonFor(s, f, AoNoise::Ign, 3.3f)), "AO_PYRAMID"));
+    s.ao.power = 2.0f;
+    EXPECT_FALSE(has(aoFeatureDefines(aoCommonFor(s, f, AoNoise::Ign, 0.0f)), "AO_POWER_ONE"));
+    s.ao.power = 1.0f;
+    EXPECT_TRUE(has(aoFeatureDefines(aoCommonFor(s, f, AoNoise::Ign, 0.0f)), "AO_POWER_ONE"));
     s.gbuffer.guardBandPx = 16;
     s.gbuffer.backFaces = true;
     s.ao.normals = NormalSource::Depth;
