@@ -260,7 +260,11 @@ void Renderer::setWanted(std::optional<std::set<std::string>> buffers) {
     if (buffers) buffers->insert("gbuffer.depth");
     const bool fuseA = buffers && !buffers->count(Chain::a().res("ao.denoised"));
     const bool fuseB = buffers && !buffers->count(Chain::b().res("ao.denoised"));
-    if (fuseA != fuseA_ || fuseB != fuseB_) graphStale_ = true; // the composite's inputs change
+    // The composite's inputs change only where its chain has skip.fused_upsample on: otherwise the
+    // cursor crossing the image (the readout then wants every buffer) rebuilds nothing.
+    if ((fuseA != fuseA_ && settings_.skip.fusedUpsample) ||
+        (fuseB != fuseB_ && settingsB_ && settingsB_->skip.fusedUpsample))
+        graphStale_ = true;
     fuseA_ = fuseA;
     fuseB_ = fuseB;
     graph_.setWanted(std::move(buffers));

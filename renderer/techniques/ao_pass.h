@@ -51,8 +51,9 @@ void declareAoInputs(PassBuilder& b, const Chain& chain, const Settings& s, cons
 
 // The shader variant for a packed block: AO_PYRAMID, AO_BAND, AO_BACK_DEPTH and AO_NORMALS_DEPTH
 // for the optional inputs and the depth-normal estimator the block enables (position_taps.glsl,
-// ao_common.glsl), AO_NOISE for its noise kind (noise.glsl) and AO_POWER_ONE for a power of 1. Derived from the packed words themselves, so the variant cannot disagree with
-// its constants; what they leave off is not compiled in (a uniform branch is not free on llvmpipe).
+// ao_common.glsl), AO_NOISE for its noise kind (noise.glsl) and AO_POWER_ONE for a power of 1.
+// Derived from the packed words themselves, so the variant cannot disagree with its constants;
+// what they leave off is not compiled in (a uniform branch is not free on llvmpipe).
 gl::Defines aoFeatureDefines(const gpu::AoCommon& c);
 
 // GL state an AO pass keeps: the blue-noise tile (made on first use) and the inspector's probe.

@@ -141,6 +141,16 @@ TEST_F(Upsample, TheCompositeUpsamplesInlineWhereNothingElseReadsTheFullResoluti
             const Image ao = readBack(fused->texture("ao.denoised"), 1);
             EXPECT_EQ(ao.data, readBack(separate->texture("ao.denoised"), 1).data) << what;
         }
+    // With the setting off, wanting ao.denoised or not (the cursor crossing the image) re-runs nothing.
+    {
+        auto r = makeRenderer(scene, with("vbao", "auto", "half", "joint"), 160, 90);
+        r->setWanted(std::set<std::string>{"composite"});
+        r->render();
+        r->setWanted(std::set<std::string>{"composite", "ao.denoised"});
+        EXPECT_TRUE(r->render().ran().empty());
+        r->setWanted(std::set<std::string>{"composite"});
+        EXPECT_TRUE(r->render().ran().empty());
+    }
     // Temporal accumulation needs ao.denoised as its history, and the setting is off by default:
     // neither is fused (the upsample pass writes over the sentinel).
     Settings t = with("vbao", "auto", "half", "joint");
