@@ -11,26 +11,42 @@ bool needsFit(const ResourceDesc& d, const ViewStyle& style) {
     return style.fit || d.display == Display::Scalar || d.display == Display::Vector;
 }
 
-DisplayRange displayRange(const Image& img, const ResourceDesc& d, const Image* mask,
-                          const ViewStyle& style) {
+size_t fitStride(size_t pixels) { return std::max<size_t>(1, pixels / 65536); }
+
+std::vector<FitSample> fitSamples(const Image& img, const Image* mask) {
+    const size_t pixels = size_t(img.width) * size_t(img.height);
+    const size_t stride = fitStride(pixels);
+    std::vector<FitSample> out;
+    out.reserve(pixels / stride + 1);
+    for (size_t p = 0; p < pixels; p += stride) {
+        const int x = int(p % size_t(img.width)), y = int(p / size_t(img.width));
+        FitSample s(0.0f, 0.0f, 0.0f, 1.0f);
+        for (int c = 0; c < std::min(3, img.channels); ++c)
+            s[c] = img.at(x, y, c);
+        if (mask) s.w = mask->at(mapPixel(x, img.width, mask->width), mapPixel(y, img.height, mask->height));
+        out.push_back(s);
+    }
+    return out;
+}
+
+DisplayRange displayRange(const Image& img, const ResourceDesc& d, const Image* mask, const ViewStyle& style) {
+    if (!needsFit(d, style)) return fitRange({}, img.channels, d, style); // the natural range
+    return fitRange(fitSamples(img, mask), img.channels, d, style);
+}
+
+DisplayRange fitRange(const std::vector<FitSample>& samples, int imageChannels, const ResourceDesc& d,
+                      const ViewStyle& style) {
     DisplayRange r;
     if (d.display == Display::Direction) r = {glm::vec3(-1.0f), glm::vec3(1.0f), false};
     if (d.display == Display::Signed) r = {glm::vec3(-kSignedRange), glm::vec3(kSignedRange), false};
     if (!needsFit(d, style)) return r;
     const bool vector = d.display == Display::Vector || d.display == Display::Direction;
-    const int channels = vector ? std::min(3, img.channels) : 1;
-    // At most ~65k pixels: a strided subset keeps the fit cheap, and the app and the PNG get the
-    // same result (both call this on the same read-back image).
-    const size_t pixels = size_t(img.width) * size_t(img.height);
-    const size_t stride = std::max<size_t>(1, pixels / 65536);
+    const int channels = vector ? std::min(3, imageChannels) : 1;
     std::vector<float> values[3];
-    for (size_t p = 0; p < pixels; p += stride) {
-        const int x = int(p % size_t(img.width)), y = int(p / size_t(img.width));
-        if (mask &&
-            !(mask->at(mapPixel(x, img.width, mask->width), mapPixel(y, img.height, mask->height)) > 0.0f))
-            continue;
+    for (const FitSample& s : samples) {
+        if (!(s.w > 0.0f)) continue; // not geometry
         for (int c = 0; c < channels; ++c) {
-            const float v = img.at(x, y, c) * d.decodeScale + d.decodeOffset;
+            const float v = s[c] * d.decodeScale + d.decodeOffset;
             if (std::isfinite(v)) values[c].push_back(v);
         }
     }

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include <string>
+#include <vector>
 
 namespace ssao {
 
@@ -32,6 +33,18 @@ struct DisplayRange {
 // natural when the kind has one and !style.fit, else [p1, p99] of the decoded data channels over
 // pixels where `mask` (any resolution; channel 0 > 0) marks geometry.
 DisplayRange displayRange(const Image& img, const ResourceDesc& d, const Image* mask, const ViewStyle& style);
+// The pixels a fit reads: every fitStride(w h)-th pixel of the image in row-major order from the
+// top row, at most ~65k of them (a fit over all of them would cost the same result to a few 1e-3).
+size_t fitStride(size_t pixels);
+// One pixel a fit reads: its raw texel (channels x, y, z, undecoded) and, in w, the mask's value
+// at that pixel (1 without a mask).
+using FitSample = glm::vec4;
+// The samples of `img` at the pixels above, in that order. The GPU picks the same texels itself
+// (display/fit_samples.h), so the app reads back ~65k texels instead of the whole buffer.
+std::vector<FitSample> fitSamples(const Image& img, const Image* mask);
+// displayRange() over samples: the same result for the same samples.
+DisplayRange fitRange(const std::vector<FitSample>& samples, int imageChannels, const ResourceDesc& d,
+                      const ViewStyle& style);
 // Whether displayRange() needs the buffer's pixels (false: the natural range is used).
 bool needsFit(const ResourceDesc& d, const ViewStyle& style);
 // "0.25 .. 7.9 scene units (fitted)" (vectors: one range per channel) — printed on the view.

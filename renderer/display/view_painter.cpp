@@ -30,8 +30,8 @@ DisplayRange ViewPainter::paint(const Resource& r, const Resource& mask, const V
             range = *keep;
         else if (raw)
             range = displayRange(*raw, d, &maskImage(mask), style);
-        else
-            range = displayRange(readBack(r.texture, std::max(1, d.channels)), d, &maskImage(mask), style);
+        else // the fit's ~65k texels picked on the GPU: the same range as a read-back of all of r
+            range = fitRange(picker_.pick(r.texture, mask.texture, shaders, tri), std::max(1, d.channels), d, style);
     } else {
         range = displayRange(Image{}, d, nullptr, style);
     }

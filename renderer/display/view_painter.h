@@ -3,6 +3,7 @@
 // from here, so they can never disagree.
 #pragma once
 #include "display/display_range.h"
+#include "display/fit_samples.h"
 #include "gl/resources.h"
 #include "graph/resource.h"
 
@@ -18,7 +19,7 @@ class ViewPainter {
     // pixels wide at r's aspect (a grid cell: each output pixel takes the texel at its centre, so a
     // thumbnail costs its own pixels, not the buffer's); `mask` marks geometry (gbuffer.depth > 0).
     // When its range must be fitted, uses `keep` if given (no read-back), else `raw` (r read back,
-    // undecoded), else reads r back itself. Returns the range used.
+    // undecoded), else reads back the texels a fit reads (display/fit_samples.h). Returns the range used.
     DisplayRange paint(const Resource& r, const Resource& mask, const ViewStyle& style, gl::RenderTarget& out,
                        gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri,
                        const Image* raw = nullptr, int maxWidth = 0, const DisplayRange* keep = nullptr);
@@ -30,6 +31,7 @@ class ViewPainter {
 
   private:
     const Image& maskImage(const Resource& mask);
+    FitSamplePicker picker_;
     Image mask_;
     uint64_t maskVersion_ = 0;
     unsigned maskGeneration_ = 0;

@@ -96,3 +96,35 @@ TEST_F(Views, NanIsMagentaAndFalseColourIsViridis) {
     painter.paint(src, mask, ViewStyle{}, view, shaders, tri);
     EXPECT_NEAR(readBack(view.texture(), 3).at(3, 0, 1), 0.5f, 0.01f); // grey: value as is
 }
+
+// The app fits a range from ~65k texels picked on the GPU (display/fit_samples.h) instead of reading
+// the whole buffer back: the same texels, so the same range as the PNG previews' fit of the whole
+// read-back image, to the bit, for every buffer of the frame (reduced-resolution AO included, whose
+// geometry mask is at another size), at sizes where the fit strides and where it does not.
+TEST_F(Views, GpuPickedFitEqualsTheFitOfTheWholeReadBack) {
+    for (const char* rel : {"CornellBox/cornellBox.gltf", "2CylinderEngine/2CylinderEngine.gltf"})
+        for (const glm::ivec2 size : {glm::ivec2(333, 201), glm::ivec2(640, 360), glm::ivec2(200, 100)}) {
+            Settings s = defaultSettings();
+            s.ao.resolution = AoResolution::Half;
+            auto r = makeRenderer(loadScene(std::string(SSAOLAB_SCENES_DIR) + "/" + rel), s, size.x, size.y);
+            r->render();
+            ViewPainter painter;
+            gl::RenderTarget view;
+            const Resource& mask = r->resource("gbuffer.depth");
+            int fitted = 0;
+            for (const Resource* res : r->buffers()) {
+                const ViewStyle style{true, false}; // fit every buffer, not only depth and positions
+                const Image raw = readBack(res->texture, std::max(1, res->desc.channels));
+                const DisplayRange whole = painter.paint(*res, mask, style, view, r->shaders(), r->triangle(), &raw);
+                const DisplayRange picked = painter.paint(*res, mask, style, view, r->shaders(), r->triangle());
+                const std::string what = std::string(rel) + " " + res->desc.name + " " + std::to_string(size.x);
+                EXPECT_EQ(picked.fitted, whole.fitted) << what;
+                for (int c = 0; c < 3; ++c) {
+                    EXPECT_EQ(picked.lo[c], whole.lo[c]) << what << " channel " << c;
+                    EXPECT_EQ(picked.hi[c], whole.hi[c]) << what << " channel " << c;
+                }
+                fitted += whole.fitted;
+            }
+            EXPECT_GE(fitted, 5) << rel; // depth, positions, z-buffer, the AO at both stages...
+        }
+}
