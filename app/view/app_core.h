@@ -142,6 +142,10 @@ std::string referenceTag(const FrameDriver& frames); // rays per pixel so far, f
 // or for any other buffer. Views cover such a buffer with this text, the readout prints "-".
 std::string referenceEmptyReason(const FrameDriver& frames, const std::string& buffer);
 void rememberRect(ViewState& view, const std::string& key); // the last item's rectangle, for tests
+// A window of the fixed layout (the three tile the screen): drawn without a background of its own,
+// the clear beneath it (clearUiBackground) is its background.
 void beginFixedWindow(const char* name, ImVec2 pos, ImVec2 size, ImGuiWindowFlags extra = 0);
+// Clears the bound framebuffer to the style's window colour, opaque: the fixed windows' background.
+void clearUiBackground();
 
 } // namespace ssao

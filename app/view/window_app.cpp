@@ -160,8 +160,7 @@ class FrameLoop {
         glfwGetFramebufferSize(window_, &fw, &fh);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, fw, fh);
-        glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
+        clearUiBackground();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         ++frame_;
         if (g_screenshotRequested) f12Screenshot(fw, fh);

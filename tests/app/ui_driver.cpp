@@ -41,7 +41,7 @@ void UiDriver::frame(float x, float y, bool down) {
     app_->drawUi();
     ImGui::Render();
     target_.bind();
-    glClear(GL_COLOR_BUFFER_BIT);
+    ssao::clearUiBackground(); // as the app does (window_app.cpp)
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
