@@ -34,7 +34,7 @@ struct DisplayRange {
 // pixels where `mask` (any resolution; channel 0 > 0) marks geometry.
 DisplayRange displayRange(const Image& img, const ResourceDesc& d, const Image* mask, const ViewStyle& style);
 // The pixels a fit reads: every fitStride(w h)-th pixel of the image in row-major order from the
-// top row, at most ~65k of them (a fit over all of them would cost the same result to a few 1e-3).
+// top row, at most ~65k of them (a strided subset keeps the fit cheap).
 size_t fitStride(size_t pixels);
 // One pixel a fit reads: its raw texel (channels x, y, z, undecoded) and, in w, the mask's value
 // at that pixel (1 without a mask).

@@ -1,9 +1,10 @@
 #version 450 core
 // Picks the texels a display-range fit reads (renderer/display/display_range.h fitSamples), so the
 // app reads back ~65k texels instead of a whole buffer (a 1172x616 RGBA32F position buffer cost
-// ~10 ms of a still frame's read-backs on llvmpipe). Output texel i (row-major, kFitSamplesWidth
-// wide) holds pixel p = i * stride of the source in row-major order from the top row, and in w the
-// mask at that pixel (mapPixel of output/image.h, in integers as there); past the last sample, 0.
+// ~10 ms of a still frame's read-backs on llvmpipe). Output texel i (row-major, uWidth =
+// FitSamplePicker::kWidth wide) holds pixel p = i * stride of the source in row-major order from
+// the top row, and in w the mask at that pixel (mapPixel of output/image.h, in integers as
+// there); past the last sample, 0.
 #include "include/bindings.h"
 
 layout(binding = SSAO_TEX_VIEW_SOURCE) uniform sampler2D src;
