@@ -272,6 +272,21 @@ void gbufferRows(Context& c, const Camera& cam, const std::string& view) {
     cull.errorChange = ab.diff;
     cull.extra = k["gbuffer"];
     c.run.rows.push_back(cull);
+    // The hidden side of closed shells culled (skip.hidden_faces), everything wanted as above.
+    {
+        Settings whole = on;
+        whole.skip.hiddenFaces = false;
+        const AbResult f = compare(r, on, whole, c.o.frames, gb, "gbuffer.position");
+        r.setSettings(on);
+        r.invalidate();
+        const FrameReport ffr = r.render();
+        const nlohmann::json fk = skipCounters(captureFrame(r, {}, false), ffr);
+        SkipRow row{"faces", c.scene, view, "hidden faces of closed shells", "G-buffer GPU ms"};
+        row.with = f.a, row.without = f.b, row.wallWith = f.wallA, row.wallWithout = f.wallB;
+        row.errorChange = f.diff;
+        row.extra = fk["gbuffer"];
+        c.run.rows.push_back(row);
+    }
     // Demand: a view of the AO alone (the app's single AO view, `bench`) culls the composite and
     // the albedo target; whole frame, forced, against the same frame with everything wanted.
     {

@@ -90,6 +90,16 @@ std::string skipsMarkdown(const SkipsRun& run) {
                change(r.errorChange) + " |";
     });
 
+    table(md, "Hidden faces of closed solids culled in the G-buffer (skip.hidden_faces)",
+          "| scene | view | triangles drawn with culling | G-buffer ms with | without | ratio | wall ms with / without | output change |",
+          "|---|---|---:|---:|---:|---:|---:|---|");
+    rows(md, run, "faces", [](const SkipRow& r) {
+        const double t = r.extra.value("triangles", 0.0), tf = r.extra.value("triangles_face_culled", 0.0);
+        return "| " + r.scene + " | " + r.view + " | " + num(tf, "%.0f") + " of " + num(t, "%.0f") + " | " +
+               num(r.with) + " | " + num(r.without) + " | " + ratio(r) + " | " + num(r.wallWith, "%.1f") + " / " +
+               num(r.wallWithout, "%.1f") + " | " + change(r.errorChange) + " |";
+    });
+
     table(md, "G-buffer targets nothing reads",
           "| scene | view | case | colour targets written | G-buffer ms with | all 4 written | ratio | output change |",
           "|---|---|---|---:|---:|---:|---:|---|");

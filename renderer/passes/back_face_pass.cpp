@@ -27,8 +27,8 @@ void BackFacePass::run(PassContext& ctx, const BackFaceConfig& c) {
     const bool reversed = c.frame.camera.y != 0.0f;
     const SceneDrawState state(reversed, 1); // no face culling: facing by the normal, in the shader
     const glm::mat4 viewProj = c.frame.proj * c.frame.view;
-    ctx.scene()->draw(scenePrograms(ctx, "passes/gbuffer.vert", "passes/back_faces.frag", {}, -1), c.cull ? &viewProj : nullptr,
-                      reversed);
+    ctx.scene()->draw(scenePrograms(ctx, "passes/gbuffer.vert", "passes/back_faces.frag", {}, -1),
+                      {&viewProj, reversed, c.cull != 0, false}); // the back faces are what it keeps
 }
 
 } // namespace ssao

@@ -41,6 +41,7 @@ GBufferConfig GBufferPass::config(const Settings& s, const FrameInfo& f) const {
     c.normalUnorm = s.gbuffer.normalFormat == TargetFormat::RGBA8;
     c.cull = s.skip.cull;
     c.skipUnused = s.skip.unusedTargets;
+    c.hiddenFaces = s.skip.hiddenFaces;
     c.sceneVersion = f.sceneVersion;
     return c;
 }
@@ -80,7 +81,7 @@ void GBufferPass::run(PassContext& ctx, const GBufferConfig& c) {
     // Location 0 is uBaseColor; without the albedo target it is compiled out (-1: ignored).
     const bool albedo = std::find(outputs.begin(), outputs.end(), "gbuffer.albedo") != outputs.end();
     const ScenePrograms programs = scenePrograms(ctx, "passes/gbuffer.vert", "passes/gbuffer.frag", defs, albedo ? 0 : -1);
-    stats_ = ctx.scene()->draw(programs, c.cull ? &viewProj : nullptr, reversed);
+    stats_ = ctx.scene()->draw(programs, {&viewProj, reversed, c.cull != 0, c.hiddenFaces != 0});
 }
 
 ScenePrograms scenePrograms(PassContext& ctx, const std::string& vert, const std::string& frag, gl::Defines defines,
@@ -121,6 +122,7 @@ std::vector<std::pair<std::string, double>> GBufferPass::counters() const {
         {"draws_culled", double(stats_.culled)},
         {"triangles", double(stats_.triangles)},
         {"triangles_culled", double(stats_.trianglesCulled)},
+        {"triangles_face_culled", double(stats_.trianglesFaceCulled)},
         {"targets_written", double(written_.size())},
         {"targets_skipped", double(4 - written_.size())}};
     return c;

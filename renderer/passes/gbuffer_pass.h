@@ -13,6 +13,7 @@ struct GBufferConfig {
     int32_t normalUnorm;       // normals stored as (n+1)/2 (the rgba8 format's shader variant)
     int32_t cull;              // skip.cull: draws outside the view are not issued
     int32_t skipUnused;        // skip.unused_targets: targets nothing reads are not written
+    int32_t hiddenFaces;       // skip.hidden_faces: closed shells' hidden sides are culled
     uint32_t sceneVersion;     // what it draws
 };
 SSAO_CONFIG_END
@@ -42,7 +43,8 @@ ScenePrograms scenePrograms(PassContext& ctx, const std::string& vert, const std
 // The state every pass that draws the scene needs, for its scope: the bound framebuffer's first
 // `colourTargets` colour attachments cleared to 0 (w = 0: sky), its depth cleared to the far end of
 // the mapping, the depth test of the mapping (reversed-Z: GREATER, clip control [0, 1], 1 at near;
-// scene/camera.h) and no face culling (glTF doubleSided and CAD winding: shade what is visible).
+// scene/camera.h) and no face culling (glTF doubleSided and CAD winding: shade what is visible;
+// GpuScene::draw culls only the faces closed shells hide, and only when asked).
 // The other passes draw with the default state again once it goes.
 class SceneDrawState {
   public:

@@ -38,6 +38,7 @@ GuardBandConfig GuardBandPass::config(const Settings& s, const FrameInfo& f) con
     const float w = float(f.width + 2 * band_), h = float(f.height + 2 * band_);
     c.frame.viewport = glm::vec4(w, h, 1.0f / w, 1.0f / h);
     c.cull = s.skip.cull;
+    c.hiddenFaces = s.skip.hiddenFaces;
     c.sceneVersion = f.sceneVersion;
     return c;
 }
@@ -57,7 +58,7 @@ void GuardBandPass::run(PassContext& ctx, const GuardBandConfig& c) {
     } restore{GLuint(previous)};
     const glm::mat4 viewProj = c.frame.proj * c.frame.view;
     ctx.scene()->draw(scenePrograms(ctx, "passes/gbuffer.vert", "passes/gbuffer.frag", {{"WRITE_POSITION", "0"}}, -1),
-                      c.cull ? &viewProj : nullptr, reversed);
+                      {&viewProj, reversed, c.cull != 0, c.hiddenFaces != 0});
 }
 
 } // namespace ssao

@@ -16,6 +16,7 @@ struct GuardBandConfig {
     gpu::FrameConstants frame; // the frame's, with the projection widened by the band
     int32_t band;              // pixels beyond each edge
     int32_t cull;              // skip.cull: draws outside the widened view are not issued
+    int32_t hiddenFaces;       // skip.hidden_faces: closed shells' hidden sides are culled
     uint32_t sceneVersion;
 };
 SSAO_CONFIG_END

@@ -1,5 +1,7 @@
 #include "scene/gpu_scene.h"
 
+#include "scene/closed_shells.h"
+
 #include "../../shaders/include/bindings.h"
 
 #include <cstddef>
@@ -23,13 +25,53 @@ bool outsideFrustum(const Bounds& box, const glm::mat4& viewProj, bool zeroToOne
     return false;
 }
 
-GpuScene::GpuScene(const Scene& scene) : draws_(scene.draws), radius_(scene.bounds.radius()) {
-    drawBounds_.resize(draws_.size());
-    for (size_t d = 0; d < draws_.size(); ++d)
-        for (uint32_t i = draws_[d].firstIndex; i < draws_[d].firstIndex + draws_[d].indexCount; ++i)
-            drawBounds_[d].add(scene.vertices[scene.indices[i]].position);
+bool beyondNearPlane(const Bounds& box, const glm::mat4& viewProj, bool zeroToOneDepth) {
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 p((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                          (i & 4) ? box.max.z : box.min.z);
+        const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
+        // Strictly inside the near plane's half-space (reversed: z_ndc < 1; standard: z_ndc > -1).
+        if (!(zeroToOneDepth ? c.z < c.w : c.z > -c.w)) return false;
+    }
+    return true;
+}
+
+GpuScene::GpuScene(const Scene& scene) : radius_(scene.bounds.radius()) {
+    // Each draw's triangles regrouped as its closed shells face (scene/closed_shells.h), so that a
+    // pass can draw the groups with and without face culling; MASK draws are never culled (a
+    // cut-out front face shows the back face behind it).
+    std::vector<uint32_t> indices(scene.indices.size());
+    draws_.reserve(scene.draws.size());
+    for (const Draw& d : scene.draws) {
+        GpuDraw g;
+        g.draw = d;
+        const size_t triangles = d.indexCount / 3;
+        std::vector<ShellFacing> facing(triangles, ShellFacing::Open);
+        if (!d.mask) facing = classifyShells(scene.vertices, scene.indices, d.firstIndex, triangles);
+        uint32_t* dst = indices.data() + d.firstIndex;
+        for (const ShellFacing group : {ShellFacing::Outward, ShellFacing::Inward, ShellFacing::Open}) {
+            for (size_t t = 0; t < triangles; ++t) {
+                if (facing[t] != group) continue;
+                for (int k = 0; k < 3; ++k) {
+                    const uint32_t v = scene.indices[d.firstIndex + 3 * t + size_t(k)];
+                    *dst++ = v;
+                    const glm::vec3& p = scene.vertices[v].position;
+                    g.bounds.add(p);
+                    if (group == ShellFacing::Outward) g.outwardBounds.add(p);
+                    if (group == ShellFacing::Inward) g.inwardBounds.add(p);
+                }
+                g.outward += group == ShellFacing::Outward;
+                g.inward += group == ShellFacing::Inward;
+            }
+        }
+        // Index counts that are not a multiple of 3 keep their tail (GL ignores it) as before.
+        for (uint32_t i = d.firstIndex + uint32_t(3 * triangles); i < d.firstIndex + d.indexCount; ++i)
+            indices[i] = scene.indices[i];
+        hasMask_ = hasMask_ || d.mask;
+        draws_.push_back(g);
+    }
     vbo_ = gl::Buffer(scene.vertices.size() * sizeof(Vertex), scene.vertices.data(), 0, "scene-vertices");
-    ibo_ = gl::Buffer(scene.indices.size() * sizeof(uint32_t), scene.indices.data(), 0, "scene-indices");
+    ibo_ = gl::Buffer(indices.size() * sizeof(uint32_t), indices.data(), 0, "scene-indices");
     vao_ = gl::VertexArray("scene");
     const GLuint vao = vao_.id();
     glVertexArrayVertexBuffer(vao, 0, vbo_.id(), 0, sizeof(Vertex));
@@ -56,22 +98,28 @@ GpuScene::GpuScene(const Scene& scene) : draws_(scene.draws), radius_(scene.boun
         alpha_.push_back(std::move(tex));
         alphaWrap_.push_back({int(t.wrapS), int(t.wrapT)});
     }
-    for (const Draw& d : draws_)
-        hasMask_ = hasMask_ || d.mask;
 }
 
-DrawStats GpuScene::draw(const ScenePrograms& programs, const glm::mat4* cullViewProj, bool zeroToOneDepth) const {
+DrawStats GpuScene::draw(const ScenePrograms& programs, const DrawOptions& o) const {
     DrawStats st;
     glBindVertexArray(vao_.id());
+    auto issue = [&](uint32_t firstTriangle, uint32_t count, GLenum cull, const Draw& d) {
+        if (count == 0) return;
+        if (cull) glEnable(GL_CULL_FACE), glCullFace(cull);
+        else glDisable(GL_CULL_FACE);
+        glDrawElements(GL_TRIANGLES, GLsizei(3 * count), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>((size_t(d.firstIndex) + 3 * size_t(firstTriangle)) * sizeof(uint32_t)));
+        if (cull) st.trianglesFaceCulled += count;
+    };
     // Opaque draws first, then MASK draws with the program that cuts them out.
     for (int pass = 0; pass < 2; ++pass) {
         const bool mask = pass == 1;
         if (mask && !hasMask_) break;
         glUseProgram(mask ? programs.mask : programs.opaque);
-        for (size_t i = 0; i < draws_.size(); ++i) {
-            const Draw& d = draws_[i];
+        for (const GpuDraw& g : draws_) {
+            const Draw& d = g.draw;
             if (d.mask != mask) continue;
-            if (cullViewProj && outsideFrustum(drawBounds_[i], *cullViewProj, zeroToOneDepth)) {
+            if (o.frustumCull && o.viewProj && outsideFrustum(g.bounds, *o.viewProj, o.zeroToOneDepth)) {
                 ++st.culled;
                 st.trianglesCulled += d.indexCount / 3;
                 continue;
@@ -84,12 +132,28 @@ DrawStats GpuScene::draw(const ScenePrograms& programs, const glm::mat4* cullVie
                 glUniform2i(2, wrap.x, wrap.y);
                 if (tex) alpha_[size_t(d.alphaTexture)].bind(SSAO_TEX_SCENE_ALPHA);
             }
-            glDrawElements(GL_TRIANGLES, GLsizei(d.indexCount), GL_UNSIGNED_INT,
-                           reinterpret_cast<const void*>(size_t(d.firstIndex) * sizeof(uint32_t)));
-            ++st.draws;
-            st.triangles += d.indexCount / 3;
+            const uint32_t triangles = d.indexCount / 3;
+            ++st.draws; // one per draw, however many calls its groups take
+            st.triangles += triangles;
+            const bool faces = o.hiddenFaces && o.viewProj;
+            const bool back = faces && g.outward && beyondNearPlane(g.outwardBounds, *o.viewProj, o.zeroToOneDepth);
+            const bool front = faces && g.inward && beyondNearPlane(g.inwardBounds, *o.viewProj, o.zeroToOneDepth);
+            // Outward | Inward | Open, each group culled where it may be; neighbours drawn alike
+            // go in one call (no shell to cull: one call, as without them).
+            const uint32_t first[3] = {0, g.outward, g.outward + g.inward};
+            const uint32_t count[3] = {g.outward, g.inward, triangles - g.outward - g.inward};
+            const GLenum cull[3] = {GLenum(back ? GL_BACK : 0), GLenum(front ? GL_FRONT : 0), 0};
+            for (int k = 0; k < 3;) {
+                int end = k + 1;
+                uint32_t n = count[k];
+                while (end < 3 && cull[end] == cull[k]) n += count[end++];
+                issue(first[k], n, cull[k], d);
+                k = end;
+            }
         }
     }
+    glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
     return st;
 }
 

@@ -8,14 +8,31 @@
 namespace ssao {
 
 struct DrawStats {
-    size_t draws = 0, culled = 0;         // draw calls issued, and skipped as outside the view
+    size_t draws = 0, culled = 0;         // draws issued, and skipped as outside the view
     size_t triangles = 0, trianglesCulled = 0;
+    size_t trianglesFaceCulled = 0; // of `triangles`, drawn with face culling (closed shells)
+};
+
+// How a pass draws the scene. `viewProj` is the pass's view; `zeroToOneDepth` its clip depth
+// range ([0, w], 1 at near: reversed-Z).
+struct DrawOptions {
+    const glm::mat4* viewProj = nullptr;
+    bool zeroToOneDepth = false;
+    bool frustumCull = false; // skip draws whose bounds lie outside the view (skip.cull)
+    // Cull the hidden side of closed shells (scene/closed_shells.h) wherever the shells' bounds lie
+    // wholly beyond the near plane, which puts the eye outside them and keeps the near plane from
+    // opening them (skip.hidden_faces). Only for passes that keep the nearest surface.
+    bool hiddenFaces = false;
 };
 
 // True when the box cannot touch the view volume of `viewProj` (clip space: |x|, |y| <= w and
 // z in [-w, w], or [0, w] with reversed depth): all 8 corners outside one plane. Conservative -
 // a box that straddles corners of the frustum may be kept - never wrong the other way.
 bool outsideFrustum(const Bounds& box, const glm::mat4& viewProj, bool zeroToOneDepth);
+
+// True when every corner of the box lies strictly on the far side of the near plane of `viewProj`:
+// then the eye is outside the box and the near plane cuts nothing in it.
+bool beyondNearPlane(const Bounds& box, const glm::mat4& viewProj, bool zeroToOneDepth);
 
 // The programs a pass draws the scene with: `opaque` for every draw without a cut-out, `mask`
 // (the same shaders built with ALPHA_MASK: include/alpha_mask.glsl) for MASK draws, which get
@@ -30,9 +47,8 @@ class GpuScene {
   public:
     GpuScene() = default;
     explicit GpuScene(const Scene& scene);
-    // Binds the VAO and issues the draws, MASK draws last. With `cullViewProj`, draws whose bounds
-    // lie outside that view are skipped.
-    DrawStats draw(const ScenePrograms& programs, const glm::mat4* cullViewProj = nullptr, bool zeroToOneDepth = false) const;
+    // Binds the VAO and issues the draws, MASK draws last, as `o` asks. Leaves face culling off.
+    DrawStats draw(const ScenePrograms& programs, const DrawOptions& o = {}) const;
     float radius() const { return radius_; }
     bool hasMask() const { return hasMask_; } // a MASK draw: callers build ScenePrograms::mask
 
@@ -42,8 +58,15 @@ class GpuScene {
     std::vector<gl::Texture2D> alpha_; // per Scene::alphaTextures, R8
     std::vector<glm::ivec2> alphaWrap_;
     bool hasMask_ = false;
-    std::vector<Draw> draws_;
-    std::vector<Bounds> drawBounds_; // per draw, scene frame
+    // A draw's triangles in the index buffer: the closed shells' Outward ones, then Inward, then
+    // the rest (the scene's order within each group), with the bounds of each group.
+    struct GpuDraw {
+        Draw draw;
+        Bounds bounds;
+        uint32_t outward = 0, inward = 0; // triangles
+        Bounds outwardBounds, inwardBounds;
+    };
+    std::vector<GpuDraw> draws_;
     float radius_ = 1.0f;
 };
 

@@ -171,6 +171,11 @@ std::vector<Param> coreRows() {
                  "pixels run the full estimate, then are discarded - same image, to measure the saving)."),
         BOOL_ROW("skip.cull", "Frustum culling", skip.cull,
                  "The G-buffer pass does not draw meshes whose bounding box lies outside the view."),
+        BOOL_ROW("skip.hidden_faces", "Cull hidden faces", skip.hiddenFaces,
+                 "The G-buffer culls the back faces of closed solids (each edge shared by two triangles wound "
+                 "opposite ways, found at load), which a front face of the same solid always hides while the "
+                 "camera is outside it; open meshes, cut-outs and solids the near plane reaches are drawn whole. "
+                 "The same image."),
         BOOL_ROW("skip.unused_targets", "Skip unused targets", skip.unusedTargets,
                  "The G-buffer writes only the targets that the technique, the denoiser, the composite or a "
                  "shown buffer reads (e.g. no albedo while only AO is shown)."),

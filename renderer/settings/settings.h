@@ -78,6 +78,7 @@ struct SkipSettings {
     bool sky = true;           // AO and the denoiser's last pass return at once on sky pixels
     bool cull = true;          // G-buffer: meshes whose bounds lie outside the view are not drawn
     bool unusedTargets = true; // G-buffer: targets no pass or view reads are not written
+    bool hiddenFaces = true;   // G-buffer: the hidden side of closed shells is culled (scene/closed_shells.h)
     // Reduced AO: the composite does the joint upsample itself where nothing else reads the
     // full-resolution AO (passes/composite_pass.h). Off by default: on llvmpipe it saves nothing.
     bool fusedUpsample = false;
