@@ -10,5 +10,5 @@ SCENES=${2:-../shared/scenes}
 "$BUILD/app/ssaolab" skips --size "${BENCH_SIZE:-1280x720}" --frames "${SKIPS_FRAMES:-7}" --out docs/bench \
   --scene builtin:showcase --scene "$SCENES/CornellBox/cornellBox.gltf" \
   --scene "$SCENES/2CylinderEngine/2CylinderEngine.gltf" --scene "$SCENES/ReciprocatingSaw/ReciprocatingSaw.gltf" \
-  --scene "$SCENES/Lantern/Lantern.gltf"
+  --scene "$SCENES/Lantern/Lantern.gltf" --scene "$SCENES/FlightHelmet/FlightHelmet.gltf"
 BENCH_REPORT_ONLY=1 bash .ci/bench.sh "$BUILD" "$SCENES"
