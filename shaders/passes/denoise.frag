@@ -22,10 +22,11 @@ void main() {
     vec2 texel = 1.0 / vec2(textureSize(aoIn, 0));
     vec2 dir = denoise.taps.y == 0 ? vec2(texel.x, 0.0) : vec2(0.0, texel.y);
     float sum = 0.0;
-    for (int i = 0; i < denoise.taps.x; ++i) {
+    int i = 0;
+    if (denoise.taps.x > 0) do { // do-while, not for: no masked pass after the last tap (ao_common.glsl, aoLoops)
         vec4 ow = denoise.offsetsWeights[i];
         sum += texture(aoIn, vUv + dir * ow.x).r * ow.y;
-    }
+    } while (++i < denoise.taps.x);
     // Weights summing to at most 1 still round a sum of ones to 1.0000001-1.0000004 in float
     // (seed003 on CornellBox did): clamp from above. A NaN fails the comparison and stays visible.
     oAO = sum > 1.0 ? 1.0 : sum;

@@ -40,12 +40,14 @@ void main() {
     // The first step lands at least ~1.3 px away: sampling the pixel itself gives a zero delta
     // (NaN direction) and self-occlusion lines (XeGTAO minS; HBAO "first step >= 1 px").
     float minS = ssao.thin.y / max(radiusPx, 1e-6);
-    int slices = ssao.modes.x, steps = aoAdaptiveSteps(ssao.aoCommon, ssao.modes.y, radiusPx); // ao.adaptive
+    // At least one of each (the parameter table's minimum): the loops below test at their end.
+    int slices = max(ssao.modes.x, 1), steps = max(aoAdaptiveSteps(ssao.aoCommon, ssao.modes.y, radiusPx), 1); // ao.adaptive
     vec2 noise = vec2(0.5);
     if (aoNoiseOn(ssao.aoCommon)) noise = aoNoise(ssao.aoCommon, gl_FragCoord.xy);
 
     float visibility = 0.0, openSum = 0.0;
-    for (int slice = 0; slice < slices; ++slice) {
+    int slice = 0;
+    do { // do-while, not for: no masked pass after the last slice (ao_common.glsl, aoLoops)
         AoSlice sl = aoSlice((float(slice) + noise.x) / float(slices) * PI, V, N);
         vec2 omega = sl.omega;
         float projNLen = sl.projNLen, cosNorm = sl.cosN, n = sl.n; // n: the normal's angle from V
@@ -55,7 +57,8 @@ void main() {
         float sinN = sign(n) * sqrt(max(1.0 - cosNorm * cosNorm, 0.0));
         float lowCos0 = -sinN, lowCos1 = sinN;
         float hCos0 = lowCos0, hCos1 = lowCos1;
-        for (int step = 0; step < steps; ++step) {
+        int step = 0;
+        do {
             float s = pow((float(step) + noise.y) / float(steps), ssao.search.w) + minS;
             // Snap to texel centres: positions are not interpolated (XeGTAO rounds likewise).
             vec2 offsetUv = round(s * radiusPx * omega) * frame.viewport.zw;
@@ -88,7 +91,7 @@ void main() {
                             : raises && w > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN,
                             counts ? w : 0.0, slice);
             }
-        }
+        } while (++step < steps);
         // Horizon angles from V (side 0 positive), kept within the hemisphere around the normal.
         float h0 = -safeAcos(hCos1), h1 = safeAcos(hCos0);
         h0 = n + clamp(h0 - n, -HALF_PI, HALF_PI);
@@ -97,7 +100,7 @@ void main() {
         float iarc1 = (cosNorm + 2.0 * h1 * sinN - cos(2.0 * h1 - n)) * 0.25;
         visibility += projNLen * (iarc0 + iarc1);
         openSum += projNLen * (cosNorm + n * sinN); // the same with both horizons on the tangent plane
-    }
+    } while (++slice < slices);
     visibility = aoSliceRatio(visibility, openSum);
     oAO = AO_RESULT(aoFinish(ssao.aoCommon, visibility));
     INSPECT_RESULT(true, P, N, 1.0 - visibility, float(slices), R, oAO);

@@ -31,7 +31,8 @@ void main() {
     float R = aoRadius(ssao.aoCommon, depth);
     // The radius projected to G-buffer pixels, clamped (a close-up would march the whole screen).
     float radiusPx = min(R * framePixelsPerUnit(depth), ssao.params.y);
-    int dirs = ssao.modes.x, steps = aoAdaptiveSteps(ssao.aoCommon, ssao.modes.y, radiusPx); // ao.adaptive
+    // At least one of each (the parameter table's minimum): the loops below test at their end.
+    int dirs = max(ssao.modes.x, 1), steps = max(aoAdaptiveSteps(ssao.aoCommon, ssao.modes.y, radiusPx), 1); // ao.adaptive
     // Steps of at least a pixel, the first one pixel out: never the pixel itself (no self-
     // occlusion lines), every step a new texel.
     float stepPx = max(radiusPx / float(steps + 1), 1.0);
@@ -39,12 +40,14 @@ void main() {
     if (aoNoiseOn(ssao.aoCommon)) noise = aoNoise(ssao.aoCommon, gl_FragCoord.xy);
 
     float occlusion = 0.0;
-    for (int d = 0; d < dirs; ++d) {
+    int d = 0;
+    do { // do-while, not for: no masked pass after the last direction (ao_common.glsl, aoLoops)
         float phi = (float(d) + noise.x) / float(dirs) * TWO_PI;
         vec2 omega = vec2(cos(phi), sin(phi));
         float sinH = ssao.params.x; // the horizon starts at the tangent bias
         float occ = 0.0;
-        for (int s = 0; s < steps; ++s) {
+        int s = 0;
+        do {
             vec2 offsetPx = round(omega * (1.0 + (float(s) + noise.y) * stepPx));
             vec2 uv = uv0 + offsetPx * frame.viewport.zw;
             vec4 S; // off the held area (the frame and its guard band): unseen, no occluder
@@ -64,9 +67,9 @@ void main() {
                         : S.w == 0.0 ? SSAO_TAP_SKY
                         : contribution > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN,
                         contribution, d);
-        }
+        } while (++s < steps);
         occlusion += occ;
-    }
+    } while (++d < dirs);
     // Each direction's occlusion is at most 1 - bias; normalise so a fully closed pixel reads 0.
     float norm = float(dirs) * (1.0 - ssao.params.x);
     oAO = AO_RESULT(aoFinish(ssao.aoCommon, 1.0 - occlusion / norm));

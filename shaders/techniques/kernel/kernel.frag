@@ -76,10 +76,11 @@ float sampleOcclusion(vec3 P, vec3 S, float radius, int set) {
 
 float accumulate(vec3 P, mat3 TBN, float radius, int first, int count, int set) {
     float occ = 0.0;
-    for (int i = 0; i < count; ++i) {
+    int i = 0;
+    if (count > 0) do { // do-while, not for: no masked pass after the last sample (ao_common.glsl, aoLoops)
         vec3 S = P + TBN * ssao.kernel[first + i].xyz * radius;
         occ += sampleOcclusion(P, S, radius, set);
-    }
+    } while (++i < count);
     return occ;
 }
 

@@ -34,7 +34,8 @@ void main() {
     float spin = aoNoiseOn(ssao.aoCommon) ? aoNoise(ssao.aoCommon, gl_FragCoord.xy).x * TWO_PI : 0.0;
     int n = aoAdaptiveSamples(ssao.aoCommon, ssao.modes.x, radiusPx); // ao.adaptive: fewer where the disc is small
     float occlusion = 0.0;
-    for (int i = 0; i < n; ++i) {
+    int i = 0;
+    if (n > 0) do { // do-while, not for: no masked pass after the last tap (ao_common.glsl, aoLoops)
         float alpha = (float(i) + 0.5) / float(n);
         float angle = alpha * ssao.params.x * TWO_PI + spin;
         vec2 uv = uv0 + round(alpha * radiusPx * vec2(cos(angle), sin(angle))) * frame.viewport.zw;
@@ -54,7 +55,7 @@ void main() {
                     : Q.w == 0.0 ? SSAO_TAP_SKY
                     : term > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN,
                     term, 0);
-    }
+    } while (++i < n);
     occlusion *= float(ssao.modes.x) / float(n); // params.y holds 2 sigma / modes.x (pack.cpp)
     oAO = AO_RESULT(aoFinish(ssao.aoCommon, 1.0 - occlusion));
     INSPECT_RESULT(true, P, N, occlusion, 1.0, R, oAO);

@@ -65,17 +65,20 @@ void main() {
     float radiusPx = R * framePixelsPerUnit(depth);
     float thickness = ssao.params.x * R;
     float minS = ssao.params.z / max(radiusPx, 1e-6); // first step >= ~1.3 px: no self-occlusion
-    int slices = ssao.modes.x, steps = aoAdaptiveSteps(ssao.aoCommon, ssao.modes.y, radiusPx); // ao.adaptive
+    // At least one of each (the parameter table's minimum): the loops below test at their end.
+    int slices = max(ssao.modes.x, 1), steps = max(aoAdaptiveSteps(ssao.aoCommon, ssao.modes.y, radiusPx), 1); // ao.adaptive
     vec2 noise = aoNoiseOn(ssao.aoCommon) ? aoNoise(ssao.aoCommon, gl_FragCoord.xy) : vec2(0.5);
 
     float visibility = 0.0, openSum = 0.0;
-    for (int slice = 0; slice < slices; ++slice) {
+    int slice = 0;
+    do { // do-while, not for: no masked pass after the last slice (ao_common.glsl, aoLoops)
         AoSlice sl = aoSlice((float(slice) + noise.x) / float(slices) * PI, V, N);
         vec2 omega = sl.omega;
         float projNLen = sl.projNLen, cosN = sl.cosN, n = sl.n;
         float sinN = sign(n) * sqrt(max(1.0 - cosN * cosN, 0.0)); // sin n, n = ±acos(cosN)
         uint mask = 0u;
-        for (int step = 0; step < steps; ++step) {
+        int step = 0;
+        do {
             float s = pow((float(step) + noise.y) / float(steps), ssao.params.y) + minS;
             vec2 offsetUv = round(s * radiusPx * omega) * frame.viewport.zw;
             for (int side = 0; side < 2; ++side) {
@@ -118,20 +121,22 @@ void main() {
                                                   (gap > thickness ? SSAO_TAP_BACK_LAYER : 0),
                             float(bitCount(bits)) / 32.0, slice);
             }
-        }
+        } while (++step < steps);
         // Open measure of the whole hemisphere minus that of each run of hidden sectors.
         float open = cosN + n * sinN; // G(n + π/2) - G(n - π/2), |n| <= π/2
         openSum += projNLen * open;
+        // One run per pass; a do-while (ao_common.glsl, aoLoops) whose pass over an empty mask takes nothing.
         uint m = mask;
-        for (int guard = 0; guard < VBAO_SECTORS && m != 0u; ++guard) {
-            int a = findLSB(m);
+        int guard = 0;
+        do {
+            int a = max(findLSB(m), 0);
             uint rest = ~(m >> uint(a));
             int b = rest == 0u ? VBAO_SECTORS : min(a + findLSB(rest), VBAO_SECTORS);
-            open -= arcGEdge(b, n, cosN, sinN) - arcGEdge(a, n, cosN, sinN);
+            open -= m != 0u ? arcGEdge(b, n, cosN, sinN) - arcGEdge(a, n, cosN, sinN) : 0.0;
             m = b >= VBAO_SECTORS ? 0u : m & (0xFFFFFFFFu << uint(b));
-        }
+        } while (m != 0u && ++guard < VBAO_SECTORS);
         visibility += projNLen * max(open, 0.0);
-    }
+    } while (++slice < slices);
     visibility = aoSliceRatio(visibility, openSum);
     oAO = AO_RESULT(aoFinish(ssao.aoCommon, visibility));
     INSPECT_RESULT(true, P, N, 1.0 - visibility, float(slices), R, oAO);
