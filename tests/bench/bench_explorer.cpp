@@ -7,6 +7,9 @@
 //  - still: the first frame after the button is released and input settles (every pass at full
 //    resolution: what a user waits for after letting go);
 //  - idle: a frame where nothing changed.
+// After a warm-up drag (it compiles the moving size's shaders), three drags and releases, each
+// orbiting on from the last: the still and idle figures are their medians, the drag median and
+// max over all their frames (one release alone moved by 20-40 % between runs on a 2-core llvmpipe).
 // Each scene with the start preset (or --preset NAME) and with the learnopengl baseline, in the same run.
 // --cursor-away: after the release the cursor leaves the image (as when a slider is tweaked next), so
 // the per-pixel readout does not ask for every buffer.
@@ -61,7 +64,9 @@ Times measure(const std::string& scene, const std::string& preset, bool referenc
     // Where the cursor rests after the release: on the image, or just beside it.
     const float rx = away ? (v.x > 8.0f ? v.x - 4.0f : v.z + 4.0f) : cx + 150.0f, ry = away ? cy : cy + 24.0f;
     Times t;
-    for (int round = 0; round < 2; ++round) { // the first round warms shaders of the moving size
+    constexpr int kRounds = 4; // the first round warms shaders of the moving size and is not counted
+    std::vector<double> stills, idles, drags;
+    for (int round = 0; round < kRounds; ++round) {
         ui.frame(cx, cy, false);
         ui.frame(cx, cy, true);
         std::vector<double> drag;
@@ -76,12 +81,15 @@ Times measure(const std::string& scene, const std::string& preset, bool referenc
         for (int i = 0; i < 200 && (ui.app().frames().interacting() || i < 3); ++i)
             still = std::max(still, timed(ui, rx, ry, false));
         for (int i = 0; i < 3; ++i) still = std::max(still, timed(ui, rx, ry, false));
-        t.still = still;
         t.stillW = ui.app().renderer().width(), t.stillH = ui.app().renderer().height();
-        t.dragMedian = median(drag);
-        t.dragMax = *std::max_element(drag.begin(), drag.end());
-        t.idle = timed(ui, rx, ry, false);
+        const double idle = timed(ui, rx, ry, false);
+        if (round == 0) continue;
+        stills.push_back(still), idles.push_back(idle);
+        drags.insert(drags.end(), drag.begin(), drag.end());
     }
+    t.still = median(stills), t.idle = median(idles);
+    t.dragMedian = median(drags);
+    t.dragMax = *std::max_element(drags.begin(), drags.end());
     for (bool moving : {false, true})
         for (const auto& [pass, runs] : ui.app().frames().timing(moving).ms) {
             std::string& out = moving ? t.movingPasses : t.passes;
