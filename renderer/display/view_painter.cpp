@@ -7,8 +7,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace ssao {
+
+// The mapping as defines: one view.frag variant per mode (the shader says why).
+static gl::Defines viewDefines(int mode, bool falseColor) {
+    gl::Defines defs{{"VIEW_MODE", std::to_string(mode)}};
+    if (falseColor && mode == SSAO_VIEW_SCALAR) defs.push_back({"FALSE_COLOR", "1"});
+    return defs;
+}
 
 const Image& ViewPainter::maskImage(const Resource& mask) {
     if (mask.version != maskVersion_ || mask.generation != maskGeneration_ || mask_.width != mask.width()) {
@@ -42,16 +50,14 @@ DisplayRange ViewPainter::paint(const Resource& r, const Resource& mask, const V
     }
     out.ensure(w, h, GL_RGBA8, "view." + d.name);
     out.bind(); // the viewport of its w x h attachment
-    const GLuint prog = shaders.program("passes/fullscreen.vert", "display/view.frag");
-    glUseProgram(prog);
     const int mode = d.display == Display::Color                                         ? SSAO_VIEW_COLOR
                      : (d.display == Display::Vector || d.display == Display::Direction) ? SSAO_VIEW_VECTOR
                      : d.display == Display::Signed                                      ? SSAO_VIEW_SIGNED
                                                                                          : SSAO_VIEW_SCALAR;
-    glProgramUniform1i(prog, 0, mode);
+    const GLuint prog = shaders.program("passes/fullscreen.vert", "display/view.frag", viewDefines(mode, style.falseColor));
+    glUseProgram(prog);
     glProgramUniform3f(prog, 1, range.lo.x, range.lo.y, range.lo.z);
     glProgramUniform3f(prog, 5, range.hi.x, range.hi.y, range.hi.z);
-    glProgramUniform1i(prog, 2, style.falseColor ? 1 : 0);
     glProgramUniform2f(prog, 3, d.decodeScale, d.decodeOffset);
     glProgramUniform1f(prog, 4, 1.0f);
     glProgramUniform1i(prog, 6, d.channels);
@@ -67,12 +73,10 @@ void ViewPainter::paintDifference(const Resource& a, const Resource& b, float sc
                                   const gl::FullscreenTriangle& tri) {
     out.ensure(a.width(), a.height(), GL_RGBA8, "view.diff." + a.desc.name);
     out.bind();
-    const GLuint prog = shaders.program("passes/fullscreen.vert", "display/view.frag");
+    const GLuint prog = shaders.program("passes/fullscreen.vert", "display/view.frag", viewDefines(SSAO_VIEW_DIFF, false));
     glUseProgram(prog);
-    glProgramUniform1i(prog, 0, SSAO_VIEW_DIFF);
     glProgramUniform3f(prog, 1, 0.0f, 0.0f, 0.0f);
     glProgramUniform3f(prog, 5, 1.0f, 1.0f, 1.0f);
-    glProgramUniform1i(prog, 2, 0);
     glProgramUniform2f(prog, 3, a.desc.decodeScale, a.desc.decodeOffset);
     glProgramUniform1f(prog, 4, scale);
     glProgramUniform1i(prog, 6, a.desc.channels);

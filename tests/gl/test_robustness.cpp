@@ -7,6 +7,8 @@
 
 #include "util/error.h"
 
+#include "../../shaders/include/bindings.h"
+
 using namespace ssao;
 using namespace ssaotest;
 
@@ -113,7 +115,13 @@ TEST_F(Robustness, ShaderCompileErrorsNameFileAndLine) {
     EXPECT_NE(real.program("passes/fullscreen.vert", "techniques/kernel/kernel.frag"), 0u);
     EXPECT_NE(real.program("passes/fullscreen.vert", "techniques/kernel/kernel.frag", {{"INSPECT", "1"}}),
               0u);
-    EXPECT_NE(real.program("passes/fullscreen.vert", "display/view.frag"), 0u);
+    for (int mode : {SSAO_VIEW_COLOR, SSAO_VIEW_SCALAR, SSAO_VIEW_VECTOR, SSAO_VIEW_DIFF, SSAO_VIEW_SIGNED})
+        EXPECT_NE(real.program("passes/fullscreen.vert", "display/view.frag", {{"VIEW_MODE", std::to_string(mode)}}), 0u);
+    EXPECT_NE(real.program("passes/fullscreen.vert", "display/view.frag",
+                           {{"VIEW_MODE", std::to_string(SSAO_VIEW_SCALAR)}, {"FALSE_COLOR", "1"}}),
+              0u);
+    // Without a mapping the view shader refuses to compile rather than guess one.
+    EXPECT_THROW(real.program("passes/fullscreen.vert", "display/view.frag"), Error);
 }
 
 TEST_F(Robustness, DenoisedAoNeverRoundsPastOne) {
