@@ -51,8 +51,12 @@ void main() {
     float a0 = texelFetch(aoIn, c, 0).r;
     int r = denoise.taps.x;
     float sum = 0.0, wsum = 0.0;
-    for (int dy = -r; dy <= r; ++dy)
-        for (int dx = -r; dx <= r; ++dx) {
+    // do-whiles, not fors: no masked pass after the last row and column (ao_common.glsl, aoLoops);
+    // -r <= r always holds, so each runs at least once, and a continue goes to the test.
+    int dy = -r;
+    do {
+        int dx = -r;
+        do {
             ivec2 t = c + ivec2(dx, dy);
             if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, inSize))) continue;
             vec2 tuv = gbufferUv(t, inSize);
@@ -65,7 +69,8 @@ void main() {
                       pow(max(dot(normalAt(tuv), n0), 0.0), npow) * exp(-ra * ra);
             sum += a * w;
             wsum += w;
-        }
+        } while (++dx <= r);
+    } while (++dy <= r);
     // No similar neighbour at all (a lone pixel): keep its own value rather than divide by ~0.
     float ao = wsum > 1e-6 ? sum / wsum : a0;
     oAO = ao > 1.0 ? 1.0 : ao; // a weighted mean of ones may round past 1; a NaN stays visible
