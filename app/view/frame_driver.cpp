@@ -61,6 +61,7 @@ double FrameDriver::Timing::average(const std::string& pass) const {
 
 void FrameDriver::sceneChanged(const Scene& s) {
     renderer_->setScene(s);
+    views_.forgetRanges();
     timingFull_ = {};
     timingInteractive_ = {};
     keepAwake();
@@ -105,6 +106,7 @@ void FrameDriver::render(const Input& in, const ViewState& view, int viewW, int 
         renderedInteractive_ = inter;
         if (inter) keepAwake(2); // keep drawing until the full-resolution frame after input stops
         paintViews(view);
+        if (views_.fitsPending()) keepAwake(1); // the fits deferred from this frame (buffer_views.h)
     } catch (const std::exception& e) {
         // A shader that fails mid-session (e.g. a new variant after hot reload) must not kill the app.
         shaderError_ = e.what();

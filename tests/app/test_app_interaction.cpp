@@ -256,3 +256,45 @@ TEST_F(AppUse, ABadStartupSceneOrPresetOpensTheWindowOnTheBuiltInSceneWithTheErr
         ui_.reset();
     }
 }
+
+TEST_F(AppUse, AfterADragTheFittedRangesFollowOneFrameAfterTheImage) {
+    // The first full-resolution frame after a drag paints the new image with the ranges kept while
+    // moving and owes the fits (a fit reads texels back, which waits for the GPU); the next frame fits.
+    start(1600, 900, 1.0f);
+    ASSERT_TRUE(ui_->app().openScene(scene("ShaderBall/shader_ball.gltf")));
+    ui_->settle();
+    BufferViews& views = ui_->app().frames().views();
+    ASSERT_FALSE(views.fitsPending()) << "a new scene is fitted at once";
+    ASSERT_TRUE(views.find("gbuffer.position") && views.find("gbuffer.position")->range.fitted);
+    const DisplayRange before = views.find("gbuffer.position")->range;
+    const ImVec4 v = ui_->rect("view#gbuffer.position");
+    const float cx = (v.x + v.z) * 0.5f, cy = (v.y + v.w) * 0.5f;
+    ui_->frame(cx, cy, false);
+    ui_->frame(cx, cy, true);
+    for (int i = 1; i <= 6; ++i) ui_->frame(cx + 12.0f * float(i), cy, true);
+    ui_->frame(cx + 72.0f, cy, false); // released
+    bool still = false;
+    for (int i = 0; i < 400 && !still; ++i) {
+        ui_->frame(cx + 72.0f, cy, false);
+        still = !ui_->app().frames().renderedInteractive();
+    }
+    ASSERT_TRUE(still) << "the app renders at full resolution once input stops";
+    EXPECT_TRUE(views.fitsPending());
+    const DisplayRange kept = views.find("gbuffer.position")->range;
+    EXPECT_EQ(kept.lo, before.lo);
+    EXPECT_EQ(kept.hi, before.hi);
+    ui_->frame(cx + 72.0f, cy, false);
+    EXPECT_FALSE(views.fitsPending());
+    // The range now is the fit of the buffer as rendered (the same as a PNG preview's).
+    Renderer& r = ui_->app().renderer();
+    const Resource& pos = r.resource("gbuffer.position");
+    const Image mask = readBack(r.texture("gbuffer.depth"), 1);
+    const DisplayRange fresh = displayRange(readBack(pos.texture, 3), pos.desc, &mask, ui_->app().view().style);
+    const DisplayRange after = views.find("gbuffer.position")->range;
+    EXPECT_TRUE(after.fitted);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_FLOAT_EQ(after.lo[c], fresh.lo[c]) << c;
+        EXPECT_FLOAT_EQ(after.hi[c], fresh.hi[c]) << c;
+    }
+    EXPECT_NE(after.lo, before.lo) << "the orbit moved the view-space positions";
+}
