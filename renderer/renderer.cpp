@@ -61,7 +61,7 @@ Renderer::Renderer(const std::string& shaderDir)
 Renderer::~Renderer() = default;
 
 void Renderer::setScene(const Scene& scene) {
-    scene_ = std::make_unique<GpuScene>(scene);
+    scene_ = std::make_unique<GpuScene>(scene, motionLods_);
     bounds_ = scene.bounds;
     ++sceneVersion_;
     frame_.scene = nullptr; // until the next render(): the inspector must not draw the old scene
@@ -218,6 +218,9 @@ FrameReport Renderer::render() {
     }
     frame_ = FrameInfo{scene_.get(), sceneVersion_, sceneRadius(), &effective_, width_,
                        height_,      displayScale_, frameIndex,    reset};
+    frame_.lod = -1; // the coarsest level whose cell covers at most a pixel here (motion_lod.h)
+    for (int l = 0; moving_ && settings_.skip.motionLod && l < scene_->lodLevels() && frame_.lod < 0; ++l)
+        if (scene_->lodCellPx(l, effective_, height_) <= 1.0f) frame_.lod = l;
     frame_.constants = packFrameConstants(effective_, width_, height_, sceneRadius(), frameIndex);
     frameUbo_.upload(&frame_.constants, sizeof frame_.constants);
     frameUbo_.bind(SSAO_UBO_FRAME);

@@ -45,6 +45,14 @@ class Renderer {
     // Render pixels per displayed pixel (the app renders reduced while the camera moves): a radius
     // in pixels is a radius in displayed pixels. 1 headless.
     void setDisplayScale(float scale);
+    // Frames drawn while the camera moves (the app; false headless): with skip.motion_lod the
+    // G-buffer draws the scene's clustered copy where one cell of it covers at most a pixel of the
+    // frame (scene/motion_lod.h). The still frame after it draws the full mesh.
+    void setMoving(bool moving) { moving_ = moving; }
+    // The clustered level the last render() drew (-1: the scene's own triangles).
+    int drewLod() const { return frame_.lod; }
+    // Build the clustered copies of the scenes set from now on (the app; headless renders never move).
+    void enableMotionLods() { motionLods_ = true; }
     // The ray-traced reference as two more buffers, reference.ao and reference.error
     // (passes/reference_pass.h), uploaded when `buffers` has a new version; null (the default, and
     // headless) takes them out of the graph.
@@ -111,6 +119,7 @@ class Renderer {
     std::optional<Settings> settingsB_;
     int width_ = 0, height_ = 0;
     float displayScale_ = 1.0f;
+    bool moving_ = false, motionLods_ = false;
     FrameGraph graph_;
     bool graphStale_ = true; // settings, chain B, size or reference on/off changed since compile()
     // Per chain (A, B): nothing outside the graph wants its ao.denoised, so its composite may

@@ -47,6 +47,7 @@ FrameDriver::FrameDriver(const std::string& shaderDir, float renderScale_, float
                          const std::function<void()>& wake)
     : renderScale(std::clamp(renderScale_, 0.25f, 1.0f)), interactiveScale(std::clamp(interactiveScale_, 0.1f, 1.0f)),
       referenceOn(reference), renderer_(std::make_unique<Renderer>(shaderDir)), reference_(wake) {
+    renderer_->enableMotionLods(); // the app moves the camera: skip.motion_lod
     shaderTime_ = renderer_->shaders().newestSourceTime();
 }
 
@@ -87,6 +88,7 @@ void FrameDriver::render(const Input& in, const ViewState& view, int viewW, int 
         Renderer& r = *renderer_;
         if (r.width() != w || r.height() != h) r.setSize(w, h);
         r.setDisplayScale(scale); // a radius in pixels stays in displayed pixels while moving
+        r.setMoving(inter);       // skip.motion_lod: the clustered mesh while moving
         r.setCamera(in.camera);
         r.setSettings(in.settings);
         r.setSettingsB(in.settingsB);

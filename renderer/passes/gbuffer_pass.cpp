@@ -43,6 +43,7 @@ GBufferConfig GBufferPass::config(const Settings& s, const FrameInfo& f) const {
     c.skipUnused = s.skip.unusedTargets;
     c.hiddenFaces = s.skip.hiddenFaces;
     c.sceneVersion = f.sceneVersion;
+    c.lod = f.lod;
     return c;
 }
 
@@ -81,7 +82,7 @@ void GBufferPass::run(PassContext& ctx, const GBufferConfig& c) {
     // Location 0 is uBaseColor; without the albedo target it is compiled out (-1: ignored).
     const bool albedo = std::find(outputs.begin(), outputs.end(), "gbuffer.albedo") != outputs.end();
     const ScenePrograms programs = scenePrograms(ctx, "passes/gbuffer.vert", "passes/gbuffer.frag", defs, albedo ? 0 : -1);
-    stats_ = ctx.scene()->draw(programs, {&viewProj, reversed, c.cull != 0, c.hiddenFaces != 0});
+    stats_ = ctx.scene()->draw(programs, {&viewProj, reversed, c.cull != 0, c.hiddenFaces != 0, c.lod});
 }
 
 ScenePrograms scenePrograms(PassContext& ctx, const std::string& vert, const std::string& frag, gl::Defines defines,
@@ -124,7 +125,8 @@ std::vector<std::pair<std::string, double>> GBufferPass::counters() const {
         {"triangles_culled", double(stats_.trianglesCulled)},
         {"triangles_face_culled", double(stats_.trianglesFaceCulled)},
         {"targets_written", double(written_.size())},
-        {"targets_skipped", double(4 - written_.size())}};
+        {"targets_skipped", double(4 - written_.size())},
+        {"motion_lod_level", double(stats_.lod)}};
     return c;
 }
 

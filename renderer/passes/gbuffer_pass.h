@@ -15,6 +15,7 @@ struct GBufferConfig {
     int32_t skipUnused;        // skip.unused_targets: targets nothing reads are not written
     int32_t hiddenFaces;       // skip.hidden_faces: closed shells' hidden sides are culled
     uint32_t sceneVersion;     // what it draws
+    int32_t lod;               // skip.motion_lod while the camera moves: the clustered level drawn, -1 none (FrameInfo::lod)
 };
 SSAO_CONFIG_END
 

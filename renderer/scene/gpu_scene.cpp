@@ -4,6 +4,7 @@
 
 #include "../../shaders/include/bindings.h"
 
+#include <algorithm>
 #include <cstddef>
 
 namespace ssao {
@@ -36,7 +37,7 @@ bool beyondNearPlane(const Bounds& box, const glm::mat4& viewProj, bool zeroToOn
     return true;
 }
 
-GpuScene::GpuScene(const Scene& scene) : radius_(scene.bounds.radius()) {
+GpuScene::GpuScene(const Scene& scene, bool motionLods) : radius_(scene.bounds.radius()), bounds_(scene.bounds) {
     // Each draw's triangles regrouped as its closed shells face (scene/closed_shells.h), so that a
     // pass can draw the groups with and without face culling; MASK draws are never culled (a
     // cut-out front face shows the back face behind it).
@@ -72,23 +73,21 @@ GpuScene::GpuScene(const Scene& scene) : radius_(scene.bounds.radius()) {
     }
     vbo_ = gl::Buffer(scene.vertices.size() * sizeof(Vertex), scene.vertices.data(), 0, "scene-vertices");
     ibo_ = gl::Buffer(indices.size() * sizeof(uint32_t), indices.data(), 0, "scene-indices");
-    vao_ = gl::VertexArray("scene");
-    const GLuint vao = vao_.id();
-    glVertexArrayVertexBuffer(vao, 0, vbo_.id(), 0, sizeof(Vertex));
-    glVertexArrayElementBuffer(vao, ibo_.id());
-    glEnableVertexArrayAttrib(vao, 0);
-    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position));
-    glVertexArrayAttribBinding(vao, 0, 0);
-    glEnableVertexArrayAttrib(vao, 1);
-    glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal));
-    glVertexArrayAttribBinding(vao, 1, 0);
-    // Texture coordinates (MASK draws' cut-outs) from a second buffer, only where a scene has them.
-    if (!scene.uvs.empty()) {
+    if (!scene.uvs.empty())
         uvs_ = gl::Buffer(scene.uvs.size() * sizeof(glm::vec2), scene.uvs.data(), 0, "scene-uvs");
-        glVertexArrayVertexBuffer(vao, 1, uvs_.id(), 0, sizeof(glm::vec2));
-        glEnableVertexArrayAttrib(vao, 2);
-        glVertexArrayAttribFormat(vao, 2, 2, GL_FLOAT, GL_FALSE, 0);
-        glVertexArrayAttribBinding(vao, 2, 1);
+    vao_ = gl::VertexArray("scene");
+    bindAttributes(vao_.id());
+    glVertexArrayElementBuffer(vao_.id(), ibo_.id());
+    for (MotionLod& lod : motionLods ? motionLodsFor(scene) : std::vector<MotionLod>{}) {
+        LodLevel l;
+        l.cell = lod.cell;
+        l.triangles = lod.triangles();
+        l.ibo = gl::Buffer(lod.indices.size() * sizeof(uint32_t), lod.indices.data(), 0, "scene-indices-lod");
+        l.vao = gl::VertexArray("scene-lod");
+        bindAttributes(l.vao.id());
+        glVertexArrayElementBuffer(l.vao.id(), l.ibo.id());
+        l.first = std::move(lod.first), l.count = std::move(lod.count);
+        lods_.push_back(std::move(l));
     }
     for (const AlphaTexture& t : scene.alphaTextures) {
         gl::Texture2D tex(t.width, t.height, GL_R8, "mask-alpha");
@@ -100,9 +99,35 @@ GpuScene::GpuScene(const Scene& scene) : radius_(scene.bounds.radius()) {
     }
 }
 
+float GpuScene::lodCellPx(int level, const Camera& camera, int height) const {
+    float px = 0.0f;
+    for (const GpuDraw& g : draws_)
+        if (g.bounds.valid()) px = std::max(px, motionLodCellPx(lods_[size_t(level)].cell, g.bounds, camera, height));
+    return px;
+}
+
+void GpuScene::bindAttributes(GLuint vao) const {
+    glVertexArrayVertexBuffer(vao, 0, vbo_.id(), 0, sizeof(Vertex));
+    glEnableVertexArrayAttrib(vao, 0);
+    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position));
+    glVertexArrayAttribBinding(vao, 0, 0);
+    glEnableVertexArrayAttrib(vao, 1);
+    glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal));
+    glVertexArrayAttribBinding(vao, 1, 0);
+    // Texture coordinates (MASK draws' cut-outs) from a second buffer, only where a scene has them.
+    if (uvs_.id()) {
+        glVertexArrayVertexBuffer(vao, 1, uvs_.id(), 0, sizeof(glm::vec2));
+        glEnableVertexArrayAttrib(vao, 2);
+        glVertexArrayAttribFormat(vao, 2, 2, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(vao, 2, 1);
+    }
+}
+
 DrawStats GpuScene::draw(const ScenePrograms& programs, const DrawOptions& o) const {
     DrawStats st;
-    glBindVertexArray(vao_.id());
+    const LodLevel* lod = o.lod >= 0 && o.lod < lodLevels() ? &lods_[size_t(o.lod)] : nullptr;
+    st.lod = lod ? o.lod : -1;
+    glBindVertexArray(lod ? lod->vao.id() : vao_.id());
     auto issue = [&](uint32_t firstTriangle, uint32_t count, GLenum cull, const Draw& d) {
         if (count == 0) return;
         if (cull) glEnable(GL_CULL_FACE), glCullFace(cull);
@@ -116,7 +141,8 @@ DrawStats GpuScene::draw(const ScenePrograms& programs, const DrawOptions& o) co
         const bool mask = pass == 1;
         if (mask && !hasMask_) break;
         glUseProgram(mask ? programs.mask : programs.opaque);
-        for (const GpuDraw& g : draws_) {
+        for (size_t di = 0; di < draws_.size(); ++di) {
+            const GpuDraw& g = draws_[di];
             const Draw& d = g.draw;
             if (d.mask != mask) continue;
             if (o.frustumCull && o.viewProj && outsideFrustum(g.bounds, *o.viewProj, o.zeroToOneDepth)) {
@@ -132,8 +158,16 @@ DrawStats GpuScene::draw(const ScenePrograms& programs, const DrawOptions& o) co
                 glUniform2i(2, wrap.x, wrap.y);
                 if (tex) alpha_[size_t(d.alphaTexture)].bind(SSAO_TEX_SCENE_ALPHA);
             }
-            const uint32_t triangles = d.indexCount / 3;
             ++st.draws; // one per draw, however many calls its groups take
+            if (lod) { // the clustered copy: one call, no face culling
+                const uint32_t first = lod->first[di], count = lod->count[di];
+                st.triangles += count / 3;
+                if (count)
+                    glDrawElements(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT,
+                                   reinterpret_cast<const void*>(size_t(first) * sizeof(uint32_t)));
+                continue;
+            }
+            const uint32_t triangles = d.indexCount / 3;
             st.triangles += triangles;
             const bool faces = o.hiddenFaces && o.viewProj;
             const bool back = faces && g.outward && beyondNearPlane(g.outwardBounds, *o.viewProj, o.zeroToOneDepth);

@@ -1,6 +1,7 @@
 // The scene's triangles in GL buffers, drawn one draw call per material.
 #pragma once
 #include "gl/resources.h"
+#include "scene/motion_lod.h"
 #include "scene/scene.h"
 
 #include <vector>
@@ -11,6 +12,7 @@ struct DrawStats {
     size_t draws = 0, culled = 0;         // draws issued, and skipped as outside the view
     size_t triangles = 0, trianglesCulled = 0;
     size_t trianglesFaceCulled = 0; // of `triangles`, drawn with face culling (closed shells)
+    int lod = -1;                   // the level of the clustered mesh drawn (DrawOptions::lod), -1: the scene's
 };
 
 // How a pass draws the scene. `viewProj` is the pass's view; `zeroToOneDepth` its clip depth
@@ -23,6 +25,9 @@ struct DrawOptions {
     // wholly beyond the near plane, which puts the eye outside them and keeps the near plane from
     // opening them (skip.hidden_faces). Only for passes that keep the nearest surface.
     bool hiddenFaces = false;
+    // A level of the clustered copies (scene/motion_lod.h; -1: the scene itself): frames drawn while
+    // the camera moves (skip.motion_lod). Its triangles are drawn without face culling.
+    int lod = -1;
 };
 
 // True when the box cannot touch the view volume of `viewProj` (clip space: |x|, |y| <= w and
@@ -46,15 +51,33 @@ struct ScenePrograms {
 class GpuScene {
   public:
     GpuScene() = default;
-    explicit GpuScene(const Scene& scene);
+    // motionLods: also build the clustered copies (scene/motion_lod.h) where the scene is large
+    // enough; only the app draws them (while the camera moves), so headless renders skip the work.
+    explicit GpuScene(const Scene& scene, bool motionLods = false);
     // Binds the VAO and issues the draws, MASK draws last, as `o` asks. Leaves face culling off.
     DrawStats draw(const ScenePrograms& programs, const DrawOptions& o = {}) const;
     float radius() const { return radius_; }
     bool hasMask() const { return hasMask_; } // a MASK draw: callers build ScenePrograms::mask
+    // The clustered copies, coarsest first: each one's cell edge (scene units) and triangle count.
+    int lodLevels() const { return int(lods_.size()); }
+    float lodCell(int level) const { return lods_[size_t(level)].cell; }
+    size_t lodTriangles(int level) const { return lods_[size_t(level)].triangles; }
+    const Bounds& bounds() const { return bounds_; }
+    // Pixels of a frame `height` tall that one cell of `level` may cover: the most over the draws'
+    // own bounds (motionLodCellPx; tighter than the scene's box, whose corners are empty space).
+    float lodCellPx(int level, const Camera& camera, int height) const;
 
   private:
     gl::VertexArray vao_;
     gl::Buffer vbo_, ibo_, uvs_;
+    struct LodLevel { // one clustered copy: the same vertices, its own indices
+        float cell = 0.0f;
+        size_t triangles = 0;
+        gl::Buffer ibo;
+        gl::VertexArray vao;
+        std::vector<uint32_t> first, count; // per draw, in indices
+    };
+    std::vector<LodLevel> lods_;
     std::vector<gl::Texture2D> alpha_; // per Scene::alphaTextures, R8
     std::vector<glm::ivec2> alphaWrap_;
     bool hasMask_ = false;
@@ -68,6 +91,8 @@ class GpuScene {
     };
     std::vector<GpuDraw> draws_;
     float radius_ = 1.0f;
+    Bounds bounds_;
+    void bindAttributes(GLuint vao) const;
 };
 
 } // namespace ssao

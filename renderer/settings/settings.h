@@ -82,6 +82,9 @@ struct SkipSettings {
     // Reduced AO: the composite does the joint upsample itself where nothing else reads the
     // full-resolution AO (passes/composite_pass.h). Off by default: on llvmpipe it saves nothing.
     bool fusedUpsample = false;
+    // While the camera moves (the app), the G-buffer draws a copy of a large scene with its
+    // vertices clustered into cells of at most a pixel of the moving frame (scene/motion_lod.h).
+    bool motionLod = true;
 };
 
 struct Settings : TechniqueSettings {

@@ -12,6 +12,7 @@
 #include "test_util.h"
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <filesystem>
 #include <thread>
@@ -297,4 +298,63 @@ TEST_F(AppUse, AfterADragTheFittedRangesFollowOneFrameAfterTheImage) {
         EXPECT_FLOAT_EQ(after.hi[c], fresh.hi[c]) << c;
     }
     EXPECT_NE(after.lo, before.lo) << "the orbit moved the view-space positions";
+}
+
+namespace {
+// The G-buffer's triangle count in the frame `report` (its counters), -1 if it did not run.
+double gbufferTriangles(const FrameReport& report) {
+    for (const PassReport& p : report.passes)
+        if (p.name == "gbuffer" && p.ran)
+            for (const auto& [key, value] : p.counters)
+                if (key == "triangles") return value;
+    return -1.0;
+}
+} // namespace
+
+TEST_F(AppUse, WhileMovingALargeSceneDrawsItsClusteredCopyAndStillFramesTheFullMesh) {
+    // skip.motion_lod (scene/motion_lod.h): ReciprocatingSaw's 198 470 triangles cost the moving
+    // G-buffer ~30 ms on llvmpipe; its clustered copy with cells of at most a moving pixel, fewer.
+    start(1600, 900, 1.0f);
+    ASSERT_TRUE(ui_->app().openScene(scene("ReciprocatingSaw/ReciprocatingSaw.gltf")));
+    ui_->settle();
+    Renderer& r = ui_->app().renderer();
+    const double full = gbufferTriangles(ui_->app().frames().lastReport());
+    ASSERT_EQ(full, 198470.0);
+    EXPECT_EQ(r.drewLod(), -1);
+    const ImVec4 v = ui_->rect("view#composite");
+    const float cx = (v.x + v.z) * 0.5f, cy = (v.y + v.w) * 0.5f;
+    auto drag = [&] {
+        ui_->frame(cx, cy, false);
+        ui_->frame(cx, cy, true);
+        for (int i = 1; i <= 4; ++i) ui_->frame(cx + 10.0f * float(i), cy, true);
+    };
+    drag();
+    ASSERT_TRUE(ui_->app().frames().renderedInteractive());
+    ASSERT_GE(r.drewLod(), 0) << "a cell of some level covers at most a pixel of the moving frame";
+    const double moving = gbufferTriangles(ui_->app().frames().lastReport());
+    EXPECT_GT(moving, 0.1 * full);
+    EXPECT_LT(moving, 0.75 * full);
+    // The moving frame's AO is still AO: finite and in [0, 1], with geometry on screen.
+    const Image ao = readBack(r.resource("ao.denoised").texture, 1);
+    size_t dark = 0;
+    for (float a : ao.data) {
+        ASSERT_TRUE(std::isfinite(a) && a >= 0.0f && a <= 1.0f) << a;
+        dark += a < 0.9f;
+    }
+    EXPECT_GT(dark, 0u);
+    // Released: the still frame draws every triangle again.
+    ui_->frame(cx + 40.0f, cy, false);
+    bool still = false;
+    for (int i = 0; i < 400 && !still; ++i) {
+        ui_->frame(cx + 40.0f, cy, false);
+        still = !ui_->app().frames().renderedInteractive();
+    }
+    ASSERT_TRUE(still);
+    EXPECT_EQ(r.drewLod(), -1);
+    EXPECT_EQ(gbufferTriangles(ui_->app().frames().lastReport()), full);
+    // Off, the moving frames draw the whole mesh too.
+    ui_->app().settings().skip.motionLod = false;
+    drag();
+    EXPECT_EQ(r.drewLod(), -1);
+    EXPECT_EQ(gbufferTriangles(ui_->app().frames().lastReport()), full);
 }

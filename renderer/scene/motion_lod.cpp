@@ -1,0 +1,110 @@
+#include "scene/motion_lod.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace ssao {
+
+namespace {
+constexpr uint64_t kAxisCells = uint64_t(1) << 20;
+
+// Cell of p (20 bits an axis) and the octant of its normal (3 bits): one 63-bit key.
+uint64_t cellKey(const Vertex& v, const glm::vec3& origin, float cell) {
+    uint64_t key = 0;
+    for (int a = 0; a < 3; ++a) {
+        const float c = std::floor((v.position[a] - origin[a]) / cell);
+        const uint64_t i = c > 0.0f ? std::min(uint64_t(c), kAxisCells - 1) : 0; // NaN lands in cell 0
+        key = (key << 20) | i;
+    }
+    return (key << 3) | uint64_t(v.normal.x < 0.0f) | uint64_t(v.normal.y < 0.0f) << 1 |
+           uint64_t(v.normal.z < 0.0f) << 2;
+}
+
+struct TriangleHash {
+    size_t operator()(const std::array<uint32_t, 3>& t) const {
+        return size_t((uint64_t(t[0]) * 0x9E3779B97F4A7C15ull) ^ (uint64_t(t[1]) * 0xC2B2AE3D27D4EB4Full) ^
+                      (uint64_t(t[2]) * 0x165667B19E3779F9ull));
+    }
+};
+} // namespace
+
+MotionLod buildMotionLod(const Scene& scene, float cell) {
+    MotionLod lod;
+    if (!(cell > 0.0f) || !std::isfinite(cell)) return lod;
+    lod.cell = cell;
+    lod.indices.reserve(scene.indices.size() / 2);
+    const glm::vec3 origin = scene.bounds.valid() ? scene.bounds.min : glm::vec3(0.0f);
+    std::unordered_map<uint64_t, uint32_t> representative;
+    std::unordered_map<uint32_t, uint32_t> mapped; // vertex -> its cell's representative, this draw
+    std::unordered_set<std::array<uint32_t, 3>, TriangleHash> seen;
+    for (const Draw& d : scene.draws) {
+        lod.first.push_back(uint32_t(lod.indices.size()));
+        const size_t triangles = d.indexCount / 3;
+        if (d.mask) { // kept whole: a cut-out's edge follows its texture, not its vertices
+            lod.indices.insert(lod.indices.end(), scene.indices.begin() + d.firstIndex,
+                               scene.indices.begin() + d.firstIndex + 3 * triangles);
+            lod.count.push_back(uint32_t(3 * triangles));
+            continue;
+        }
+        representative.clear(), mapped.clear(), seen.clear();
+        auto rep = [&](uint32_t v) {
+            auto it = mapped.find(v);
+            if (it != mapped.end()) return it->second;
+            const uint32_t r = representative.emplace(cellKey(scene.vertices[v], origin, cell), v).first->second;
+            mapped.emplace(v, r);
+            return r;
+        };
+        for (size_t t = 0; t < triangles; ++t) {
+            const uint32_t* idx = scene.indices.data() + d.firstIndex + 3 * t;
+            const uint32_t a = rep(idx[0]), b = rep(idx[1]), c = rep(idx[2]);
+            if (a == b || b == c || a == c) continue; // collapsed into a line or a point
+            std::array<uint32_t, 3> key{a, b, c};
+            std::sort(key.begin(), key.end());
+            if (!seen.insert(key).second) continue; // the same three corners again
+            lod.indices.insert(lod.indices.end(), {a, b, c});
+        }
+        lod.count.push_back(uint32_t(lod.indices.size()) - lod.first.back());
+    }
+    return lod;
+}
+
+std::vector<MotionLod> motionLodsFor(const Scene& scene) {
+    std::vector<MotionLod> out;
+    if (scene.triangleCount() < kMotionLodMinTriangles || !scene.bounds.valid()) return out;
+    const float diagonal = 2.0f * scene.bounds.radius();
+    for (const float cells : kMotionLodCellsPerDiagonal) {
+        MotionLod lod = buildMotionLod(scene, diagonal / cells);
+        if (lod.cell == 0.0f || double(lod.triangles()) > 0.75 * double(scene.triangleCount())) break;
+        out.push_back(std::move(lod));
+    }
+    return out;
+}
+
+float motionLodCellPx(float cell, const Bounds& bounds, const Camera& camera, int height) {
+    const float inf = std::numeric_limits<float>::infinity();
+    if (!bounds.valid() || height <= 0) return inf;
+    const float tanHalf = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
+    if (camera.orthographic()) {
+        const float span = 2.0f * camera.orthoHalfHeight();
+        return span > 0.0f ? cell * float(height) / span : inf;
+    }
+    // The box's least depth along the view axis: no surface in it lies nearer to the image plane
+    // (with the screen-edge stretch of a wide lens, a cell may reach ~1/cos^2 of this there).
+    const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
+    float distance = inf, farthest = -inf;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 p((i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
+                          (i & 4) ? bounds.max.z : bounds.min.z);
+        distance = std::min(distance, glm::dot(p - camera.eye, forward));
+        farthest = std::max(farthest, glm::dot(p - camera.eye, forward));
+    }
+    if (farthest <= 0.0f) return 0.0f; // behind the camera
+    if (!(distance > 0.0f) || !(tanHalf > 0.0f)) return inf;
+    return cell * float(height) / (2.0f * tanHalf * distance);
+}
+
+} // namespace ssao
