@@ -51,6 +51,7 @@ class Renderer {
     void setMoving(bool moving) { moving_ = moving; }
     // The clustered level the last render() drew (-1: the scene's own triangles).
     int drewLod() const { return frame_.lod; }
+    const GpuScene* gpuScene() const { return scene_.get(); } // null before setScene
     // Build the clustered copies of the scenes set from now on (the app; headless renders never move).
     void enableMotionLods() { motionLods_ = true; }
     // The ray-traced reference as two more buffers, reference.ao and reference.error

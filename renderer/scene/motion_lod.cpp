@@ -10,18 +10,25 @@
 namespace ssao {
 
 namespace {
-constexpr uint64_t kAxisCells = uint64_t(1) << 20;
+constexpr uint64_t kAxisCells = uint64_t(1) << 19;
 
-// Cell of p (20 bits an axis) and the octant of its normal (3 bits): one 63-bit key.
+// Which of 24 cones a normal lies in: its octant and its largest axis (the cube face the octant's
+// part of the sphere falls on). Normals more than ~70 degrees apart never share one.
+uint64_t normalBucket(const glm::vec3& n) {
+    const glm::vec3 a = glm::abs(n);
+    const uint64_t axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+    return axis << 3 | uint64_t(n.x < 0.0f) | uint64_t(n.y < 0.0f) << 1 | uint64_t(n.z < 0.0f) << 2;
+}
+
+// Cell of p (19 bits an axis) and the cone of its normal (5 bits): one 62-bit key.
 uint64_t cellKey(const Vertex& v, const glm::vec3& origin, float cell) {
     uint64_t key = 0;
     for (int a = 0; a < 3; ++a) {
         const float c = std::floor((v.position[a] - origin[a]) / cell);
         const uint64_t i = c > 0.0f ? std::min(uint64_t(c), kAxisCells - 1) : 0; // NaN lands in cell 0
-        key = (key << 20) | i;
+        key = (key << 19) | i;
     }
-    return (key << 3) | uint64_t(v.normal.x < 0.0f) | uint64_t(v.normal.y < 0.0f) << 1 |
-           uint64_t(v.normal.z < 0.0f) << 2;
+    return (key << 5) | normalBucket(v.normal);
 }
 
 struct TriangleHash {

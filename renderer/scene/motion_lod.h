@@ -12,8 +12,9 @@
 // draw that fell in the same cell, so every position drawn is one of the scene's own (no new
 // vertex buffer, normals and texture coordinates kept); a triangle whose corners fall in fewer
 // than three cells is dropped, and so is a second copy of the same three. Vertices whose normals
-// point into different octants never merge: the two sides of a wall thinner than a cell stay two
-// sides. Draws are clustered separately (materials never mix); MASK draws are kept whole (their
+// lie in different ones of 24 cones (octant and largest axis) never merge: the two sides of a wall
+// thinner than a cell stay two sides, and a hard edge keeps each face's normal (with octants
+// alone the saw's moving AO moved by 0.025 on average, with the cones 0.005; tests/gl). Draws are clustered separately (materials never mix); MASK draws are kept whole (their
 // cut-outs follow texture coordinates).
 #pragma once
 #include "scene/scene.h"
@@ -38,7 +39,7 @@ struct MotionLod {
 };
 
 // The clustered copy with cells of edge `cell` (> 0, scene units); positions relative to
-// scene.bounds.min (cells past 2^20 on an axis share the last one).
+// scene.bounds.min (cells past 2^19 on an axis share the last one).
 MotionLod buildMotionLod(const Scene& scene, float cell);
 
 // The copies a scene gets, coarsest first: none below kMotionLodMinTriangles triangles, and only the
