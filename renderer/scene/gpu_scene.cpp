@@ -13,8 +13,7 @@ bool outsideFrustum(const Bounds& box, const glm::mat4& viewProj, bool zeroToOne
     // Counts, per clip plane, the corners outside it: x < -w, x > w, y < -w, y > w, near, far.
     int out[6] = {0, 0, 0, 0, 0, 0};
     for (int i = 0; i < 8; ++i) {
-        const glm::vec3 p((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                          (i & 4) ? box.max.z : box.min.z);
+        const glm::vec3 p = box.corner(i);
         const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
         out[0] += c.x < -c.w, out[1] += c.x > c.w;
         out[2] += c.y < -c.w, out[3] += c.y > c.w;
@@ -28,8 +27,7 @@ bool outsideFrustum(const Bounds& box, const glm::mat4& viewProj, bool zeroToOne
 
 bool beyondNearPlane(const Bounds& box, const glm::mat4& viewProj, bool zeroToOneDepth) {
     for (int i = 0; i < 8; ++i) {
-        const glm::vec3 p((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                          (i & 4) ? box.max.z : box.min.z);
+        const glm::vec3 p = box.corner(i);
         const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
         // Strictly inside the near plane's half-space (reversed: z_ndc < 1; standard: z_ndc > -1).
         if (!(zeroToOneDepth ? c.z < c.w : c.z > -c.w)) return false;

@@ -1,5 +1,7 @@
 #include "scene/motion_lod.h"
 
+#include "scene/view_fit.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -25,7 +27,8 @@ uint64_t cellKey(const Vertex& v, const glm::vec3& origin, float cell) {
     uint64_t key = 0;
     for (int a = 0; a < 3; ++a) {
         const float c = std::floor((v.position[a] - origin[a]) / cell);
-        const uint64_t i = c > 0.0f ? std::min(uint64_t(c), kAxisCells - 1) : 0; // NaN lands in cell 0
+        // Clamped as a float first: a float past 2^64 has no uint64_t (NaN lands in cell 0).
+        const uint64_t i = c > 0.0f ? uint64_t(std::min(c, float(kAxisCells - 1))) : 0;
         key = (key << 19) | i;
     }
     return (key << 5) | normalBucket(v.normal);
@@ -101,14 +104,7 @@ float motionLodCellPx(float cell, const Bounds& bounds, const Camera& camera, in
     }
     // The box's least depth along the view axis: no surface in it lies nearer to the image plane
     // (with the screen-edge stretch of a wide lens, a cell may reach ~1/cos^2 of this there).
-    const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
-    float distance = inf, farthest = -inf;
-    for (int i = 0; i < 8; ++i) {
-        const glm::vec3 p((i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
-                          (i & 4) ? bounds.max.z : bounds.min.z);
-        distance = std::min(distance, glm::dot(p - camera.eye, forward));
-        farthest = std::max(farthest, glm::dot(p - camera.eye, forward));
-    }
+    const auto [distance, farthest] = depthRange(camera, bounds);
     if (farthest <= 0.0f) return 0.0f; // behind the camera
     if (!(distance > 0.0f) || !(tanHalf > 0.0f)) return inf;
     return cell * float(height) / (2.0f * tanHalf * distance);

@@ -53,6 +53,10 @@ struct Bounds {
     bool valid() const { return min.x <= max.x; }
     glm::vec3 center() const { return (min + max) * 0.5f; }
     float radius() const { return glm::length(max - min) * 0.5f; }
+    // Corner i (0..7): bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
+    glm::vec3 corner(int i) const {
+        return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
+    }
 };
 
 // glTF material classes by alphaMode (and KHR_materials_transmission, which is BLEND to a

@@ -6,16 +6,19 @@
 
 namespace ssao {
 
-std::pair<float, float> fitClipPlanes(const Camera& c, const Bounds& b) {
+std::pair<float, float> depthRange(const Camera& c, const Bounds& b) {
     const glm::vec3 fwd = glm::normalize(c.target - c.eye);
     float zmin = INFINITY, zmax = -INFINITY;
     for (int i = 0; i < 8; ++i) {
-        const glm::vec3 corner((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
-                               (i & 4) ? b.max.z : b.min.z);
-        const float z = glm::dot(corner - c.eye, fwd);
+        const float z = glm::dot(b.corner(i) - c.eye, fwd);
         zmin = std::min(zmin, z);
         zmax = std::max(zmax, z);
     }
+    return {zmin, zmax};
+}
+
+std::pair<float, float> fitClipPlanes(const Camera& c, const Bounds& b) {
+    const auto [zmin, zmax] = depthRange(c, b);
     const float size = std::max(b.radius(), 1e-6f);
     // The whole scene is behind the camera: any valid planes will do, nothing is visible.
     if (!(zmax > 0.0f)) return {size * 1e-3f, size};

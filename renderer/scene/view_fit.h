@@ -10,6 +10,8 @@ namespace ssao {
 // Near and far planes that enclose the scene's bounding box as seen from `c` (view-space depth
 // range of its corners, with a small margin), with far/near ≤ 1e4 so depth keeps precision.
 std::pair<float, float> fitClipPlanes(const Camera& c, const Bounds& b);
+// The least and greatest depth of the box's corners along the view axis (target - eye), scene units.
+std::pair<float, float> depthRange(const Camera& c, const Bounds& b);
 // `c` with near/far fitted when c.clip == Fit, unchanged when Fixed.
 Camera effectiveCamera(const Camera& c, const Bounds& b);
 

@@ -187,8 +187,8 @@ std::vector<Param> coreRows() {
             .onlyWhen("ao.resolution", {"half", "quarter"}),
         BOOL_ROW("skip.motion_lod", "Simplify while moving", skip.motionLod,
                  "While the camera moves, the G-buffer of a scene of 40k triangles or more draws a copy with its "
-                 "vertices clustered into cells of 1/768 of the diagonal, where a cell covers at most a pixel of "
-                 "the moving frame: llvmpipe spends ~0.2 us per triangle whatever the resolution (2CylinderEngine's "
+                 "vertices clustered into cells (1/96 to 1/768 of the diagonal: the coarsest whose cell covers at "
+                 "most a pixel of the moving frame; none where no level is that fine): llvmpipe spends ~0.2 us per triangle whatever the resolution (2CylinderEngine's "
                  "121k: ~27 ms of a drag frame). The still frame draws the full mesh; headless renders never move."),
     };
     return rows;
