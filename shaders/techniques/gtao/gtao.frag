@@ -45,6 +45,13 @@ void main() {
     vec2 noise = vec2(0.5);
     if (aoNoiseOn(ssao.aoCommon)) noise = aoNoise(ssao.aoCommon, gl_FragCoord.xy);
 
+    // Each step's distance as a fraction of R, the same in every slice: computed once per pixel
+    // rather than once per slice and step (a pow is an exp2 and a log2 on llvmpipe). Measured:
+    // CornellBox 1172x616 gtao-medium AO, six alternating runs, min 37.7 -> 36.4 ms, median 40.2 ->
+    // 39.3 (vbao.frag does the same). The same AO to the last bit.
+    float stepS[GTAO_MAX_STEPS]; // steps <= GTAO_MAX_STEPS (the parameter table's maximum)
+    int k = 0;
+    do { stepS[k] = pow((float(k) + noise.y) / float(steps), ssao.search.w) + minS; } while (++k < steps);
     float visibility = 0.0, openSum = 0.0;
     int slice = 0;
     do { // do-while, not for: no masked pass after the last slice (ao_common.glsl, aoLoops)
@@ -59,7 +66,7 @@ void main() {
         float hCos0 = lowCos0, hCos1 = lowCos1;
         int step = 0;
         do {
-            float s = pow((float(step) + noise.y) / float(steps), ssao.search.w) + minS;
+            float s = stepS[step];
             // Snap to texel centres: positions are not interpolated (XeGTAO rounds likewise).
             vec2 offsetUv = round(s * radiusPx * omega) * frame.viewport.zw;
             for (int side = 0; side < 2; ++side) {

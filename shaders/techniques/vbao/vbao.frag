@@ -69,6 +69,14 @@ void main() {
     int slices = max(ssao.modes.x, 1), steps = max(aoAdaptiveSteps(ssao.aoCommon, ssao.modes.y, radiusPx), 1); // ao.adaptive
     vec2 noise = aoNoiseOn(ssao.aoCommon) ? aoNoise(ssao.aoCommon, gl_FragCoord.xy) : vec2(0.5);
 
+    // Each step's distance as a fraction of R, the same in every slice: computed once per pixel
+    // rather than once per slice and step (a pow is an exp2 and a log2 on llvmpipe). Measured:
+    // CornellBox 1172x616 vbao-medium AO, eight alternating runs, min 78.2 -> 68.5 ms, median 86.4 ->
+    // 81.2; FlightHelmet vbao-high min 44.5 -> 41.0 (four runs); Lantern vbao-low unchanged (four
+    // steps). The same AO to the last bit.
+    float stepS[VBAO_MAX_STEPS]; // steps <= VBAO_MAX_STEPS (the parameter table's maximum)
+    int k = 0;
+    do { stepS[k] = pow((float(k) + noise.y) / float(steps), ssao.params.y) + minS; } while (++k < steps);
     float visibility = 0.0, openSum = 0.0;
     int slice = 0;
     do { // do-while, not for: no masked pass after the last slice (ao_common.glsl, aoLoops)
@@ -79,7 +87,7 @@ void main() {
         uint mask = 0u;
         int step = 0;
         do {
-            float s = pow((float(step) + noise.y) / float(steps), ssao.params.y) + minS;
+            float s = stepS[step];
             vec2 offsetUv = round(s * radiusPx * omega) * frame.viewport.zw;
             for (int side = 0; side < 2; ++side) {
                 vec2 uv = uv0 + (side == 0 ? offsetUv : -offsetUv);
