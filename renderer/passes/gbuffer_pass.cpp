@@ -82,7 +82,12 @@ void GBufferPass::run(PassContext& ctx, const GBufferConfig& c) {
     // Location 0 is uBaseColor; without the albedo target it is compiled out (-1: ignored).
     const bool albedo = std::find(outputs.begin(), outputs.end(), "gbuffer.albedo") != outputs.end();
     const ScenePrograms programs = scenePrograms(ctx, "passes/gbuffer.vert", "passes/gbuffer.frag", defs, albedo ? 0 : -1);
-    stats_ = ctx.scene()->draw(programs, {&viewProj, reversed, c.cull != 0, c.hiddenFaces != 0, c.lod});
+    DrawOptions o{&viewProj, reversed, c.cull != 0, c.hiddenFaces != 0, c.lod};
+    o.lodView = &c.frame.view; // each draw's own level (DrawOptions::lodView): all of it is in the config
+    o.lodProjY = c.frame.proj[1][1];
+    o.lodOrthographic = c.frame.camera.x != 0.0f;
+    o.lodHeight = int(c.frame.viewport.y);
+    stats_ = ctx.scene()->draw(programs, o);
 }
 
 ScenePrograms scenePrograms(PassContext& ctx, const std::string& vert, const std::string& frag, gl::Defines defines,
@@ -126,7 +131,8 @@ std::vector<std::pair<std::string, double>> GBufferPass::counters() const {
         {"triangles_face_culled", double(stats_.trianglesFaceCulled)},
         {"targets_written", double(written_.size())},
         {"targets_skipped", double(4 - written_.size())},
-        {"motion_lod_level", double(stats_.lod)}};
+        {"motion_lod_level", double(stats_.lod)},
+        {"motion_lod_draws_coarser", double(stats_.lodCoarser)}};
     return c;
 }
 

@@ -125,7 +125,8 @@ DrawStats GpuScene::draw(const ScenePrograms& programs, const DrawOptions& o) co
     DrawStats st;
     const LodLevel* lod = o.lod >= 0 && o.lod < lodLevels() ? &lods_[size_t(o.lod)] : nullptr;
     st.lod = lod ? o.lod : -1;
-    glBindVertexArray(lod ? lod->vao.id() : vao_.id());
+    GLuint boundVao = lod ? lod->vao.id() : vao_.id();
+    glBindVertexArray(boundVao);
     auto issue = [&](uint32_t firstTriangle, uint32_t count, GLenum cull, const Draw& d) {
         if (count == 0) return;
         if (cull) glEnable(GL_CULL_FACE), glCullFace(cull);
@@ -158,7 +159,16 @@ DrawStats GpuScene::draw(const ScenePrograms& programs, const DrawOptions& o) co
             }
             ++st.draws; // one per draw, however many calls its groups take
             if (lod) { // the clustered copy: one call, no face culling
-                const uint32_t first = lod->first[di], count = lod->count[di];
+                const LodLevel* level = lod;
+                for (int l = 0; o.lodView && l < o.lod; ++l) // coarsest first: the first whose cell fits
+                    if (motionLodCellPx(lods_[size_t(l)].cell, g.bounds, *o.lodView, o.lodProjY, o.lodOrthographic,
+                                        o.lodHeight) <= 1.0f) {
+                        level = &lods_[size_t(l)];
+                        ++st.lodCoarser;
+                        break;
+                    }
+                if (level->vao.id() != boundVao) glBindVertexArray(boundVao = level->vao.id());
+                const uint32_t first = level->first[di], count = level->count[di];
                 st.triangles += count / 3;
                 if (count)
                     glDrawElements(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT,

@@ -94,20 +94,25 @@ std::vector<MotionLod> motionLodsFor(const Scene& scene) {
     return out;
 }
 
-float motionLodCellPx(float cell, const Bounds& bounds, const Camera& camera, int height) {
+float motionLodCellPx(float cell, const Bounds& bounds, const glm::mat4& view, float projY, bool orthographic,
+                      int height) {
     const float inf = std::numeric_limits<float>::infinity();
-    if (!bounds.valid() || height <= 0) return inf;
-    const float tanHalf = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
-    if (camera.orthographic()) {
-        const float span = 2.0f * camera.orthoHalfHeight();
-        return span > 0.0f ? cell * float(height) / span : inf;
-    }
+    if (!bounds.valid() || height <= 0 || !(projY > 0.0f)) return inf;
+    // A cell at depth d spans cell * projY / d of the frame's height of 2 (NDC), so cell * projY *
+    // height / (2 d) pixels; orthographic: d = 1.
+    if (orthographic) return cell * projY * float(height) * 0.5f;
     // The box's least depth along the view axis: no surface in it lies nearer to the image plane
     // (with the screen-edge stretch of a wide lens, a cell may reach ~1/cos^2 of this there).
-    const auto [distance, farthest] = depthRange(camera, bounds);
+    const auto [distance, farthest] = depthRange(view, bounds);
     if (farthest <= 0.0f) return 0.0f; // behind the camera
-    if (!(distance > 0.0f) || !(tanHalf > 0.0f)) return inf;
-    return cell * float(height) / (2.0f * tanHalf * distance);
+    if (!(distance > 0.0f)) return inf;
+    return cell * projY * float(height) / (2.0f * distance);
+}
+
+float motionLodCellPx(float cell, const Bounds& bounds, const Camera& camera, int height) {
+    const float projY = camera.orthographic() ? 1.0f / camera.orthoHalfHeight()
+                                              : 1.0f / std::tan(glm::radians(camera.fovYDeg) * 0.5f);
+    return motionLodCellPx(cell, bounds, camera.view(), projY, camera.orthographic(), height);
 }
 
 } // namespace ssao

@@ -52,5 +52,10 @@ std::vector<MotionLod> motionLodsFor(const Scene& scene);
 // view's scale (orthographic). Infinite when the bounds reach the eye's plane, 0 when they lie
 // wholly behind it (nothing of them is seen).
 float motionLodCellPx(float cell, const Bounds& bounds, const Camera& camera, int height);
+// The same for a frame given as the G-buffer's constants hold it (graph/pass_config.h): `view`
+// world -> view (a rigid lookAt), `projY` the projection's y scale (proj[1][1]: 1 / tan(fov/2),
+// or 1 / the half height when orthographic).
+float motionLodCellPx(float cell, const Bounds& bounds, const glm::mat4& view, float projY, bool orthographic,
+                      int height);
 
 } // namespace ssao

@@ -17,6 +17,16 @@ std::pair<float, float> depthRange(const Camera& c, const Bounds& b) {
     return {zmin, zmax};
 }
 
+std::pair<float, float> depthRange(const glm::mat4& view, const Bounds& b) {
+    float zmin = INFINITY, zmax = -INFINITY;
+    for (int i = 0; i < 8; ++i) {
+        const float z = -(view * glm::vec4(b.corner(i), 1.0f)).z;
+        zmin = std::min(zmin, z);
+        zmax = std::max(zmax, z);
+    }
+    return {zmin, zmax};
+}
+
 std::pair<float, float> fitClipPlanes(const Camera& c, const Bounds& b) {
     const auto [zmin, zmax] = depthRange(c, b);
     const float size = std::max(b.radius(), 1e-6f);

@@ -12,6 +12,8 @@ namespace ssao {
 std::pair<float, float> fitClipPlanes(const Camera& c, const Bounds& b);
 // The least and greatest depth of the box's corners along the view axis (target - eye), scene units.
 std::pair<float, float> depthRange(const Camera& c, const Bounds& b);
+// The same through a world -> view matrix (depth = -z in view space).
+std::pair<float, float> depthRange(const glm::mat4& view, const Bounds& b);
 // `c` with near/far fitted when c.clip == Fit, unchanged when Fixed.
 Camera effectiveCamera(const Camera& c, const Bounds& b);
 

@@ -137,11 +137,17 @@ TEST(MotionLod, ACellsPixelsFollowTheNearestDepthOfTheBounds) {
     Camera c;
     c.eye = glm::vec3(0, 0, 11), c.target = glm::vec3(0), c.fovYDeg = 90.0f; // nearest depth 10, tan 45 = 1
     EXPECT_NEAR(motionLodCellPx(0.1f, b, c, 200), 0.1f * 200.0f / 20.0f, 1e-5f);
+    // The same through the matrices the G-buffer's constants hold (each draw's own level).
+    EXPECT_NEAR(motionLodCellPx(0.1f, b, c.view(), c.projection(1.0f)[1][1], false, 200), 1.0f, 1e-5f);
+    Bounds far; // the same box 10 units farther: half the pixels
+    far.add(glm::vec3(-1, -1, -11)), far.add(glm::vec3(1, 1, -9));
+    EXPECT_NEAR(motionLodCellPx(0.1f, far, c.view(), c.projection(1.0f)[1][1], false, 200), 0.5f, 1e-5f);
     c.eye = glm::vec3(0, 0, 0.5f); // inside
     EXPECT_TRUE(std::isinf(motionLodCellPx(0.1f, b, c, 200)));
     c.eye = glm::vec3(0, 0, 11);
     c.projectionKind = Projection::Orthographic; // spans 2 |target - eye| tan(fov / 2) = 22 units
     EXPECT_NEAR(motionLodCellPx(0.1f, b, c, 220), 1.0f, 1e-4f);
+    EXPECT_NEAR(motionLodCellPx(0.1f, far, c.view(), c.projection(1.0f)[1][1], true, 220), 1.0f, 1e-4f); // depth aside
     EXPECT_TRUE(std::isinf(motionLodCellPx(0.1f, Bounds{}, c, 220)));
 }
 

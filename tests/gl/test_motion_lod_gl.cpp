@@ -34,7 +34,7 @@ TEST_F(MotionLodGl, TheMovingFrameOfLargeSharedScenesSeesTheSameSurfacesWithinAC
         ASSERT_EQ(r->drewLod(), -1) << "not moving: the full mesh";
         const Rendered full = readAll(*r);
         r->setMoving(true);
-        r->render();
+        const FrameReport moving = r->render();
         const int level = r->drewLod();
         if (level < 0) { // no level's cell is fine enough at this framing (FlightHelmet's)
             std::printf("%s: no level at its camera\n", f.filename().string().c_str());
@@ -43,7 +43,22 @@ TEST_F(MotionLodGl, TheMovingFrameOfLargeSharedScenesSeesTheSameSurfacesWithinAC
         ++compared;
         const Rendered lod = readAll(*r);
         EXPECT_TRUE(finiteInRange(lod.ao, 0.0f, 1.0f)) << f;
-        const float cell = r->gpuScene()->lodCell(level);
+        // Each draw takes the coarsest level whose cell covers at most a pixel at its own nearest
+        // depth (DrawOptions::lodView): never more triangles than `level` everywhere, and on these
+        // CAD parts at different depths some draws coarser.
+        double triangles = -1, coarser = -1;
+        for (const auto& p : moving.passes)
+            for (const auto& [k, v] : p.counters)
+                if (p.name == "gbuffer" && k == "triangles") triangles = v;
+                else if (p.name == "gbuffer" && k == "motion_lod_draws_coarser") coarser = v;
+        std::printf("%s: %.0f triangles drawn moving (level %d everywhere: %zu), %.0f draws coarser\n",
+                    f.filename().string().c_str(), triangles, level, r->gpuScene()->lodTriangles(level), coarser);
+        EXPECT_LE(triangles, double(r->gpuScene()->lodTriangles(level))) << f;
+        EXPECT_GT(triangles, 0.0) << f;
+        EXPECT_GE(coarser, 0.0) << f;
+        // A pixel's world footprint at depth d: no draw's cell is larger there.
+        const Camera cam = sceneCamera(scene);
+        const float pixelPerDepth = 2.0f * std::tan(glm::radians(cam.fovYDeg) * 0.5f) / float(h);
         size_t geometry = 0, coverage = 0, near = 0, both = 0;
         double aoDiff = 0;
         for (int y = 0; y < h; ++y)
@@ -53,6 +68,7 @@ TEST_F(MotionLodGl, TheMovingFrameOfLargeSharedScenesSeesTheSameSurfacesWithinAC
                 coverage += a != b;
                 if (!(a && b)) continue;
                 ++both;
+                const float cell = pixelPerDepth * full.depth.at(x, y); // at most the cell of this draw's level
                 near += std::fabs(full.depth.at(x, y) - lod.depth.at(x, y)) <= std::sqrt(3.0f) * cell;
                 aoDiff += std::fabs(full.ao.at(x, y) - lod.ao.at(x, y));
             }
@@ -61,7 +77,7 @@ TEST_F(MotionLodGl, TheMovingFrameOfLargeSharedScenesSeesTheSameSurfacesWithinAC
         aoDiff /= double(both);
         std::printf("%s: level %d (cell %g), %zu geometry pixels: %.2f %% covered differently, %.1f %% within a cell's "
                     "diagonal in depth, mean |AO difference| %.4f\n",
-                    f.filename().string().c_str(), level, cell, geometry, 100.0 * coverageShare, 100.0 * nearShare, aoDiff);
+                    f.filename().string().c_str(), level, r->gpuScene()->lodCell(level), geometry, 100.0 * coverageShare, 100.0 * nearShare, aoDiff);
         EXPECT_LT(coverageShare, 0.02) << f; // silhouettes move by at most a cell, under a pixel
         EXPECT_GT(nearShare, 0.95) << f;     // the rest: edges where the nearest surface changes
         EXPECT_LT(aoDiff, 0.01) << f; // normals of other cones never merge (motion_lod.h)
