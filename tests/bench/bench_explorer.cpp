@@ -126,7 +126,8 @@ int main(int argc, char** argv) {
     }
     if (scenes.empty())
         for (const char* s : {"CornellBox/cornellBox.gltf", "FlightHelmet/FlightHelmet.gltf", "Lantern/Lantern.gltf",
-                              "ShaderBall/shader_ball.gltf", "2CylinderEngine/2CylinderEngine.gltf"})
+                              "ShaderBall/shader_ball.gltf", "2CylinderEngine/2CylinderEngine.gltf",
+                              "ReciprocatingSaw/ReciprocatingSaw.gltf"})
             scenes.push_back(std::string(SSAOLAB_SCENES_DIR) + "/" + s);
     try {
         PresetStore::standard().open(startPreset); // an unknown name stops here, before any timing
