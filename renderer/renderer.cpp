@@ -95,6 +95,13 @@ void Renderer::setSize(int width, int height) {
     graphStale_ = true;
 }
 
+void Renderer::setDisplayWidth(int px) {
+    if (px < 0) throw Error("display width must be 0 or positive");
+    if (px == displayWidth_) return;
+    displayWidth_ = px;
+    graphStale_ = true; // the composite's size
+}
+
 void Renderer::setDisplayScale(float scale) {
     if (!(scale > 0.0f) || !std::isfinite(scale)) throw Error("display scale must be positive");
     displayScale_ = scale;
@@ -127,6 +134,7 @@ std::vector<Pass*> Renderer::chainPasses(const Chain& c, const Settings& s) {
     passes.push_back(&passFor(c.prefix + "denoise", [&] { return std::make_unique<DenoisePass>(c); }));
     Pass& composite = passFor(c.prefix + "composite", [&] { return std::make_unique<CompositePass>(c); });
     static_cast<CompositePass&>(composite).allowFusedUpsample(c.prefix.empty() ? fuseA_ : fuseB_);
+    static_cast<CompositePass&>(composite).setDisplayWidth(displayWidth_);
     passes.push_back(&composite);
     return passes;
 }

@@ -45,6 +45,10 @@ class Renderer {
     // Render pixels per displayed pixel (the app renders reduced while the camera moves): a radius
     // in pixels is a radius in displayed pixels. 1 headless.
     void setDisplayScale(float scale);
+    // The widest any view shows the final image (pixels; 0, the default: as rendered): the
+    // composite, which no pass reads, is drawn at that size (CompositePass::setDisplayWidth; the
+    // app's grid cell).
+    void setDisplayWidth(int px);
     // Frames drawn while the camera moves (the app; false headless): with skip.motion_lod the
     // G-buffer draws the scene's clustered copy where one cell of it covers at most a pixel of the
     // frame (scene/motion_lod.h). The still frame after it draws the full mesh.
@@ -126,6 +130,7 @@ class Renderer {
     // Per chain (A, B): nothing outside the graph wants its ao.denoised, so its composite may
     // upsample reduced AO inline (CompositePass::allowFusedUpsample).
     bool fuseA_ = false, fuseB_ = false;
+    int displayWidth_ = 0; // setDisplayWidth
     int temporalFrame_ = 0;  // frames accumulated since the camera or the settings changed
     // What the accumulated history was made with: settings, size or scene differing drop it; a
     // different camera only restarts the count (compared directly, not serialised, every frame).

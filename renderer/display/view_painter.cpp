@@ -43,11 +43,7 @@ DisplayRange ViewPainter::paint(const Resource& r, const Resource& mask, const V
     } else {
         range = displayRange(Image{}, d, nullptr, style);
     }
-    int w = r.width(), h = r.height();
-    if (maxWidth > 0 && maxWidth < w) {
-        h = std::max(1, int(std::lround(double(h) * maxWidth / w)));
-        w = maxWidth;
-    }
+    const auto [w, h] = displaySize(r.width(), r.height(), maxWidth);
     out.ensure(w, h, GL_RGBA8, "view." + d.name);
     out.bind(); // the viewport of its w x h attachment
     const int mode = d.display == Display::Color                                         ? SSAO_VIEW_COLOR

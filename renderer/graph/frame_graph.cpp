@@ -127,7 +127,8 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
     for (const Compiled& n : nodes_)
         for (const ResourceDesc& d : n.decl.writes) {
             live.insert(d.name);
-            const int rw = scaledSize(w, d.scale) + 2 * d.margin, rh = scaledSize(h, d.scale) + 2 * d.margin;
+            const auto [sw, sh] = displaySize(scaledSize(w, d.scale), scaledSize(h, d.scale), d.maxWidth);
+            const int rw = sw + 2 * d.margin, rh = sh + 2 * d.margin;
             Resource& r = resources_[d.name];
             r.producer = n.pass->name();
             int levels = 1;

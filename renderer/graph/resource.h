@@ -4,8 +4,11 @@
 #pragma once
 #include "gl/resources.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 namespace ssao {
 
@@ -30,6 +33,7 @@ struct ResourceDesc {
     bool internal = false; // scratch data (ping-pong): not listed, written or reported
     int levels = 1;        // > 1: a MIP chain of at most this many levels (fewer when the size runs out)
     int margin = 0;        // pixels added beyond each edge of the scaled size (a guard band)
+    int maxWidth = 0;      // > 0: at most this wide, the aspect kept as a view does (displaySize)
     // Stored value → meaning: value * decodeScale + decodeOffset ((n+1)/2 normals: 2, -1).
     float decodeScale = 1.0f, decodeOffset = 0.0f;
 };
@@ -45,6 +49,13 @@ inline ResourceDesc describe(std::string name, GLenum format, int channels, Disp
 
 // Size of a resource of scale `scale` in a graph of base size w x h (rounded up, at least 1).
 int scaledSize(int base, float scale);
+// An image w x h shown at most `maxWidth` wide (0: as it is): maxWidth x round(h maxWidth / w).
+// The grid's cells are painted at this size (display/view_painter.cpp), and a resource with
+// ResourceDesc::maxWidth is allocated at it, so such a cell shows it texel for texel.
+inline std::pair<int, int> displaySize(int w, int h, int maxWidth) {
+    if (maxWidth <= 0 || maxWidth >= w) return {w, h};
+    return {maxWidth, std::max(1, int(std::lround(double(h) * maxWidth / w)))};
+}
 
 struct Resource {
     ResourceDesc desc;

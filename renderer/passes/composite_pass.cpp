@@ -27,8 +27,10 @@ void CompositePass::setup(PassBuilder& b, const Settings& s) const {
     } else if (s.composite.useAo) {
         b.read(chain().res("ao.denoised")); // AO off: the AO chain is not needed
     }
-    b.write(describe(chain().res("composite"), GL_RGBA8, 3, Display::Color,
-                     "the lit frame: ambient * albedo * AO + one point light, display gamma"));
+    ResourceDesc out = describe(chain().res("composite"), GL_RGBA8, 3, Display::Color,
+                                "the lit frame: ambient * albedo * AO + one point light, display gamma");
+    if (!fusesUpsample(s)) out.maxWidth = displayWidth_; // setDisplayWidth
+    b.write(out);
 }
 
 CompositeConfig CompositePass::config(const Settings& s, const FrameInfo& f) const {

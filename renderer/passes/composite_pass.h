@@ -29,11 +29,19 @@ class CompositePass final : public ConfiguredPass<CompositeConfig> {
     // (`ssaolab skips`, row "fused"), hence off by default.
     void allowFusedUpsample(bool allowed) { fuseAllowed_ = allowed; }
     bool fusesUpsample(const Settings& s) const;
+    // The widest the final image is shown (pixels; 0: as rendered): a grid cell shows it ~290
+    // pixels wide out of 1172. Nothing in the graph reads it, so it is drawn at that size
+    // (ResourceDesc::maxWidth, the cell's own size), each pixel reading the G-buffer and AO texels
+    // under its centre - what the cell showed of the full-size image before (view.frag), for a
+    // seventeenth of the pixels. Not with the fused upsample (its taps follow the full-resolution
+    // pixel), which the grid never runs: the grid shows ao.denoised.
+    void setDisplayWidth(int px) { displayWidth_ = px; }
 
   private:
     void run(PassContext& ctx, const CompositeConfig& c) override;
     std::string reducedAo(bool raw) const { return chain().res(raw ? "ao.raw" : "denoise.low"); }
     bool fuseAllowed_ = false;
+    int displayWidth_ = 0;
     gl::UniformBuffer ubo_;
 };
 

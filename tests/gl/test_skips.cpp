@@ -176,3 +176,57 @@ TEST_F(Skips, TargetsAndPassesNothingWantsAreSkippedAndComeBackWhenWanted) {
     // An idle frame runs nothing.
     EXPECT_TRUE(r->render().ran().empty());
 }
+
+// The app's grid shows the composite in a cell ~290 pixels wide (Renderer::setDisplayWidth): it is
+// drawn at that size, and each of its pixels is the full-size composite's texel under the pixel's
+// centre - what a cell painted from the full-size image showed (view.frag) - at a fraction of the
+// pixels. Only the composite re-runs when the width changes; at 0 it is full size again.
+TEST_F(Skips, TheCompositeIsDrawnAtTheWidthItIsShownAtAndShowsTheSameTexels) {
+    const Scene scene = loadScene("builtin:showcase");
+    for (const std::string preset : {"vbao-medium", "vbao-half-medium", "learnopengl"}) {
+        const int w = 320, h = 180;
+        auto r = makeRenderer(scene, ssaotest::preset(preset), w, h);
+        r->render();
+        const Image full = readBack(r->texture("composite"), 4);
+        // A cell's width; 5 texels a pixel, so no pixel centre lies on a texel edge (where an ulp of
+        // the interpolated coordinate picks either neighbour).
+        const int shown = 64;
+        r->setDisplayWidth(shown);
+        EXPECT_EQ(ranSet(r->render()), (std::set<std::string>{"composite"})) << preset;
+        const Image small = readBack(r->texture("composite"), 4);
+        const auto [sw, sh] = displaySize(w, h, shown);
+        ASSERT_EQ(small.width, sw) << preset;
+        ASSERT_EQ(small.height, sh) << preset;
+        EXPECT_EQ(sw, shown);
+        EXPECT_EQ(sh, 36);
+        // Geometry: the very texel. Sky: the gradient at the shown pixel's own centre (composite.frag),
+        // within a step of 8 bits of the full-size texel's.
+        const Image position = readBack(r->texture("gbuffer.position"), 4);
+        size_t geometry = 0;
+        for (int y = 0; y < sh; ++y) // readBack's rows run from the top: GL's row sh - 1 - y
+            for (int x = 0; x < sw; ++x) {
+                const int fx = int((x + 0.5) * w / sw), fy = h - 1 - int((sh - 1 - y + 0.5) * h / sh);
+                const bool onGeometry = position.at(fx, fy, 3) != 0.0f;
+                geometry += onGeometry;
+                for (int c = 0; c < 4; ++c)
+                    if (onGeometry)
+                        ASSERT_EQ(small.at(x, y, c), full.at(fx, fy, c)) << preset << " at " << x << "," << y;
+                    else
+                        ASSERT_NEAR(small.at(x, y, c), full.at(fx, fy, c), 1.01 / 255.0) << preset << " sky";
+            }
+        EXPECT_GT(geometry, size_t(sw * sh / 4)) << preset;
+        r->setDisplayWidth(0);
+        EXPECT_EQ(ranSet(r->render()), (std::set<std::string>{"composite"})) << preset;
+        const Image again = readBack(r->texture("composite"), 4);
+        EXPECT_EQ(again.width, w);
+        EXPECT_EQ(again.data, full.data) << preset;
+        EXPECT_ANY_THROW(r->setDisplayWidth(-1));
+    }
+}
+
+TEST(DisplaySize, AViewKeepsTheAspectAndNeverGrowsAnImage) {
+    EXPECT_EQ(displaySize(1172, 616, 290), std::make_pair(290, 152)); // the default window's grid cell
+    EXPECT_EQ(displaySize(320, 180, 0), std::make_pair(320, 180));
+    EXPECT_EQ(displaySize(100, 50, 200), std::make_pair(100, 50));
+    EXPECT_EQ(displaySize(4000, 1, 3), std::make_pair(3, 1)); // never 0 rows
+}
