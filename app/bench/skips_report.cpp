@@ -100,6 +100,18 @@ std::string skipsMarkdown(const SkipsRun& run) {
                num(r.wallWithout, "%.1f") + " | " + change(r.errorChange) + " |";
     });
 
+    table(md, "Draws the scene hides left out of the G-buffer (skip.occluded: occlusion queries)",
+          "| scene | view | draws occluded | triangles occluded | boxes tested | frame wall ms with | without | ratio | output change |",
+          "|---|---|---:|---:|---:|---:|---:|---:|---|");
+    rows(md, run, "occluded", [](const SkipRow& r) {
+        const double d = r.extra.value("draws", 0.0), dc = r.extra.value("draws_occluded", 0.0);
+        const double t = r.extra.value("triangles", 0.0), tc = r.extra.value("triangles_occluded", 0.0);
+        return "| " + r.scene + " | " + r.view + " | " + num(dc, "%.0f") + " of " + num(d + dc, "%.0f") + " | " +
+               num(tc, "%.0f") + " of " + num(t + tc, "%.0f") + " | " + num(r.extra.value("boxes_tested", 0.0), "%.0f") +
+               " | " + num(r.with, "%.1f") + " | " + num(r.without, "%.1f") + " | " + ratio(r) + " | " +
+               change(r.errorChange) + " |";
+    });
+
     table(md, "G-buffer targets nothing reads",
           "| scene | view | case | colour targets written | G-buffer ms with | all 4 written | ratio | output change |",
           "|---|---|---|---:|---:|---:|---:|---|");

@@ -18,7 +18,7 @@ nlohmann::json skipCounters(const FrameCapture& c, const FrameReport& frame) {
     j["passes"] = {{"ran", ran}, {"clean", clean}, {"culled", culled}};
     const Settings& s = c.settings;
     j["settings"] = {{"sky", s.skip.sky}, {"cull", s.skip.cull}, {"unused_targets", s.skip.unusedTargets},
-                     {"hidden_faces", s.skip.hiddenFaces},
+                     {"hidden_faces", s.skip.hiddenFaces}, {"occluded", s.skip.occluded},
                      {"adaptive", s.ao.adaptive}};
     if (!c.gbufferCounters.empty()) {
         nlohmann::json gb = nlohmann::json::object();

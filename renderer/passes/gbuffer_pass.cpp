@@ -44,6 +44,7 @@ GBufferConfig GBufferPass::config(const Settings& s, const FrameInfo& f) const {
     c.hiddenFaces = s.skip.hiddenFaces;
     c.sceneVersion = f.sceneVersion;
     c.lod = f.lod;
+    c.occluded = s.skip.occluded;
     return c;
 }
 
@@ -87,6 +88,11 @@ void GBufferPass::run(PassContext& ctx, const GBufferConfig& c) {
     o.lodProjY = c.frame.proj[1][1];
     o.lodOrthographic = c.frame.camera.x != 0.0f;
     o.lodHeight = int(c.frame.viewport.y);
+    if (c.occluded) {
+        occlusion_.begin(ctx.scene()->drawCount(), c.sceneVersion,
+                         ctx.shaders.program("passes/occlusion_box.vert", "passes/occlusion_box.frag"));
+        o.occlusion = &occlusion_; // with it off the visible set waits, unchanged: it only ever guides the order
+    }
     stats_ = ctx.scene()->draw(programs, o);
 }
 
@@ -132,7 +138,10 @@ std::vector<std::pair<std::string, double>> GBufferPass::counters() const {
         {"targets_written", double(written_.size())},
         {"targets_skipped", double(4 - written_.size())},
         {"motion_lod_level", double(stats_.lod)},
-        {"motion_lod_draws_coarser", double(stats_.lodCoarser)}};
+        {"motion_lod_draws_coarser", double(stats_.lodCoarser)},
+        {"draws_occluded", double(stats_.occluded)},
+        {"triangles_occluded", double(stats_.trianglesOccluded)},
+        {"boxes_tested", double(stats_.boxesTested)}};
     return c;
 }
 

@@ -4,6 +4,7 @@
 #include "graph/pass.h"
 #include "gl/shader_library.h"
 #include "scene/gpu_scene.h"
+#include "scene/occlusion_culler.h"
 
 namespace ssao {
 
@@ -16,6 +17,7 @@ struct GBufferConfig {
     int32_t hiddenFaces;       // skip.hidden_faces: closed shells' hidden sides are culled
     uint32_t sceneVersion;     // what it draws
     int32_t lod;               // skip.motion_lod while the camera moves: the clustered level drawn, -1 none (FrameInfo::lod)
+    int32_t occluded;          // skip.occluded: draws the scene hides are not drawn (scene/occlusion_culler.h)
 };
 SSAO_CONFIG_END
 
@@ -32,6 +34,7 @@ class GBufferPass final : public ConfiguredPass<GBufferConfig> {
     void run(PassContext& ctx, const GBufferConfig& c) override;
     DrawStats stats_;
     std::vector<std::string> written_; // colour targets the last run wrote
+    OcclusionCuller occlusion_;        // skip.occluded: what the last run saw, carried to the next
 };
 
 GLenum glFormat(TargetFormat f);

@@ -1,6 +1,7 @@
 #include "scene/gpu_scene.h"
 
 #include "scene/closed_shells.h"
+#include "scene/occlusion_culler.h"
 
 #include "../../shaders/include/bindings.h"
 
@@ -127,14 +128,8 @@ DrawStats GpuScene::draw(const ScenePrograms& programs, const DrawOptions& o) co
     st.lod = lod ? o.lod : -1;
     GLuint boundVao = lod ? lod->vao.id() : vao_.id();
     glBindVertexArray(boundVao);
-    auto issue = [&](uint32_t firstTriangle, uint32_t count, GLenum cull, const Draw& d) {
-        if (count == 0) return;
-        if (cull) glEnable(GL_CULL_FACE), glCullFace(cull);
-        else glDisable(GL_CULL_FACE);
-        glDrawElements(GL_TRIANGLES, GLsizei(3 * count), GL_UNSIGNED_INT,
-                       reinterpret_cast<const void*>((size_t(d.firstIndex) + 3 * size_t(firstTriangle)) * sizeof(uint32_t)));
-        if (cull) st.trianglesFaceCulled += count;
-    };
+    OcclusionCuller* occ = o.occlusion && o.viewProj ? o.occlusion : nullptr;
+    std::vector<size_t> waiting; // skip.occluded: draws whose box is tested first
     // Opaque draws first, then MASK draws with the program that cuts them out.
     for (int pass = 0; pass < 2; ++pass) {
         const bool mask = pass == 1;
@@ -142,61 +137,110 @@ DrawStats GpuScene::draw(const ScenePrograms& programs, const DrawOptions& o) co
         glUseProgram(mask ? programs.mask : programs.opaque);
         for (size_t di = 0; di < draws_.size(); ++di) {
             const GpuDraw& g = draws_[di];
-            const Draw& d = g.draw;
-            if (d.mask != mask) continue;
+            if (g.draw.mask != mask) continue;
             if (o.frustumCull && o.viewProj && outsideFrustum(g.bounds, *o.viewProj, o.zeroToOneDepth)) {
                 ++st.culled;
-                st.trianglesCulled += d.indexCount / 3;
+                st.trianglesCulled += g.draw.indexCount / 3;
                 continue;
             }
-            if (programs.colorLocation >= 0) glUniform4fv(programs.colorLocation, 1, &d.baseColor.x);
-            if (mask) { // alpha_mask.glsl: uAlphaTest (location 1), uAlphaWrap (2), the texture
-                const bool tex = d.alphaTexture >= 0;
-                glUniform4f(1, d.alphaCutoff, d.baseColor.w, tex ? 1.0f : 0.0f, 0.0f);
-                const glm::ivec2 wrap = tex ? alphaWrap_[size_t(d.alphaTexture)] : glm::ivec2(0);
-                glUniform2i(2, wrap.x, wrap.y);
-                if (tex) alpha_[size_t(d.alphaTexture)].bind(SSAO_TEX_SCENE_ALPHA);
-            }
-            ++st.draws; // one per draw, however many calls its groups take
-            if (lod) { // the clustered copy: one call, no face culling
-                const LodLevel* level = lod;
-                for (int l = 0; o.lodView && l < o.lod; ++l) // coarsest first: the first whose cell fits
-                    if (motionLodCellPx(lods_[size_t(l)].cell, g.bounds, *o.lodView, o.lodProjY, o.lodOrthographic,
-                                        o.lodHeight) <= 1.0f) {
-                        level = &lods_[size_t(l)];
-                        ++st.lodCoarser;
-                        break;
-                    }
-                if (level->vao.id() != boundVao) glBindVertexArray(boundVao = level->vao.id());
-                const uint32_t first = level->first[di], count = level->count[di];
-                st.triangles += count / 3;
-                if (count)
-                    glDrawElements(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT,
-                                   reinterpret_cast<const void*>(size_t(first) * sizeof(uint32_t)));
+            if (occ && occ->deferred(di)) {
+                waiting.push_back(di);
                 continue;
             }
-            const uint32_t triangles = d.indexCount / 3;
-            st.triangles += triangles;
-            const bool faces = o.hiddenFaces && o.viewProj;
-            const bool back = faces && g.outward && beyondNearPlane(g.outwardBounds, *o.viewProj, o.zeroToOneDepth);
-            const bool front = faces && g.inward && beyondNearPlane(g.inwardBounds, *o.viewProj, o.zeroToOneDepth);
-            // Outward | Inward | Open, each group culled where it may be; neighbours drawn alike
-            // go in one call (no shell to cull: one call, as without them).
-            const uint32_t first[3] = {0, g.outward, g.outward + g.inward};
-            const uint32_t count[3] = {g.outward, g.inward, triangles - g.outward - g.inward};
-            const GLenum cull[3] = {GLenum(back ? GL_BACK : 0), GLenum(front ? GL_FRONT : 0), 0};
-            for (int k = 0; k < 3;) {
-                int end = k + 1;
-                uint32_t n = count[k];
-                while (end < 3 && cull[end] == cull[k]) n += count[end++];
-                issue(first[k], n, cull[k], d);
-                k = end;
+            if (occ) occ->beginDraw(di);
+            drawOne(di, programs, o, boundVao, st);
+            if (occ) occ->endDraw();
+        }
+    }
+    if (occ && !waiting.empty()) {
+        std::vector<Bounds> boxes;
+        for (size_t di : waiting)
+            boxes.push_back(draws_[di].bounds);
+        const std::vector<bool> shown = occ->testBoxes(boxes, *o.viewProj, o.zeroToOneDepth);
+        st.boxesTested += occ->tested();
+        glBindVertexArray(boundVao);
+        for (int pass = 0; pass < 2; ++pass) {
+            const bool mask = pass == 1;
+            bool bound = false;
+            for (size_t k = 0; k < waiting.size(); ++k) {
+                const size_t di = waiting[k];
+                if (draws_[di].draw.mask != mask) continue;
+                if (!shown[k]) {
+                    ++st.occluded;
+                    const LodLevel* level = levelFor(di, o); // what it would have drawn
+                    st.trianglesOccluded += level ? level->count[di] / 3 : draws_[di].draw.indexCount / 3;
+                    continue;
+                }
+                if (!bound) glUseProgram(mask ? programs.mask : programs.opaque), bound = true;
+                occ->beginDraw(di);
+                drawOne(di, programs, o, boundVao, st);
+                occ->endDraw();
             }
         }
     }
     glDisable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     return st;
+}
+
+const GpuScene::LodLevel* GpuScene::levelFor(size_t di, const DrawOptions& o) const {
+    if (o.lod < 0 || o.lod >= lodLevels()) return nullptr;
+    for (int l = 0; o.lodView && l < o.lod; ++l) // coarsest first: the first whose cell fits
+        if (motionLodCellPx(lods_[size_t(l)].cell, draws_[di].bounds, *o.lodView, o.lodProjY, o.lodOrthographic,
+                            o.lodHeight) <= 1.0f)
+            return &lods_[size_t(l)];
+    return &lods_[size_t(o.lod)];
+}
+
+void GpuScene::drawOne(size_t di, const ScenePrograms& programs, const DrawOptions& o, GLuint& boundVao,
+                       DrawStats& st) const {
+    const GpuDraw& g = draws_[di];
+    const Draw& d = g.draw;
+    auto issue = [&](uint32_t firstTriangle, uint32_t count, GLenum cull) {
+        if (count == 0) return;
+        if (cull) glEnable(GL_CULL_FACE), glCullFace(cull);
+        else glDisable(GL_CULL_FACE);
+        glDrawElements(GL_TRIANGLES, GLsizei(3 * count), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>((size_t(d.firstIndex) + 3 * size_t(firstTriangle)) * sizeof(uint32_t)));
+        if (cull) st.trianglesFaceCulled += count;
+    };
+    if (programs.colorLocation >= 0) glUniform4fv(programs.colorLocation, 1, &d.baseColor.x);
+    if (d.mask) { // alpha_mask.glsl: uAlphaTest (location 1), uAlphaWrap (2), the texture
+        const bool tex = d.alphaTexture >= 0;
+        glUniform4f(1, d.alphaCutoff, d.baseColor.w, tex ? 1.0f : 0.0f, 0.0f);
+        const glm::ivec2 wrap = tex ? alphaWrap_[size_t(d.alphaTexture)] : glm::ivec2(0);
+        glUniform2i(2, wrap.x, wrap.y);
+        if (tex) alpha_[size_t(d.alphaTexture)].bind(SSAO_TEX_SCENE_ALPHA);
+    }
+    ++st.draws; // one per draw, however many calls its groups take
+    if (const LodLevel* level = levelFor(di, o)) { // the clustered copy: one call, no face culling
+        st.lodCoarser += level != &lods_[size_t(o.lod)];
+        if (level->vao.id() != boundVao) glBindVertexArray(boundVao = level->vao.id());
+        const uint32_t first = level->first[di], count = level->count[di];
+        st.triangles += count / 3;
+        glDisable(GL_CULL_FACE);
+        if (count)
+            glDrawElements(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT,
+                           reinterpret_cast<const void*>(size_t(first) * sizeof(uint32_t)));
+        return;
+    }
+    const uint32_t triangles = d.indexCount / 3;
+    st.triangles += triangles;
+    const bool faces = o.hiddenFaces && o.viewProj;
+    const bool back = faces && g.outward && beyondNearPlane(g.outwardBounds, *o.viewProj, o.zeroToOneDepth);
+    const bool front = faces && g.inward && beyondNearPlane(g.inwardBounds, *o.viewProj, o.zeroToOneDepth);
+    // Outward | Inward | Open, each group culled where it may be; neighbours drawn alike
+    // go in one call (no shell to cull: one call, as without them).
+    const uint32_t first[3] = {0, g.outward, g.outward + g.inward};
+    const uint32_t count[3] = {g.outward, g.inward, triangles - g.outward - g.inward};
+    const GLenum cull[3] = {GLenum(back ? GL_BACK : 0), GLenum(front ? GL_FRONT : 0), 0};
+    for (int k = 0; k < 3;) {
+        int end = k + 1;
+        uint32_t n = count[k];
+        while (end < 3 && cull[end] == cull[k]) n += count[end++];
+        issue(first[k], n, cull[k]);
+        k = end;
+    }
 }
 
 } // namespace ssao

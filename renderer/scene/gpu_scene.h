@@ -14,7 +14,13 @@ struct DrawStats {
     size_t trianglesFaceCulled = 0; // of `triangles`, drawn with face culling (closed shells)
     int lod = -1;                   // the level of the clustered mesh drawn (DrawOptions::lod), -1: the scene's
     size_t lodCoarser = 0;          // draws that took a level coarser than `lod` (DrawOptions::lodView)
+    // DrawOptions::occlusion: draws left out as hidden (their boxes behind the depth drawn before
+    // them), their triangles, and the boxes tested (of draws not visible in the last run; a box the
+    // near plane reaches is not tested: its draw is drawn).
+    size_t occluded = 0, trianglesOccluded = 0, boxesTested = 0;
 };
+
+class OcclusionCuller;
 
 // How a pass draws the scene. `viewProj` is the pass's view; `zeroToOneDepth` its clip depth
 // range ([0, w], 1 at near: reversed-Z).
@@ -38,6 +44,9 @@ struct DrawOptions {
     float lodProjY = 0.0f;              // the projection's proj[1][1]
     bool lodOrthographic = false;
     int lodHeight = 0; // pixels
+    // skip.occluded: draws the culler's visible set first, then only those of the other draws whose
+    // bounding box shows past that depth (scene/occlusion_culler.h; begin() called for this run).
+    OcclusionCuller* occlusion = nullptr;
 };
 
 // True when the box cannot touch the view volume of `viewProj` (clip space: |x|, |y| <= w and
@@ -66,6 +75,7 @@ class GpuScene {
     explicit GpuScene(const Scene& scene, bool motionLods = false);
     // Binds the VAO and issues the draws, MASK draws last, as `o` asks. Leaves face culling off.
     DrawStats draw(const ScenePrograms& programs, const DrawOptions& o = {}) const;
+    size_t drawCount() const { return draws_.size(); }
     float radius() const { return radius_; }
     bool hasMask() const { return hasMask_; } // a MASK draw: callers build ScenePrograms::mask
     // The clustered copies, coarsest first: each one's cell edge (scene units) and triangle count.
@@ -103,6 +113,11 @@ class GpuScene {
     float radius_ = 1.0f;
     Bounds bounds_;
     void bindAttributes(GLuint vao) const;
+    // The clustered level draw `di` takes under `o` (null: the scene's own triangles).
+    const LodLevel* levelFor(size_t di, const DrawOptions& o) const;
+    // Draw `di` (its uniforms, its LOD level or its face-culled groups); the program is bound.
+    void drawOne(size_t di, const ScenePrograms& programs, const DrawOptions& o, GLuint& boundVao,
+                 DrawStats& st) const;
 };
 
 } // namespace ssao

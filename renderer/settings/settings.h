@@ -79,6 +79,7 @@ struct SkipSettings {
     bool cull = true;          // G-buffer: meshes whose bounds lie outside the view are not drawn
     bool unusedTargets = true; // G-buffer: targets no pass or view reads are not written
     bool hiddenFaces = true;   // G-buffer: the hidden side of closed shells is culled (scene/closed_shells.h)
+    bool occluded = true;      // G-buffer: draws the scene hides are not drawn (scene/occlusion_culler.h)
     // Reduced AO: the composite does the joint upsample itself where nothing else reads the
     // full-resolution AO (passes/composite_pass.h). Off by default: on llvmpipe it saves nothing.
     bool fusedUpsample = false;

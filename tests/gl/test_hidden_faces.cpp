@@ -34,6 +34,7 @@ struct Compared {
 Compared compare(const Scene& scene, std::optional<Camera> cam, int w, int h) {
     Compared c;
     Settings s = defaultSettings();
+    s.skip.occluded = false; // the draws counted alike: this skip alone (test_occlusion.cpp has the other)
     auto r = makeRenderer(scene, s, w, h, cam);
     r->render();
     c.on = readAll(*r), c.countersOn = gbufferCounters(*r);
