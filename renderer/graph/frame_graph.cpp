@@ -134,9 +134,14 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
             int levels = 1;
             while (levels < d.levels && std::max(rw, rh) >> levels > 0)
                 ++levels;
-            if (!r.texture || r.texture.width() != rw || r.texture.height() != rh ||
-                r.texture.format() != d.format || r.texture.levels() != levels) {
-                r.texture = gl::Texture2D(rw, rh, d.format, d.name, levels);
+            auto fits = [&](const gl::Texture2D& t) {
+                return t && t.width() == rw && t.height() == rh && t.format() == d.format && t.levels() == levels;
+            };
+            if (!fits(r.texture)) {
+                gl::Texture2D& spare = spares_[d.name];
+                gl::Texture2D before = std::move(r.texture);
+                r.texture = fits(spare) ? std::move(spare) : gl::Texture2D(rw, rh, d.format, d.name, levels);
+                spare = std::move(before); // kept for the way back (its contents are stale: version 0)
                 r.generation = nextGeneration_++;
                 r.version = 0;
             }
@@ -144,6 +149,8 @@ void FrameGraph::compile(const std::vector<Node>& nodes, const std::map<std::str
         }
     for (auto it = resources_.begin(); it != resources_.end();)
         it = live.count(it->first) ? std::next(it) : resources_.erase(it);
+    for (auto it = spares_.begin(); it != spares_.end();)
+        it = live.count(it->first) ? std::next(it) : spares_.erase(it);
     // Framebuffers of outputs that went away (they would keep the textures alive), and the keys
     // and timers of passes that left the graph.
     for (auto it = fbos_.begin(); it != fbos_.end();) {
