@@ -12,6 +12,7 @@
 #include "render_command.h"
 #include "scene/scene.h"
 #include "settings/params.h"
+#include "settings/preset_store.h"
 #include "techniques/technique.h"
 #include "util/error.h"
 #include "util/paths.h"
@@ -255,6 +256,40 @@ void adaptiveRows(Context& c, ReferenceProvider& provider, const Camera& cam, co
       }
 }
 
+// Deinterleaved sampling (ao.deinterleave) against the same preset without it: the AO pass's time
+// (its split, 16 layer draws and merge included) and the whole frame's wall time, and each one's
+// RMSE against the reference - not a skip (the taps move to a 4-pixel grid), measured like one so
+// the page says where it pays.
+void deinterleaveRows(Context& c, ReferenceProvider& provider, const Camera& cam, const std::string& view) {
+    c.note("deinterleave, " + view);
+    Renderer& r = c.r;
+    r.setWanted(std::set<std::string>{"ao.denoised"});
+    r.setCamera(cam);
+    for (const TechniqueInfo& t : techniques()) {
+        if (!t.deinterleave) continue;
+        Settings off = PresetStore::standard().open(t.id + "-medium").settings;
+        Settings on = off;
+        on.ao.deinterleave = true;
+        r.setSettings(off);
+        r.render(); // fits the clip planes: the reference traces the camera as rendered
+        const ReferenceImage ref = provider.get(r.camera(), r.width(), r.height(),
+                                                {r.radiusAtCentre().world, c.o.referenceRays, ReferenceVariant::Visibility});
+        const AbResult ab = compare(
+            r, on, off, c.o.frames, [](const FrameTime& f) { return f.sum({"ao"}); }, "ao.denoised");
+        SkipRow row{"deinterleave", c.scene, view, t.id + "-medium", "AO GPU ms"};
+        row.with = ab.a, row.without = ab.b, row.wallWith = ab.wallA, row.wallWithout = ab.wallB;
+        double rmse[2];
+        for (int i = 0; i < 2; ++i) {
+            r.setSettings(i == 0 ? on : off);
+            r.render();
+            rmse[i] = evaluate(readBack(r.texture("ao.denoised"), 1), ref).metrics.rmse;
+        }
+        row.errorChange = rmse[0] - rmse[1];
+        row.extra["rmse_with"] = rmse[0], row.extra["rmse_without"] = rmse[1];
+        c.run.rows.push_back(row);
+    }
+}
+
 void gbufferRows(Context& c, const Camera& cam, const std::string& view) {
     c.note("G-buffer, " + view);
     Renderer& r = c.r;
@@ -396,6 +431,7 @@ int runSkips(const SkipsOptions& o) {
         adaptiveRows(c, provider, cam, "camera", 0.05f);
         adaptiveRows(c, provider, moveEye(cam, -3.0f), "4x farther", 0.05f);
         adaptiveRows(c, provider, cam, "camera, R = 1 % of diagonal", 0.01f);
+        deinterleaveRows(c, provider, cam, "camera");
         gbufferRows(c, cam, "camera");
         gbufferRows(c, moveEye(cam, 0.8f), "close-up (5x nearer)");
         runner.checkGl("while measuring the skips on " + scene.name);

@@ -78,6 +78,16 @@ std::string skipsMarkdown(const SkipsRun& run) {
                num(r.extra.value("rmse_without", 0.0), "%.4f") + " | " + num(r.errorChange, "%+.4f") + " |";
     });
 
+    table(md, "Deinterleaved sampling (ao.deinterleave): 16 quarter-size layers, one jitter each (not exact: taps on a 4-pixel grid)",
+          "| scene | view | preset | AO ms deinterleaved | interleaved | ratio | frame wall ms deinterleaved / interleaved | RMSE deinterleaved | interleaved | change |",
+          "|---|---|---|---:|---:|---:|---:|---:|---:|---:|");
+    rows(md, run, "deinterleave", [](const SkipRow& r) {
+        return "| " + r.scene + " | " + r.view + " | " + r.variant + " | " + num(r.with) + " | " + num(r.without) +
+               " | " + ratio(r) + " | " + num(r.wallWith, "%.1f") + " / " + num(r.wallWithout, "%.1f") + " | " +
+               num(r.extra.value("rmse_with", 0.0), "%.4f") + " | " + num(r.extra.value("rmse_without", 0.0), "%.4f") +
+               " | " + num(r.errorChange, "%+.4f") + " |";
+    });
+
     table(md, "Frustum culling in the G-buffer pass",
           "| scene | view | draws culled | triangles culled | G-buffer ms with | without | ratio | wall ms with / without | output change |",
           "|---|---|---:|---:|---:|---:|---:|---:|---|");

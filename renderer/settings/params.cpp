@@ -42,6 +42,13 @@ std::vector<std::string> adaptiveTechniques() {
     return ids;
 }
 
+std::vector<std::string> deinterleaveTechniques() {
+    std::vector<std::string> ids;
+    for (const auto& info : registeredTechniques())
+        if (info.deinterleave) ids.push_back(info.id);
+    return ids;
+}
+
 std::vector<Param> coreRows() {
     std::vector<Param> rows = {
         // ---- G-buffer -------------------------------------------------------------------------
@@ -104,6 +111,13 @@ std::vector<Param> coreRows() {
                   "Adaptive samples: radius in pixels each march step (or each tap's square of the disc) "
                   "covers before the count is cut; 1 keeps every step that lands on a new pixel.")
             .onlyWhen("ao.adaptive", {"true"}),
+        BOOL_ROW("ao.deinterleave", "Deinterleave", ao.deinterleave,
+                 "Cache-aware sampling (NVIDIA gl_ssao, HBAO+): the G-buffer split into 16 quarter-size layers, "
+                 "the AO computed over each with one jitter for the whole layer, then interleaved back. Taps land "
+                 "on a 4-pixel grid. Pays where neighbouring pixels sharing a texture cache line matters (gl_ssao: "
+                 "1.9x for HBAO on a Quadro M6000); measured on llvmpipe in docs/benchmarks.md. Full resolution "
+                 "only; not with the position pyramid, guard band, back-face layer or normals from depth.")
+            .onlyWhen("ao.technique", deinterleaveTechniques()),
         // ---- Denoise --------------------------------------------------------------------------
         ENUM_ROW("denoise.kind", "Denoise", denoise.kind, DenoiseKind,
                  "Removes the sampling noise: auto (default: the technique's own choice, measured on the benchmark to "

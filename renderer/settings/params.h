@@ -50,6 +50,7 @@ struct TechniqueRows {
     std::string id;          // the value of ao.technique
     std::vector<Param> rows; // its rows ("id.*"); the table adds "applies while ao.technique = id"
     bool adaptive = false;   // it takes ao.adaptive (a march or tap count the rule cuts)
+    bool deinterleave = false; // it takes ao.deinterleave (TechniqueInfo::deinterleave)
 };
 const std::vector<TechniqueRows>& registeredTechniques();
 

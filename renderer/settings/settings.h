@@ -42,6 +42,10 @@ struct AoSettings {
     // disc, never below 2 steps / 4 taps nor above the technique's own count.
     bool adaptive = false;
     float adaptivePx = 4.0f;
+    // Deinterleaved ("cache-aware") sampling (techniques/deinterleave.h): 16 quarter-size layers,
+    // one jitter each; for the techniques that can (TechniqueInfo::deinterleave), at full resolution
+    // without the pyramid, guard band, back-face layer or normals from depth.
+    bool deinterleave = false;
 };
 
 struct DenoiseSettings {

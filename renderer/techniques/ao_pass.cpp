@@ -7,6 +7,7 @@
 #include "scene/camera.h"
 #include "techniques/ao_common.h"
 #include "techniques/noise/blue_noise.h"
+#include "techniques/technique.h"
 
 namespace ssao {
 
@@ -38,6 +39,7 @@ AoBindings aoBindings(const Settings& s, AoNoise noise, bool pyramid, bool band)
     b.gbufferNormals = s.ao.normals == NormalSource::GBuffer;
     b.blueNoise = noise == AoNoise::Blue;
     b.pyramid = pyramid;
+    b.deinterleave = deinterleaves(s);
     return b;
 }
 
@@ -80,21 +82,53 @@ gl::Defines aoFeatureDefines(const gpu::AoCommon& c) {
 }
 
 void AoShared::draw(PassContext& ctx, const Chain& chain, const std::string& shader, const gpu::AoCommon& common,
-                    bool inspect) {
+                    const AoBindings& bind, const gpu::FrameConstants& frame, bool inspect) {
     gl::Defines defs = aoFeatureDefines(common);
+    if (bind.deinterleave) defs.push_back({"AO_DEINTERLEAVED", "1"});
     if (inspect)
         defs.push_back({"INSPECT", "1"});
-    else
+    else if (!bind.deinterleave)
         ctx.bindOutputs({chain.res("ao.raw")});
-    glUseProgram(ctx.shaders.program("passes/fullscreen.vert", shader, defs));
-    ctx.drawFullscreen();
+    const GLuint program = ctx.shaders.program("passes/fullscreen.vert", shader, defs);
+    auto fullscreen = [&] { ctx.drawFullscreen(); };
+    if (!bind.deinterleave) {
+        glUseProgram(program);
+        ctx.drawFullscreen();
+        return;
+    }
+    if (inspect) { // the layers of the last run: the probe's pixel is a texel of inspectLayer_
+        glUseProgram(program);
+        deinterleaver_.bindLayer(inspectLayer_, program);
+        ctx.drawFullscreen();
+        deinterleaver_.restoreFrame();
+        return;
+    }
+    deinterleaver_.split(ctx.shaders.program("passes/fullscreen.vert", "passes/deinterleave.frag"),
+                         ctx.in("gbuffer.position"), bind.gbufferNormals ? &ctx.in("gbuffer.normal") : nullptr, frame,
+                         fullscreen);
+    deinterleaver_.drawLayers(program, fullscreen);
+    deinterleaver_.restoreFrame();
+    ctx.bindOutputs({chain.res("ao.raw")});
+    deinterleaver_.merge(ctx.shaders.program("passes/fullscreen.vert", "passes/reinterleave.frag"), fullscreen);
 }
 
 bool AoShared::inspect(PassContext& ctx, const Chain& chain, glm::ivec2 pixel, PixelInspection& out,
-                       const std::function<void()>& drawInspect) {
+                       bool deinterleaved, const std::function<void()>& drawInspect) {
     const glm::ivec2 size = ctx.size(chain.res("ao.raw"));
     if (pixel.x < 0 || pixel.y < 0 || pixel.x >= size.x || pixel.y >= size.y) return false;
-    probe_.run(pixel, size, drawInspect, out);
+    if (!deinterleaved) {
+        probe_.run(pixel, size, drawInspect, out);
+        return true;
+    }
+    // Pixel (x, y from the top) is texel (x / 4, y' / 4) of layer (x & 3, y' & 3), y' = its row from
+    // the bottom (GL); the probe takes rows from the top of the layer.
+    const int yGl = size.y - 1 - pixel.y;
+    const glm::ivec2 layer = Deinterleaver::layerSize(size.x, size.y);
+    inspectLayer_ = (pixel.x & 3) + Deinterleaver::kSide * (yGl & 3);
+    const glm::ivec2 texel(pixel.x >> 2, layer.y - 1 - (yGl >> 2));
+    probe_.run(texel, layer, drawInspect, out);
+    out.pixel = pixel;
+    for (auto& t : out.taps) t.uv = Deinterleaver::frameUv(t.uv, inspectLayer_, size.x, size.y);
     return true;
 }
 

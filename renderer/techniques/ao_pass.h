@@ -8,6 +8,7 @@
 #include "graph/inspect_probe.h"
 #include "gl/shader_library.h"
 #include "graph/pass.h"
+#include "techniques/deinterleave.h"
 #include "techniques/noise/noise.h"
 
 #include "../../shaders/include/bindings.h"
@@ -25,6 +26,7 @@ struct AoBindings {
     int32_t pyramid = 0;        // reads and binds gbuffer.position_mips (passes/position_pyramid_pass.h)
     int32_t guardBand = 0;      // reads and binds gbuffer.guard_band (passes/guard_band_pass.h)
     int32_t backDepth = 0;      // reads and binds gbuffer.back_depth (passes/back_face_pass.h)
+    int32_t deinterleave = 0;   // ao.deinterleave in effect: drawn over 16 layers (techniques/deinterleave.h)
 };
 
 // The config of a technique that is one constant block and one shader.
@@ -62,15 +64,20 @@ class AoShared {
     // Binds gbuffer.normal, the blue-noise tile and the pyramid as `bind` says.
     void bind(PassContext& ctx, const AoBindings& bind, const std::string& pass);
     // Draws `shader`, in the variant `common` calls for, over the chain's ao.raw (or, inspect =
-    // true, the INSPECT variant into the probe).
-    static void draw(PassContext& ctx, const Chain& chain, const std::string& shader, const gpu::AoCommon& common,
-                     bool inspect);
-    bool inspect(PassContext& ctx, const Chain& chain, glm::ivec2 pixel, PixelInspection& out,
+    // true, the INSPECT variant into the probe); with bind.deinterleave over the 16 layers of
+    // `frame`'s G-buffer, interleaved back into ao.raw.
+    void draw(PassContext& ctx, const Chain& chain, const std::string& shader, const gpu::AoCommon& common,
+              const AoBindings& bind, const gpu::FrameConstants& frame, bool inspect);
+    // Deinterleaved, the pixel's own layer is probed (the layers of the last run), its taps
+    // given as uvs of the frame.
+    bool inspect(PassContext& ctx, const Chain& chain, glm::ivec2 pixel, PixelInspection& out, bool deinterleaved,
                  const std::function<void()>& drawInspect);
 
   private:
     gl::Texture2D blueNoise_;
     InspectProbe probe_;
+    Deinterleaver deinterleaver_;
+    int inspectLayer_ = 0; // the layer the INSPECT draw binds (deinterleaved)
 };
 
 template <class Config> class AoPass : public ConfiguredPass<Config> {
@@ -78,7 +85,7 @@ template <class Config> class AoPass : public ConfiguredPass<Config> {
     explicit AoPass(const Chain& c) : ConfiguredPass<Config>(c.res("ao"), c) {}
     bool inspect(PassContext& ctx, glm::ivec2 pixel, PixelInspection& out) override {
         const Config c = ctx.config().template as<Config>();
-        return shared_.inspect(ctx, this->chain(), pixel, out, [&] { draw(ctx, c, true); });
+        return shared_.inspect(ctx, this->chain(), pixel, out, c.bind.deinterleave != 0, [&] { draw(ctx, c, true); });
     }
 
   protected:
@@ -89,7 +96,7 @@ template <class Config> class AoPass : public ConfiguredPass<Config> {
 
   private:
     void draw(PassContext& ctx, const Config& c, bool inspect) {
-        AoShared::draw(ctx, this->chain(), prepare(ctx, c), c.constants.aoCommon, inspect);
+        shared_.draw(ctx, this->chain(), prepare(ctx, c), c.constants.aoCommon, c.bind, c.frame, inspect);
     }
 };
 

@@ -34,7 +34,7 @@ const std::vector<TechniqueRows>& registeredTechniques() {
     static const std::vector<TechniqueRows> rows = [] {
         std::vector<TechniqueRows> out;
         for (const auto& t : techniques())
-            out.push_back({t.id, t.params(), bool(t.adaptive)});
+            out.push_back({t.id, t.params(), bool(t.adaptive), t.deinterleave});
         return out;
     }();
     return rows;
@@ -48,6 +48,11 @@ std::string unphysicalReason(const Settings& s) {
 bool usesPyramid(const Settings& s) {
     const TechniqueInfo& t = findTechnique(s.ao.technique);
     return t.pyramid && t.pyramid(s);
+}
+
+bool deinterleaves(const Settings& s) {
+    return s.ao.deinterleave && findTechnique(s.ao.technique).deinterleave && s.ao.resolution == AoResolution::Full &&
+           !usesPyramid(s) && s.gbuffer.guardBandPx == 0 && !s.gbuffer.backFaces && s.ao.normals == NormalSource::GBuffer;
 }
 
 DenoiseSettings effectiveDenoise(const Settings& s) {

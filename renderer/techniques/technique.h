@@ -34,6 +34,10 @@ struct TechniqueInfo {
     std::function<bool(const Settings&)> pyramid;
     // The count ao.adaptive cuts for these settings; null = the technique takes no adaptive count.
     std::function<AdaptiveCount(const Settings&)> adaptive;
+    // Its shader can run over deinterleaved layers (ao.deinterleave, techniques/deinterleave.h): it
+    // takes its pixel's noise from noise.glsl's aoNoise and its taps at whole pixels of the frame it
+    // is drawn over.
+    bool deinterleave = false;
     // Why these settings are unphysical by design (a seed article's artefact a preset reproduces on
     // purpose), or "" when the technique must hold the physics with them: an open plane unoccluded,
     // a corner darkening toward the wall (tests/gl/test_physics_limits.cpp, `ssaolab stress`).
@@ -64,6 +68,9 @@ const TechniqueInfo& findTechnique(const std::string& id);
 // The capabilities of `s`'s technique.
 std::string unphysicalReason(const Settings& s); // "" when it has none
 bool usesPyramid(const Settings& s);
+// ao.deinterleave on and in effect: a technique that can, at full resolution, without the position
+// pyramid, guard band, back-face layer or normals from depth (what the layers do not hold).
+bool deinterleaves(const Settings& s);
 // s.denoise, with auto resolved to the technique's own denoiser.
 DenoiseSettings effectiveDenoise(const Settings& s);
 // The share of the technique's full count that ao.adaptive takes at a pixel whose radius spans

@@ -93,8 +93,22 @@ vec3 aoNormal(AoCommon_ c, sampler2D positions, sampler2D normals, vec2 uv, vec3
     if (aoSky) P4 = vec4(frameViewPosition(uv, 2.0 * frame.clip.z), 1.0);
 #define AO_RESULT(v) (aoSky ? max((v), 1.0) : (v))
 
+// Pixels of the frame per pixel of what the pass is drawn over: 4 over the quarter-size layers of
+// deinterleaved sampling (AO_DEINTERLEAVED, renderer/techniques/deinterleave.h), where frame.viewport
+// is the layer's size and a radius in pixels comes out in layer pixels; 1 otherwise.
+#ifdef AO_DEINTERLEAVED
+const float aoFramePixels = 4.0;
+#else
+const float aoFramePixels = 1.0;
+#endif
+
 // Adaptive sample counts (ao.adaptive; common.flags.y = pixels per sample, 0 = off): the rule of
-// include/adaptive.h, which C++ shares.
+// include/adaptive.h, which C++ shares. `radiusPx` in pixels of what the pass is drawn over; the
+// rule counts frame pixels.
 #include "include/adaptive.h"
-int aoAdaptiveSteps(AoCommon_ c, int steps, float radiusPx) { return adaptiveSteps(c.flags.y, steps, radiusPx); }
-int aoAdaptiveSamples(AoCommon_ c, int samples, float radiusPx) { return adaptiveSamples(c.flags.y, samples, radiusPx); }
+int aoAdaptiveSteps(AoCommon_ c, int steps, float radiusPx) {
+    return adaptiveSteps(c.flags.y, steps, radiusPx * aoFramePixels);
+}
+int aoAdaptiveSamples(AoCommon_ c, int samples, float radiusPx) {
+    return adaptiveSamples(c.flags.y, samples, radiusPx * aoFramePixels);
+}

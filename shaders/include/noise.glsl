@@ -37,7 +37,17 @@ int aoNoiseKind(AoCommon_ c) {
 // Whether the technique asked for noise at all (none: one fixed pattern, banding).
 bool aoNoiseOn(AoCommon_ c) { return aoNoiseKind(c) != SSAO_NOISE_NONE; }
 
+#ifdef AO_DEINTERLEAVED
+// Deinterleaved AO (ao.deinterleave, renderer/techniques/deinterleave.h): the layer's cell (i, j)
+// of the 4x4 tile. Every pixel of a layer takes the noise of that cell: one jitter a layer, as
+// HBAO+'s 4x4 jitter texture, so neighbouring lanes tap neighbouring texels.
+layout(location = 30) uniform vec2 uAoLayerCell;
+#endif
+
 vec2 aoNoise(AoCommon_ c, vec2 fragCoord) {
+#ifdef AO_DEINTERLEAVED
+    fragCoord = uAoLayerCell + 0.5;
+#endif
     float f = frame.clip.w; // temporal frame index (0 without accumulation)
     vec2 p = floor(fragCoord);
     // Golden-ratio steps per frame keep each pixel's sequence over time well spread (Wolfe 2022,

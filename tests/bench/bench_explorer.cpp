@@ -121,7 +121,14 @@ int main(int argc, char** argv) {
             }
             startPreset = argv[++i];
         }
-        else
+        else if (a.rfind("-", 0) == 0) { // not a scene: it was taken for one, and the fallback timed
+            std::fprintf(stderr, "bench_explorer: unknown option '%s' (usage: bench_explorer [--no-reference] "
+                                 "[--single] [--cursor-away] [--preset NAME] [SCENE ...])\n", a.c_str());
+            return 2;
+        } else if (!std::filesystem::exists(a) && a.rfind("builtin:", 0) != 0) {
+            std::fprintf(stderr, "bench_explorer: no scene file '%s'\n", a.c_str());
+            return 2;
+        } else
             scenes.push_back(a);
     }
     if (scenes.empty())

@@ -50,6 +50,15 @@ std::vector<Config> qualityLevels(const std::string& id) {
     }
     for (const auto& name : names)
         out.push_back({name, atWorldRadius(preset(name))});
+    // Deinterleaved sampling (ao.deinterleave) at each level, where the technique takes it and the
+    // level leaves it in effect (full resolution, no pyramid).
+    for (size_t i = 0, n = out.size(); i < n; ++i) {
+        Config d = out[i];
+        d.settings.ao.deinterleave = true;
+        if (!deinterleaves(d.settings)) continue;
+        d.label += " deinterleaved";
+        out.push_back(d);
+    }
     return out;
 }
 
@@ -67,7 +76,7 @@ void makeApply(Settings& s, const Param& p) {
 // The technique's own rows and the shared rows a user sets beside them, each at its limits.
 std::vector<Config> limits(const std::string& id) {
     static const std::set<std::string> shared = {"ao.power",    "ao.resolution", "ao.normals", "ao.adaptive",
-                                                 "ao.adaptive_px", "denoise.kind", "denoise.upsample"};
+                                                 "ao.adaptive_px", "ao.deinterleave", "denoise.kind", "denoise.upsample"};
     std::vector<Config> out;
     for (const Param& p : paramTable()) {
         if (p.group() != id && !shared.count(p.key)) continue;

@@ -59,6 +59,7 @@ TechniqueInfo gtaoTechnique() {
             "Horizon-based, cosine-weighted visibility integrated analytically per slice: Jimenez et al. "
             "2016, Intel XeGTAO",
                     gtaoParams);
+    t.deinterleave = true;
     t.adaptive = [](const Settings& s) { // its quality presets set the steps
         int slices = 0, steps = 0;
         gtaoSlicesSteps(s.gtao, slices, steps);

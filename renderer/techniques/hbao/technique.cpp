@@ -41,6 +41,7 @@ TechniqueInfo hbaoTechnique() {
             "Horizon-based: the highest horizon above the tangent plane along D directions, linear falloff: "
             "Bavoil, Sainz, Dimitrov 2008 (seed 002), NVIDIA HBAO+",
                     hbaoParams);
+    t.deinterleave = true;
     t.adaptive = [](const Settings& s) { return AdaptiveCount{s.hbao.steps, true}; };
     // denoise.kind = auto: none. Every filter of the denoiser sweep raised its raw error on some
     // scene (box4 by up to 0.024; an AO-range bilateral by 0.002): its noise is finer than the detail a

@@ -42,6 +42,7 @@ TechniqueInfo vbaoTechnique() {
             "GTAO's slices with a 32-sector occlusion bitmask per slice and an assumed thickness: Therrien, "
             "Levesque, Gilet 2023",
                     vbaoParams);
+    t.deinterleave = true;
     t.adaptive = [](const Settings& s) { return AdaptiveCount{s.vbao.steps, true}; };
     // denoise.kind = auto: none. Every filter of the denoiser sweep raised its raw error on some
     // scene (box4 by up to 0.085; an AO-range bilateral by 0.0008): its noise is finer than the detail a

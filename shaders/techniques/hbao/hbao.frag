@@ -30,7 +30,7 @@ void main() {
     float depth = -P.z;
     float R = aoRadius(ssao.aoCommon, depth);
     // The radius projected to G-buffer pixels, clamped (a close-up would march the whole screen).
-    float radiusPx = min(R * framePixelsPerUnit(depth), ssao.params.y);
+    float radiusPx = min(R * framePixelsPerUnit(depth), ssao.params.y / aoFramePixels); // the cap is in frame pixels
     // At least one of each (the parameter table's minimum): the loops below test at their end.
     int dirs = max(ssao.modes.x, 1), steps = max(aoAdaptiveSteps(ssao.aoCommon, ssao.modes.y, radiusPx), 1); // ao.adaptive
     // Steps of at least a pixel, the first one pixel out: never the pixel itself (no self-
