@@ -9,7 +9,7 @@ namespace {
 constexpr int kTargets = 8;                 // colour targets a split draw writes (the GL minimum)
 constexpr GLint kFirstLayerLocation = 0;    // deinterleave.frag: uFirstLayer
 constexpr GLint kAtlasLayerLocation = 0;    // reinterleave.frag: uLayerSize
-constexpr GLint kLayerCellLocation = 30;    // noise.glsl (AO_DEINTERLEAVED): uAoLayerCell
+constexpr GLint kLayerCellLocation = SSAO_LOC_AO_LAYER_CELL; // noise.glsl (AO_DEINTERLEAVED): uAoLayerCell
 } // namespace
 
 gpu::FrameConstants Deinterleaver::layerFrame(const gpu::FrameConstants& frame, glm::ivec2 layer) {
@@ -71,8 +71,11 @@ void Deinterleaver::bindLayer(int l, GLuint program) {
     positions_[size_t(l)].bind(SSAO_TEX_POSITION);
     if (haveNormals_) normals_[size_t(l)].bind(SSAO_TEX_NORMAL);
     frameUbo_.bind(SSAO_UBO_FRAME);
+    // Looked up, not assumed: a variant that takes no noise (noise none) has no such uniform, and
+    // setting an inactive location is an error on some drivers.
     const glm::ivec2 c = cell(l);
-    glProgramUniform2f(program, kLayerCellLocation, float(c.x), float(c.y));
+    if (glGetProgramResourceLocation(program, GL_UNIFORM, "uAoLayerCell") == kLayerCellLocation)
+        glProgramUniform2f(program, kLayerCellLocation, float(c.x), float(c.y));
 }
 
 void Deinterleaver::drawLayers(GLuint program, const std::function<void()>& drawFullscreen) {

@@ -27,6 +27,7 @@
 #define SSAO_UBO_AO 1      // the AO technique's constants (first member: AoCommon)
 #define SSAO_UBO_DENOISE 2 // DenoiseConstants
 #define SSAO_SSBO_INSPECT 0 // sample inspector record (INSPECT builds only)
+#define SSAO_LOC_AO_LAYER_CELL 30 // deinterleaved AO: the layer's cell of the 4x4 tile (noise.glsl, techniques/deinterleave.h)
 
 #define SSAO_MAX_DENOISE_TAPS 65 // 2*32+1 taps of a 1-D kernel
 #define SSAO_BILATERAL_MAX_HALF_WIDTH 8 // the bilateral's 2-D window: at most 17x17

@@ -41,7 +41,7 @@ bool aoNoiseOn(AoCommon_ c) { return aoNoiseKind(c) != SSAO_NOISE_NONE; }
 // Deinterleaved AO (ao.deinterleave, renderer/techniques/deinterleave.h): the layer's cell (i, j)
 // of the 4x4 tile. Every pixel of a layer takes the noise of that cell: one jitter a layer, as
 // HBAO+'s 4x4 jitter texture, so neighbouring lanes tap neighbouring texels.
-layout(location = 30) uniform vec2 uAoLayerCell;
+layout(location = SSAO_LOC_AO_LAYER_CELL) uniform vec2 uAoLayerCell;
 #endif
 
 vec2 aoNoise(AoCommon_ c, vec2 fragCoord) {
