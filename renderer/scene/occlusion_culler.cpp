@@ -2,13 +2,14 @@
 
 #include "scene/gpu_scene.h"
 
+#include "../../shaders/include/box_corners.h"
+
 #include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
 
 namespace ssao {
 
-const int OcclusionCuller::kBoxCorners[36] = {4, 6, 2, 4, 2, 0, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4,
-                                              6, 7, 3, 6, 3, 2, 2, 3, 1, 2, 1, 0, 4, 5, 7, 4, 7, 6};
+const int OcclusionCuller::kBoxCorners[36] = {SSAO_BOX_CORNERS};
 
 Bounds OcclusionCuller::grown(const Bounds& b) {
     const glm::vec3 big = glm::max(glm::abs(b.min), glm::abs(b.max));
@@ -33,10 +34,13 @@ void OcclusionCuller::begin(size_t draws, unsigned scene, GLuint boxProgram) {
         queries_.emplace_back(id);
     }
     // The last run's answers: a draw none of whose fragments passed the depth test was hidden by
-    // what came before it. (The frame that issued them has ended: no wait in practice.)
+    // what came before it. An answer not in yet (a GPU with frames queued) is not waited for: the
+    // draw keeps its flag, which only orders the work, and its query waits for the next run.
     for (size_t i = 0; i < draws; ++i) {
         if (!pending_[i]) continue;
-        GLuint any = 1;
+        GLuint ready = 0, any = 1;
+        glGetQueryObjectuiv(queries_[i].id(), GL_QUERY_RESULT_AVAILABLE, &ready);
+        if (!ready) continue;
         glGetQueryObjectuiv(queries_[i].id(), GL_QUERY_RESULT, &any);
         visible_[i] = any != 0;
         pending_[i] = 0;
@@ -45,10 +49,12 @@ void OcclusionCuller::begin(size_t draws, unsigned scene, GLuint boxProgram) {
 
 void OcclusionCuller::beginDraw(size_t draw) {
     current_ = draw;
-    glBeginQuery(GL_ANY_SAMPLES_PASSED, queries_[draw].id());
+    queried_ = !pending_[draw]; // its last answer still unread: no second query on the same object
+    if (queried_) glBeginQuery(GL_ANY_SAMPLES_PASSED, queries_[draw].id());
 }
 
 void OcclusionCuller::endDraw() {
+    if (!queried_) return;
     glEndQuery(GL_ANY_SAMPLES_PASSED);
     pending_[current_] = 1;
 }
@@ -67,7 +73,6 @@ std::vector<bool> OcclusionCuller::testBoxes(const std::vector<Bounds>& boxes, c
     glCullFace(GL_BACK);
     glUseProgram(boxProgram_);
     glBindVertexArray(emptyVao_.id());
-    glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(viewProj));
     std::vector<uint8_t> tested(boxes.size(), 0);
     tested_ = 0;
     for (size_t i = 0; i < boxes.size(); ++i) {
@@ -82,9 +87,10 @@ std::vector<bool> OcclusionCuller::testBoxes(const std::vector<Bounds>& boxes, c
         tested[i] = 1;
         ++tested_;
     }
-    glDepthMask(GL_TRUE);
+    glDepthMask(GL_TRUE); // the G-buffer's state (SceneDrawState): writes on, no face culling
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisable(GL_CULL_FACE);
+    glUseProgram(0); // the scene's draws bind theirs
     for (size_t i = 0; i < boxes.size(); ++i) {
         if (!tested[i]) continue;
         GLuint any = 1;

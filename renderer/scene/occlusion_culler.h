@@ -9,7 +9,9 @@
 // ever comes nearer), so none of its fragments could have passed the depth test. The visible set
 // only decides how much is drawn before the test: a wrong guess costs time, never pixels. A box
 // the near plane reaches is not tested (its draw is drawn). Ties between coplanar surfaces of two
-// draws may resolve the other way when a draw of phase 2 comes after one it preceded.
+// draws may resolve the other way when a draw of phase 2 comes after one it preceded, and the
+// margin is in scene units: where the depth buffer cannot tell two surfaces apart (z-fighting) a
+// test at the same depth may go either way.
 //
 // Why: on llvmpipe the G-buffer of a CAD assembly is bound by its triangles (~0.1 us each on one
 // thread before any pixel), and most of an assembly's parts are inside others: at their own
@@ -32,29 +34,30 @@ class OcclusionCuller {
   public:
     // Starts a run over `draws` draws; `scene` identifies what they are (another scene, or a
     // changed draw count, forgets the visible set: every draw is then drawn in phase 1).
-    // `boxProgram` draws a box (shaders/passes/occlusion_box.vert): uniforms at location 0 (mat4
-    // viewProj), 1 (vec3 min), 2 (vec3 max).
+    // `boxProgram` draws a box (shaders/passes/occlusion_box.vert): its corners at uniform
+    // locations 1 (vec3 min) and 2 (vec3 max), transformed by the frame block as the scene is.
     void begin(size_t draws, unsigned scene, GLuint boxProgram);
     // Phase 1 or 2: whether the draw waits for its box test.
     bool deferred(size_t draw) const { return draw < visible_.size() && !visible_[draw]; }
     // Around a draw's calls: its query, read at the next begin().
     void beginDraw(size_t draw);
     void endDraw();
-    // Phase 2: each box's visibility against the depth drawn so far, in the order given. Leaves
-    // the depth and colour targets untouched and restores the depth and colour write masks and
-    // face culling (off). Blocks until the queries are answered (the draws drawn so far rasterised).
+    // Phase 2: each box's visibility against the depth drawn so far, in the order given. Writes
+    // nothing; leaves the G-buffer's state (SceneDrawState: depth and colour writes on, face culling
+    // off) and no program bound. Blocks until the queries are answered (the draws so far
+    // rasterised): on a GPU a stall per frame, on llvmpipe the wait its next pass makes anyway.
+    // `viewProj` decides which boxes the near plane reaches; the boxes are drawn with the frame block.
     std::vector<bool> testBoxes(const std::vector<Bounds>& boxes, const glm::mat4& viewProj, bool zeroToOneDepth);
     // Boxes the last testBoxes() drew (those the near plane reaches are shown untested).
     size_t tested() const { return tested_; }
-    // Forgets the visible set (the next run draws everything in phase 1).
-    void reset() { visible_.clear(), pending_.clear(); }
 
     // The box a test draws: `b` grown on every side by a margin over rounding (1e-4 of its
     // diagonal plus 1e-5 of its largest coordinate), so a surface lying on a face of its own
     // bounds is never in front of the box that stands for it.
     static Bounds grown(const Bounds& b);
     // The 36 corner indices (bit 0: max x, bit 1: max y, bit 2: max z) of the box's 12
-    // triangles, counter-clockwise seen from outside (occlusion_box.vert holds the same list).
+    // triangles, counter-clockwise seen from outside (shaders/include/box_corners.h, which
+    // occlusion_box.vert reads too).
     static const int kBoxCorners[36];
 
   private:
@@ -66,6 +69,7 @@ class OcclusionCuller {
     unsigned scene_ = 0;
     GLuint boxProgram_ = 0;
     size_t current_ = 0, tested_ = 0;
+    bool queried_ = false; // the draw between beginDraw and endDraw has a query running
 };
 
 } // namespace ssao

@@ -193,8 +193,8 @@ std::vector<Param> coreRows() {
         BOOL_ROW("skip.occluded", "Occlusion culling", skip.occluded,
                  "The G-buffer draws first the meshes that were visible last frame, then tests the bounding box "
                  "of each other mesh against that depth (occlusion queries) and draws only those it shows: parts "
-                 "inside others are not drawn (2CylinderEngine: 104 of 115 at its camera). The same surfaces; "
-                 "the first frame of a scene draws everything."),
+                 "inside others are not drawn (2CylinderEngine: 87 of 115 at its camera). The same surfaces (where two "
+                 "surfaces z-fight, up to the depth buffer's rounding); the first frame of a scene draws everything."),
         BOOL_ROW("skip.unused_targets", "Skip unused targets", skip.unusedTargets,
                  "The G-buffer writes only the targets that the technique, the denoiser, the composite or a "
                  "shown buffer reads (e.g. no albedo while only AO is shown)."),

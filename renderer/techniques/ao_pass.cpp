@@ -98,6 +98,7 @@ void AoShared::draw(PassContext& ctx, const Chain& chain, const std::string& sha
     }
     if (inspect) { // the layers of the last run: the probe's pixel is a texel of inspectLayer_
         glUseProgram(program);
+        deinterleaver_.saveFrame();
         deinterleaver_.bindLayer(inspectLayer_, program);
         ctx.drawFullscreen();
         deinterleaver_.restoreFrame();

@@ -29,7 +29,9 @@ class Deinterleaver {
     // Layer l's cell of the 4x4 tile (i, j): it holds pixels (4x + i, 4y + j), x and y from the left
     // and bottom (GL window coordinates).
     static glm::ivec2 cell(int layer) { return {layer % kSide, layer / kSide}; }
-    // The frame block a layer's draw reads: the same camera, the layer's size as the viewport.
+    // The frame block a layer's draw reads: the same camera, the layer's size as the viewport, and
+    // proj[1][1] scaled so that a length in pixels (framePixelsPerUnit: proj[1][1] viewport.y / 2)
+    // is a quarter of the frame's exactly, though the layer is ceil(h / 4) tall.
     static gpu::FrameConstants layerFrame(const gpu::FrameConstants& frame, glm::ivec2 layer);
     // A uv of layer `l` (its texel centres at (x + 0.5) / layer size) as a uv of the w x h frame.
     static glm::vec2 frameUv(glm::vec2 layerUv, int l, int w, int h);
@@ -40,29 +42,38 @@ class Deinterleaver {
     void split(GLuint splitProgram, const gl::Texture2D& positions, const gl::Texture2D* normals,
                const gpu::FrameConstants& frame, const std::function<void()>& drawFullscreen);
     // Binds layer l's positions (and normals) at SSAO_TEX_POSITION (SSAO_TEX_NORMAL), its frame
-    // block at SSAO_UBO_FRAME and its cell at the AO shaders' uAoLayerCell uniform of `program`.
+    // block at SSAO_UBO_FRAME and its cell at the AO shaders' uAoLayerCell uniform of `program`
+    // (the layers of the last split(): the inspector's replay).
     void bindLayer(int l, GLuint program);
+    // Remembers the frame block bound now, for restoreFrame() (split() does it itself).
+    void saveFrame();
     // Draws `program` (the technique's AO_DEINTERLEAVED variant) over every layer into the atlas:
     // layer (i, j) in the tile (i, j) of a 4x4 grid of layer-sized tiles.
     void drawLayers(GLuint program, const std::function<void()>& drawFullscreen);
     // Writes the atlas back into the bound target, pixel (x, y) from its layer's texel
     // (shaders/passes/reinterleave.frag); `mergeProgram` is that shader's program.
     void merge(GLuint mergeProgram, const std::function<void()>& drawFullscreen);
-    // Binds the frame block the graph had before split() (the layers' draws replace it).
+    // Binds the frame block saved by split() or saveFrame() (the layers' draws replace it).
     void restoreFrame() const;
 
   private:
+    // The layers of one frame size: the app's moving and still frames take turns at two sizes, so
+    // the set of the other size is kept (`spare_`) rather than made anew (graph/frame_graph.h).
+    struct Layers {
+        std::array<gl::Texture2D, kLayers> positions, normals;
+        std::array<gl::Framebuffer, 2> positionFbo, normalFbo;
+        gl::Texture2D atlas; // R32F, 4 x 4 layers
+        gl::Framebuffer atlasFbo;
+        int w = 0, h = 0;
+        GLenum positionFormat = 0, normalFormat = 0;
+        bool hasNormals = false;
+        bool fits(int w, int h, GLenum positionFormat, GLenum normalFormat, bool normals) const;
+    };
     void ensure(int w, int h, GLenum positionFormat, GLenum normalFormat, bool normals);
-    std::array<gl::Texture2D, kLayers> positions_, normals_;
-    std::array<gl::Framebuffer, 2> positionFbo_, normalFbo_;
-    gl::Texture2D atlas_; // R32F, 4 x 4 layers
-    gl::Framebuffer atlasFbo_;
+    Layers cur_, spare_;
     gl::UniformBuffer frameUbo_;
     gpu::FrameConstants frame_{};
     GLint savedFrameUbo_ = 0;
-    int w_ = 0, h_ = 0;
-    GLenum positionFormat_ = 0, normalFormat_ = 0;
-    bool haveNormals_ = false;
 };
 
 } // namespace ssao

@@ -37,8 +37,13 @@ TEST_F(Deinterleave, LayerUvsMapBackToTheirPixels) {
             EXPECT_NEAR(pixel.y, float(4 * t.y + c.y), 1e-3f) << l;
         }
     }
-    const gpu::FrameConstants f = Deinterleaver::layerFrame(gpu::FrameConstants{}, size);
+    gpu::FrameConstants frame{};
+    frame.viewport = glm::vec4(float(w), float(h), 1.0f / float(w), 1.0f / float(h));
+    frame.proj[1][1] = 1.7f;
+    const gpu::FrameConstants f = Deinterleaver::layerFrame(frame, size);
     EXPECT_EQ(f.viewport, glm::vec4(81.0f, 46.0f, 1.0f / 81.0f, 1.0f / 46.0f));
+    // Pixels per unit (proj[1][1] viewport.y / 2) a quarter of the frame's, though 46 > 183 / 4.
+    EXPECT_NEAR(f.proj[1][1] * f.viewport.y, 1.7f * float(h) / 4.0f, 1e-4f);
 }
 
 TEST_F(Deinterleave, EachPixelIsComputedFromItsOwnPositionAndWrittenBackToItself) {
@@ -50,6 +55,8 @@ TEST_F(Deinterleave, EachPixelIsComputedFromItsOwnPositionAndWrittenBackToItself
         const int w = 322, h = 183;
         auto r = makeRenderer(scene, withTechnique(tech, true), w, h);
         r->render();
+        // Another size and back (the app's moving and still frames): the layers of this size return.
+        r->setSize(160, 90), r->render(), r->setSize(w, h), r->render();
         const Rendered out = readAll(*r);
         int checked = 0;
         std::vector<int> xs = {0, 1, 2, 3, w - 4, w - 3, w - 2, w - 1}, ys = {0, 1, 2, 3, h - 4, h - 3, h - 2, h - 1};
