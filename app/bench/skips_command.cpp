@@ -297,51 +297,32 @@ void gbufferRows(Context& c, const Camera& cam, const std::string& view) {
     auto gb = [](const FrameTime& t) { return t.sum({"gbuffer"}); };
     // Frustum culling: everything wanted (as the headless render and the app's grid).
     r.setWanted(std::nullopt);
-    Settings on = defaultSettings(), off = on;
-    off.skip.cull = false;
-    AbResult ab = compare(r, on, off, c.o.frames, gb, "gbuffer.position");
-    r.setSettings(on);
-    r.invalidate();
-    FrameReport fr = r.render();
-    nlohmann::json k = skipCounters(captureFrame(r, {}, false), fr);
-    SkipRow cull{"cull", c.scene, view, "frustum culling", "G-buffer GPU ms"};
-    cull.with = ab.a, cull.without = ab.b, cull.wallWith = ab.wallA, cull.wallWithout = ab.wallB;
-    cull.errorChange = ab.diff;
-    cull.extra = k["gbuffer"];
-    c.run.rows.push_back(cull);
-    // The hidden side of closed shells culled (skip.hidden_faces), everything wanted as above.
-    {
-        Settings whole = on;
-        whole.skip.hiddenFaces = false;
-        const AbResult f = compare(r, on, whole, c.o.frames, gb, "gbuffer.position");
+    Settings on = defaultSettings();
+    // A G-buffer skip against the same frame with it off (everything wanted), alternating frames;
+    // its counters from one more frame with it on.
+    auto gbufferSkip = [&](const char* key, const char* variant, const char* unit, auto off,
+                           const std::function<double(const FrameTime&)>& measure) {
+        Settings without = on;
+        off(without);
+        const AbResult ab = compare(r, on, without, c.o.frames, measure, "gbuffer.position");
         r.setSettings(on);
         r.invalidate();
-        const FrameReport ffr = r.render();
-        const nlohmann::json fk = skipCounters(captureFrame(r, {}, false), ffr);
-        SkipRow row{"faces", c.scene, view, "hidden faces of closed shells", "G-buffer GPU ms"};
-        row.with = f.a, row.without = f.b, row.wallWith = f.wallA, row.wallWithout = f.wallB;
-        row.errorChange = f.diff;
-        row.extra = fk["gbuffer"];
+        const FrameReport fr = r.render();
+        SkipRow row{key, c.scene, view, variant, unit};
+        row.with = ab.a, row.without = ab.b, row.wallWith = ab.wallA, row.wallWithout = ab.wallB;
+        row.errorChange = ab.diff;
+        row.extra = skipCounters(captureFrame(r, {}, false), fr)["gbuffer"];
         c.run.rows.push_back(row);
-    }
-    // Draws the scene hides left out (skip.occluded), everything wanted as above: each variant's
-    // frames alternate, the culler carrying its visible set from its own last frame; the whole
-    // frame's wall time (the box tests wait for the draws before them, which GPU timers miss).
-    {
-        Settings whole = on;
-        whole.skip.occluded = false;
-        auto wall = [](const FrameTime& t) { return t.wallMs; };
-        const AbResult f = compare(r, on, whole, c.o.frames, wall, "gbuffer.position");
-        r.setSettings(on);
-        r.invalidate();
-        const FrameReport ofr = r.render();
-        const nlohmann::json ok = skipCounters(captureFrame(r, {}, false), ofr);
-        SkipRow row{"occluded", c.scene, view, "draws the scene hides", "frame wall ms"};
-        row.with = f.a, row.without = f.b, row.wallWith = f.wallA, row.wallWithout = f.wallB;
-        row.errorChange = f.diff;
-        row.extra = ok["gbuffer"];
-        c.run.rows.push_back(row);
-    }
+    };
+    gbufferSkip("cull", "frustum culling", "G-buffer GPU ms", [](Settings& s) { s.skip.cull = false; }, gb);
+    // The hidden side of closed shells culled (skip.hidden_faces).
+    gbufferSkip("faces", "hidden faces of closed shells", "G-buffer GPU ms",
+                [](Settings& s) { s.skip.hiddenFaces = false; }, gb);
+    // Draws the scene hides left out (skip.occluded): each variant's frames alternate, the culler
+    // carrying its visible set from its own last frame; the whole frame's wall time (the box tests
+    // wait for the draws before them, which GPU timers miss).
+    gbufferSkip("occluded", "draws the scene hides", "frame wall ms",
+                [](Settings& s) { s.skip.occluded = false; }, [](const FrameTime& t) { return t.wallMs; });
     // Demand: a view of the AO alone (the app's single AO view, `bench`) culls the composite and
     // the albedo target; whole frame, forced, against the same frame with everything wanted.
     {
@@ -389,11 +370,11 @@ void gbufferRows(Context& c, const Camera& cam, const std::string& view) {
         if (depthNormals) t.ao.normals = NormalSource::Depth;
         Settings all = t;
         all.skip.unusedTargets = false;
-        ab = compare(r, t, all, c.o.frames, gb, "ao.denoised");
+        const AbResult ab = compare(r, t, all, c.o.frames, gb, "ao.denoised");
         r.setSettings(t);
         r.invalidate();
-        fr = r.render();
-        k = skipCounters(captureFrame(r, {}, false), fr);
+        const FrameReport fr = r.render();
+        const nlohmann::json k = skipCounters(captureFrame(r, {}, false), fr);
         SkipRow row{"targets", c.scene, view,
                     depthNormals ? "AO only, normals from depth" : "AO only (no composite: no albedo)",
                     "G-buffer GPU ms"};

@@ -16,6 +16,13 @@ std::string num(double v, const char* fmt = "%.2f") {
     std::snprintf(buf, sizeof buf, fmt, v);
     return buf;
 }
+// "left of total" for a counter pair of the G-buffer: `left` (culled, occluded) out of what was
+// drawn plus it, e.g. draws / draws_culled.
+std::string leftOf(const SkipRow& r, const char* drawn, const char* left) {
+    const double d = r.extra.value(drawn, 0.0), l = r.extra.value(left, 0.0);
+    return num(l, "%.0f") + " of " + num(d + l, "%.0f");
+}
+
 std::string ratio(const SkipRow& r) {
     return r.without > 0 ? num(r.ratio(), "%.2fx") : "-";
 }
@@ -92,10 +99,8 @@ std::string skipsMarkdown(const SkipsRun& run) {
           "| scene | view | draws culled | triangles culled | G-buffer ms with | without | ratio | wall ms with / without | output change |",
           "|---|---|---:|---:|---:|---:|---:|---:|---|");
     rows(md, run, "cull", [](const SkipRow& r) {
-        const double d = r.extra.value("draws", 0.0), dc = r.extra.value("draws_culled", 0.0);
-        const double t = r.extra.value("triangles", 0.0), tc = r.extra.value("triangles_culled", 0.0);
-        return "| " + r.scene + " | " + r.view + " | " + num(dc, "%.0f") + " of " + num(d + dc, "%.0f") + " | " +
-               num(tc, "%.0f") + " of " + num(t + tc, "%.0f") + " | " + num(r.with) + " | " + num(r.without) +
+        return "| " + r.scene + " | " + r.view + " | " + leftOf(r, "draws", "draws_culled") + " | " +
+               leftOf(r, "triangles", "triangles_culled") + " | " + num(r.with) + " | " + num(r.without) +
                " | " + ratio(r) + " | " + num(r.wallWith, "%.1f") + " / " + num(r.wallWithout, "%.1f") + " | " +
                change(r.errorChange) + " |";
     });
@@ -114,10 +119,8 @@ std::string skipsMarkdown(const SkipsRun& run) {
           "| scene | view | draws occluded | triangles occluded | boxes tested | frame wall ms with | without | ratio | output change |",
           "|---|---|---:|---:|---:|---:|---:|---:|---|");
     rows(md, run, "occluded", [](const SkipRow& r) {
-        const double d = r.extra.value("draws", 0.0), dc = r.extra.value("draws_occluded", 0.0);
-        const double t = r.extra.value("triangles", 0.0), tc = r.extra.value("triangles_occluded", 0.0);
-        return "| " + r.scene + " | " + r.view + " | " + num(dc, "%.0f") + " of " + num(d + dc, "%.0f") + " | " +
-               num(tc, "%.0f") + " of " + num(t + tc, "%.0f") + " | " + num(r.extra.value("boxes_tested", 0.0), "%.0f") +
+        return "| " + r.scene + " | " + r.view + " | " + leftOf(r, "draws", "draws_occluded") + " | " +
+               leftOf(r, "triangles", "triangles_occluded") + " | " + num(r.extra.value("boxes_tested", 0.0), "%.0f") +
                " | " + num(r.with, "%.1f") + " | " + num(r.without, "%.1f") + " | " + ratio(r) + " | " +
                change(r.errorChange) + " |";
     });

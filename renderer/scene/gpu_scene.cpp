@@ -218,7 +218,6 @@ void GpuScene::drawOne(size_t di, const ScenePrograms& programs, const DrawOptio
         if (level->vao.id() != boundVao) glBindVertexArray(boundVao = level->vao.id());
         const uint32_t first = level->first[di], count = level->count[di];
         st.triangles += count / 3;
-        glDisable(GL_CULL_FACE);
         if (count)
             glDrawElements(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT,
                            reinterpret_cast<const void*>(size_t(first) * sizeof(uint32_t)));

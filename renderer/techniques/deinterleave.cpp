@@ -79,7 +79,8 @@ void Deinterleaver::bindLayer(int l, GLuint program) {
     if (cur_.hasNormals) cur_.normals[size_t(l)].bind(SSAO_TEX_NORMAL);
     frameUbo_.bind(SSAO_UBO_FRAME);
     // Looked up, not assumed: a variant that takes no noise (noise none) has no such uniform, and
-    // setting an inactive location is an error on some drivers.
+    // setting an inactive location is an error on some drivers. Per call (16 a frame), not cached by
+    // program name: a hot reload may hand a new program an old one's name.
     const glm::ivec2 c = cell(l);
     if (glGetProgramResourceLocation(program, GL_UNIFORM, "uAoLayerCell") == kLayerCellLocation)
         glProgramUniform2f(program, kLayerCellLocation, float(c.x), float(c.y));

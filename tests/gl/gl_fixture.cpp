@@ -71,6 +71,13 @@ Rendered render(const std::string& sceneSpec, const ssao::Settings& s, int w, in
     return out;
 }
 
+std::map<std::string, double> gbufferCounters(const ssao::Renderer& r) {
+    std::map<std::string, double> m;
+    for (const auto& [k, v] : r.graph().pass("gbuffer")->counters())
+        m[k] = v;
+    return m;
+}
+
 double geometryMean(const Rendered& r, const ssao::Image& img) {
     const ssao::Image mask = r.position.channel(3);
     return ssao::stats(img, &mask).mean;

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -35,6 +36,9 @@ std::unique_ptr<ssao::Renderer> makeRenderer(const ssao::Scene& scene, const ssa
                                              std::optional<ssao::Camera> camera = std::nullopt);
 Rendered render(const std::string& scene, const ssao::Settings& s, int w, int h,
                 std::optional<ssao::Camera> camera = std::nullopt);
+
+// The counters of the G-buffer pass in the last frame (draws, triangles, draws_occluded, ...).
+std::map<std::string, double> gbufferCounters(const ssao::Renderer& r);
 
 // Mean of `img` over the frame's geometry pixels (position.w = 1).
 double geometryMean(const Rendered& r, const ssao::Image& img);

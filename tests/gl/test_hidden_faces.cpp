@@ -17,13 +17,6 @@ namespace {
 
 class HiddenFaces : public GlTest {};
 
-std::map<std::string, double> gbufferCounters(Renderer& r) {
-    std::map<std::string, double> m;
-    for (const auto& [k, v] : r.graph().pass("gbuffer")->counters())
-        m[k] = v;
-    return m;
-}
-
 struct Compared {
     Rendered on, off;
     std::map<std::string, double> countersOn, countersOff;

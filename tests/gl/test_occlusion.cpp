@@ -19,13 +19,6 @@ namespace {
 
 class Occlusion : public GlTest {};
 
-std::map<std::string, double> gbufferCounters(Renderer& r) {
-    std::map<std::string, double> m;
-    for (const auto& [k, v] : r.graph().pass("gbuffer")->counters())
-        m[k] = v;
-    return m;
-}
-
 // Geometry pixels whose position or normal differ between two renders of the same view.
 size_t differingPixels(const Rendered& a, const Rendered& b) {
     size_t n = 0;

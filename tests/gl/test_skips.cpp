@@ -89,16 +89,12 @@ TEST_F(Skips, MeshesOutsideTheViewAreNotDrawn) {
     auto r = makeRenderer(scene, s, 240, 135, close);
     r->render();
     const Rendered culled = readAll(*r);
-    std::map<std::string, double> on;
-    for (const auto& [k, v] : r->graph().pass("gbuffer")->counters())
-        on[k] = v;
+    std::map<std::string, double> on = gbufferCounters(*r);
     s.skip.cull = false;
     r->setSettings(s);
     r->render();
     const Rendered all = readAll(*r);
-    std::map<std::string, double> off;
-    for (const auto& [k, v] : r->graph().pass("gbuffer")->counters())
-        off[k] = v;
+    std::map<std::string, double> off = gbufferCounters(*r);
     std::printf("saw close up: %g of %g draws culled (%g of %g triangles)\n", on["draws_culled"],
                 on["draws"] + on["draws_culled"], on["triangles_culled"], on["triangles"] + on["triangles_culled"]);
     EXPECT_EQ(off["draws_culled"], 0.0);
