@@ -18,7 +18,8 @@
 
 namespace ssao {
 
-// Lowers the calling thread's scheduling priority (nice 10), and so that of the threads it starts.
+// Puts the calling thread, and so the threads it starts, under the idle scheduling policy: it runs
+// only on CPU time the frames leave (reference_worker.cpp).
 void lowerThisThreadsPriority();
 
 class ReferenceWorker {

@@ -15,6 +15,7 @@
 #include <functional>
 #include <mutex>
 #include <numeric>
+#include <sched.h>
 #include <thread>
 
 using namespace ssao;
@@ -83,6 +84,34 @@ TEST(ReferenceWorker, PublishesGrowingSnapshotsThatEndBitIdenticalToOneTrace) {
     EXPECT_EQ(s.image->ao, one.ao) << "batches of 4, 4, 8, 16 give the 32-ray image exactly";
     EXPECT_EQ(s.image->samples, 32);
 }
+
+#ifdef __linux__
+// The frames come first: the worker runs under SCHED_IDLE, and so do the row threads the tracer
+// starts from it (Linux threads inherit their creator's policy).
+TEST(ReferenceWorker, RunsUnderTheIdlePolicyAndSoDoTheThreadsItStarts) {
+    auto scene = std::make_shared<const Scene>(loadScene("builtin:showcase"));
+    std::mutex m;
+    std::vector<int> policies; // of the worker thread, at each snapshot
+    ReferenceWorker w([&] {
+        std::lock_guard<std::mutex> lock(m);
+        policies.push_back(sched_getscheduler(0));
+    });
+    w.start(smallJob(scene, 8));
+    ASSERT_TRUE(eventually([&] { return w.progress().phase == ReferenceWorker::Phase::Done; }));
+    {
+        std::lock_guard<std::mutex> lock(m);
+        ASSERT_FALSE(policies.empty());
+        for (int p : policies) EXPECT_EQ(p, SCHED_IDLE);
+    }
+    EXPECT_NE(sched_getscheduler(0), SCHED_IDLE) << "the caller's own policy is untouched";
+    int child = -1;
+    std::thread([&] {
+        lowerThisThreadsPriority();
+        std::thread([&] { child = sched_getscheduler(0); }).join();
+    }).join();
+    EXPECT_EQ(child, SCHED_IDLE) << "a thread started by a lowered thread inherits the policy";
+}
+#endif
 
 TEST(ReferenceWorker, ANewJobCancelsTheRunningOne) {
     auto scene = std::make_shared<const Scene>(loadScene("builtin:showcase"));
