@@ -4,7 +4,8 @@
 # other four (never fitted on), then writes the shipped presets assets/presets/TECHNIQUE-LEVEL.json
 # with both scores. R stays the reference's 5 % of the diagonal and power 1: only the technique's own
 # float rows are fitted (a larger radius or a darkening power would fit the numbers, not the
-# physics). Usage: .ci/tune-presets.sh BUILD_DIR [SCENES_DIR]
+# physics), then rewrites the presets derived from them (vbao-half-*, vbao-max).
+# Usage: .ci/tune-presets.sh BUILD_DIR [SCENES_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
@@ -65,3 +66,21 @@ open(dst, "a").write("\n")
 PY
   grep -o '"description": "[^"]*"' "assets/presets/$tech-$level.json"
 done
+
+# The presets derived from the tuned ones follow them (tests/cpu/test_params.cpp checks they do):
+# vbao-half-LEVEL is vbao-LEVEL with the AO at half resolution; vbao-max is vbao-ultra's fitted rows
+# at 8 slices x 24 steps. Only their vbao rows are rewritten; names and descriptions stay.
+/usr/bin/python3 - <<'PY'
+import json
+def derive(src, dst, **override):
+    rows = dict(json.load(open(f"assets/presets/{src}.json"))["vbao"], **override)
+    path = f"assets/presets/{dst}.json"
+    out = json.load(open(path))
+    out["vbao"] = rows
+    json.dump(out, open(path, "w"), indent=2)
+    open(path, "a").write("\n")
+    print(f"{dst}: the vbao rows of {src}" + (f" with {override}" if override else ""))
+for level in ("low", "medium", "high", "ultra"):
+    derive(f"vbao-{level}", f"vbao-half-{level}")
+derive("vbao-ultra", "vbao-max", slices=8, steps=24)
+PY

@@ -277,3 +277,33 @@ TEST(Params, AutoDenoiseIsEachTechniquesOwnChoiceAndAnExplicitKindStays) {
     setParam(s, "denoise.kind", "auto");
     EXPECT_EQ(effectiveDenoise(s).kind, DenoiseKind::Bilateral);
 }
+
+// The presets derived from the tuned ones (not tuned themselves) must follow them: `make presets`
+// rewrites them after each fit (.ci/tune-presets.sh), and this catches a hand edit of one side.
+TEST(Presets, DerivedPresetsFollowTheTunedLevelTheyComeFrom) {
+    const std::string dir = std::string(SSAOLAB_ASSET_DIR) + "/presets/";
+    auto read = [&](const std::string& name) {
+        std::ifstream in(dir + name + ".json");
+        EXPECT_TRUE(in.good()) << name;
+        return nlohmann::json::parse(in);
+    };
+    for (const std::string level : {"low", "medium", "high", "ultra"}) {
+        const auto full = read("vbao-" + level), half = read("vbao-half-" + level);
+        EXPECT_EQ(half["vbao"], full["vbao"]) << level;
+        EXPECT_EQ(half["ao"]["resolution"], "half") << level;
+        auto ao = half["ao"];
+        ao.erase("resolution");
+        EXPECT_EQ(ao, full["ao"]) << level; // same technique, radius rule and power
+        EXPECT_EQ(half["denoise"], full["denoise"]) << level;
+    }
+    const auto ultra = read("vbao-ultra"), max = read("vbao-max");
+    auto rows = ultra["vbao"];
+    rows["slices"] = 8;
+    rows["steps"] = 24;
+    EXPECT_EQ(max["vbao"], rows);
+    EXPECT_EQ(max["ao"], ultra["ao"]);
+    EXPECT_EQ(max["denoise"], ultra["denoise"]);
+    const Settings s = loadPreset(dir + "vbao-max.json");
+    EXPECT_EQ(s.vbao.slices, 8);
+    EXPECT_EQ(s.vbao.steps, 24);
+}
