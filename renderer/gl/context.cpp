@@ -91,6 +91,14 @@ void pinMesaForLeakSanitizer() {
 #endif
 }
 
+bool eglClientOffersDevices(const char* clientExtensions) {
+    // Before this accepted EGL_EXT_device_base, an H200 (driver 580) was reached only through the
+    // surfaceless platform NVIDIA's EGL also offers: the same GPU, but never the device platform.
+    return hasExtension(clientExtensions, "EGL_EXT_platform_device") &&
+           (hasExtension(clientExtensions, "EGL_EXT_device_enumeration") ||
+            hasExtension(clientExtensions, "EGL_EXT_device_base"));
+}
+
 HeadlessContext::HeadlessContext(EglPlatform platform) : impl_(std::make_unique<Impl>()) {
     pinMesaForLeakSanitizer();
     if (const char* env = std::getenv("SSAOLAB_EGL_PLATFORM")) {
@@ -103,8 +111,7 @@ HeadlessContext::HeadlessContext(EglPlatform platform) : impl_(std::make_unique<
             "no GL: EGL client has no EGL_EXT_platform_base (is libegl1 with Mesa or NVIDIA installed?)");
 
     // 1. A hardware device (NVIDIA through EGL_EXT_platform_device), skipping Mesa's software one.
-    if (platform != EglPlatform::Surfaceless && hasExtension(clientExts, "EGL_EXT_platform_device") &&
-        hasExtension(clientExts, "EGL_EXT_device_enumeration")) {
+    if (platform != EglPlatform::Surfaceless && eglClientOffersDevices(clientExts)) {
         EGLDeviceEXT devices[16];
         EGLint count = 0;
         if (eglQueryDevicesEXT(16, devices, &count)) {

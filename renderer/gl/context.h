@@ -13,6 +13,11 @@ enum class EglPlatform { Auto, Device, Surfaceless };
 // .ci/lsan.supp suppress) the allocations Mesa keeps past eglTerminate. Does nothing otherwise.
 void pinMesaForLeakSanitizer();
 
+// Whether an EGL client extension string offers the device platform with device enumeration:
+// EGL_EXT_platform_device and either EGL_EXT_device_enumeration (Mesa) or EGL_EXT_device_base
+// (enumeration plus query in one; NVIDIA's driver lists only this). Pure.
+bool eglClientOffersDevices(const char* clientExtensions);
+
 class HeadlessContext {
   public:
     explicit HeadlessContext(EglPlatform platform = EglPlatform::Auto);
