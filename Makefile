@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build run test screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer
+.PHONY: deps configure build run test screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column
 
 deps:
 	@bash .ci/install-deps.sh
@@ -75,6 +75,11 @@ peers: build
 # the start preset against learnopengl, per shared scene (~2 minutes on llvmpipe).
 explorer: build
 	@bash .ci/explorer.sh $(BUILD) $(SCENES)
+
+# docs/benchmarks.md "The GPU column": from the folder .ci/gpu-run.sh filled on a machine with a GPU
+# (GPU_RUN=DIR; GPU_NOTE says what the run should carry about that machine). Needs no GPU here.
+gpu-column: build
+	@bash .ci/gpu-column.sh $(BUILD) $(GPU_RUN) "$(GPU_NOTE)" $(SCENES)
 
 # docs/stability.md: every technique under extreme projections, scales, placements, precisions and
 # parameter limits (`ssaolab stress`).

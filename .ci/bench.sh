@@ -43,7 +43,7 @@ baseline measured in the same run.
 
 Times on llvmpipe (Mesa's CPU rasteriser) rank configurations by their work, not by what a GPU
 would take: texture fetches and ALU cost roughly alike there. No GPU was lent to the session
-that made this page, so there is no GPU column yet.
+that made this page; a GPU measured apart is in "The GPU column" below.
 
 ## Reference tracer throughput (CornellBox, 640x360, R = 5 % of the diagonal)
 
@@ -89,5 +89,7 @@ MD
     "$OUT/explorer.md" explorer.md
   section "Skipped work (\`ssaolab skips\`)" skips skips.sh docs/skips-discussion.md "$OUT/skips.md" skips.json
   section "Scaling (\`make scaling\`)" scaling scaling.sh docs/scaling-discussion.md "$OUT/scaling.md" scaling.json
+  section "The GPU column (\`.ci/gpu-run.sh\` on a GPU, then \`make gpu-column\`)" gpu-column gpu-column.sh \
+    docs/gpu-discussion.md "$OUT/gpu.md" gpu_summary.csv
 } > docs/benchmarks.md
 echo "wrote docs/benchmarks.md"

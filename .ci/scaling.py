@@ -90,8 +90,8 @@ def report(run, docs):
     renderer = next(iter(pixels.values()))["gl_renderer"] if pixels else "?"
     out = {"gl_renderer": renderer, "curves": []}
     md = ["### Scaling", "",
-          f"GL: {renderer}; no GPU was lent to this run (the device tool lends one to some tasks only), so "
-          "every time is llvmpipe's (CPU rasterisation) and the reference's Embree on the same CPU.", "",
+          f"GL: {renderer}: on llvmpipe every time is CPU rasterisation, and the reference's Embree runs on "
+          "the same CPU. The same curves on a GPU, where one was measured: \"The GPU column\" below.", "",
           "Exponent k of time = c x size^k, least squares on log-log points; 'fit miss' is the largest "
           "relative distance of a point from the fitted line.", "",
           "| curve | x | points (x: ms) | exponent k | fit miss |", "|---|---|---|---:|---:|"]
