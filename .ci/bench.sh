@@ -18,11 +18,10 @@ if [ -z "${BENCH_REPORT_ONLY:-}" ]; then
 # self-contained report.html, which embeds those of the front and the baseline only.
 RUN="$BUILD/bench-run"
 rm -rf "$RUN"
-"$BUILD/app/ssaolab" bench \
-  --scene "$SCENES/CornellBox/cornellBox.gltf" --scene "$SCENES/FlightHelmet/FlightHelmet.gltf" \
-  --scene "$SCENES/2CylinderEngine/2CylinderEngine.gltf" --scene "$SCENES/Lantern/Lantern.gltf" \
-  --scene "$SCENES/ReciprocatingSaw/ReciprocatingSaw.gltf" --scene "$SCENES/ShaderBall/shader_ball.gltf" \
-  --size "$SIZE" --views 2 --frames "${BENCH_FRAMES:-10}" --out "$RUN"
+source .ci/scenes.sh
+scene_args=()
+for s in "${BENCH_SCENES[@]}"; do scene_args+=(--scene "$SCENES/$s"); done
+"$BUILD/app/ssaolab" bench "${scene_args[@]}" --size "$SIZE" --views 2 --frames "${BENCH_FRAMES:-10}" --out "$RUN"
 for f in results.csv summary.csv results.json report.md report.html pareto.png pareto.svg \
          pareto_by_scene.png pareto_by_scene.svg; do
   cp "$RUN/$f" "$OUT/$f"

@@ -11,7 +11,7 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import scaling  # noqa: E402  (slope: the same least-squares exponent as the llvmpipe curves)
+import scaling  # noqa: E402  (the llvmpipe page's curves and least-squares exponent)
 
 
 def rows(path):
@@ -19,26 +19,10 @@ def rows(path):
 
 
 def scaling_curves(run):
-    def load(pattern):
-        return {os.path.basename(p)[:-5]: json.load(open(p)) for p in glob.glob(os.path.join(run, pattern))}
-    pixels, radius, tri = load("pixels/*.json"), load("radius/*.json"), load("triangles/*.json")
-    curves = []
-    for p in sorted({k.rsplit("_", 1)[0] for k in pixels}):
-        pts = sorted((m["size"][0] * m["size"][1], m["gpu_ms"]["ao"] + m["gpu_ms"]["denoise"])
-                     for k, m in pixels.items() if k.rsplit("_", 1)[0] == p)
-        curves.append(("pixels", p, "pixels", pts))
-        pts = sorted((m["radius"]["pixels_at_centre"], m["gpu_ms"]["ao"] + m["gpu_ms"]["denoise"])
-                     for k, m in radius.items() if k.rsplit("_", 1)[0] == p)
-        curves.append(("radius", p, "radius px", pts))
-    pts = sorted((m["scene"]["triangles"], m["gpu_ms"]["gbuffer"]) for m in tri.values())
-    curves.append(("triangles", "G-buffer", "triangles", pts))
     out = []
-    for panel, label, x, pts in curves:
-        if len(pts) < 2:
-            continue
-        k, miss = scaling.slope([a for a, _ in pts], [b for _, b in pts])
-        out.append({"panel": panel, "label": label, "x": x, "xs": [a for a, _ in pts], "ms": [b for _, b in pts],
-                    "exponent": k, "fit_miss": miss})
+    for panel, label, x, xs, ms in scaling.curves(run):
+        k, miss = scaling.slope(xs, ms)
+        out.append({"panel": panel, "label": label, "x": x, "xs": xs, "ms": ms, "exponent": k, "fit_miss": miss})
     return out
 
 

@@ -62,31 +62,37 @@ def slope(xs, ys):
     return k, miss
 
 
-def report(run, docs):
-    def load(pattern):
-        return {os.path.basename(p)[:-5]: json.load(open(p)) for p in glob.glob(os.path.join(run, pattern))}
+def load(run, pattern):
+    return {os.path.basename(p)[:-5]: json.load(open(p)) for p in glob.glob(os.path.join(run, pattern))}
 
-    curves = []  # (panel, label, x name, xs, ys)
-    pixels, radius = load("pixels/*.json"), load("radius/*.json")
-    presets = sorted({k.rsplit("_", 1)[0] for k in pixels})
-    for p in presets:
+
+def curves(run):
+    """(panel, label, x name, xs, ms) of every curve whose renders the run holds (a GPU run has no
+    reference curves: .ci/gpu-column.py reads its curves through this too)."""
+    out = []
+    pixels, radius = load(run, "pixels/*.json"), load(run, "radius/*.json")
+    for p in sorted({k.rsplit("_", 1)[0] for k in pixels}):
         pts = sorted((m["size"][0] * m["size"][1], m["gpu_ms"]["ao"] + m["gpu_ms"]["denoise"])
                      for k, m in pixels.items() if k.rsplit("_", 1)[0] == p)
-        curves.append(("pixels", p, "pixels", [a for a, _ in pts], [b for _, b in pts]))
+        out.append(("pixels", p, "pixels", [a for a, _ in pts], [b for _, b in pts]))
         pts = sorted((m["radius"]["pixels_at_centre"], m["gpu_ms"]["ao"] + m["gpu_ms"]["denoise"])
                      for k, m in radius.items() if k.rsplit("_", 1)[0] == p)
-        curves.append(("radius", p, "radius px", [a for a, _ in pts], [b for _, b in pts]))
-    tri = load("triangles/*.json")
+        out.append(("radius", p, "radius px", [a for a, _ in pts], [b for _, b in pts]))
+    tri = load(run, "triangles/*.json")
     pts = sorted((m["scene"]["triangles"], m["gpu_ms"]["gbuffer"]) for m in tri.values())
-    curves.append(("triangles", "G-buffer", "triangles", [a for a, _ in pts], [b for _, b in pts]))
-    ref = load("reference/*.json")
+    out.append(("triangles", "G-buffer", "triangles", [a for a, _ in pts], [b for _, b in pts]))
+    ref = load(run, "reference/*.json")
     pts = sorted((m["error"]["reference"]["rays_per_pixel"], 1000 * m["error"]["reference"]["trace_seconds"])
                  for k, m in ref.items() if k.startswith("rays_"))
-    curves.append(("reference", "reference vs rays (320x180)", "rays per pixel", [a for a, _ in pts], [b for _, b in pts]))
+    out.append(("reference", "reference vs rays (320x180)", "rays per pixel", [a for a, _ in pts], [b for _, b in pts]))
     pts = sorted((m["size"][0] * m["size"][1], 1000 * m["error"]["reference"]["trace_seconds"])
                  for k, m in ref.items() if k.startswith("pixels_"))
-    curves.append(("reference", "reference vs pixels (32 rays)", "pixels", [a for a, _ in pts], [b for _, b in pts]))
+    out.append(("reference", "reference vs pixels (32 rays)", "pixels", [a for a, _ in pts], [b for _, b in pts]))
+    return [c for c in out if len(c[3]) >= 2]
 
+
+def report(run, docs):
+    pixels = load(run, "pixels/*.json")
     renderer = next(iter(pixels.values()))["gl_renderer"] if pixels else "?"
     out = {"gl_renderer": renderer, "curves": []}
     md = ["### Scaling", "",
@@ -95,9 +101,7 @@ def report(run, docs):
           "Exponent k of time = c x size^k, least squares on log-log points; 'fit miss' is the largest "
           "relative distance of a point from the fitted line.", "",
           "| curve | x | points (x: ms) | exponent k | fit miss |", "|---|---|---|---:|---:|"]
-    for panel, label, xname, xs, ys in curves:
-        if len(xs) < 2:
-            continue
+    for panel, label, xname, xs, ys in curves(run):
         k, miss = slope(xs, ys)
         out["curves"].append({"panel": panel, "label": label, "x": xname, "xs": xs, "ms": ys, "exponent": k, "fit_miss": miss})
         pts = ", ".join(f"{x:.4g}: {y:.3g}" for x, y in zip(xs, ys))

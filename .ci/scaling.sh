@@ -9,12 +9,14 @@
 #  4. reference (Embree) time against rays per pixel and against pixels.
 # Each curve's log-log slope is its exponent (.ci/scaling.py fits and plots them).
 # Writes docs/bench/scaling.{md,json,png,svg}, then reassembles docs/benchmarks.md.
-# Usage: .ci/scaling.sh BUILD_DIR [SCENES_DIR]
+# Usage: .ci/scaling.sh BUILD_DIR [SCENES_DIR]; SCALING_RUN (the renders' folder, default
+# BUILD_DIR/scaling-run), SCALING_FRAMES (3), SCALING_RENDERS_ONLY, PYTHON (one with numpy).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
 SCENES=${2:-../shared/scenes}
-RUN="$BUILD/scaling-run"
+RUN=${SCALING_RUN:-$BUILD/scaling-run}
+PY=${PYTHON:-/usr/bin/python3} # the grid needs numpy
 rm -rf "$RUN"
 mkdir -p "$RUN"
 SSAO="$BUILD/app/ssaolab"
@@ -39,11 +41,13 @@ for p in "${PRESETS[@]}"; do
   echo "scaling: $p"
 done
 for n in 10000 100000 1000000 3000000 10000000; do
-  /usr/bin/python3 .ci/scaling.py grid "$n" "$RUN/grid_$n.gltf"
+  "$PY" .ci/scaling.py grid "$n" "$RUN/grid_$n.gltf"
   render "$RUN/triangles/$n.json" --scene "$RUN/grid_$n.gltf" --preset vbao-medium --size 1280x720
   rm -f "$RUN/grid_$n.gltf" "$RUN/grid_$n.bin"
   echo "scaling: $n triangles"
 done
+# SCALING_RENDERS_ONLY=1 (.ci/gpu-run.sh on a GPU): the GL curves alone; the reference is the CPU's.
+[ -n "${SCALING_RENDERS_ONLY:-}" ] && { rm -rf "$RUN/tmp" "$RUN/reference"; exit 0; }
 # The reference, uncached (a private cache folder per run).
 for rays in 32 64 128 256 512; do
   XDG_CACHE_HOME="$RUN/cache_r$rays" render "$RUN/reference/rays_$rays.json" --scene "$SCENE" --preset vbao-medium \

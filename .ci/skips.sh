@@ -7,8 +7,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
 SCENES=${2:-../shared/scenes}
+source .ci/scenes.sh
+scene_args=(--scene builtin:showcase)
+for s in "${SKIPS_SCENES[@]}"; do scene_args+=(--scene "$SCENES/$s"); done
 "$BUILD/app/ssaolab" skips --size "${BENCH_SIZE:-1280x720}" --frames "${SKIPS_FRAMES:-7}" --out docs/bench \
-  --scene builtin:showcase --scene "$SCENES/CornellBox/cornellBox.gltf" \
-  --scene "$SCENES/2CylinderEngine/2CylinderEngine.gltf" --scene "$SCENES/ReciprocatingSaw/ReciprocatingSaw.gltf" \
-  --scene "$SCENES/Lantern/Lantern.gltf" --scene "$SCENES/FlightHelmet/FlightHelmet.gltf"
+  "${scene_args[@]}"
 BENCH_REPORT_ONLY=1 bash .ci/bench.sh "$BUILD" "$SCENES"
