@@ -7,7 +7,7 @@ PKGS=(
   build-essential cmake pkg-config
   libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev libstb-dev
   libegl-dev libgl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri libgl1 libglx-mesa0
-  nlohmann-json3-dev libtinyexr-dev libcli11-dev
+  nlohmann-json3-dev libtinyexr-dev libcli11-dev zlib1g-dev  # zlib: PNG data inflated and counted before stb decodes it
   libgtest-dev libgmock-dev
   libembree-dev libtbb-dev libbenchmark-dev
   python3 python3-matplotlib

@@ -2,6 +2,8 @@
 
 #include "util/error.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -107,6 +109,25 @@ void refuseExtras(const CLI::App& app) {
     const std::string near = closestName(word, names);
     throw Error((cmd == &app ? std::string() : name + ": ") + "unknown option '" + word + "'" +
                 (near.empty() ? "" : " (did you mean " + near + "?)") + " (see " + help + ")");
+}
+
+namespace {
+void printCommandOptions(const CLI::App& cmd, const std::string& path) {
+    for (const CLI::Option* opt : cmd.get_options()) {
+        if (opt->get_name() == "--help") continue;
+        const nlohmann::json line = {{"command", path},
+                                     {"option", opt->get_name()},
+                                     {"type", opt->get_type_name()},
+                                     {"flag", opt->get_expected_min() == 0}};
+        std::printf("%s\n", line.dump().c_str());
+    }
+    for (const CLI::App* sub : cmd.get_subcommands([](const CLI::App*) { return true; }))
+        printCommandOptions(*sub, path.empty() ? sub->get_name() : path + " " + sub->get_name());
+}
+} // namespace
+
+void printOptionKinds(const CLI::App& app) {
+    printCommandOptions(app, "");
 }
 
 } // namespace ssao

@@ -21,4 +21,15 @@ void refuseExtras(const CLI::App& app);
 // "ssaolab bench merge --help": the help of the innermost subcommand chosen.
 std::string helpCommand(const CLI::App& app);
 
+// What a path option names, as its type name in --help: the generic hostile-path test
+// (tests/cli/test_cli_paths.cpp) finds every path option of every command by these.
+constexpr const char* kInFile = "FILE";       // read: a regular file (or builtin:NAME / a preset name)
+constexpr const char* kInFiles = "FILE...";   // read: regular files
+constexpr const char* kInDir = "DIR";         // read: a folder
+constexpr const char* kInDirs = "DIR...";     // read: folders (bench merge's shards)
+constexpr const char* kOutFile = "OUT-FILE";  // written: one file
+constexpr const char* kOutDir = "OUT-DIR";    // written: a folder of outputs
+// Prints one JSON line per option of every command: {"command", "option", "type", "flag"}.
+void printOptionKinds(const CLI::App& app);
+
 } // namespace ssao

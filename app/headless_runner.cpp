@@ -4,10 +4,12 @@
 #include "scene/view_fit.h"
 #include "util/error.h"
 #include "util/paths.h"
+#include "util/unique_suffix.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 
 namespace ssao {
 
@@ -50,6 +52,33 @@ Scene loadNamedScene(const std::string& spec) {
     Scene s = loadScene(spec);
     if (spec.rfind("builtin:", 0) != 0) s.name = std::filesystem::path(spec).stem().string();
     return s;
+}
+
+std::vector<Scene> loadNamedScenes(std::vector<std::string>& specs) {
+    namespace fs = std::filesystem;
+    std::vector<std::string> kept, files, builtins;
+    std::set<std::string> seen;
+    for (const auto& spec : specs) {
+        const bool builtin = spec.rfind("builtin:", 0) == 0;
+        std::error_code ec;
+        fs::path abs = builtin ? fs::path(spec) : fs::absolute(spec, ec);
+        if (ec) abs = spec;
+        abs = abs.lexically_normal();
+        fs::path key = builtin ? abs : fs::weakly_canonical(abs, ec); // links resolved: one file, one scene
+        if (ec || key.empty()) key = abs;
+        if (!seen.insert(key.string()).second) continue;
+        kept.push_back(spec);
+        (builtin ? builtins : files).push_back(abs.generic_string());
+    }
+    const std::vector<std::string> names = shortestUniqueSuffixes(files, builtins);
+    std::vector<Scene> scenes;
+    size_t file = 0;
+    for (const auto& spec : kept) {
+        scenes.push_back(loadScene(spec));
+        if (spec.rfind("builtin:", 0) != 0) scenes.back().name = names[file++];
+    }
+    specs = kept;
+    return scenes;
 }
 
 Camera defaultCamera(const Scene& s) {

@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace ssao {
 
@@ -46,6 +47,10 @@ class HeadlessRunner {
 // A scene for a command: loaded (ssao::Error on bad input), named as the reports name it - a
 // file by its stem ("cornellBox"), a built-in by its spec ("builtin:corner").
 Scene loadNamedScene(const std::string& spec);
+// Scenes measured side by side: each once (a file by its resolved path, a built-in by its spec),
+// no two with one name - builtin:NAME, a file by the shortest end of its path that no other has
+// ("cornellBox", or "a/scene.gltf" beside "b/scene.gltf"). `specs` keeps the first of each.
+std::vector<Scene> loadNamedScenes(std::vector<std::string>& specs);
 // The scene's own camera (the file's first, or a built-in's designed view), else one framing it.
 Camera defaultCamera(const Scene& s);
 

@@ -9,6 +9,7 @@
 #include "settings/params.h"
 #include "stress/stress_command.h"
 #include "settings/preset_store.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/paths.h"
 #include "view/window_app.h"
@@ -104,6 +105,8 @@ struct Commands {
                                stress);
         sub("params", "list every parameter: key, default, unit, range, help");
         sub("paths", "where this binary finds its shaders, assets and presets");
+        app.add_subcommand("options", "every option of every command with its kind, as JSON lines (for tests)")
+            ->group(""); // hidden: tests/cli/test_cli_paths.cpp takes the path options from it
         addView(*sub("view", "open the interactive explorer window (GLFW + Dear ImGui)"));
     }
 
@@ -115,18 +118,18 @@ struct Commands {
 
     void addView(CLI::App& view) {
         ssao::WindowOptions& wo = window;
-        view.add_option("--scene", wo.app.scene, "builtin:NAME or a .gltf/.glb file (default: the preset's, else showcase)");
+        view.add_option("--scene", wo.app.scene, "builtin:NAME or a .gltf/.glb file (default: the preset's, else showcase)")->type_name(ssao::kInFile);
         wo.app.preset = ssao::kStartPreset; // a new user's first frame: a point of the front (settings/preset.h)
-        view.add_option("--preset", wo.app.preset, "preset name or JSON file")->capture_default_str();
-        view.add_option("--shaders", wo.app.shaderDir, "shader folder (edits are hot-reloaded)");
+        view.add_option("--preset", wo.app.preset, "preset name or JSON file")->type_name(ssao::kInFile)->capture_default_str();
+        view.add_option("--shaders", wo.app.shaderDir, "shader folder (edits are hot-reloaded)")->type_name(ssao::kInDir);
         view.add_option("--preset-dir", wo.app.userPresetDir,
-                        "folder for saved presets (default $XDG_CONFIG_HOME/ssaolab/presets)");
-        view.add_option("--size", windowSize, "window size WIDTHxHEIGHT")->capture_default_str();
+                        "folder for saved presets (default $XDG_CONFIG_HOME/ssaolab/presets)")->type_name(ssao::kInDir);
+        view.add_option("--size", windowSize, "window size WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
         ssao::addLensOptions(view, viewProjection, viewDepth);
         view.add_option("--frames", wo.frames, "draw N frames then exit (for tests and screenshots)")
             ->check(ssao::cliRange(0, 1000000));
-        view.add_option("--screenshot", wo.screenshot, "with --frames: save the last frame as PNG");
-        view.add_option("--frame-log", wo.frameLog, "write one line per drawn frame: ms, render size, moving, passes run");
+        view.add_option("--screenshot", wo.screenshot, "with --frames: save the last frame as PNG")->type_name(ssao::kOutFile);
+        view.add_option("--frame-log", wo.frameLog, "write one line per drawn frame: ms, render size, moving, passes run")->type_name(ssao::kOutFile);
     }
 
     int runWindow() {
@@ -138,6 +141,7 @@ struct Commands {
         if (!viewDepth.empty()) wo.app.depth = ssao::parseDepthMode(viewDepth);
         if (!wo.screenshot.empty() && wo.frames <= 0)
             throw ssao::Error("--screenshot needs --frames N (the frame to save)");
+        if (!wo.screenshot.empty()) ssao::checkOutputPath(wo.screenshot); // before the window opens
         return ssao::runWindowApp(wo);
     }
 
@@ -146,6 +150,10 @@ struct Commands {
         ssao::setTransparentMode(ssao::parseTransparent(transparent));
         if (app.got_subcommand("params")) {
             printParams();
+            return 0;
+        }
+        if (app.got_subcommand("options")) {
+            ssao::printOptionKinds(app);
             return 0;
         }
         if (app.got_subcommand("paths")) {
@@ -173,12 +181,7 @@ struct Commands {
 
 // One line, whatever the message carries (a compiler log ends in a newline, may hold several).
 int reportError(const std::string& what) {
-    std::string msg = what;
-    while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ' || msg.back() == '\r'))
-        msg.pop_back();
-    for (char& c : msg)
-        if (c == '\n' || c == '\r') c = ';';
-    std::fprintf(stderr, "ssaolab: error: %s\n", msg.c_str());
+    std::fprintf(stderr, "ssaolab: error: %s\n", ssao::oneLine(what).c_str());
     return 1;
 }
 

@@ -8,12 +8,15 @@
 #include "output/report.h"
 #include "progress_bar.h"
 #include "reference/reference_cache.h"
+#include "reference/screen_layers.h"
 #include "settings/params.h"
 #include "settings/preset.h"
 #include "settings/preset_store.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/files.h"
 #include "util/json_file.h"
+#include "scene/scene.h"
 #include "scene/view_fit.h"
 #include "util/paths.h"
 
@@ -31,18 +34,19 @@ namespace ssao {
 void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--scene", o.scene,
                    "builtin:NAME (showcase, plane, corner, slabs), or a .gltf/.glb file (default: the preset's "
-                   "scene, else builtin:showcase)");
+                   "scene, else builtin:showcase)")->type_name(kInFile);
     cmd.add_option(
         "--preset", o.preset,
-        "preset JSON file, or a name: the seed presets (e.g. learnopengl), then the ones saved in the app");
-    cmd.add_option("--set", o.sets, "override one parameter, key=value (repeatable; see `ssaolab params`)");
-    cmd.add_option("--size", o.size, "output size WIDTHxHEIGHT (default: the preset's size, else 1280x720)");
-    cmd.add_option("--camera", o.camera, "eye,target[,up[,fov_deg[,near,far]]] as comma-separated numbers");
+        "preset JSON file, or a name: the seed presets (e.g. learnopengl), then the ones saved in the app")
+        ->type_name(kInFile);
+    cmd.add_option("--set", o.sets, "override one parameter, key=value (repeatable; see `ssaolab params`)")->type_name("KEY=VALUE");
+    cmd.add_option("--size", o.size, "output size WIDTHxHEIGHT (default: the preset's size, else 1280x720)")->type_name("WxH");
+    cmd.add_option("--camera", o.camera, "eye,target[,up[,fov_deg[,near,far]]] as comma-separated numbers")->type_name("EYE,TARGET...");
     cmd.add_option("--clip", o.clip,
                    "clip planes: fit (to the scene, default) or fixed (the camera's own near/far)")
         ->check(CLI::IsMember({"fit", "fixed"}));
     addLensOptions(cmd, o.projection, o.depth);
-    cmd.add_option("--out", o.out, "output folder (EXR, PNG, metrics.json)")->capture_default_str();
+    cmd.add_option("--out", o.out, "output folder (EXR, PNG, metrics.json)")->type_name(kOutDir)->capture_default_str();
     cmd.add_option("--timing-frames", o.timingFrames, "extra frames, every pass forced, averaged into gpu_ms")
         ->capture_default_str()
         ->check(cliRange(1, 100));
@@ -73,11 +77,10 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         ->check(cliRange(0, 4096));
     cmd.add_option("--score", o.score,
                    "with --reference: also judge this AO image of the same view and size (PNG, PGM or EXR; "
-                   "channel 0, 1 = open), e.g. another renderer's; repeatable")
-        ->check(CLI::ExistingFile);
+                   "channel 0, 1 = open), e.g. another renderer's; repeatable")->type_name(kInFiles);
     cmd.add_option("--shaders", o.shaderDir,
-                   "shader folder (default: the installed or source tree's shaders/)");
-    cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)");
+                   "shader folder (default: the installed or source tree's shaders/)")->type_name(kInDir);
+    cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)")->type_name(kInDir);
     cmd.add_flag("--verbose-gl", o.verboseGl, "log every KHR_debug message");
     cmd.add_flag("--quiet", o.quiet, "print nothing on success");
 }
@@ -210,16 +213,28 @@ nlohmann::json timePasses(Renderer& r, const FrameReport& first, int frames) {
 std::string scoreImages(const RenderOptions& o, const ReferenceImage& ref, const ReferenceSettings& rs,
                         const ReferenceImage* oracle, nlohmann::json& m) {
     std::string lines;
+    // Decoded within the MASK textures' budget (--max-mask-mpix), checked from the header first.
+    const ImageBudget budget{sceneBudget().maskPixels, 0, "decoded images", "--max-mask-mpix"};
     for (const std::string& file : o.score) {
-        const std::string ext = std::filesystem::path(file).extension().string();
-        Image img = ext == ".exr" || ext == ".EXR" ? readExr(file) : readPng(file); // PNG, PGM (stb)
-        if (img.width != ref.width || img.height != ref.height)
-            throw Error("--score " + file + ": " + std::to_string(img.width) + "x" + std::to_string(img.height) +
-                        ", the render is " + std::to_string(ref.width) + "x" + std::to_string(ref.height));
+        auto sizeCheck = [&](uint64_t w, uint64_t h) {
+            if (w != uint64_t(ref.width) || h != uint64_t(ref.height))
+                throw Error("--score " + file + ": " + std::to_string(w) + "x" + std::to_string(h) + ", the render is " +
+                            std::to_string(ref.width) + "x" + std::to_string(ref.height));
+        };
+        // PNG, PGM, JPEG (stb) or OpenEXR, by their bytes; through the file gate (no FIFO, bounded).
+        const Image img = decodeImage(readRegularFile(file, "--score", imageFileBytes(budget)), budget, "--score " + file,
+                                      [&](const ImageHeader& h) { sizeCheck(h.width, h.height); });
+        sizeCheck(uint64_t(img.width), uint64_t(img.height));
         Image ao{img.width, img.height, 1, std::vector<float>(size_t(img.width) * img.height)};
         for (size_t i = 0; i < ao.data.size(); ++i) ao.data[i] = img.data[i * size_t(img.channels)]; // channel 0
-        for (float v : ao.data)
+        size_t outside = 0;
+        for (float v : ao.data) {
             if (!std::isfinite(v)) throw Error("--score " + file + ": non-finite AO values");
+            outside += v < 0.0f || v > 1.0f;
+        }
+        if (outside)
+            throw Error("--score " + file + ": " + std::to_string(outside) + (outside == 1 ? " pixel holds" : " pixels hold") +
+                        " AO outside [0, 1] (1 is open, 0 fully occluded)");
         const ErrorMetrics e = evaluate(ao, ref).metrics;
         nlohmann::json entry = {{"file", file}, {"error", metricsJson(e, ref, rs)}};
         char b[300];
@@ -337,7 +352,10 @@ void printRenderSummary(const RenderOptions& o, const RenderJob& job, const std:
 
 int runRender(const RenderOptions& o) {
     if (!o.score.empty() && !o.reference) throw Error("--score judges an image against the reference: add --reference");
+    makeOutputFolder(o.out); // before any work: a FIFO, a device or a file there fails in milliseconds
     RenderJob job = prepareRender(o);
+    if (o.reference && parseVariant(o.referenceVariant) == ReferenceVariant::Visibility) // before the render and trace
+        ScreenLayers::checkBudget(job.w, job.h, o.oracleLayers, o.oracleGuard);
     HeadlessRunner run({o.shaderDir, o.verboseGl});
     job.info.glRenderer = run.glRenderer();
     job.info.glPlatform = run.glPlatform();

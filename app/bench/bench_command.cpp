@@ -14,6 +14,7 @@
 #include "scene/scene.h"
 #include "settings/preset.h"
 #include "util/error.h"
+#include "util/files.h"
 #include "util/paths.h"
 
 #include "cli_util.h"
@@ -33,10 +34,10 @@ namespace ssao {
 void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
     cmd.add_option("--scene", o.scenes,
                    "scene to measure (repeatable): builtin:NAME or a .gltf file "
-                   "(default builtin:showcase)");
-    cmd.add_option("--sweep", o.sweep, "builtin, or a sweep JSON file (see assets/bench/sweep_builtin.json)")
+                   "(default builtin:showcase)")->type_name(kInFile);
+    cmd.add_option("--sweep", o.sweep, "builtin, or a sweep JSON file (see assets/bench/sweep_builtin.json)")->type_name(kInFile)
         ->capture_default_str();
-    cmd.add_option("--size", o.size, "render size WIDTHxHEIGHT")->capture_default_str();
+    cmd.add_option("--size", o.size, "render size WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
     cmd.add_option("--views", o.views, "viewpoints per scene: its camera, then orbits around it")
         ->capture_default_str()
         ->check(cliRange(1, 32));
@@ -58,9 +59,9 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
            "bounding-box diagonal")
         ->capture_default_str()
         ->check(cliRange(0.0001, 0.5));
-    cmd.add_option("--out", o.out, "output folder")->capture_default_str();
-    cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)");
-    cmd.add_option("--baseline", o.baseline, "the preset every row is compared with")->capture_default_str();
+    cmd.add_option("--out", o.out, "output folder")->type_name(kOutDir)->capture_default_str();
+    cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)")->type_name(kInDir);
+    cmd.add_option("--baseline", o.baseline, "the preset every row is compared with")->type_name("PRESET")->capture_default_str();
     cmd.add_flag(
         "--no-oracle", [&o](int64_t) { o.oracle = false; },
         "skip the screen-space oracle (no split of the error into the technique's and the screen's)");
@@ -75,7 +76,7 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
         ->check(cliRange(0, 1024));
     cmd.add_option("--shard", o.shard,
                    "K/N: run the K-th of N equal parts of the work (scenes x views x configurations); join "
-                   "the parts with `ssaolab bench merge`")
+                   "the parts with `ssaolab bench merge`")->type_name("K/N")
         ->capture_default_str();
     cmd.add_option("--budget-ms", o.budgetMs,
                    "answer: the most accurate configuration whose AO + denoise time is at most this (ms)")
@@ -266,13 +267,12 @@ int runBench(const BenchOptions& o) {
     int w = 0, h = 0;
     parseSizeOption(o.size, w, h);
     const ShardSpec shard = parseShard(o.shard);
+    makeOutputFolder(o.out);
     BenchRun run;
     run.sweep = loadSweep(o.sweep, o.presetDir, o.baseline);
     const ReferenceVariant variant = parseVariant(o.referenceVariant);
-    const std::vector<std::string> specs = o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
-    std::vector<Scene> scenes;
-    for (const auto& s : specs)
-        scenes.push_back(loadNamedScene(s));
+    std::vector<std::string> specs = o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
+    std::vector<Scene> scenes = loadNamedScenes(specs);
     const std::vector<WorkUnit> units = shardUnits(scenes.size(), size_t(o.views), run.sweep.configs.size(), shard);
 
     HeadlessRunner runner;

@@ -5,10 +5,13 @@
 #include "bench/bench_command.h"
 
 #include "bench/bench_report.h"
+#include "bench/results_check.h"
 #include "bench/shard.h"
 #include "cli_util.h"
 #include "settings/params.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/files.h"
 
 #include <CLI/CLI.hpp>
 
@@ -16,14 +19,15 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace fs = std::filesystem;
 
 namespace ssao {
 
 void addBenchMergeOptions(CLI::App& cmd, BenchMergeOptions& o) {
-    cmd.add_option("dirs", o.dirs, "output folders of `bench --shard K/N` runs")->required();
-    cmd.add_option("--out", o.out, "output folder of the merged results")->capture_default_str();
+    cmd.add_option("dirs", o.dirs, "output folders of `bench --shard K/N` runs")->type_name(kInDirs)->required();
+    cmd.add_option("--out", o.out, "output folder of the merged results")->type_name(kOutDir)->capture_default_str();
     cmd.add_option("--budget-ms", o.budgetMs, "answer: the most accurate configuration within this time (ms)")
         ->check(cliRange(1e-6, 1e6));
     cmd.add_option("--max-error", o.maxError, "answer: the fastest configuration whose RMSE is at most this")
@@ -37,17 +41,21 @@ namespace {
 
 // The facts every shard must share to be one benchmark.
 void checkSameBenchmark(const BenchRun& a, const BenchRun& b, const std::string& where) {
-    for (const char* k : {"size", "frames", "warmup", "views_per_scene", "reference"})
+    for (const char* k : {"size", "frames", "warmup", "views_per_scene", "reference", "oracle"})
         if (a.facts.value(k, nlohmann::json()) != b.facts.value(k, nlohmann::json()))
             throw Error(where + ": its '" + k + "' (" + b.facts.value(k, nlohmann::json()).dump() +
                         ") differs from the first folder's (" + a.facts.value(k, nlohmann::json()).dump() + ")");
-    std::vector<std::string> na, nb;
-    for (const auto& s : a.facts["scenes"])
-        na.push_back(s.value("name", ""));
-    for (const auto& s : b.facts["scenes"])
-        nb.push_back(s.value("name", ""));
-    if (na != nb) throw Error(where + ": measured other scenes than the first folder");
-    if (a.sweep.configs.size() != b.sweep.configs.size() || a.sweep.baseline != b.sweep.baseline)
+    // The same scenes, each of the same size and radius (the rows' error depends on both).
+    auto scenes = [](const BenchRun& r) {
+        std::vector<nlohmann::json> out;
+        for (const auto& s : r.facts["scenes"])
+            out.push_back({s.value("name", nlohmann::json()), s.value("triangles", nlohmann::json()),
+                           s.value("radius", nlohmann::json())});
+        return out;
+    };
+    if (scenes(a) != scenes(b)) throw Error(where + ": measured other scenes than the first folder");
+    if (a.sweep.name != b.sweep.name || a.sweep.configs.size() != b.sweep.configs.size() ||
+        a.sweep.baseline != b.sweep.baseline)
         throw Error(where + ": its sweep has other configurations than the first folder's");
     for (size_t c = 0; c < a.sweep.configs.size(); ++c)
         if (a.sweep.configs[c].label != b.sweep.configs[c].label ||
@@ -57,17 +65,17 @@ void checkSameBenchmark(const BenchRun& a, const BenchRun& b, const std::string&
 }
 
 // Copies dir/thumbs/** into out/thumbs/ (the first copy of a file wins: identical across shards).
+// Only regular files inside the shard folder travel: a link (to a private file, or out of the
+// folder) or a FIFO planted in a shard is skipped, and the copy goes through the atomic writer.
 void copyThumbnails(const std::string& dir, const std::string& out) {
-    const fs::path from = fs::path(dir) / "thumbs";
-    std::error_code ec;
-    if (!fs::is_directory(from, ec)) return;
-    for (auto it = fs::recursive_directory_iterator(from, ec); !ec && it != fs::recursive_directory_iterator();
-         it.increment(ec)) {
-        if (!it->is_regular_file(ec) || it->is_symlink(ec)) continue;
-        const fs::path to = fs::path(out) / "thumbs" / fs::relative(it->path(), from, ec);
-        fs::create_directories(to.parent_path(), ec);
-        if (!fs::exists(to, ec)) fs::copy_file(it->path(), to, ec);
-        if (ec) throw Error("cannot copy " + it->path().string() + " to " + to.string() + ": " + ec.message());
+    constexpr size_t kMaxThumbnails = 100000, kMaxThumbnailBytes = size_t(4) << 20;
+    for (const std::string& rel : listFilesInside(dir, "thumbs", "shard folder", kMaxThumbnails)) {
+        if (fs::path(rel).extension() != ".png") continue; // the report embeds PNG files alone
+        const fs::path to = fs::path(out) / rel;
+        std::error_code ec;
+        if (fs::exists(fs::symlink_status(to, ec))) continue;
+        makeOutputFolder(to.parent_path().string());
+        writeFileAtomically(to.string(), readFileInside(dir, rel, "shard thumbnail", kMaxThumbnailBytes));
     }
 }
 
@@ -81,6 +89,7 @@ int runBenchMerge(const BenchMergeOptions& o) {
     run.views.clear();
     run.shards = nlohmann::json::array();
     std::map<int, std::string> seen; // shard index -> folder
+    std::map<std::tuple<std::string, std::string, size_t>, std::string> measured; // row -> folder
     int count = 0;
     for (size_t i = 0; i < parts.size(); ++i) {
         const BenchRun& p = parts[i];
@@ -98,6 +107,12 @@ int runBenchMerge(const BenchMergeOptions& o) {
             run.shards.push_back(sh);
         }
         for (ViewResult v : p.views) {
+            const auto [at, fresh] = measured.emplace(std::make_tuple(v.scene, v.viewpoint, v.config), o.dirs[i]);
+            if (!fresh)
+                throw Error(o.dirs[i] + ": its row of " + v.scene + " " + v.viewpoint + " '" +
+                            run.sweep.configs[v.config].label + "' is also in " + at->second);
+            if (run.views.size() == kMaxResultRows)
+                throw Error("bench merge: the shards hold more than " + std::to_string(kMaxResultRows) + " rows");
             v.shard += offset;
             run.views.push_back(v);
         }
@@ -110,9 +125,13 @@ int runBenchMerge(const BenchMergeOptions& o) {
     // Viewpoints: every shard's, once, in the order one run measures them.
     for (size_t si = 0; si < run.facts["scenes"].size(); ++si) {
         std::map<long, nlohmann::json> vps;
-        for (const BenchRun& p : parts)
-            for (const auto& vp : p.facts["scenes"][si]["viewpoints"])
-                vps.emplace(vp.value("index", 0L), vp);
+        for (size_t pi = 0; pi < parts.size(); ++pi)
+            for (const auto& vp : parts[pi].facts["scenes"][si]["viewpoints"]) {
+                const auto [at, fresh] = vps.emplace(vp["index"].get<long>(), vp);
+                if (!fresh && at->second != vp)
+                    throw Error(o.dirs[pi] + ": viewpoint " + vp["name"].get<std::string>() + " of " +
+                                run.facts["scenes"][si]["name"].get<std::string>() + " differs from another folder's");
+            }
         nlohmann::json list = nlohmann::json::array();
         for (auto& [index, vp] : vps)
             list.push_back(vp);
@@ -128,9 +147,7 @@ int runBenchMerge(const BenchMergeOptions& o) {
         return ka != kb ? ka < kb : a.config < b.config;
     });
     run.facts["merged_from"] = o.dirs;
-    std::error_code ec;
-    fs::create_directories(o.out, ec);
-    if (ec) throw Error("cannot create " + o.out + ": " + ec.message());
+    makeOutputFolder(o.out);
     for (const auto& d : o.dirs)
         copyThumbnails(d, o.out);
     std::string title;

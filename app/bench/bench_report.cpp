@@ -2,13 +2,17 @@
 
 #include "bench/report_html.h"
 #include "bench/split_report.h"
+#include "output/escape.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/files.h"
 #include "util/json_file.h"
 #include "util/paths.h"
+#include "util/process.h"
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -18,14 +22,6 @@ namespace fs = std::filesystem;
 namespace ssao {
 
 namespace {
-
-std::string csvField(const std::string& s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string q = "\"";
-    for (char c : s)
-        q += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return q + "\"";
-}
 
 std::string num(double v, int digits = 6) {
     if (!std::isfinite(v)) return "";
@@ -88,8 +84,8 @@ std::string resultsCsv(const BenchRun& run) {
         const BenchConfig& c = cfgs[v.config];
         const std::string shard = run.shards.size() > size_t(v.shard) ? run.shards[v.shard].value("shard", "1/1") : "1/1";
         f << csvField(v.scene) << "," << csvField(v.viewpoint) << "," << csvField(c.label) << ","
-          << c.settings.ao.technique << "," << c.baseline << "," << run.summary[v.config].pareto << ","
-          << metricCells(v) << "," << num(v.baselineMs) << "," << num(v.timeRatio) << "," << shard << ","
+          << csvField(c.settings.ao.technique) << "," << c.baseline << "," << run.summary[v.config].pareto << ","
+          << metricCells(v) << "," << num(v.baselineMs) << "," << num(v.timeRatio) << "," << csvField(shard) << ","
           << (v.hasSplit ? num(v.vsOracle.rmse) : "") << "," << (v.hasSplit ? num(v.screen.rmse) : "") << ","
           << csvField(c.keys.dump()) << "\n";
     }
@@ -106,7 +102,7 @@ std::string summaryCsv(const BenchRun& run) {
          "rmse_edge_screen,rmse_interior_screen,gbuffer_ms,layers_ms,ao_ms,denoise_ms,composite_ms,settings\n";
     for (const auto& s : run.summary) {
         const BenchConfig& c = cfgs[s.config];
-        f << csvField(c.label) << "," << c.settings.ao.technique << "," << c.baseline << "," << s.pareto
+        f << csvField(c.label) << "," << csvField(c.settings.ao.technique) << "," << c.baseline << "," << s.pareto
           << "," << s.views << "," << num(s.gpuMs) << "," << num(s.gpuMsMin) << "," << num(s.gpuMsMax)
           << "," << num(s.rmse) << "," << num(s.mae) << "," << num(s.bias) << ","
           << num(s.psnrGeometrySrgb) << "," << num(s.psnrFullSrgb) << "," << num(s.rmseEdge) << ","
@@ -123,9 +119,7 @@ std::string summaryCsv(const BenchRun& run) {
 } // namespace
 
 void writeBenchFiles(const BenchRun& run, const std::string& dir) {
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec) throw Error("cannot create " + dir + ": " + ec.message());
+    makeOutputFolder(dir);
     writeFileAtomically((fs::path(dir) / "results.csv").string(), resultsCsv(run));
     writeFileAtomically((fs::path(dir) / "summary.csv").string(), summaryCsv(run));
     // One line: the full run (every view of every configuration, with its settings) runs to megabytes
@@ -139,17 +133,18 @@ void writeBenchFiles(const BenchRun& run, const std::string& dir) {
 static std::string runFacts(const BenchRun& run) {
     const nlohmann::json& f = run.facts;
     std::ostringstream md;
-    md << "Run: " << f.value("date", "") << ", git " << f.value("git_revision", "") << ", "
-       << f.value("build_type", "") << " build; GL renderer **" << f.value("gl_renderer", "") << "** on "
-       << f.value("cpu", "") << " (" << f.value("hardware_threads", 0) << " threads); " << f.value("size", "")
-       << "; " << f.value("frames", 0) << " timed frames per configuration and view (median) after "
-       << f.value("warmup", 0) << " warm-up; reference " << f["reference"].value("variant", "") << ", "
+    auto text = [&](const nlohmann::json& j, const char* k) { return markdownCell(j.value(k, "")); };
+    md << "Run: " << text(f, "date") << ", git " << text(f, "git_revision") << ", " << text(f, "build_type")
+       << " build; GL renderer **" << text(f, "gl_renderer") << "** on " << text(f, "cpu") << " ("
+       << f.value("hardware_threads", 0) << " threads); " << text(f, "size") << "; " << f.value("frames", 0)
+       << " timed frames per configuration and view (median) after " << f.value("warmup", 0)
+       << " warm-up; reference " << text(f["reference"], "variant") << ", "
        << f["reference"].value("rays", 0)
        << " rays per pixel, R = " << f["reference"].value("radius_scene", 0.0)
        << " x the scene diagonal.\n\nScenes and viewpoints: ";
     for (size_t i = 0; i < f["scenes"].size(); ++i) {
         const auto& s = f["scenes"][i];
-        md << (i ? ", " : "") << s.value("name", "") << " (" << s["viewpoints"].size() << " views, R "
+        md << (i ? ", " : "") << text(s, "name") << " (" << s["viewpoints"].size() << " views, R "
            << num(s.value("radius", 0.0), 4) << ")";
     }
     md << ".";
@@ -167,9 +162,9 @@ static std::string runFacts(const BenchRun& run) {
               "shard measured on the same view, and configurations are ranked by those ratios (the ms columns "
               "mix machines).\n\n| shard | host | CPU | GL renderer | date | git | rows |\n|---|---|---|---|---|---|---:|\n";
         for (const auto& sh : run.shards)
-            md << "| " << sh.value("shard", "") << " | " << sh.value("hostname", "") << " | " << sh.value("cpu", "")
-               << " | " << sh.value("gl_renderer", "") << " | " << sh.value("date", "") << " | "
-               << sh.value("git_revision", "") << " | " << sh.value("rows", 0) << " |\n";
+            md << "| " << text(sh, "shard") << " | " << text(sh, "hostname") << " | " << text(sh, "cpu") << " | "
+               << text(sh, "gl_renderer") << " | " << text(sh, "date") << " | " << text(sh, "git_revision") << " | "
+               << sh.value("rows", 0) << " |\n";
     }
     return md.str();
 }
@@ -190,7 +185,7 @@ std::string passMarkdown(const BenchRun& run) {
           "|---|---:|---:|---:|---:|\n";
     for (const ConfigSummary* s : rows) {
         const PassTimes& t = s->passMs;
-        md << "| " << run.sweep.configs[s->config].label;
+        md << "| " << markdownCell(run.sweep.configs[s->config].label);
         for (int k = 0; k < 4; ++k)
             md << " | " << (std::isfinite(t.ms[k]) ? num(t.ms[k], 3) : std::string("-"));
         md << " |\n";
@@ -204,18 +199,18 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
     std::ostringstream md;
     md << runFacts(run);
     md << "\n\n![time against error](" << plotFile << ")\n\n";
-    md << "Baseline: **" << cfgs[run.sweep.baseline].label << "**: " << num(base.gpuMs, 4)
+    md << "Baseline: **" << markdownCell(cfgs[run.sweep.baseline].label) << "**: " << num(base.gpuMs, 4)
        << " ms AO + denoise, geometry RMSE " << num(base.rmse, 4) << ", PSNR "
        << num(base.psnrGeometrySrgb, 4) << " dB (geometry, sRGB), " << num(base.psnrFullSrgb, 4)
        << " dB full frame.\n\n";
     const size_t cheap = fastestAtMostBaselineError(run), best = mostAccurate(run);
     if (cheap != std::string::npos)
-        md << "Fastest configuration at most as wrong as the baseline: **" << cfgs[cheap].label
+        md << "Fastest configuration at most as wrong as the baseline: **" << markdownCell(cfgs[cheap].label)
            << "**: " << num(run.summary[cheap].gpuMs, 4) << " ms (" << num(run.summary[cheap].timeRatio, 3)
            << "x the baseline's time), RMSE " << num(run.summary[cheap].rmse, 4) << " ("
            << num(run.summary[cheap].rmseRatio, 3) << "x).\n\n";
     if (best != std::string::npos)
-        md << "Lowest error: **" << cfgs[best].label << "**: RMSE " << num(run.summary[best].rmse, 4) << " ("
+        md << "Lowest error: **" << markdownCell(cfgs[best].label) << "**: RMSE " << num(run.summary[best].rmse, 4) << " ("
            << num(run.summary[best].rmseRatio, 3) << "x the baseline's) in "
            << num(run.summary[best].gpuMs, 4) << " ms (" << num(run.summary[best].timeRatio, 3) << "x).\n\n";
     auto table = [&](bool frontOnly) {
@@ -228,7 +223,7 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
             if (!frontOnly || s.pareto || s.config == run.sweep.baseline) rows.push_back(&s);
         std::sort(rows.begin(), rows.end(), [](auto* a, auto* b) { return a->timeRatio < b->timeRatio; });
         for (const ConfigSummary* s : rows)
-            md << "| " << cfgs[s->config].label << " | " << num(s->gpuMs, 4) << " | " << num(s->timeRatio, 3)
+            md << "| " << markdownCell(cfgs[s->config].label) << " | " << num(s->gpuMs, 4) << " | " << num(s->timeRatio, 3)
                << " | " << num(s->rmse, 4) << " | " << num(s->rmseRatio, 3) << " | " << num(s->bias, 3)
                << " | " << num(s->psnrGeometrySrgb, 4) << " | " << num(s->psnrFullSrgb, 4) << " | "
                << num(s->ssim, 4) << " | " << num(s->rmseEdge, 4) << " | " << num(s->rmseInterior, 4) << " | "
@@ -256,20 +251,31 @@ bool plotBench(const std::string& dir, const std::string& title, bool quiet) {
     if (!fs::exists(script)) script = dataRoot() + "/bench/plot_pareto.py"; // installed layout
     // Debian's python3 (python3-matplotlib) first: a pyenv/venv python3 on PATH may lack matplotlib.
     const std::string py = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    std::string t = title;
-    for (auto& c : t)
-        if (c == '\'') c = ' ';
-    const std::string cmd = py + " '" + script + "' --summary '" + dir + "/summary.csv' --results '" + dir +
-                            "/results.csv' --out '" + dir + "/pareto' --title '" + t + "'" +
-                            (quiet ? " >/dev/null" : "");
-    const int rc = std::system(cmd.c_str());
-    if (rc != 0) {
+    // matplotlib follows links: it draws into a folder made for it alone (mkdtemp: new, 0700), and
+    // its files reach `dir` through the reads and the atomic writer every output uses.
+    std::string staging = (fs::path(dir) / ".plot-XXXXXX").string();
+    if (!::mkdtemp(staging.data())) throw Error("cannot write to " + dir + ": cannot make a folder for the plot");
+    struct Cleanup {
+        std::string path;
+        ~Cleanup() {
+            std::error_code ec;
+            fs::remove_all(path, ec);
+        }
+    } cleanup{staging};
+    // Every value as one argv element in --key=value form: a title starting with '-' stays a title.
+    const ProgramRun r = runProgram({py, script, "--summary=" + dir + "/summary.csv", "--results=" + dir + "/results.csv",
+                                     "--out=" + staging + "/pareto", "--title=" + title},
+                                    quiet ? ChildStream::Discard : ChildStream::Inherit,
+                                    quiet ? ChildStream::Discard : ChildStream::Inherit);
+    if (!r.started || r.exitCode != 0) {
         std::fprintf(stderr,
-                     "note: the plot was not drawn (%s failed; install python3-matplotlib); the CSV, "
+                     "note: the plot was not drawn (%s %s; install python3-matplotlib); the CSV, "
                      "JSON and report.md are complete\n",
-                     script.c_str());
+                     script.c_str(), r.started ? "failed" : "could not be started");
         return false;
     }
+    for (const std::string& name : listFilesInside(staging, "", "plot folder", 16))
+        writeFileAtomically((fs::path(dir) / name).string(), readFileInside(staging, name, "plot"));
     return true;
 }
 

@@ -2,6 +2,8 @@
 
 #include "settings/params.h"
 #include "util/error.h"
+#include "bench/results_check.h"
+#include "util/files.h"
 #include "util/json_file.h"
 
 #include <cmath>
@@ -225,9 +227,14 @@ nlohmann::json resultsJson(const BenchRun& run) {
 }
 
 BenchRun readResults(const std::string& dir) {
+    // A shard folder is foreign: results.json is read inside it, never through a link out of it.
     const std::string path = (std::filesystem::path(dir) / "results.json").string();
-    const nlohmann::json j = readJsonFile(path, "bench results");
+    return parseResultsText(readFileInside(dir, "results.json", "bench results"), path);
+}
+
+BenchRun parseResults(const nlohmann::json& j, const std::string& path) {
     const Reader rd(path);
+    if (!j.is_object()) rd.fail("the top level is not an object");
     BenchRun run;
     run.facts = j;
     for (const char* k : {"sweep", "shards", "configurations", "results"})

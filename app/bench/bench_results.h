@@ -28,5 +28,7 @@ nlohmann::json resultsJson(const BenchRun& run);
 // Reads `dir`/results.json written by resultsJson; the summaries are recomputed by the caller.
 // Throws ssao::Error naming the file and the field on anything missing or malformed.
 BenchRun readResults(const std::string& dir);
+// The run that results.json's JSON describes, unchecked (results_check.h checks it); `path` names it.
+BenchRun parseResults(const nlohmann::json& j, const std::string& path);
 
 } // namespace ssao

@@ -1,12 +1,11 @@
 #include "bench/bench_run.h"
 
 #include "util/error.h"
+#include "util/files.h"
+#include "util/process.h"
 
-#include <array>
-#include <cstdio>
 #include <ctime>
-#include <fstream>
-#include <memory>
+#include <sstream>
 #include <thread>
 
 namespace ssao {
@@ -18,18 +17,22 @@ Settings withRadius(Settings s, float radius) {
 }
 
 namespace {
-std::string firstLine(const std::string& cmd) {
-    std::array<char, 256> buf{};
-    std::string out;
-    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
-    if (p && std::fgets(buf.data(), int(buf.size()), p.get())) out = buf.data();
-    while (!out.empty() && (out.back() == '\n' || out.back() == '\r'))
-        out.pop_back();
-    return out;
+// The first line git prints for `args` on the source tree ("" when git is absent or fails).
+std::string gitLine(std::vector<std::string> args) {
+    args.insert(args.begin(), {"git", "-C", SSAOLAB_SOURCE_DIR});
+    const ProgramRun r = runProgram(args, ChildStream::Capture, ChildStream::Discard);
+    if (!r.started || r.exitCode != 0) return "";
+    return r.out.substr(0, r.out.find_first_of("\r\n"));
 }
 
 std::string cpuModel() {
-    std::ifstream in("/proc/cpuinfo");
+    std::string text;
+    try {
+        text = readRegularFile("/proc/cpuinfo", "CPU description", size_t(4) << 20);
+    } catch (const Error&) {
+        return "unknown";
+    }
+    std::istringstream in(text);
     for (std::string line; std::getline(in, line);)
         if (line.rfind("model name", 0) == 0) {
             const auto colon = line.find(':');
@@ -43,10 +46,8 @@ nlohmann::json runFacts(const std::string& glRenderer) {
     char date[32];
     const std::time_t now = std::time(nullptr);
     std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-    std::string rev = firstLine("git -C '" SSAOLAB_SOURCE_DIR "' rev-parse --short HEAD 2>/dev/null");
-    if (!rev.empty() &&
-        !firstLine("git -C '" SSAOLAB_SOURCE_DIR "' status --porcelain -uno 2>/dev/null").empty())
-        rev += "+dirty";
+    std::string rev = gitLine({"rev-parse", "--short", "HEAD"});
+    if (!rev.empty() && !gitLine({"status", "--porcelain", "-uno"}).empty()) rev += "+dirty";
     return {{"cpu", cpuModel()},
             {"hardware_threads", std::thread::hardware_concurrency()},
             {"gl_renderer", glRenderer},

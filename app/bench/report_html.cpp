@@ -1,13 +1,15 @@
 #include "bench/report_html.h"
 
 #include "bench/thumbnails.h"
+#include "output/escape.h"
+#include "util/error.h"
+#include "util/files.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <iterator>
 #include <map>
@@ -34,20 +36,6 @@ std::string base64(const std::string& bytes) {
 
 namespace {
 
-std::string esc(const std::string& s) {
-    std::string o;
-    for (char c : s) {
-        switch (c) {
-        case '&': o += "&amp;"; break;
-        case '<': o += "&lt;"; break;
-        case '>': o += "&gt;"; break;
-        case '"': o += "&quot;"; break;
-        default: o += c;
-        }
-    }
-    return o;
-}
-
 std::string fmt(double v, int digits = 4) {
     if (!std::isfinite(v)) return "–";
     char b[32];
@@ -55,12 +43,20 @@ std::string fmt(double v, int digits = 4) {
     return b;
 }
 
-// A PNG file as an <img> (data: URI), or a placeholder naming what is missing.
-std::string img(const std::string& path, const std::string& alt) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return "<div class=\"missing\">" + esc(alt) + ": not measured by these runs</div>";
-    const std::string bytes((std::istreambuf_iterator<char>(in)), {});
-    return "<img alt=\"" + esc(alt) + "\" title=\"" + esc(alt) + "\" src=\"data:image/png;base64," + base64(bytes) +
+// A PNG file of the output folder as an <img> (data: URI), or a placeholder naming what is missing.
+// Read as foreign input: a link or a FIFO planted in the folder is never followed or waited on.
+std::string img(const std::string& root, const std::string& path, const std::string& alt) {
+    const std::string relative = std::filesystem::path(path).lexically_relative(root).generic_string();
+    std::error_code ec;
+    if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec)))
+        return "<div class=\"missing\">" + htmlText(alt) + ": not measured by these runs</div>";
+    std::string bytes;
+    try {
+        bytes = readFileInside(root, relative, "thumbnail", size_t(4) << 20);
+    } catch (const Error&) {
+        return "<div class=\"missing\">" + htmlText(alt) + ": not a regular file inside the output folder</div>";
+    }
+    return "<img alt=\"" + htmlAttr(alt) + "\" title=\"" + htmlAttr(alt) + "\" src=\"data:image/png;base64," + base64(bytes) +
            "\">";
 }
 
@@ -87,7 +83,7 @@ void labelsAndKey(std::ostringstream& s, const std::vector<Point>& pts, const st
             if (clash && !(dx == -w / 2 && dy == 19)) continue;
             taken.push_back({x, y - h, x + w, y});
             s << "<text class=\"lbl" << (p.baseline ? " base" : "") << "\" x=\"" << x << "\" y=\"" << y << "\">"
-              << esc(text) << "</text>";
+              << htmlText(text) << "</text>";
             break;
         }
     };
@@ -98,7 +94,7 @@ void labelsAndKey(std::ostringstream& s, const std::vector<Point>& pts, const st
     s << "</svg>";
     s << "<ol class=\"key\"" << (W < 600 ? " style=\"columns:1\"" : "") << ">";
     for (const Point* p : front)
-        s << "<li>" << esc(p->label) << " <span class=\"num\">" << fmt(p->t, 3) << "x, RMSE " << fmt(p->e)
+        s << "<li>" << htmlText(p->label) << " <span class=\"num\">" << fmt(p->t, 3) << "x, RMSE " << fmt(p->e)
           << "</span></li>";
     s << "</ol>";
 }
@@ -120,8 +116,8 @@ std::string svgPlot(const std::vector<Point>& pts, const std::string& title, dou
     auto Y = [&](double e) { return H - B - e / yhi * (H - T - B); };
     std::ostringstream s;
     s << "<svg class=\"plot\" viewBox=\"0 0 " << W << " " << H << "\" width=\"" << W << "\" height=\"" << H
-      << "\" role=\"img\" aria-label=\"" << esc(title) << "\">";
-    s << "<text x=\"" << W / 2 << "\" y=\"18\" class=\"title\">" << esc(title) << "</text>";
+      << "\" role=\"img\" aria-label=\"" << htmlAttr(title) << "\">";
+    s << "<text x=\"" << W / 2 << "\" y=\"18\" class=\"title\">" << htmlText(title) << "</text>";
     if (noise > 0)
         s << "<rect class=\"noise\" x=\"" << L << "\" y=\"" << Y(noise) << "\" width=\"" << W - L - R << "\" height=\""
           << Y(0) - Y(noise) << "\"><title>the reference's own noise: RMSE below " << fmt(noise, 3)
@@ -160,7 +156,7 @@ std::string svgPlot(const std::vector<Point>& pts, const std::string& title, dou
               << Y(p.e) << "\"/>";
         s << "<circle class=\"pt" << (p.front ? " on" : "") << (p.baseline ? " base" : "") << "\" cx=\"" << X(p.t)
           << "\" cy=\"" << Y(p.e) << "\" r=\"" << (p.baseline ? 6 : p.front ? 4.5 : 3.2) << "\"><title>"
-          << esc(p.hover) << "</title></circle>";
+          << htmlText(p.hover) << "</title></circle>";
     }
     labelsAndKey(s, pts, front, X, Y, W);
     std::ostringstream box;
@@ -228,15 +224,18 @@ tr.on td:first-child{border-left:4px solid #d62728}tr.base td{font-weight:700}
 .missing{width:240px;color:#999;font-size:11px}.cap{font-size:11px;color:#555}
 </style>)";
 
-// First in <head>: records every error from here on, then checks the page once it has loaded.
+// First in <head>: records every error from here on, then checks the page once it has loaded: every
+// image decodes, the plots are drawn, every table row is as wide as its first (no name split a row).
 const char* kCheck = R"(<script>
 window.__errors=[];window.addEventListener('error',function(e){__errors.push(String(e.message||e.type));},true);
 (function(){var ce=console.error;console.error=function(){__errors.push([].join.call(arguments,' '));ce.apply(console,arguments);};})();
 window.addEventListener('load',function(){
  var bad=[].filter.call(document.images,function(i){return !(i.complete&&i.naturalWidth>0);}).map(function(i){return i.alt;});
  var plots=document.querySelectorAll('svg.plot').length,pts=document.querySelectorAll('svg.plot circle.pt').length;
+ var width=function(r){return [].reduce.call(r.cells,function(n,c){return n+c.colSpan;},0);};
+ var uneven=[].filter.call(document.querySelectorAll('table'),function(t){return [].some.call(t.rows,function(r){return width(r)!==width(t.rows[0]);});}).length;
  var b=document.body;b.dataset.images=document.images.length;b.dataset.plots=plots;b.dataset.points=pts;
- b.dataset.check=bad.length?'images that did not decode: '+bad.join(', '):!plots||!pts?'no plot drawn':__errors.length?'errors: '+__errors.join('; '):'ok';
+ b.dataset.check=bad.length?'images that did not decode: '+bad.join(', '):!plots||!pts?'no plot drawn':uneven?uneven+' table(s) with a row wider or narrower than the first':__errors.length?'errors: '+__errors.join('; '):'ok';
 });
 </script>)";
 
@@ -263,8 +262,8 @@ std::string table(const BenchRun& run) {
          "<th>edge RMSE</th><th>PSNR geo dB</th><th>SSIM</th><th>front</th></tr></thead><tbody>";
     for (const ConfigSummary& c : run.summary) {
         const BenchConfig& cfg = run.sweep.configs[c.config];
-        s << "<tr class=\"" << (c.pareto ? "on" : "") << (cfg.baseline ? " base" : "") << "\"><td>" << esc(cfg.label)
-          << "</td><td>" << esc(cfg.group) << "</td><td>" << esc(cfg.settings.ao.technique) << "</td>" << cell(c.timeRatio, 3)
+        s << "<tr class=\"" << (c.pareto ? "on" : "") << (cfg.baseline ? " base" : "") << "\"><td>" << htmlText(cfg.label)
+          << "</td><td>" << htmlText(cfg.group) << "</td><td>" << htmlText(cfg.settings.ao.technique) << "</td>" << cell(c.timeRatio, 3)
           << cell(c.gpuMs) << cell(c.rmse) << cell(c.rmseRatio, 3) << cell(c.bias, 3) << cell(c.rmseEdge)
           << cell(c.psnrGeometrySrgb) << cell(c.ssim) << "<td>" << (c.pareto ? "yes" : "") << "</td></tr>";
     }
@@ -293,19 +292,19 @@ std::string thumbnails(const BenchRun& run, const std::string& dir) {
     std::ostringstream s;
     s << "<table class=\"thumbs\"><tr><td></td>";
     for (const auto& [scene, vp] : views)
-        s << "<td colspan=\"2\"><b>" << esc(scene) << "</b> (" << esc(vp) << ")<br>"
-          << img(referenceThumbnail(thumbnailDir(dir, scene, vp)), scene + " reference")
+        s << "<td colspan=\"2\"><b>" << htmlText(scene) << "</b> (" << htmlText(vp) << ")<br>"
+          << img(dir, referenceThumbnail(thumbnailDir(dir, scene, vp)), scene + " reference")
           << "<div class=\"cap\">reference</div></td>";
     s << "</tr>";
     for (const ConfigSummary* c : rows) {
         const BenchConfig& cfg = run.sweep.configs[c->config];
-        s << "<tr><td><b>" << esc(cfg.label) << "</b><br>" << fmt(c->timeRatio, 3) << "x the baseline's time ("
+        s << "<tr><td><b>" << htmlText(cfg.label) << "</b><br>" << fmt(c->timeRatio, 3) << "x the baseline's time ("
           << fmt(c->gpuMs) << " ms)<br>RMSE " << fmt(c->rmse) << " (" << fmt(c->rmseRatio, 3) << "x)<br>bias "
           << fmt(c->bias, 3) << "</td>";
         for (const auto& [scene, vp] : views) {
             const std::string d = thumbnailDir(dir, scene, vp);
-            s << "<td>" << img(aoThumbnail(d, c->config), scene + ": " + cfg.label + " AO") << "<div class=\"cap\">AO</div></td><td>"
-              << img(errorThumbnail(d, c->config), scene + ": " + cfg.label + " error")
+            s << "<td>" << img(dir, aoThumbnail(d, c->config), scene + ": " + cfg.label + " AO") << "<div class=\"cap\">AO</div></td><td>"
+              << img(dir, errorThumbnail(d, c->config), scene + ": " + cfg.label + " error")
               << "<div class=\"cap\">error: blue too dark, red too bright (±0.25)</div></td>";
         }
         s << "</tr>";
@@ -328,11 +327,11 @@ std::string benchHtml(const BenchRun& run, const std::string& dir) {
     const nlohmann::json f = run.facts.is_object() ? run.facts : nlohmann::json::object();
     std::ostringstream h;
     h << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>ssaolab bench: "
-      << esc(run.sweep.name) << "</title>" << kCheck << kStyle << "</head><body>";
-    h << "<h1>Run time against error: " << esc(run.sweep.name) << "</h1><p>" << esc(f.value("date", "")) << ", git "
-      << esc(f.value("git_revision", "")) << "; " << esc(f.value("gl_renderer", "")) << " on " << esc(f.value("cpu", ""))
-      << "; " << esc(f.value("size", "")) << "; " << f.value("frames", 0) << " timed frames (median) per configuration and view; "
-      << run.sweep.configs.size() << " configurations; baseline <b>" << esc(run.sweep.configs[run.sweep.baseline].label)
+      << htmlText(run.sweep.name) << "</title>" << kCheck << kStyle << "</head><body>";
+    h << "<h1>Run time against error: " << htmlText(run.sweep.name) << "</h1><p>" << htmlText(f.value("date", "")) << ", git "
+      << htmlText(f.value("git_revision", "")) << "; " << htmlText(f.value("gl_renderer", "")) << " on " << htmlText(f.value("cpu", ""))
+      << "; " << htmlText(f.value("size", "")) << "; " << f.value("frames", 0) << " timed frames (median) per configuration and view; "
+      << run.sweep.configs.size() << " configurations; baseline <b>" << htmlText(run.sweep.configs[run.sweep.baseline].label)
       << "</b>. Hover a point for its configuration and numbers; red: the Pareto front (no configuration is both "
          "faster and more accurate); grey band: the reference's own noise.</p>";
     if (run.shards.size() > 1) {
@@ -340,8 +339,8 @@ std::string benchHtml(const BenchRun& run, const std::string& dir) {
           << " shards; every row is timed against the baseline its own shard measured on the same view.</p>"
              "<table><tr><th>shard</th><th>host</th><th>CPU</th><th>GL renderer</th><th>rows</th></tr>";
         for (const auto& sh : run.shards)
-            h << "<tr><td>" << esc(sh.value("shard", "")) << "</td><td>" << esc(sh.value("hostname", "")) << "</td><td>"
-              << esc(sh.value("cpu", "")) << "</td><td>" << esc(sh.value("gl_renderer", "")) << "</td><td class=\"n\">"
+            h << "<tr><td>" << htmlText(sh.value("shard", "")) << "</td><td>" << htmlText(sh.value("hostname", "")) << "</td><td>"
+              << htmlText(sh.value("cpu", "")) << "</td><td>" << htmlText(sh.value("gl_renderer", "")) << "</td><td class=\"n\">"
               << sh.value("rows", 0) << "</td></tr>";
         h << "</table>";
     }

@@ -15,6 +15,7 @@
 #include "settings/preset_store.h"
 #include "techniques/technique.h"
 #include "util/error.h"
+#include "util/files.h"
 #include "util/paths.h"
 
 #include "cli_util.h"
@@ -32,15 +33,15 @@
 namespace ssao {
 
 void addSkipsOptions(CLI::App& cmd, SkipsOptions& o) {
-    cmd.add_option("--scene", o.scenes, "scene (repeatable): builtin:NAME or a .gltf file (default builtin:showcase)");
-    cmd.add_option("--size", o.size, "render size WIDTHxHEIGHT")->capture_default_str();
+    cmd.add_option("--scene", o.scenes, "scene (repeatable): builtin:NAME or a .gltf file (default builtin:showcase)")->type_name(kInFile);
+    cmd.add_option("--size", o.size, "render size WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
     cmd.add_option("--frames", o.frames, "timed frames per variant (median)")
         ->capture_default_str()
         ->check(cliRange(1, 1000));
     cmd.add_option("--reference-rays", o.referenceRays, "reference rays per pixel (adaptive rows' error)")
         ->capture_default_str()
         ->check(cliRange(1, 1 << 16));
-    cmd.add_option("--out", o.out, "output folder (skips.json, skips.md)")->capture_default_str();
+    cmd.add_option("--out", o.out, "output folder (skips.json, skips.md)")->type_name(kOutDir)->capture_default_str();
     cmd.add_flag("--quiet", o.quiet, "no progress output");
 }
 
@@ -390,10 +391,9 @@ void gbufferRows(Context& c, const Camera& cam, const std::string& view) {
 int runSkips(const SkipsOptions& o) {
     int w = 0, h = 0;
     parseSizeOption(o.size, w, h);
-    const std::vector<std::string> specs = o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
-    std::vector<Scene> scenes;
-    for (const auto& s : specs)
-        scenes.push_back(loadNamedScene(s));
+    makeOutputFolder(o.out); // before minutes of measuring, not after
+    std::vector<std::string> specs = o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
+    std::vector<Scene> scenes = loadNamedScenes(specs);
     HeadlessRunner runner;
     std::unique_ptr<Renderer> r = runner.makeRenderer(w, h);
     SkipsRun run;

@@ -1,7 +1,9 @@
 #include "bench/skips_report.h"
 
+#include "output/escape.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/files.h"
 #include "util/json_file.h"
 
 #include <cstdio>
@@ -33,7 +35,7 @@ std::string change(double d) {
 std::string joined(const nlohmann::json& list) {
     std::string s;
     for (const auto& v : list)
-        s += (s.empty() ? "" : ", ") + v.get<std::string>();
+        s += (s.empty() ? "" : ", ") + markdownCell(v.get<std::string>());
     return s.empty() ? "none" : s;
 }
 // A table's title, header and alignment row.
@@ -48,9 +50,9 @@ template <class F> void rows(std::ostringstream& md, const SkipsRun& run, const 
 
 std::string skipsMarkdown(const SkipsRun& run) {
     std::ostringstream md;
-    md << "Measured by `ssaolab skips` at " << run.facts.value("size", std::string("?")) << ", median of "
+    md << "Measured by `ssaolab skips` at " << markdownCell(run.facts.value("size", std::string("?"))) << ", median of "
        << run.facts.value("frames", 0) << " frames per variant, the variants alternating frame by frame on "
-       << run.facts.value("gl_renderer", std::string("?"))
+       << markdownCell(run.facts.value("gl_renderer", std::string("?")))
        << ". \"with\" is the frame with the skip, \"without\" the same frame with it switched off (skip.* "
           "settings) or, for dirty passes, with every pass forced; ratio = with / without. The output "
           "change is the largest difference of the judged buffer over geometry pixels (0: bit-exact), "
@@ -60,7 +62,7 @@ std::string skipsMarkdown(const SkipsRun& run) {
           "| scene | change | passes run | GPU ms with | every pass forced | ratio | wall ms with / forced | output change |",
           "|---|---|---|---:|---:|---:|---:|---|");
     rows(md, run, "dirty", [](const SkipRow& r) {
-        return "| " + r.scene + " | " + r.variant + " | " + joined(r.extra["passes_run"]) + " | " + num(r.with) +
+        return "| " + markdownCell(r.scene) + " | " + markdownCell(r.variant) + " | " + joined(r.extra["passes_run"]) + " | " + num(r.with) +
                " | " + num(r.without) + " | " + ratio(r) + " | " + num(r.wallWith, "%.1f") + " / " +
                num(r.wallWithout, "%.1f") + " | " + change(r.errorChange) + " |";
     });
@@ -70,7 +72,7 @@ std::string skipsMarkdown(const SkipsRun& run) {
           "|---|---:|---|---:|---:|---:|---:|---|");
     rows(md, run, "sky", [](const SkipRow& r) {
         const double sky = r.extra.value("sky_share", 0.0);
-        return "| " + r.scene + " | " + num(100.0 * sky, "%.0f %%") + " | " + r.variant + " | " + num(r.with) +
+        return "| " + markdownCell(r.scene) + " | " + num(100.0 * sky, "%.0f %%") + " | " + markdownCell(r.variant) + " | " + num(r.with) +
                " | " + num(r.without) + " | " + ratio(r) + " | " + num(1.0 - sky, "%.2f") + " | " +
                change(r.errorChange) + " |";
     });
@@ -79,7 +81,7 @@ std::string skipsMarkdown(const SkipsRun& run) {
           "| scene | view | technique | samples taken | AO ms adaptive | full | ratio | RMSE adaptive | full | change |",
           "|---|---|---|---:|---:|---:|---:|---:|---:|---:|");
     rows(md, run, "adaptive", [](const SkipRow& r) {
-        return "| " + r.scene + " | " + r.view + " | " + r.variant + " | " +
+        return "| " + markdownCell(r.scene) + " | " + markdownCell(r.view) + " | " + markdownCell(r.variant) + " | " +
                num(100.0 * r.extra.value("sample_share", 1.0), "%.0f %%") + " | " + num(r.with) + " | " +
                num(r.without) + " | " + ratio(r) + " | " + num(r.extra.value("rmse_with", 0.0), "%.4f") + " | " +
                num(r.extra.value("rmse_without", 0.0), "%.4f") + " | " + num(r.errorChange, "%+.4f") + " |";
@@ -89,7 +91,7 @@ std::string skipsMarkdown(const SkipsRun& run) {
           "| scene | view | preset | AO ms deinterleaved | interleaved | ratio | frame wall ms deinterleaved / interleaved | RMSE deinterleaved | interleaved | change |",
           "|---|---|---|---:|---:|---:|---:|---:|---:|---:|");
     rows(md, run, "deinterleave", [](const SkipRow& r) {
-        return "| " + r.scene + " | " + r.view + " | " + r.variant + " | " + num(r.with) + " | " + num(r.without) +
+        return "| " + markdownCell(r.scene) + " | " + markdownCell(r.view) + " | " + markdownCell(r.variant) + " | " + num(r.with) + " | " + num(r.without) +
                " | " + ratio(r) + " | " + num(r.wallWith, "%.1f") + " / " + num(r.wallWithout, "%.1f") + " | " +
                num(r.extra.value("rmse_with", 0.0), "%.4f") + " | " + num(r.extra.value("rmse_without", 0.0), "%.4f") +
                " | " + num(r.errorChange, "%+.4f") + " |";
@@ -99,7 +101,7 @@ std::string skipsMarkdown(const SkipsRun& run) {
           "| scene | view | draws culled | triangles culled | G-buffer ms with | without | ratio | wall ms with / without | output change |",
           "|---|---|---:|---:|---:|---:|---:|---:|---|");
     rows(md, run, "cull", [](const SkipRow& r) {
-        return "| " + r.scene + " | " + r.view + " | " + leftOf(r, "draws", "draws_culled") + " | " +
+        return "| " + markdownCell(r.scene) + " | " + markdownCell(r.view) + " | " + leftOf(r, "draws", "draws_culled") + " | " +
                leftOf(r, "triangles", "triangles_culled") + " | " + num(r.with) + " | " + num(r.without) +
                " | " + ratio(r) + " | " + num(r.wallWith, "%.1f") + " / " + num(r.wallWithout, "%.1f") + " | " +
                change(r.errorChange) + " |";
@@ -110,7 +112,7 @@ std::string skipsMarkdown(const SkipsRun& run) {
           "|---|---|---:|---:|---:|---:|---:|---|");
     rows(md, run, "faces", [](const SkipRow& r) {
         const double t = r.extra.value("triangles", 0.0), tf = r.extra.value("triangles_face_culled", 0.0);
-        return "| " + r.scene + " | " + r.view + " | " + num(tf, "%.0f") + " of " + num(t, "%.0f") + " | " +
+        return "| " + markdownCell(r.scene) + " | " + markdownCell(r.view) + " | " + num(tf, "%.0f") + " of " + num(t, "%.0f") + " | " +
                num(r.with) + " | " + num(r.without) + " | " + ratio(r) + " | " + num(r.wallWith, "%.1f") + " / " +
                num(r.wallWithout, "%.1f") + " | " + change(r.errorChange) + " |";
     });
@@ -119,7 +121,7 @@ std::string skipsMarkdown(const SkipsRun& run) {
           "| scene | view | draws occluded | triangles occluded | boxes tested | frame wall ms with | without | ratio | output change |",
           "|---|---|---:|---:|---:|---:|---:|---:|---|");
     rows(md, run, "occluded", [](const SkipRow& r) {
-        return "| " + r.scene + " | " + r.view + " | " + leftOf(r, "draws", "draws_occluded") + " | " +
+        return "| " + markdownCell(r.scene) + " | " + markdownCell(r.view) + " | " + leftOf(r, "draws", "draws_occluded") + " | " +
                leftOf(r, "triangles", "triangles_occluded") + " | " + num(r.extra.value("boxes_tested", 0.0), "%.0f") +
                " | " + num(r.with, "%.1f") + " | " + num(r.without, "%.1f") + " | " + ratio(r) + " | " +
                change(r.errorChange) + " |";
@@ -129,7 +131,7 @@ std::string skipsMarkdown(const SkipsRun& run) {
           "| scene | view | case | colour targets written | G-buffer ms with | all 4 written | ratio | output change |",
           "|---|---|---|---:|---:|---:|---:|---|");
     rows(md, run, "targets", [](const SkipRow& r) {
-        return "| " + r.scene + " | " + r.view + " | " + r.variant + " | " +
+        return "| " + markdownCell(r.scene) + " | " + markdownCell(r.view) + " | " + markdownCell(r.variant) + " | " +
                num(r.extra.value("targets_written", 4.0), "%.0f") + " | " + num(r.with) + " | " + num(r.without) +
                " | " + ratio(r) + " | " + change(r.errorChange) + " |";
     });
@@ -138,7 +140,7 @@ std::string skipsMarkdown(const SkipsRun& run) {
           "| scene | view | frame GPU ms fused | own upsample pass | ratio | wall ms fused / own pass | composite change |",
           "|---|---|---:|---:|---:|---:|---|");
     rows(md, run, "fused", [](const SkipRow& r) {
-        return "| " + r.scene + " | " + r.view + " | " + num(r.with) + " | " + num(r.without) + " | " + ratio(r) +
+        return "| " + markdownCell(r.scene) + " | " + markdownCell(r.view) + " | " + num(r.with) + " | " + num(r.without) + " | " + ratio(r) +
                " | " + num(r.wallWith, "%.1f") + " / " + num(r.wallWithout, "%.1f") + " | " + change(r.errorChange) +
                " |";
     });
@@ -146,9 +148,7 @@ std::string skipsMarkdown(const SkipsRun& run) {
 }
 
 void writeSkipsFiles(const SkipsRun& run, const std::string& dir) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw Error("cannot create " + dir + ": " + ec.message());
+    makeOutputFolder(dir);
     nlohmann::json j = {{"facts", run.facts}, {"rows", nlohmann::json::array()}};
     for (const auto& r : run.rows)
         j["rows"].push_back({{"skip", r.skip},

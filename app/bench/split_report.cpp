@@ -1,5 +1,7 @@
 #include "bench/split_report.h"
 
+#include "output/escape.h"
+
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -62,7 +64,7 @@ std::string splitMarkdown(const BenchRun& run) {
     md << "\n### What the screen cannot see\n\nEach error split in two against the **screen-space oracle**: the "
           "same integral, R and rays as the reference, with visibility decided only by what the G-buffer holds ("
        << o.value("layers", 1) << " depth layer(s), surfaces "
-       << (o.contains("thickness_r") ? o["thickness_r"].dump() : std::string("inf"))
+       << markdownCell(o.contains("thickness_r") ? o["thickness_r"].dump() : std::string("inf"))
        << " x R thick, " << o.value("guard_band_px", 0)
        << " px guard band; `reference_ao.h`, `screen_layers.h`). *screen* = the oracle against the truth: what no "
           "screen-space technique with this G-buffer can recover (the same for every configuration of a view). "
@@ -71,10 +73,10 @@ std::string splitMarkdown(const BenchRun& run) {
           "discontinuity or not). The two do not add: total^2 = technique^2 + screen^2 + twice their "
           "covariance.\n\n";
     for (const std::string& sc : scenes) {
-        md << "**" << sc << "**\n\n| configuration | total | technique | screen | technique edge | screen edge | "
+        md << "**" << markdownCell(sc) << "**\n\n| configuration | total | technique | screen | technique edge | screen edge | "
               "technique interior | screen interior |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
         for (const auto& [config, c] : cells[sc])
-            md << "| " << run.sweep.configs[config].label << " | " << num(c.total.value()) << " | "
+            md << "| " << markdownCell(run.sweep.configs[config].label) << " | " << num(c.total.value()) << " | "
                << num(c.technique.value()) << " | " << num(c.screen.value()) << " | " << num(c.techniqueEdge.value())
                << " | " << num(c.screenEdge.value()) << " | " << num(c.techniqueInterior.value()) << " | "
                << num(c.screenInterior.value()) << " |\n";

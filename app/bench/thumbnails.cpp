@@ -2,10 +2,13 @@
 
 #include "output/reference_report.h"
 #include "util/error.h"
+#include "util/files.h"
 
 #include "../../shaders/include/view_colors.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
 
 namespace ssao {
@@ -45,15 +48,22 @@ std::string safe(std::string s) {
 }
 
 void ensureDir(const std::string& dir) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw Error("cannot create " + dir + ": " + ec.message());
+    makeOutputFolder(dir);
 }
 
 } // namespace
 
 std::string thumbnailDir(const std::string& outDir, const std::string& scene, const std::string& viewpoint) {
-    return (std::filesystem::path(outDir) / "thumbs" / (safe(scene) + "__" + safe(viewpoint))).string();
+    std::string name = safe(scene) + "__" + safe(viewpoint);
+    if (name != scene + "__" + viewpoint) { // "a<b" and "a>b" would share "a_b": the exact names' hash tells them apart
+        uint32_t h = 2166136261u;              // FNV-1a
+        for (char c : scene + '\0' + viewpoint)
+            h = (h ^ static_cast<unsigned char>(c)) * 16777619u;
+        char hex[16];
+        std::snprintf(hex, sizeof hex, "_%08x", h);
+        name += hex;
+    }
+    return (std::filesystem::path(outDir) / "thumbs" / name).string();
 }
 std::string aoThumbnail(const std::string& dir, size_t config) {
     return dir + "/c" + std::to_string(config) + ".ao.png";

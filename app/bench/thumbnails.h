@@ -11,7 +11,8 @@ namespace ssao {
 
 constexpr int kThumbnailWidth = 192; // px; the height keeps the view's aspect (6 scenes x the front fit report.html in 2 MiB)
 
-// OUT/thumbs/<scene>__<viewpoint> with every character but [A-Za-z0-9._-] replaced by '_'.
+// OUT/thumbs/<scene>__<viewpoint> with every character but [A-Za-z0-9._-] replaced by '_' (and then
+// a hash of the exact names appended, so no two scenes share a folder).
 std::string thumbnailDir(const std::string& outDir, const std::string& scene, const std::string& viewpoint);
 std::string aoThumbnail(const std::string& dir, size_t config);    // dir/c<config>.ao.png
 std::string errorThumbnail(const std::string& dir, size_t config); // dir/c<config>.error.png

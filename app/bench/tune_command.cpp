@@ -31,12 +31,12 @@
 namespace ssao {
 
 void addTuneOptions(CLI::App& cmd, TuneOptions& o) {
-    cmd.add_option("--technique", o.technique, "the technique to tune (ao.technique)")->capture_default_str();
-    cmd.add_option("--preset", o.preset, "starting preset (default: the technique's defaults)");
-    cmd.add_option("--scene", o.scenes, "training scene (repeatable; default builtin:showcase)");
+    cmd.add_option("--technique", o.technique, "the technique to tune (ao.technique)")->type_name("TECHNIQUE")->capture_default_str();
+    cmd.add_option("--preset", o.preset, "starting preset (default: the technique's defaults)")->type_name(kInFile);
+    cmd.add_option("--scene", o.scenes, "training scene (repeatable; default builtin:showcase)")->type_name(kInFile);
     cmd.add_option("--held-out-scene", o.heldOutScenes,
-                   "scene judged but never fitted on (repeatable; every viewpoint is held out)");
-    cmd.add_option("--size", o.size, "render size")->capture_default_str();
+                   "scene judged but never fitted on (repeatable; every viewpoint is held out)")->type_name(kInFile);
+    cmd.add_option("--size", o.size, "render size")->type_name("WxH")->capture_default_str();
     cmd.add_option("--views", o.views, "viewpoints per scene; even ones train, odd ones are held out")
         ->capture_default_str()
         ->check(cliRange(2, 32));
@@ -52,12 +52,12 @@ void addTuneOptions(CLI::App& cmd, TuneOptions& o) {
     cmd.add_option("--radius-scene", o.radiusScene, "the reference's R as a fraction of the scene diagonal")
         ->capture_default_str()
         ->check(cliRange(0.0001, 0.5));
-    cmd.add_option("--set", o.sets, "KEY=VALUE applied to the start, e.g. TECHNIQUE.steps=4 (repeatable)");
+    cmd.add_option("--set", o.sets, "KEY=VALUE applied to the start, e.g. TECHNIQUE.steps=4 (repeatable)")->type_name("KEY=VALUE");
     cmd.add_option("--knob", o.knobs,
                    "fit only this knob (repeatable: a float parameter key of the technique, or radius_multiplier "
-                   "or ao.power, which are never fitted unless named; default: the technique's float rows)");
-    cmd.add_option("--out", o.out, "where to save the tuned preset (JSON)")->capture_default_str();
-    cmd.add_option("--preset-dir", o.presetDir, "folder of user presets");
+                   "or ao.power, which are never fitted unless named; default: the technique's float rows)")->type_name("KEY");
+    cmd.add_option("--out", o.out, "where to save the tuned preset (JSON)")->type_name(kOutFile)->capture_default_str();
+    cmd.add_option("--preset-dir", o.presetDir, "folder of user presets")->type_name(kInDir);
     cmd.add_flag("--quiet", o.quiet, "no progress output");
 }
 

@@ -10,6 +10,7 @@
 #include "stress/stress_report.h"
 #include "techniques/technique.h"
 #include "util/error.h"
+#include "util/files.h"
 #include "util/paths.h"
 
 #include "cli_util.h"
@@ -24,14 +25,14 @@
 namespace ssao {
 
 void addStressOptions(CLI::App& cmd, StressOptions& o) {
-    cmd.add_option("--scene", o.scenes, "scene (repeatable; default builtin:showcase)");
-    cmd.add_option("--technique", o.techniques, "technique (repeatable; default every one)");
-    cmd.add_option("--size", o.size, "render size")->capture_default_str();
+    cmd.add_option("--scene", o.scenes, "scene (repeatable; default builtin:showcase)")->type_name(kInFile);
+    cmd.add_option("--technique", o.techniques, "technique (repeatable; default every one)")->type_name("TECHNIQUE");
+    cmd.add_option("--size", o.size, "render size")->type_name("WxH")->capture_default_str();
     cmd.add_option("--tolerance", o.tolerance,
                    "largest RMSE against the benign render allowed where AO must not change (scale, translation)")
         ->capture_default_str()
         ->check(cliRange(0.0, 1.0));
-    cmd.add_option("--out", o.out, "output folder (stress.json, stability.md)")->capture_default_str();
+    cmd.add_option("--out", o.out, "output folder (stress.json, stability.md)")->type_name(kOutDir)->capture_default_str();
     cmd.add_flag("--quiet", o.quiet, "no progress output");
 }
 
@@ -143,6 +144,7 @@ int runStress(const StressOptions& o) {
     int w = 0, h = 0;
     parseSizeOption(o.size, w, h);
     if (!(o.tolerance >= 0.0 && o.tolerance <= 1.0)) throw Error("--tolerance must be a number in [0, 1]");
+    makeOutputFolder(o.out); // before the cases run, not after
     std::vector<std::string> techs = o.techniques;
     if (techs.empty())
         for (const auto& t : techniques())

@@ -1,7 +1,9 @@
 #include "stress/stress_report.h"
 
+#include "output/escape.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/files.h"
 #include "util/json_file.h"
 
 #include <nlohmann/json.hpp>
@@ -61,7 +63,7 @@ std::string cell(const StressRow& r, double tolerance) {
 std::string stabilityMarkdown(const StressRun& run) {
     std::ostringstream md;
     const StressVerdict v = verdict(run);
-    md << "Every technique under every case at " << run.size << ": " << run.rows.size() << " renders, "
+    md << "Every technique under every case at " << markdownCell(run.size) << ": " << run.rows.size() << " renders, "
        << v.nonFinite << " non-finite and " << v.outside << " out-of-range values, " << v.invarianceFailures
        << " invariance cases above RMSE " << run.tolerance << ", " << v.planeFailures
        << " settings that darken an open plane below 0.99, " << v.refused
@@ -93,15 +95,15 @@ std::string stabilityMarkdown(const StressRun& run) {
                                                                       r.technique + " " + r.variant;
                 }
             if (variants.empty()) continue;
-            md << "\n### " << scene << ": " << axis << "\n\n| case |";
+            md << "\n### " << markdownCell(scene) << ": " << markdownCell(axis) << "\n\n| case |";
             for (const auto& t : techs)
-                md << " " << t << " |";
+                md << " " << markdownCell(t) << " |";
             md << "\n|---|";
             for (size_t i = 0; i < techs.size(); ++i)
                 md << "---:|";
             md << "\n";
             for (const auto& var : variants) {
-                md << "| " << var << " |";
+                md << "| " << markdownCell(var) << " |";
                 for (const auto& t : techs) {
                     auto it = at.find({var, t});
                     md << " " << (it == at.end() ? std::string("–") : cell(*it->second, run.tolerance)) << " |";
@@ -118,20 +120,19 @@ std::string stabilityMarkdown(const StressRun& run) {
     if (!byDesign.empty()) {
         md << "\n### Unphysical by design\n\n";
         for (const auto& [why, where] : byDesign)
-            md << "- " << why << " (" << where << ")\n";
+            md << "- " << markdownCell(why) << " (" << markdownCell(where) << ")\n";
     }
     if (!refusals.empty()) {
         md << "\n### Refused cases\n\n";
         for (const auto& [msg, where] : refusals)
-            md << "- `" << msg << "` (" << where.substr(0, 300) << (where.size() > 300 ? "..." : "") << ")\n";
+            md << "- " << markdownCell(msg) << " (" << markdownCell(where.substr(0, 300)) << (where.size() > 300 ? "..." : "")
+               << ")\n";
     }
     return md.str();
 }
 
 void writeStressFiles(const StressRun& run, const std::string& dir) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw Error("cannot create " + dir + ": " + ec.message());
+    makeOutputFolder(dir);
     nlohmann::json j = {{"size", run.size}, {"tolerance", run.tolerance}, {"rows", nlohmann::json::array()}};
     for (const auto& r : run.rows)
         j["rows"].push_back({{"scene", r.scene}, {"technique", r.technique}, {"axis", r.axis},

@@ -3,6 +3,7 @@
 #include "gl/context.h"
 #include "output/image.h"
 #include "util/error.h"
+#include "util/files.h"
 
 #include <epoxy/gl.h>
 // GLFW after epoxy: epoxy provides the GL declarations.
@@ -14,7 +15,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
 namespace ssao {
 
@@ -124,12 +125,8 @@ void initImGui(GLFWwindow* window) {
 // writes the frame log.
 class FrameLoop {
   public:
-    FrameLoop(GLFWwindow* window, AppCore& app, const WindowOptions& o) : window_(window), app_(app), o_(o) {
-        if (o.frameLog.empty()) return;
-        log_.open(o.frameLog);
-        if (!log_) throw Error("cannot write frame log " + o.frameLog);
-        log_ << "# frame ms(CPU, UI + render + swap) render_w render_h moving rendered passes_run\n";
-    }
+    FrameLoop(GLFWwindow* window, AppCore& app, const WindowOptions& o, AppendFile& log)
+        : window_(window), app_(app), o_(o), log_(log) {}
 
     void run() {
         double lastShaderCheck = glfwGetTime();
@@ -169,7 +166,7 @@ class FrameLoop {
         if (!last) glfwSwapBuffers(window_);
         const float ms = std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count();
         app_.frames().noteFrameMs(ms);
-        if (log_) logFrame(ms);
+        if (log_.isOpen()) logFrame(ms);
         return last;
     }
 
@@ -194,24 +191,32 @@ class FrameLoop {
         const FrameDriver& f = app_.frames();
         const bool rendered = f.framesRendered() != renderedBefore_;
         renderedBefore_ = f.framesRendered();
-        log_ << frame_ << " " << ms << " " << app_.renderer().width() << " " << app_.renderer().height() << " "
+        std::ostringstream line;
+        line << frame_ << " " << ms << " " << app_.renderer().width() << " " << app_.renderer().height() << " "
              << (f.renderedInteractive() ? 1 : 0) << " " << (rendered ? 1 : 0) << " ";
         if (rendered)
             for (const auto& p : f.lastReport().ran())
-                log_ << p << ",";
-        log_ << "\n" << std::flush;
+                line << p << ",";
+        line << "\n";
+        log_.write(line.str()); // a full disk ends the session with its error, not a silent stop
     }
 
     GLFWwindow* window_;
     AppCore& app_;
     const WindowOptions& o_;
-    std::ofstream log_;
+    AppendFile& log_;
     int frame_ = 0, renderedBefore_ = 0;
 };
 
 } // namespace
 
 int runWindowApp(const WindowOptions& o) {
+    // Before any window: a frame log that cannot be written is refused without a display.
+    AppendFile log;
+    if (!o.frameLog.empty()) {
+        log = AppendFile(o.frameLog, "frame log");
+        log.write("# frame ms(CPU, UI + render + swap) render_w render_h moving rendered passes_run\n");
+    }
     GlfwSession glfw;
     GLFWwindow* window = createWindow(o);
     initImGui(window);
@@ -223,13 +228,13 @@ int runWindowApp(const WindowOptions& o) {
         appOptions.wake = [] { glfwPostEmptyEvent(); };
         AppCore app(appOptions);
         if (!app.startupError().empty()) {
-            std::string line = app.startupError();
-            std::replace(line.begin(), line.end(), '\n', ';');
+            const std::string line = oneLine(app.startupError());
             std::fprintf(stderr, "ssaolab: error: %s\n", line.c_str());
             rc = 1; // the window stays open on the built-in scene; the exit status still says it failed
         }
         glfwSetWindowUserPointer(window, &app);
-        FrameLoop(window, app, o).run();
+        FrameLoop(window, app, o, log).run();
+        log.close();
         gl::pollGlErrors();
         if (gl::glErrorCount() > 0) {
             std::fprintf(stderr, "ssaolab: error: OpenGL reported %d error(s) during the session\n",

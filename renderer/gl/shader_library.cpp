@@ -1,8 +1,8 @@
 #include "gl/shader_library.h"
 
 #include "util/error.h"
+#include "util/files.h"
 
-#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -11,11 +11,7 @@ namespace ssao::gl {
 namespace {
 
 std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("shader file not found: " + path);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
+    return readRegularFile(path, "shader file", size_t(4) << 20); // never waits on a FIFO in the folder
 }
 
 // `#include "name"` (spaces allowed around '#' and the keyword): the name, or "" when the line is

@@ -2,14 +2,13 @@
 
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/files.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>
 #include <tinyexr.h>
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -86,18 +85,63 @@ void writeExr(const Image& img, const std::string& path) {
     writeFileAtomically(path, bytes);
 }
 
-Image readExr(const std::string& path) {
+namespace {
+// An OpenEXR from memory, as RGBA float.
+Image decodeExr(const std::string& bytes, const std::string& label) {
     float* rgba = nullptr;
     int w = 0, h = 0;
     const char* err = nullptr;
-    if (LoadEXR(&rgba, &w, &h, path.c_str(), &err) != TINYEXR_SUCCESS) {
-        std::string msg = err ? err : "unknown error";
+    if (LoadEXRFromMemory(&rgba, &w, &h, reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &err) !=
+        TINYEXR_SUCCESS) {
+        const std::string msg = err ? err : "unknown error";
         if (err) FreeEXRErrorMessage(err);
-        throw Error("cannot read " + path + ": " + msg);
+        throw Error("cannot read " + label + ": " + msg);
     }
-    Image img{w, h, 4, std::vector<float>(rgba, rgba + size_t(w) * h * 4)};
+    Image img{w, h, 4, std::vector<float>(rgba, rgba + size_t(w) * size_t(h) * 4)};
     std::free(rgba);
     return img;
+}
+
+// Anything stb_image reads, from memory, with its own channels mapped to [0,1].
+Image decodeStb(const std::string& bytes, const std::string& label) {
+    if (bytes.size() > size_t(std::numeric_limits<int>::max())) throw Error("cannot read " + label + ": over 2 GiB");
+    int w = 0, h = 0, c = 0;
+    unsigned char* px = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w,
+                                              &h, &c, 0);
+    if (!px)
+        throw Error("cannot read " + label + ": " +
+                    (stbi_failure_reason() ? stbi_failure_reason() : "not an image stb_image reads"));
+    Image img{w, h, c, std::vector<float>(size_t(w) * size_t(h) * size_t(c))};
+    for (size_t i = 0; i < img.data.size(); ++i)
+        img.data[i] = float(px[i]) / 255.0f;
+    stbi_image_free(px);
+    return img;
+}
+
+std::string readImageFile(const std::string& path, const ImageBudget& budget, const std::string& what) {
+    return readRegularFile(path, what, imageFileBytes(budget));
+}
+} // namespace
+
+Image decodeImage(const std::string& bytes, const ImageBudget& budget, const std::string& label,
+                  const std::function<void(const ImageHeader&)>& checkHeader) {
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    const ImageHeader h = checkImageBudget(data, bytes.size(), budget, label);
+    if (h.pixels() == 0) throw Error("cannot read " + label + ": not a PNG, PGM, JPEG or OpenEXR image");
+    if (checkHeader) checkHeader(h);
+    return h.format == ImageFormat::Exr ? decodeExr(bytes, label) : decodeStb(bytes, label);
+}
+
+Image readExr(const std::string& path, const ImageBudget& budget, const std::string& what) {
+    const std::string label = what + " " + path;
+    const std::string bytes = readImageFile(path, budget, what);
+    if (readImageHeader(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()).format != ImageFormat::Exr)
+        throw Error("cannot read " + label + ": not an OpenEXR file");
+    return decodeImage(bytes, budget, label);
+}
+
+Image readImage(const std::string& path, const ImageBudget& budget, const std::string& what) {
+    return decodeImage(readImageFile(path, budget, what), budget, what + " " + path);
 }
 
 void writePng(const Image& img, const std::string& path, float scale, float offset) {
@@ -122,15 +166,12 @@ void writePng(const Image& img, const std::string& path, float scale, float offs
     writeFileAtomically(path, bytes);
 }
 
-Image readPng(const std::string& path) {
-    int w = 0, h = 0, c = 0;
-    unsigned char* px = stbi_load(path.c_str(), &w, &h, &c, 0);
-    if (!px) throw Error("cannot read " + path);
-    Image img{w, h, c, std::vector<float>(size_t(w) * h * c)};
-    for (size_t i = 0; i < img.data.size(); ++i)
-        img.data[i] = float(px[i]) / 255.0f;
-    stbi_image_free(px);
-    return img;
+Image readPng(const std::string& path, const ImageBudget& budget, const std::string& what) {
+    const std::string label = what + " " + path;
+    const std::string bytes = readImageFile(path, budget, what);
+    if (readImageHeader(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()).format == ImageFormat::Exr)
+        throw Error("cannot read " + label + ": an OpenEXR file, not an image stb_image reads");
+    return decodeImage(bytes, budget, label);
 }
 
 float quantile(std::vector<float>& v, double q) {

@@ -1,6 +1,9 @@
 // CPU float images (rows top-to-bottom), EXR/PNG writers, and statistics; no GL (a texture is
 // read into one by gl/readback.h).
 #pragma once
+#include "util/image_budget.h"
+
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -26,10 +29,21 @@ float quantile(std::vector<float>& values, double q);
 
 // OpenEXR, 32-bit float channels (1 = Y, 3 = RGB, 4 = RGBA). Throws ssao::Error.
 void writeExr(const Image& img, const std::string& path);
-Image readExr(const std::string& path);
 // 8-bit PNG of `img` mapped through value * scale + offset, clamped to [0,1]; NaN → magenta.
 void writePng(const Image& img, const std::string& path, float scale = 1.0f, float offset = 0.0f);
-Image readPng(const std::string& path); // values in [0,1]
+
+// Reading: the file through the file gate (a regular file, at most imageFileBytes(budget)), its
+// header through checkImageBudget, then decoded from memory. Errors name the file as `what PATH`.
+// An OpenEXR as RGBA (4 channels); anything else stb_image reads (PNG, PGM, JPEG) with its own
+// channels, values in [0,1].
+Image readExr(const std::string& path, const ImageBudget& budget = {}, const std::string& what = "image");
+Image readPng(const std::string& path, const ImageBudget& budget = {}, const std::string& what = "image");
+// readExr for an OpenEXR (by its magic number), else readPng.
+Image readImage(const std::string& path, const ImageBudget& budget = {}, const std::string& what = "image");
+// The same from bytes already read; `label` starts every error. `checkHeader`, if given, sees the
+// header once it is within the budget and before anything is decoded (it throws to refuse it).
+Image decodeImage(const std::string& bytes, const ImageBudget& budget, const std::string& label,
+                  const std::function<void(const ImageHeader&)>& checkHeader = {});
 
 struct Stats {
     long nonFinite = 0; // NaN or ±inf values over all pixels and channels

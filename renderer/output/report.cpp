@@ -6,6 +6,7 @@
 #include "settings/preset.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/files.h"
 #include "util/json_file.h"
 
 #include <filesystem>
@@ -50,9 +51,7 @@ nlohmann::json frameStatistics(const FrameCapture& c) {
 nlohmann::json writeOutputs(const FrameCapture& c, const std::string& dir, const RunInfo& info,
                             const FrameReport& firstFrame, const nlohmann::json& timing) {
     namespace fs = std::filesystem;
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec) throw Error("cannot create output folder " + dir + ": " + ec.message());
+    makeOutputFolder(dir);
     auto path = [&](const std::string& f) { return (fs::path(dir) / f).string(); };
 
     nlohmann::json m = frameStatistics(c);

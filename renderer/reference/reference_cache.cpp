@@ -4,6 +4,7 @@
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/json_file.h"
+#include "util/user_dirs.h"
 
 #include <nlohmann/json.hpp>
 
@@ -83,17 +84,9 @@ std::string ReferenceKey::fileStem() const {
 }
 
 std::string referenceCacheDir() {
-    // XDG Base Directory: an empty variable means unset (an empty XDG_CACHE_HOME once made the cache
-    // "/ssaolab", at the file system's root).
-    auto env = [](const char* name) -> std::string {
-        const char* v = std::getenv(name);
-        return v && *v ? std::string(v) : std::string();
-    };
-    std::string base;
-    if (const std::string d = env("SSAOLAB_CACHE_DIR"); !d.empty()) base = d;
-    else if (const std::string x = env("XDG_CACHE_HOME"); !x.empty()) base = x + "/ssaolab";
-    else if (const std::string h = env("HOME"); !h.empty()) base = h + "/.cache/ssaolab";
-    else base = ".ssaolab-cache";
+    std::string base = envValue("SSAOLAB_CACHE_DIR");
+    if (base.empty()) base = xdgUserDir("XDG_CACHE_HOME", ".cache");
+    if (base.empty()) base = ".ssaolab-cache";
     return base + "/reference";
 }
 
@@ -129,7 +122,9 @@ std::optional<ReferenceImage> loadCachedReference(const ReferenceKey& key, const
     try {
         const nlohmann::json meta = readJsonFile(stem.string() + ".json", "reference cache entry");
         if (!meta.is_object() || meta.value("key", std::string()) != key.text()) return std::nullopt; // a collision
-        const Image px = readExr(stem.string() + ".exr");
+        // Budgeted to the key's own size: a larger header is not this entry, and is never decoded.
+        const ImageBudget exactly{uint64_t(key.width) * uint64_t(key.height), 0, "this entry", ""};
+        const Image px = readExr(stem.string() + ".exr", exactly, "reference cache entry");
         if (!validEntry(meta, px, key)) return std::nullopt;
         ReferenceImage img;
         img.width = px.width;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace ssao {
@@ -17,7 +18,27 @@ ScreenLayers::ScreenLayers(const Camera& c, int width, int height, int layers, f
     if (layers < 1 || layers > 2) throw Error("screen oracle: 1 or 2 depth layers");
     if (!(thickness > 0.0f)) throw Error("screen oracle: the thickness must be positive");
     if (guard < 0 || guard > 4096) throw Error("screen oracle: a guard band of 0..4096 pixels");
+    checkBudget(width, height, layers, guard);
     surfaces_.assign(size_t(width + 2 * guard) * size_t(height + 2 * guard) * layers, Surface{});
+}
+
+uint64_t ScreenLayers::bytes(int width, int height, int layers, int guard) {
+    const uint64_t w = uint64_t(std::max(width, 0)) + 2 * uint64_t(std::max(guard, 0));
+    const uint64_t h = uint64_t(std::max(height, 0)) + 2 * uint64_t(std::max(guard, 0));
+    return w * h * uint64_t(std::max(layers, 0)) * sizeof(Surface);
+}
+
+void ScreenLayers::checkBudget(int width, int height, int layers, int guard) {
+    const uint64_t need = bytes(width, height, layers, guard);
+    if (need <= kScreenLayersBudget) return;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "screen oracle: its G-buffer would take %.2f GiB ((%d + 2 x %d) x (%d + 2 x %d) pixels x %d layer%s x "
+                  "%zu bytes), past the budget of %.3g GiB: lower --oracle-guard (pixels beyond each edge) or "
+                  "--oracle-layers, or render smaller",
+                  double(need) / double(1 << 30), width, guard, height, guard, layers, layers == 1 ? "" : "s",
+                  sizeof(Surface), double(kScreenLayersBudget) / double(1 << 30));
+    throw Error(text);
 }
 
 void ScreenLayers::set(int layer, size_t pixel, const glm::vec3& point, const glm::vec3& normal, bool backFace) {

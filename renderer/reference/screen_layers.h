@@ -15,15 +15,28 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <vector>
 
 namespace ssao {
+
+// What the oracle's G-buffer may take: 1 GiB (a 4K frame with a 256-pixel band and two layers
+// takes 0.6 GiB; a 64 x 36 frame with a 4096-pixel band and two layers would take 3.5 GiB).
+constexpr uint64_t kScreenLayersBudget = uint64_t(1) << 30;
 
 class ScreenLayers {
   public:
     // `thickness` in scene units (may be +inf); `layers` 1 (a G-buffer) or 2 (a deep G-buffer);
     // `guard` pixels of margin held beyond each edge of the width x height frame (a guard band).
+    // Checks the budget (checkBudget) before anything is allocated.
     ScreenLayers(const Camera& camera, int width, int height, int layers, float thickness, int guard = 0);
+
+    // Bytes the G-buffer of these dimensions takes: every layer's (width + 2 guard) x (height + 2
+    // guard) surfaces. Pure: callers check it before a render (app/render_command.cpp).
+    static uint64_t bytes(int width, int height, int layers, int guard);
+    // Throws "screen oracle: its G-buffer would take X GiB (...), past the budget of 1 GiB: lower
+    // --oracle-guard or --oracle-layers" when bytes() exceeds kScreenLayersBudget.
+    static void checkBudget(int width, int height, int layers, int guard);
 
     // The surface of `layer` at `pixel` of the frame (row-major, top row first), or at (x, y) with
     // x in [-guard, width + guard) and y likewise.

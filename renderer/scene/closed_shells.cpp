@@ -42,6 +42,18 @@ void radixSort(std::vector<Edge>& v, uint64_t bound) {
 
 } // namespace
 
+uint64_t weldHash(const glm::vec3& p) {
+    auto bits = [](float f) {
+        uint32_t u;
+        std::memcpy(&u, &f, 4);
+        return u == 0x80000000u ? 0u : u;
+    };
+    uint64_t hash = uint64_t(bits(p.x)) * 73856093u ^ uint64_t(bits(p.y)) * 19349663u ^ uint64_t(bits(p.z)) * 83492791u;
+    hash ^= hash >> 33, hash *= 0xff51afd7ed558ccdull, hash ^= hash >> 33;
+    hash *= 0xc4ceb9fe1a85ec53ull, hash ^= hash >> 33;
+    return hash;
+}
+
 std::vector<ShellFacing> classifyShells(const std::vector<Vertex>& vertices, const std::vector<uint32_t>& indices,
                                         size_t first, size_t triangles) {
     std::vector<ShellFacing> out(triangles, ShellFacing::Open);
@@ -72,7 +84,7 @@ std::vector<ShellFacing> classifyShells(const std::vector<Vertex>& vertices, con
         if (id == UINT32_MAX) {
             const glm::vec3& p = vertices[corner[i]].position;
             const uint32_t x = bits(p.x), y = bits(p.y), z = bits(p.z);
-            size_t slot = (size_t(x) * 73856093u ^ size_t(y) * 19349663u ^ size_t(z) * 83492791u) & (tableSize - 1);
+            size_t slot = size_t(weldHash(p)) & (tableSize - 1);
             for (;; slot = (slot + 1) & (tableSize - 1)) {
                 if (table[slot] == UINT32_MAX) {
                     table[slot] = corner[i], idOfSlot[slot] = ids++;

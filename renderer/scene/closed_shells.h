@@ -30,6 +30,10 @@ enum class ShellFacing : int8_t {
 // beyond it is reported all Open (drawn as before, with no culling).
 constexpr size_t kShellMaxTriangles = size_t(1) << 20;
 
+// The weld table's hash of a position's bits (-0 as +0): MurmurHash3's finaliser mixes every bit
+// into the low ones, which round coordinates (a grid of instances) leave zero in a plain product.
+uint64_t weldHash(const glm::vec3& p);
+
 // One ShellFacing per triangle of indices[first, first + 3 * triangles). Vertices are welded by
 // exact position (split normals and UV seams do not open a shell); a triangle that collapses
 // under welding covers no pixel and is Open. Shells are found within the range only: a solid split

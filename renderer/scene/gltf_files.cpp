@@ -1,8 +1,9 @@
 #include "scene/gltf_files.h"
 
 #include "util/error.h"
+#include "util/files.h"
 
-#include <fstream>
+#include <algorithm>
 
 namespace ssao {
 
@@ -35,30 +36,25 @@ bool readFileInFolder(std::vector<unsigned char>* out, std::string* err, const s
                       void* user) {
     const auto* folder = static_cast<SceneFolder*>(user);
     const auto p = insideFolder(file, *folder);
-    std::error_code ec;
     if (!p) {
         if (err) *err += "'" + file + "' is outside the scene's folder " + folder->root.string() + "\n";
-        return false;
-    }
-    if (!std::filesystem::is_regular_file(*p, ec)) {
-        if (err) *err += "'" + file + "' is not a regular file\n";
         return false;
     }
     // The budget counts every read, before it happens: two buffers naming one sparse 2 GiB file
     // once took 4 GiB.
     auto* f = static_cast<SceneFolder*>(user);
-    const auto size = std::filesystem::file_size(*p, ec);
-    if (ec || size > f->budget - std::min(f->read, f->budget)) {
+    const size_t left = f->budget - std::min(f->read, f->budget);
+    try {
+        const std::string bytes = readRegularFile(p->string(), "'" + file + "'", left);
+        f->read += bytes.size();
+        out->assign(bytes.begin(), bytes.end());
+    } catch (const FileTooLarge&) {
         if (err)
-            *err += "'" + file + "' (" + std::to_string(size >> 20) + " MiB) takes the scene's buffers past the budget of " +
-                    std::to_string(f->budget >> 20) + " MiB (raise it with ssaolab --max-scene-mib N)\n";
+            *err += "'" + file + "' takes the scene's buffers past the budget of " + std::to_string(f->budget >> 20) +
+                    " MiB (raise it with ssaolab --max-scene-mib N)\n";
         return false;
-    }
-    f->read += size_t(size);
-    std::ifstream in(*p, std::ios::binary);
-    out->resize(size_t(size));
-    if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) {
-        if (err) *err += "cannot read '" + file + "'\n";
+    } catch (const Error& e) {
+        if (err) *err += std::string(e.what()) + "\n";
         return false;
     }
     return true;

@@ -64,6 +64,12 @@ void checkIndices(const nlohmann::json& j, const std::string& what) {
         for (const char* k : {"camera", "skin", "mesh"})
             checkIndex(n, k, what + ": " + w);
         checkIndexArray(n, "children", what + ": " + w);
+        // Extensions ssaolab reads hold indices too: EXT_mesh_gpu_instancing's attribute accessors.
+        if (n.is_object() && n.contains("extensions") && n["extensions"].is_object() &&
+            n["extensions"].contains("EXT_mesh_gpu_instancing") && n["extensions"]["EXT_mesh_gpu_instancing"].is_object() &&
+            n["extensions"]["EXT_mesh_gpu_instancing"].contains("attributes"))
+            checkIndexMap(n["extensions"]["EXT_mesh_gpu_instancing"]["attributes"],
+                          what + ": " + w + ".extensions.EXT_mesh_gpu_instancing.attributes");
     });
     eachOf(j, "meshes", [&](const nlohmann::json& m, const std::string& w) {
         eachOf(m, "primitives", [&](const nlohmann::json& p, const std::string& pw) {
@@ -86,13 +92,21 @@ void checkIndices(const nlohmann::json& j, const std::string& what) {
         checkIndex(t, "sampler", what + ": " + w);
         checkIndex(t, "source", what + ": " + w);
     });
+    // A texture reference: its texture, its UV set, and KHR_texture_transform's UV set (read too).
+    auto textureInfo = [&](const nlohmann::json& t, const std::string& at) {
+        checkIndex(t, "index", at);
+        checkIndex(t, "texCoord", at);
+        if (t.is_object() && t.contains("extensions") && t["extensions"].is_object() &&
+            t["extensions"].contains("KHR_texture_transform"))
+            checkIndex(t["extensions"]["KHR_texture_transform"], "texCoord", at + ".extensions.KHR_texture_transform");
+    };
     eachOf(j, "materials", [&](const nlohmann::json& m, const std::string& w) {
         for (const char* tex : {"normalTexture", "occlusionTexture", "emissiveTexture"})
-            if (m.is_object() && m.contains(tex)) checkIndex(m[tex], "index", what + ": " + w + "." + tex);
+            if (m.is_object() && m.contains(tex)) textureInfo(m[tex], what + ": " + w + "." + tex);
         if (m.is_object() && m.contains("pbrMetallicRoughness") && m["pbrMetallicRoughness"].is_object())
             for (const char* tex : {"baseColorTexture", "metallicRoughnessTexture"})
                 if (m["pbrMetallicRoughness"].contains(tex))
-                    checkIndex(m["pbrMetallicRoughness"][tex], "index", what + ": " + w + ".pbrMetallicRoughness." + tex);
+                    textureInfo(m["pbrMetallicRoughness"][tex], what + ": " + w + ".pbrMetallicRoughness." + tex);
     });
     eachOf(j, "skins", [&](const nlohmann::json& s, const std::string& w) {
         checkIndex(s, "inverseBindMatrices", what + ": " + w);
@@ -158,16 +172,7 @@ GuardedGltf guardGltf(const std::string& path, const SceneBudget& budget) {
         chunks = glbChunks(data, bytes.size(), what);
         json = bytes.substr(chunks.jsonAt, chunks.jsonSize);
     }
-    checkJsonNesting(json, what);
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(json);
-    } catch (const nlohmann::json::exception& e) {
-        std::string msg = e.what();
-        const size_t bracket = msg.find("] ");
-        if (bracket != std::string::npos) msg = msg.substr(bracket + 2);
-        throw Error(what + ": not valid JSON (" + msg + ")");
-    }
+    nlohmann::json j = parseJsonText(json, what + ":");
     if (!j.is_object()) throw Error(what + ": the JSON is not an object");
     checkIndices(j, what);
     if (j.contains("images")) {

@@ -33,42 +33,6 @@ const tinygltf::Value* attributesOf(const tinygltf::Node& n, const std::string& 
     return &it->second.Get("attributes");
 }
 
-// Element i of a VEC3/VEC4 accessor as doubles: float, or (ROTATION) normalised signed byte/short.
-std::vector<glm::dvec4> readVectors(const tinygltf::Model& m, int index, int components, bool normalisedOk,
-                                    const std::string& what) {
-    const tinygltf::Accessor& a = m.accessors[size_t(index)];
-    const int type = components == 3 ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4;
-    size_t comp = 0;
-    if (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) comp = 4;
-    else if (normalisedOk && a.normalized && a.componentType == TINYGLTF_COMPONENT_TYPE_BYTE) comp = 1;
-    else if (normalisedOk && a.normalized && a.componentType == TINYGLTF_COMPONENT_TYPE_SHORT) comp = 2;
-    if (a.type != type || comp == 0)
-        throw Error(what + ": only float" + std::string(normalisedOk ? " or normalised byte/short" : "") + " VEC" +
-                    std::to_string(components) + " is supported");
-    size_t stride = 0;
-    const unsigned char* data = accessorData(m, a, what, comp * size_t(components), stride);
-    std::vector<glm::dvec4> out(a.count, glm::dvec4(0.0));
-    for (size_t i = 0; i < a.count; ++i)
-        for (int k = 0; k < components; ++k) {
-            const unsigned char* c = data + i * stride + size_t(k) * comp;
-            double v = 0;
-            if (comp == 4) {
-                float f;
-                std::memcpy(&f, c, 4);
-                v = f;
-            } else if (comp == 1) {
-                v = std::max(double(int8_t(c[0])) / 127.0, -1.0);
-            } else {
-                int16_t s;
-                std::memcpy(&s, c, 2);
-                v = std::max(double(s) / 32767.0, -1.0);
-            }
-            if (!std::isfinite(v)) throw Error(what + ": element " + std::to_string(i) + " is not finite");
-            out[i][k] = v;
-        }
-    return out;
-}
-
 } // namespace
 
 size_t instanceCount(const tinygltf::Model& m, const tinygltf::Node& n, const std::string& what) {
@@ -89,29 +53,67 @@ size_t instanceCount(const tinygltf::Model& m, const tinygltf::Node& n, const st
     return count;
 }
 
-std::vector<glm::dmat4> instanceTransforms(const tinygltf::Model& m, const tinygltf::Node& n, const std::string& what) {
+InstanceTransforms::InstanceTransforms(const tinygltf::Model& m, const tinygltf::Node& n, const std::string& what) {
     const tinygltf::Value* attrs = attributesOf(n, what);
-    if (!attrs) return {glm::dmat4(1.0)};
-    const size_t count = instanceCount(m, n, what);
-    const int t = attribute(m, *attrs, "TRANSLATION", what), r = attribute(m, *attrs, "ROTATION", what),
-              s = attribute(m, *attrs, "SCALE", what);
+    if (!attrs) return;
+    count_ = instanceCount(m, n, what);
     const std::string at = what + " " + kExtension;
-    const auto tv = t >= 0 ? readVectors(m, t, 3, false, at + " TRANSLATION") : std::vector<glm::dvec4>();
-    const auto rv = r >= 0 ? readVectors(m, r, 4, true, at + " ROTATION") : std::vector<glm::dvec4>();
-    const auto sv = s >= 0 ? readVectors(m, s, 3, false, at + " SCALE") : std::vector<glm::dvec4>();
-    std::vector<glm::dmat4> out(count, glm::dmat4(1.0));
-    for (size_t i = 0; i < count; ++i) {
-        glm::dmat4 x(1.0);
-        if (!tv.empty()) x = glm::translate(x, glm::dvec3(tv[i]));
-        if (!rv.empty()) { // (x, y, z, w) unit quaternion; renormalised (quantised ones are not unit)
-            glm::dquat q(rv[i].w, rv[i].x, rv[i].y, rv[i].z);
-            const double len = glm::length(q);
-            x *= len > 1e-12 ? glm::mat4_cast(q / len) : glm::dmat4(1.0);
+    // VEC3/VEC4 accessors of float, or (ROTATION) normalised signed byte/short.
+    auto open = [&](const char* name, int components, bool normalisedOk) {
+        Attribute r;
+        const int index = attribute(m, *attrs, name, what);
+        if (index < 0) return r;
+        const tinygltf::Accessor& a = m.accessors[size_t(index)];
+        const int type = components == 3 ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4;
+        if (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) r.componentBytes = 4;
+        else if (normalisedOk && a.normalized && a.componentType == TINYGLTF_COMPONENT_TYPE_BYTE) r.componentBytes = 1;
+        else if (normalisedOk && a.normalized && a.componentType == TINYGLTF_COMPONENT_TYPE_SHORT) r.componentBytes = 2;
+        r.what = at + " " + name;
+        if (a.type != type || r.componentBytes == 0)
+            throw Error(r.what + ": only float" + std::string(normalisedOk ? " or normalised byte/short" : "") + " VEC" +
+                        std::to_string(components) + " is supported");
+        r.components = components;
+        r.data = accessorData(m, a, r.what, r.componentBytes * size_t(components), r.stride);
+        return r;
+    };
+    translation_ = open("TRANSLATION", 3, false);
+    rotation_ = open("ROTATION", 4, true);
+    scale_ = open("SCALE", 3, false);
+}
+
+glm::dvec4 InstanceTransforms::Attribute::at(size_t i) const {
+    glm::dvec4 out(0.0);
+    for (int k = 0; k < components; ++k) {
+        const unsigned char* c = data + i * stride + size_t(k) * componentBytes;
+        double v = 0;
+        if (componentBytes == 4) {
+            float f;
+            std::memcpy(&f, c, 4);
+            v = f;
+        } else if (componentBytes == 1) {
+            v = std::max(double(int8_t(c[0])) / 127.0, -1.0);
+        } else {
+            int16_t s;
+            std::memcpy(&s, c, 2);
+            v = std::max(double(s) / 32767.0, -1.0);
         }
-        if (!sv.empty()) x = glm::scale(x, glm::dvec3(sv[i]));
-        out[i] = x;
+        if (!std::isfinite(v)) throw Error(what + ": element " + std::to_string(i) + " is not finite");
+        out[k] = v;
     }
     return out;
+}
+
+glm::dmat4 InstanceTransforms::operator[](size_t i) const {
+    glm::dmat4 x(1.0);
+    if (translation_.data) x = glm::translate(x, glm::dvec3(translation_.at(i)));
+    if (rotation_.data) { // (x, y, z, w) unit quaternion; renormalised (quantised ones are not unit)
+        const glm::dvec4 r = rotation_.at(i);
+        glm::dquat q(r.w, r.x, r.y, r.z);
+        const double len = glm::length(q);
+        x *= len > 1e-12 ? glm::mat4_cast(q / len) : glm::dmat4(1.0);
+    }
+    if (scale_.data) x = glm::scale(x, glm::dvec3(scale_.at(i)));
+    return x;
 }
 
 } // namespace ssao

@@ -298,9 +298,31 @@ struct Expansion {
         triangles += copies * tris;
         vertices += copies * (p.attributes.count("NORMAL") ? pc : 3 * tris); // flat normals: a vertex per corner
     }
+    void add(const Expansion& e, double times) {
+        triangles += times * e.triangles, vertices += times * e.vertices;
+    }
+    // Primitives appended (instances x primitives over every node visited): each is at least a
+    // triangle's work even when it draws none, so the triangle budget bounds them too.
+    double copies = 0;
     // Vertices (scene frame), their file positions (double) and three indices a triangle.
     double bytes() const { return vertices * double(sizeof(Vertex) + sizeof(glm::dvec3)) + triangles * 12; }
 };
+
+// The draws from `first` on, one primitive's instances: consecutive in the index buffer and alike
+// but for their ranges, they become one draw (one call a frame, not one per instance).
+void mergeDraws(Scene& s, size_t first) {
+    size_t keep = first;
+    for (size_t k = first + 1; k < s.draws.size(); ++k) {
+        Draw& d = s.draws[keep];
+        const Draw& e = s.draws[k];
+        if (e.firstIndex == d.firstIndex + d.indexCount && e.baseColor == d.baseColor && e.mask == d.mask &&
+            e.alphaCutoff == d.alphaCutoff && e.alphaTexture == d.alphaTexture)
+            d.indexCount += e.indexCount;
+        else
+            s.draws[++keep] = e;
+    }
+    if (first < s.draws.size()) s.draws.resize(keep + 1);
+}
 
 // Walks the node trees, flattening meshes into the scene and collecting the cameras. Cycles (a
 // node its own ancestor) are caught on the walk; the visit bound stays as a guard.
@@ -327,16 +349,18 @@ class NodeWalker {
             // EXT_mesh_gpu_instancing: the mesh once per instance (1 without it), counted before any
             // instance is read so the budget sees the whole expansion.
             const size_t instances = instanceCount(m_, n, what);
-            if (instances > kMaxVisits - std::min(visits_, kMaxVisits))
-                throw Error("glTF " + path_ + ": more than 1 million node instances (shared nodes and GPU instances multiply)");
-            visits_ += instances > 0 ? instances - 1 : 0;
             if (countOnly_) {
-                for (const auto& p : mesh.primitives)
-                    expansion.add(m_, p, double(instances));
+                expansion.add(meshCost(n.mesh), double(instances));
+                expansion.copies += double(instances) * double(mesh.primitives.size());
             } else {
-                for (const glm::dmat4& instance : instanceTransforms(m_, n, what))
-                    for (const auto& p : mesh.primitives)
-                        appendPrimitive(m_, p, world * instance, s_, worldPos, meshLabel(mesh, n.mesh), *masks_);
+                const InstanceTransforms transforms(m_, n, what);
+                const std::string label = meshLabel(mesh, n.mesh);
+                for (const auto& p : mesh.primitives) {
+                    const size_t first = s_.draws.size();
+                    for (size_t i = 0; i < transforms.count(); ++i)
+                        appendPrimitive(m_, p, world * transforms[i], s_, worldPos, label, *masks_);
+                    mergeDraws(s_, first);
+                }
             }
         }
         if (!countOnly_ && n.camera >= 0 && n.camera < int(m_.cameras.size())) {
@@ -358,6 +382,18 @@ class NodeWalker {
 
   private:
     static constexpr size_t kMaxVisits = 1000000;
+    // What one copy of mesh i expands to, summed over its primitives once: a visit costs O(1)
+    // however many primitives the mesh holds.
+    const Expansion& meshCost(int i) {
+        if (meshCost_.empty()) meshCost_.resize(m_.meshes.size());
+        auto& [done, cost] = meshCost_[size_t(i)];
+        if (!done)
+            for (const auto& p : m_.meshes[size_t(i)].primitives)
+                cost.add(m_, p, 1.0);
+        done = true;
+        return cost;
+    }
+    std::vector<std::pair<bool, Expansion>> meshCost_;
     const tinygltf::Model& m_;
     const std::string& path_;
     Scene& s_;
@@ -418,6 +454,11 @@ Scene loadGltf(const std::string& path) {
         throw Error("glTF " + path + " expands to " + std::to_string((long long)(count.expansion.bytes() / (1 << 20))) +
                     " MiB of vertices and indices, past the budget of " + std::to_string(budget.bytes >> 20) +
                     " MiB (raise it with ssaolab --max-scene-mib N)");
+    if (count.expansion.copies > double(budget.triangles))
+        throw Error("glTF " + path + " draws " + std::to_string((long long)std::min(count.expansion.copies, 1e18)) +
+                    " instances, past the budget of " + std::to_string(budget.triangles) +
+                    " triangles (an instance of a primitive counts as at least one, with or without triangles; raise it "
+                    "with ssaolab --max-triangles N)");
     MaskTextures masks(imageSources(guarded, model, folder), budget.maskPixels, "glTF " + path);
     NodeWalker walker(model, path, s, &masks);
     for (int r : roots)

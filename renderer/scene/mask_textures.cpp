@@ -1,6 +1,7 @@
 #include "scene/mask_textures.h"
 
 #include "util/error.h"
+#include "util/image_budget.h"
 
 #include <stb_image.h>
 #include <tiny_gltf.h>
@@ -74,30 +75,15 @@ int MaskTextures::alphaOf(int image, Wrap s, Wrap t, const std::string& who, Sce
         const std::vector<unsigned char> owned = encoded(image, who, data, size);
         const std::string at = what_ + ": image " + std::to_string(image) + " (the base-colour texture of " + who + ")";
         if (size > size_t(std::numeric_limits<int>::max())) throw Error(at + " is over 2 GiB");
-        auto checkBudget = [&](uint64_t w, uint64_t h) {
-            if (w * h > budget_ - std::min(used_, budget_))
-                throw Error(at + " is " + std::to_string(w) + "x" + std::to_string(h) + " pixels: past the budget of " +
-                            std::to_string(budget_ >> 20) + " M pixels for MASK textures" +
-                            (used_ ? " (" + std::to_string(used_ >> 20) + " M already decoded)" : std::string()) +
-                            " (raise it with ssaolab --max-mask-mpix N)");
-        };
+        // Its header alone, before anything is allocated for the pixels: the size against what is
+        // left of the budget, a JPEG's scans, a PNG's inflated rows (util/image_budget.h).
+        checkImageBudget(data, size, ImageBudget{budget_, used_, "MASK textures", "--max-mask-mpix"}, at);
         int w = 0, h = 0, comp = 0;
-        // The header alone, before anything is allocated for the pixels. A PNG's size is read here
-        // (IHDR: width and height, big-endian, at bytes 16 and 20) so that one past the budget is
-        // named as such; stb refuses some on its own with a vaguer reason.
-        static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-        if (size >= 24 && std::equal(kPng, kPng + 8, data)) {
-            auto be32 = [&](size_t o) {
-                return uint32_t(data[o]) << 24 | uint32_t(data[o + 1]) << 16 | uint32_t(data[o + 2]) << 8 | data[o + 3];
-            };
-            checkBudget(be32(16), be32(20));
-        }
         if (!stbi_info_from_memory(data, int(size), &w, &h, &comp))
             throw Error(at + " is not a PNG or JPEG that can be read (" +
                         std::string(stbi_failure_reason() ? stbi_failure_reason() : "unknown format") + ")");
         if (w <= 0 || h <= 0) throw Error(at + " has no pixels");
         const uint64_t pixels = uint64_t(w) * uint64_t(h);
-        checkBudget(uint64_t(w), uint64_t(h));
         used_ += size_t(pixels);
         int w2 = 0, h2 = 0, c2 = 0;
         stbi_uc* px = stbi_load_from_memory(data, int(size), &w2, &h2, &c2, 0);

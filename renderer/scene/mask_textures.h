@@ -1,8 +1,9 @@
 // The only images ssaolab decodes: the base-colour textures of MASK materials, for their alpha.
 // Every other image stays undecoded and unread (gltf_guard.h takes them out of what tinygltf
-// parses). Each image is checked before it is decoded: its header's size against the scene's budget
-// of MASK pixels (SceneBudget::maskPixels), so a 200-byte header claiming 23000 x 23000 is refused
-// by name, as are truncated data, a bufferView outside its buffer and formats stb cannot read.
+// parses). Each image is checked before it is decoded (util/image_budget.h): its header's size
+// against the scene's budget of MASK pixels (SceneBudget::maskPixels), so a 200-byte header claiming
+// 23000 x 23000 is refused by name, as are a JPEG of thousands of scans, a PNG whose data inflates
+// past its header, truncated data, a bufferView outside its buffer and formats stb cannot read.
 #pragma once
 #include "scene/scene.h"
 

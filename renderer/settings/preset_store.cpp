@@ -3,6 +3,7 @@
 #include "util/paths.h"
 
 #include "util/error.h"
+#include "util/user_dirs.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -38,9 +39,8 @@ Preset PresetStore::open(const std::string& nameOrPath) const {
 }
 
 std::string PresetStore::defaultUserDir() {
-    if (const char* d = std::getenv("SSAOLAB_PRESET_DIR")) return d;
-    if (const char* x = std::getenv("XDG_CONFIG_HOME")) return std::string(x) + "/ssaolab/presets";
-    if (const char* h = std::getenv("HOME")) return std::string(h) + "/.config/ssaolab/presets";
+    if (const std::string d = envValue("SSAOLAB_PRESET_DIR"); !d.empty()) return d;
+    if (const std::string x = xdgUserDir("XDG_CONFIG_HOME", ".config"); !x.empty()) return x + "/presets";
     return "ssaolab-presets";
 }
 

@@ -1,6 +1,7 @@
 // Presets by name, for the app and `ssaolab render` alike: the shipped seed presets (read-only,
 // listed first, assets/presets) and the user's own, saved as preset JSON files in a folder
-// (SSAOLAB_PRESET_DIR, else $XDG_CONFIG_HOME/ssaolab/presets, else ~/.config/ssaolab/presets).
+// (SSAOLAB_PRESET_DIR, else $XDG_CONFIG_HOME/ssaolab/presets, else ~/.config/ssaolab/presets; an
+// empty variable counts as unset: util/user_dirs.h).
 #pragma once
 #include "settings/preset.h"
 

@@ -5,6 +5,18 @@
 
 namespace ssao {
 
+std::string oneLine(const std::string& message) {
+    std::string msg = message;
+    while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ' || msg.back() == '\r'))
+        msg.pop_back();
+    for (char& c : msg) {
+        const auto u = static_cast<unsigned char>(c);
+        if (c == '\n' || c == '\r') c = ';';
+        else if ((u < 0x20 && c != '\t') || u == 0x7f) c = '?';
+    }
+    return msg;
+}
+
 bool parseDecimal(const std::string& text, double& out) {
     if (text.empty()) return false;
     std::string lower;

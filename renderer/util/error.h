@@ -14,6 +14,10 @@ struct Error : std::runtime_error {
 // spaces. Returns false when the text is not one. Non-finite values parse (callers report them).
 bool parseDecimal(const std::string& text, double& out);
 
+// A message as the one line a terminal shows: trailing blanks dropped, line breaks as ';', other
+// control bytes (an escape sequence in a file name) as '?'.
+std::string oneLine(const std::string& message);
+
 inline std::string hex(unsigned v) {
     char buf[16];
     std::snprintf(buf, sizeof buf, "%x", v);

@@ -2,12 +2,7 @@
 
 #include "util/error.h"
 
-#include <fstream>
-#include <sstream>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
+#include <algorithm>
 
 namespace ssao {
 
@@ -37,42 +32,22 @@ void checkJsonNesting(const std::string& text, const std::string& what) {
         throw Error(what + " nests arrays or objects deeper than " + std::to_string(kMaxJsonDepth) + " levels");
 }
 
-std::string readRegularFile(const std::string& path, const std::string& what, size_t maxBytes) {
-    // Opened without blocking, then checked: a FIFO opened for reading would wait for a writer.
-    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0) throw Error(what + " " + path + ": cannot open it");
-    struct stat st{};
-    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        ::close(fd);
-        throw Error(what + " " + path + " is not a regular file");
-    }
-    if (size_t(st.st_size) > maxBytes) {
-        ::close(fd);
-        throw Error(what + " " + path + " is larger than " + std::to_string(maxBytes >> 20) + " MiB");
-    }
-    std::string bytes(size_t(st.st_size), '\0');
-    size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
-        if (n <= 0) break;
-        done += size_t(n);
-    }
-    ::close(fd);
-    bytes.resize(done);
-    return bytes;
-}
-
-nlohmann::json readJsonFile(const std::string& path, const std::string& what) {
-    const std::string text = readRegularFile(path, what);
-    checkJsonNesting(text, what + " " + path);
+nlohmann::json parseJsonText(const std::string& text, const std::string& label) {
+    checkJsonNesting(text, label);
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception& e) { // syntax, or a number that overflows a double
         std::string msg = e.what();
         const size_t bracket = msg.find("] ");
         if (bracket != std::string::npos) msg = msg.substr(bracket + 2); // drop "[json.exception...]"
-        throw Error(what + " " + path + " is not valid JSON (" + msg + ")");
+        const size_t quoted = msg.find("; last read");
+        if (quoted != std::string::npos) msg = msg.substr(0, quoted); // never echo a file's bytes (a link to a private file)
+        throw Error(label + " is not valid JSON (" + msg + ")");
     }
+}
+
+nlohmann::json readJsonFile(const std::string& path, const std::string& what) {
+    return parseJsonText(readRegularFile(path, what), what + " " + path);
 }
 
 std::string dumpJson(const nlohmann::json& j, int indent) {

@@ -8,10 +8,12 @@
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/json_file.h"
+#include "test_util.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <set>
 
 using namespace ssao;
@@ -48,7 +50,14 @@ namespace {
 BenchRun smallRun() {
     BenchRun run;
     run.sweep.name = "t";
-    run.facts = {{"scenes", {{{"name", "s"}, {"viewpoints", {{{"name", "camera"}, {"index", 0}}}}}}}};
+    run.facts = {{"size", "64x36"},
+                 {"frames", 2},
+                 {"warmup", 0},
+                 {"views_per_scene", 1},
+                 {"reference", {{"definition", "test"}, {"rays", 8}}},
+                 {"scene_specs", {"builtin:s"}},
+                 {"scenes",
+                  {{{"name", "s"}, {"spec", "builtin:s"}, {"viewpoints", {{{"name", "camera"}, {"index", 0}, {"camera", nlohmann::json::object()}}}}}}}};
     for (int i = 0; i < 3; ++i) {
         BenchConfig c;
         c.label = i == 0 ? "learnopengl (baseline)" : "kernel.samples=" + std::to_string(8 << i);
@@ -100,6 +109,46 @@ TEST(BenchShard, ResultsJsonReadsBackWhatItWrote) {
         ADD_FAILURE() << "accepted a row of configuration 7";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("results[1]: 'config' 7"), std::string::npos) << e.what();
+    }
+}
+
+TEST(BenchShard, AResultsFileThatLiesIsRefusedNamingTheField) {
+    // A shard's folder comes from another machine: impossible metrics, unknown views, repeated rows
+    // and wrongly-typed facts are each one error naming the file and the field, never merged.
+    const BenchRun run = smallRun();
+    const std::string dir = std::string(SSAOLAB_TEST_TMP) + "/results_lies";
+    std::filesystem::create_directories(dir);
+    const struct {
+        const char* name;
+        std::function<void(nlohmann::json&)> lie;
+        const char* expect;
+    } cases[] = {
+        {"negative RMSE", [](nlohmann::json& j) { j["results"][1]["rmse"] = -0.1; }, "results[1].rmse"},
+        {"NaN RMSE", [](nlohmann::json& j) { j["results"][1]["rmse"] = nullptr; }, "results[1].rmse is not a finite number"},
+        {"AO outside [0, 1]", [](nlohmann::json& j) { j["results"][0]["max_abs"] = 1.5; }, "results[0].max_abs"},
+        {"bias past 1", [](nlohmann::json& j) { j["results"][0]["bias"] = -3; }, "results[0].bias"},
+        {"min above median", [](nlohmann::json& j) { j["results"][2]["gpu_ms_min"] = 99.0; }, "results[2].gpu_ms_min"},
+        {"unknown view", [](nlohmann::json& j) { j["results"][1]["viewpoint"] = "orbit 9"; }, "results[1].viewpoint"},
+        {"unknown scene", [](nlohmann::json& j) { j["results"][1]["scene"] = "other"; }, "results[1].scene"},
+        {"repeated row", [](nlohmann::json& j) { j["results"][2]["config"] = 1; }, "results[2] measures"},
+        {"size a number", [](nlohmann::json& j) { j["size"] = 64; }, "facts.size is not a string"},
+        {"scene name a list", [](nlohmann::json& j) { j["scenes"][0]["name"] = {1}; }, "facts.scenes[0].name is not a string"},
+        {"views a string", [](nlohmann::json& j) { j["views_per_scene"] = "1"; }, "facts.views_per_scene is not an integer"},
+        {"view index past the count", [](nlohmann::json& j) { j["scenes"][0]["viewpoints"][0]["index"] = 5; }, "outside [0, 0]"},
+        {"a huge label", [](nlohmann::json& j) { j["configurations"][1]["label"] = std::string(5000, 'x'); }, "longer than 4096 bytes"},
+        {"a bad shard", [](nlohmann::json& j) { j["shards"][0]["shard"] = "3/2"; }, "shards[0].shard"},
+        {"no reference definition", [](nlohmann::json& j) { j["reference"].erase("definition"); }, "facts.reference has no 'definition'"},
+        {"pixels a string", [](nlohmann::json& j) { j["results"][0]["pixels"] = "many"; }, "'pixels' is not an integer"},
+        {"not an object", [](nlohmann::json& j) { j = nlohmann::json::array(); }, "the top level is not an object"},
+    };
+    for (const auto& c : cases) {
+        nlohmann::json j = resultsJson(run);
+        c.lie(j);
+        writeFileAtomically(dir + "/results.json", dumpJson(j));
+        const std::string e = ssaotest::errorOf([&] { readResults(dir); });
+        EXPECT_NE(e.find("results.json"), std::string::npos) << c.name << ": " << e;
+        EXPECT_NE(e.find(c.expect), std::string::npos) << c.name << ": " << e;
+        EXPECT_EQ(e.find("json.exception"), std::string::npos) << c.name << ": " << e;
     }
 }
 

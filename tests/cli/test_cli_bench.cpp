@@ -90,7 +90,7 @@ TEST(Cli, BenchWritesResultsTheFrontAndRatiosToTheBaseline) {
         ssaolab("bench --sweep " + writeTemp("bad2.json", "{\"groups\": [{\"set\": {\"ao.radius\": 2}}]}")),
         "radius");
     expectCleanFailure(ssaolab("bench --sweep " + writeTemp("bad3.json", "{not json")), "not valid JSON");
-    expectCleanFailure(ssaolab("bench --sweep /nonexistent.json"), "cannot open");
+    expectCleanFailure(ssaolab("bench --sweep /nonexistent.json"), "sweep /nonexistent.json: no such file");
 }
 
 TEST(Cli, TuneFitsTheReferenceAndSavesAPresetThatRenders) {
@@ -376,4 +376,53 @@ TEST(CliBench, ABudgetGetsOneLineAPresetAndTheSameNumbersFromRender) {
                 "--quiet --budget-ms 0.000001 --sweep " + sweep + " --out " + out + "_none");
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("answer: no configuration is within"), std::string::npos) << r.out;
+}
+
+// Two files named scene.gltf in different folders are two scenes, each with its own rows, named by
+// the shortest part of their paths that tells them apart; one file named twice is one scene.
+TEST(CliBench, TwoScenesOfOneFileNameKeepTheirOwnRows) {
+    namespace fs = std::filesystem;
+    const fs::path t = fs::path(SSAOLAB_TEST_TMP) / "same_stem";
+    fs::remove_all(t);
+    const fs::path src = fs::path(SSAOLAB_SCENES_DIR) / "CornellBox";
+    for (const char* d : {"a", "b"}) {
+        fs::create_directories(t / d);
+        fs::copy_file(src / "cornellBox.gltf", t / d / "scene.gltf");
+        fs::copy_file(src / "cornellBox.bin", t / d / "cornellBox.bin");
+    }
+    const std::string sweep = writeTemp("stem_sweep.json", R"({"name": "stems", "groups": [{"name": "k", "vary": {"kernel.samples": [8]}}]})");
+    const std::string out = (t / "out").string();
+    CliRun r = ssaolab("bench --scene " + (t / "a/scene.gltf").string() + " --scene " + (t / "b/scene.gltf").string() +
+                       " --scene " + (t / "b/../a/scene.gltf").string() +
+                       " --size 160x90 --views 1 --frames 2 --warmup 0 --reference-rays 8 --no-plot --quiet --sweep " +
+                       sweep + " --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(slurp(out + "/results.json"));
+    std::vector<std::string> names;
+    for (const auto& s : j["scenes"])
+        names.push_back(s["name"]);
+    EXPECT_EQ(names, (std::vector<std::string>{"a/scene.gltf", "b/scene.gltf"}));
+    std::map<std::string, size_t> rows;
+    for (const auto& v : j["results"])
+        ++rows[v["scene"].get<std::string>()];
+    const size_t configs = j["configurations"].size();
+    EXPECT_EQ(rows["a/scene.gltf"], configs);
+    EXPECT_EQ(rows["b/scene.gltf"], configs);
+    EXPECT_EQ(rows.size(), 2u);
+    const std::string html = slurp(out + "/report.html");
+    size_t plots = 0;
+    for (size_t p = html.find("<svg class=\"plot\""); p != std::string::npos; p = html.find("<svg class=\"plot\"", p + 1))
+        ++plots;
+    EXPECT_EQ(plots, 3u); // all scenes, then one per scene
+    EXPECT_EQ(html.find("not measured by these runs"), std::string::npos); // each scene its own thumbnails
+    // A file alone with its stem is still named by it; a built-in scene keeps builtin:NAME.
+    r = ssaolab("bench --scene " + (t / "a/scene.gltf").string() +
+                " --scene builtin:corner --size 64x36 --views 1 --frames 1 --warmup 0 --reference-rays 4 --no-plot "
+                "--quiet --sweep " + sweep + " --out " + out + "_one");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    names.clear();
+    const auto one = nlohmann::json::parse(slurp(out + "_one/results.json"));
+    for (const auto& s : one["scenes"])
+        names.push_back(s["name"]);
+    EXPECT_EQ(names, (std::vector<std::string>{"scene", "builtin:corner"}));
 }

@@ -1,0 +1,24 @@
+// Starting another program (git, python3, chromium) from an argv vector with posix_spawnp: never
+// through a shell, so a name holding quotes, `$(...)`, backticks, ';' or newlines is one argument and
+// nothing else (tests/cpu/test_file_gate.cpp fails the build on system( or popen( in app/ and renderer/).
+#pragma once
+#include <string>
+#include <vector>
+
+namespace ssao {
+
+// Where a child's stdout or stderr goes. Its stdin is always /dev/null.
+enum class ChildStream { Inherit, Discard, Capture };
+
+struct ProgramRun {
+    bool started = false; // false: the program was not found or could not be started
+    int exitCode = -1;    // -1 when it did not exit normally (a signal)
+    std::string out;      // what it wrote to a captured stream, at most 1 MiB
+};
+
+// Runs argv[0] (looked up on PATH when it holds no '/') with argv and this process's environment
+// and waits for it. A captured stream is read until the child closes it.
+ProgramRun runProgram(const std::vector<std::string>& argv, ChildStream out = ChildStream::Inherit,
+                      ChildStream err = ChildStream::Inherit);
+
+} // namespace ssao
