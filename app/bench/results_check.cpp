@@ -6,6 +6,7 @@
 #include "util/json_file.h"
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <tuple>
@@ -49,11 +50,17 @@ struct Facts {
     }
 };
 
+std::string num(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", v);
+    return b;
+}
+
 // A measured value: finite and within [lo, hi], or (when `missingOk`) NaN, written as null.
 void range(const Facts& f, double v, const std::string& where, double lo, double hi, bool missingOk = false) {
     if (std::isnan(v) && missingOk) return;
     if (!std::isfinite(v)) f.fail(where, "is not a finite number");
-    if (v < lo || v > hi) f.fail(where, std::to_string(v) + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    if (v < lo || v > hi) f.fail(where, num(v) + " is outside [" + num(lo) + ", " + num(hi) + "]");
 }
 
 void checkMetrics(const Facts& f, const ErrorMetrics& e, const std::string& w, bool full) {

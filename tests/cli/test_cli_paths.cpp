@@ -88,12 +88,14 @@ std::map<std::string, std::string> snapshot(const fs::path& root) {
 
 class PathOptions : public ::testing::Test {
   protected:
-    fs::path box_ = fs::path(SSAOLAB_TEST_TMP) / "paths_box";
-    std::string shard_ = std::string(SSAOLAB_TEST_TMP) + "/paths_shard";
+    // Per test: ctest runs the two tests here at the same time.
+    const std::string name_ = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::path box_ = fs::path(SSAOLAB_TEST_TMP) / ("paths_box_" + name_);
+    std::string shard_ = std::string(SSAOLAB_TEST_TMP) + "/paths_shard_" + name_;
     std::string sweep_;
 
     void SetUp() override {
-        sweep_ = writeTemp("paths_sweep.json", R"({"name": "paths", "groups": [{"name": "k", "set": {"kernel.samples": 8}}]})");
+        sweep_ = writeTemp("paths_sweep_" + name_ + ".json", R"({"name": "paths", "groups": [{"name": "k", "set": {"kernel.samples": 8}}]})");
         fs::remove_all(shard_);
         CliRun r = ssaolab("bench " + common("bench") + " --out " + shard_);
         ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -220,7 +222,7 @@ TEST_F(PathOptions, EveryPathOptionOfTheWindowRefusesHostilePathsWithOneLine) {
     std::vector<std::pair<PathOption, std::string>> cases;
     std::vector<std::string> own;
     std::string script;
-    const std::string tmp = std::string(SSAOLAB_TEST_TMP) + "/paths_view_";
+    const std::string tmp = std::string(SSAOLAB_TEST_TMP) + "/paths_view_case";
     for (const PathOption& p : pathOptions()) {
         if (p.command != "view") continue;
         for (const auto& [kind, value] : makeBox(p.output())) {
@@ -235,7 +237,7 @@ TEST_F(PathOptions, EveryPathOptionOfTheWindowRefusesHostilePathsWithOneLine) {
     ASSERT_GE(cases.size(), 6u * 5);
     makeBox(false);
     const auto before = snapshot(box_);
-    const std::string file = writeTemp("paths_view.sh", script);
+    const std::string file = writeTemp("paths_view_" + name_ + ".sh", script);
     ASSERT_EQ(underXvfb("sh " + file, "paths"), 0);
     for (size_t i = 0; i < cases.size(); ++i) {
         CliRun r;

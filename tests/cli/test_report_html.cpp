@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -17,7 +19,8 @@ using namespace ssaotest;
 
 namespace {
 std::string chromium(const std::string& args, const std::string& log) {
-    const std::string profile = std::string(SSAOLAB_TEST_TMP) + "/chromium_profile";
+    // One profile per test process: Chromium refuses a profile another instance holds (ctest -j).
+    const std::string profile = std::string(SSAOLAB_TEST_TMP) + "/chromium_profile_" + std::to_string(::getpid());
     const std::string cmd = "timeout 120 chromium --headless --no-sandbox --disable-gpu --no-first-run "
                             "--user-data-dir=" + profile + " --enable-logging=stderr --v=0 " + args + " >" + log +
                             ".out 2>" + log + ".err </dev/null";
