@@ -24,7 +24,13 @@
 
 namespace {
 
+// The "default" column is what a run gets with nothing set: the start preset (render, view and the
+// no-display run all begin there); "base" is the table's own value, what a preset file's keys patch.
 void printParams() {
+    const ssao::Settings start = ssao::PresetStore::standard().open(ssao::kStartPreset).settings;
+    std::printf("Values with no preset: the start preset %s. A preset file sets keys over the base values "
+                "(shown where they differ).\n\n",
+                ssao::kStartPreset);
     std::printf("%-26s %-10s %-12s %-30s %s\n", "key", "default", "unit", "range", "what it does");
     for (const auto& p : ssao::paramTable()) {
         std::string range;
@@ -36,9 +42,10 @@ void printParams() {
         } else {
             range = "[" + p.format(p.min) + ", " + p.format(p.max) + "]";
         }
-        std::printf("%-26s %-10s %-12s %-30s %s%s\n", p.key.c_str(), p.format(p.def).c_str(), p.unit.c_str(),
-                    range.c_str(), p.help.c_str(),
-                    p.when.empty() ? "" : (" [applies when " + p.whenText() + "]").c_str());
+        const std::string value = p.format(p.get(start)), base = p.format(p.def);
+        std::printf("%-26s %-10s %-12s %-30s %s%s%s\n", p.key.c_str(), value.c_str(), p.unit.c_str(), range.c_str(),
+                    p.help.c_str(), p.when.empty() ? "" : (" [applies when " + p.whenText() + "]").c_str(),
+                    value == base ? "" : (" [base " + base + "]").c_str());
     }
 }
 

@@ -4,6 +4,7 @@
 // reference's noise floor as a grey band - where hovering names a point, a click applies it and
 // a shift+click compares it with the current setting in Split A|B. Under it the two one-click
 // answers and the budget box.
+#include "techniques/technique.h"
 #include "view/app_core.h"
 
 #include <algorithm>
@@ -117,6 +118,22 @@ void answer(AppCore& app, const char* question, size_t i, const std::string& key
     if (ImGui::SmallButton(("compare in A|B##" + key).c_str())) app.compareCandidate(p.candidate);
 }
 
+// Why the current point may look grainy: denoise.kind=auto leaves the marching techniques
+// unfiltered because a blur raised their error on the bench scenes (docs/benchmarks.md, denoisers).
+void grainNote(AppCore& app) {
+    const Settings& s = app.settings();
+    if (s.denoise.kind != DenoiseKind::Auto || effectiveDenoise(s).kind != DenoiseKind::None || s.temporal.enabled)
+        return;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("Grain: denoise 'auto' leaves %s unfiltered - its noise is finer than the detail a blur "
+                       "erases, and every blur raised its error against the reference on the bench scenes. For a "
+                       "still camera, temporal accumulation (temporal.enabled) averages it away; the points here "
+                       "are scored on a still frame.",
+                       s.ao.technique.c_str());
+    ImGui::PopStyleColor();
+    rememberRect(app.view(), "front#grain");
+}
+
 } // namespace
 
 void drawFrontTab(AppCore& app) {
@@ -159,6 +176,7 @@ void drawFrontTab(AppCore& app) {
     ImGui::TextWrapped("blue ring: current   black: baseline (learnopengl)   red: the front   grey band: "
                        "the reference's own noise");
     ImGui::PopStyleColor();
+    grainNote(app);
     if (cur != std::string::npos) {
         answer(app, "Cheapest at <= the current error:", f.cheapestAtMostCurrentError(), "cheapest");
         answer(app, "Most accurate at <= the current time:", f.mostAccurateWithinCurrentTime(), "accurate");

@@ -226,3 +226,23 @@ TEST_F(FrontPanelApp, ACameraMoveCancelsAndComingBackFindsTheCachedFront) {
     EXPECT_EQ(app().front().points().size(), n);
     EXPECT_FALSE(app().front().measurer().busy()) << "measured again instead of read from the cache";
 }
+
+TEST_F(FrontPanelApp, SaysWhyAnUnfilteredPointLooksGrainy) {
+    // denoise.kind=auto leaves vbao unfiltered: the tab says why and what removes the grain.
+    app().settings().ao.technique = "vbao";
+    app().settings().denoise.kind = DenoiseKind::Auto;
+    app().settings().temporal.enabled = false;
+    ui_->click("tab#Front");
+    ui_->frames(2);
+    EXPECT_TRUE(ui_->has("front#grain"));
+    // A filtered point, or one accumulated over frames, has nothing to explain.
+    app().view().widgetRects.clear();
+    app().settings().temporal.enabled = true;
+    ui_->frames(2);
+    EXPECT_FALSE(ui_->has("front#grain"));
+    app().view().widgetRects.clear();
+    app().settings().temporal.enabled = false;
+    app().settings().denoise.kind = DenoiseKind::Bilateral;
+    ui_->frames(2);
+    EXPECT_FALSE(ui_->has("front#grain"));
+}
