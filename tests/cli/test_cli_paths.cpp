@@ -251,3 +251,31 @@ TEST_F(PathOptions, EveryPathOptionOfTheWindowRefusesHostilePathsWithOneLine) {
     }
     judgeBox("ssaolab view", before, own);
 }
+
+TEST(PathOptionsInside, AFifoOrALinkInsideTheShaderFolderIsRefusedNotWaitedOn) {
+    // A folder the user points at holds what anyone put there: a FIFO where a shader should be
+    // blocked the render for ever; a link to a private file must not reach an error line.
+    for (const std::string kind : {"fifo", "private link"}) {
+        const fs::path dir = fs::path(SSAOLAB_TEST_TMP) / ("paths_shaders_" + std::to_string(kind.size()));
+        fs::remove_all(dir);
+        fs::copy(fs::path(SSAOLAB_SOURCE_DIR) / "shaders", dir, fs::copy_options::recursive);
+        const fs::path victim = dir / "passes" / "composite.frag";
+        fs::remove(victim);
+        if (kind == "fifo") {
+            ASSERT_EQ(::mkfifo(victim.c_str(), 0600), 0);
+        } else {
+            std::ofstream(dir / "private.txt") << kSecret;
+            fs::create_symlink(dir / "private.txt", victim);
+        }
+        const CliRun r = ssaolab("render --scene builtin:corner --size 64x36 --timing-frames 1 --quiet --shaders " +
+                                     shq(dir.string()) + " --out " + outDir("paths_shaders"),
+                                 "timeout 60");
+        EXPECT_NE(r.exitCode, 124) << kind << " hung";
+        EXPECT_EQ(r.err.find(kSecret), std::string::npos) << kind << ": " << r.err;
+        if (kind == "fifo") {
+            expectCleanFailure(r, "is a FIFO, not a regular file");
+        } else {
+            EXPECT_TRUE(r.exitCode == 1 && std::count(r.err.begin(), r.err.end(), '\n') == 1) << r.err;
+        }
+    }
+}
