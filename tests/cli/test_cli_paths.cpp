@@ -62,16 +62,7 @@ std::string shq(const std::string& s) {
 
 // `ssaolab ARGS` run inside `dir` under a 60 s timeout (124: it hung), both streams captured.
 CliRun runIn(const fs::path& dir, const std::string& args) {
-    const std::string base = std::string(SSAOLAB_TEST_TMP) + "/paths_" + std::to_string(::getpid());
-    const std::string cmd = "cd " + shq(dir.string()) + " && timeout 60 " + shq(SSAOLAB_BINARY) + " " + args + " >" +
-                            base + ".out 2>" + base + ".err </dev/null";
-    const int status = std::system(cmd.c_str());
-    CliRun r;
-    r.signaled = WIFSIGNALED(status);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(base + ".out");
-    r.err = slurp(base + ".err");
-    return r;
+    return ssaolab(args, "cd " + shq(dir.string()) + " && timeout 60");
 }
 
 // The sandbox's entries with their kinds (links not followed) and the private file's bytes.

@@ -4,6 +4,7 @@
 #include "util/atomic_file.h"
 #include "util/files.h"
 #include "util/process.h"
+#include "test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -20,20 +21,9 @@ namespace fs = std::filesystem;
 using namespace ssao;
 
 namespace {
+using ssaotest::errorOf;
 std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
+    return ssaotest::slurp(p.string());
 }
 
 fs::path fresh(const std::string& name) {
