@@ -55,6 +55,9 @@ for line in "${LEVELS[@]}"; do
 import json, sys
 src, dst, tech, level = sys.argv[1:]
 t = json.load(open(src))
+# Rows that do nothing at a named quality level are left out (ssaolab warns about such keys).
+if t[tech].get("quality", "custom") != "custom":
+    t[tech] = {k: v for k, v in t[tech].items() if k not in ("slices", "steps")}
 out = {"name": f"{tech}-{level}",
        "description": f"{tech} at {level} quality; " + t["description"].replace("ssaolab tune: ", "free parameters tuned by `ssaolab tune` (make presets): "),
        "ao": {k: t["ao"][k] for k in ("technique", "radius_mode", "radius_scene", "power")},

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 namespace ssao {
@@ -25,35 +26,6 @@ CLI::Validator cliRange(double lo, double hi) {
             return {};
         },
         desc, "RANGE");
-}
-
-namespace {
-size_t editDistance(const std::string& a, const std::string& b) {
-    std::vector<size_t> row(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j)
-        row[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-        size_t diag = row[0];
-        row[0] = i;
-        for (size_t j = 1; j <= b.size(); ++j) {
-            const size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diag = up;
-        }
-    }
-    return row[b.size()];
-}
-} // namespace
-
-std::string closestName(const std::string& word, const std::vector<std::string>& candidates) {
-    std::string best;
-    size_t bestD = std::string::npos;
-    for (const auto& c : candidates) {
-        const size_t d = editDistance(word, c);
-        if (d < bestD) bestD = d, best = c;
-    }
-    // Close: at most a third of the word's letters wrong (typos, not another word).
-    return bestD <= std::max<size_t>(2, word.size() / 3) ? best : "";
 }
 
 namespace {
@@ -128,6 +100,11 @@ void printCommandOptions(const CLI::App& cmd, const std::string& path) {
 
 void printOptionKinds(const CLI::App& app) {
     printCommandOptions(app, "");
+}
+
+void printWarnings(const std::vector<std::string>& warnings) {
+    for (const std::string& w : warnings)
+        std::fprintf(stderr, "ssaolab: warning: %s\n", oneLine(w).c_str());
 }
 
 } // namespace ssao

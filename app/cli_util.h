@@ -1,7 +1,9 @@
 // Command-line helpers shared by every subcommand: a range check that refuses NaN (CLI11's
 // Range lets "nan" through: every comparison with it is false), and the one-line report of a
-// mistyped option or command naming the closest valid one.
+// mistyped option or command naming the closest valid one (util/closest_name.h), and warnings.
 #pragma once
+#include "util/closest_name.h"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -11,9 +13,6 @@ namespace ssao {
 
 // A finite number in [lo, hi].
 CLI::Validator cliRange(double lo, double hi);
-
-// The candidate nearest to `word` (edit distance), or "" when none is close.
-std::string closestName(const std::string& word, const std::vector<std::string>& candidates);
 
 // After parsing with extras allowed: throws ssao::Error naming the first unknown command or
 // option (with the closest valid one and the help to read), if there is one.
@@ -31,5 +30,9 @@ constexpr const char* kOutFile = "OUT-FILE";  // written: one file
 constexpr const char* kOutDir = "OUT-DIR";    // written: a folder of outputs
 // Prints one JSON line per option of every command: {"command", "option", "type", "flag"}.
 void printOptionKinds(const CLI::App& app);
+
+// One `ssaolab: warning: ...` line on stderr each (e.g. a --set that has no effect,
+// settings/applicability.h); warnings never change the exit code.
+void printWarnings(const std::vector<std::string>& warnings);
 
 } // namespace ssao

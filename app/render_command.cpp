@@ -1,14 +1,17 @@
 #include "render_command.h"
 
 #include "headless_runner.h"
+#include "bench/motion_measure.h"
 #include "display/capture.h"
 #include "metrics/evaluate.h"
+#include "metrics/radius_check.h"
 #include "output/image.h"
 #include "output/reference_report.h"
 #include "output/report.h"
 #include "progress_bar.h"
 #include "reference/reference_cache.h"
 #include "reference/screen_layers.h"
+#include "settings/applicability.h"
 #include "settings/params.h"
 #include "settings/preset.h"
 #include "settings/preset_store.h"
@@ -35,10 +38,12 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--scene", o.scene,
                    "builtin:NAME (showcase, plane, corner, slabs), or a .gltf/.glb file (default: the preset's "
                    "scene, else builtin:showcase)")->type_name(kInFile);
+    o.preset = kStartPreset; // one default everywhere: the window's first frame (settings/preset.h)
     cmd.add_option(
         "--preset", o.preset,
         "preset JSON file, or a name: the seed presets (e.g. learnopengl), then the ones saved in the app")
-        ->type_name(kInFile);
+        ->type_name(kInFile)
+        ->capture_default_str();
     cmd.add_option("--set", o.sets, "override one parameter, key=value (repeatable; see `ssaolab params`)")->type_name("KEY=VALUE");
     cmd.add_option("--size", o.size, "output size WIDTHxHEIGHT (default: the preset's size, else 1280x720)")->type_name("WxH");
     cmd.add_option("--camera", o.camera, "eye,target[,up[,fov_deg[,near,far]]] as comma-separated numbers")->type_name("EYE,TARGET...");
@@ -78,6 +83,11 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--score", o.score,
                    "with --reference: also judge this AO image of the same view and size (PNG, PGM or EXR; "
                    "channel 0, 1 = open), e.g. another renderer's; repeatable")->type_name(kInFiles);
+    cmd.add_flag("--motion", o.motion,
+                 "also score the AO in motion: frames along a camera path from the view (an orbit about its target "
+                 "and a dolly toward it), each against its own reference (--reference-rays): per-frame RMSE, "
+                 "instability, ghosting (metrics.json \"motion\")");
+    addMotionPathOptions(cmd, o.motionPath);
     cmd.add_option("--shaders", o.shaderDir,
                    "shader folder (default: the installed or source tree's shaders/)")->type_name(kInDir);
     cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)")->type_name(kInDir);
@@ -168,9 +178,11 @@ RenderJob prepareRender(const RenderOptions& o) {
     else if (preset.size)
         std::tie(job.w, job.h) = *preset.size;
     job.settings = preset.settings;
-    for (const auto& a : o.sets)
-        applyAssignment(job.settings, a);
+    std::vector<std::string> warnings = preset.warnings; // settings that do nothing, said so once they are valid
+    for (std::string& w : applyAssignments(job.settings, o.sets))
+        warnings.push_back(std::move(w));
     validateSettings(job.settings);
+    printWarnings(warnings);
     const std::string spec = !o.scene.empty() ? o.scene : preset.scene.value_or("builtin:showcase");
     if (o.scene.empty() && !preset.scene && preset.camera && !o.quiet)
         std::fprintf(stderr, "note: preset %s has a camera but no scene; rendering %s\n", preset.name.c_str(),
@@ -289,19 +301,24 @@ std::string judgeAgainstReference(const RenderOptions& o, const Renderer& r, con
         const Image oracleImg{oracle.width, oracle.height, 1, oracle.ao};
         writeExr(oracleImg, (std::filesystem::path(o.out) / "ao_oracle.exr").string());
         writePng(referencePreview(oracle), (std::filesystem::path(o.out) / "ao_oracle.png").string());
-        const ErrorMetrics tech = evaluate(frame.get("ao.denoised").values, oracle).metrics;
+        const Evaluation techEval = evaluate(frame.get("ao.denoised").values, oracle);
+        const ErrorMetrics& tech = techEval.metrics;
         const ErrorMetrics screen = evaluate(oracleImg, ref).metrics;
+        const ErrorShares shares = splitShares(techEval, oracle, ref); // the parts that add up
         m["error_split"] = {{"oracle", {{"layers", os.layers},
                                         {"thickness_r", std::isinf(os.thickness) ? nlohmann::json("inf") : nlohmann::json(os.thickness)},
                                         {"guard_band_px", os.guardBand},
                                         {"files", {"ao_oracle.exr", "ao_oracle.png"}}}},
                             {"technique", metricsJson(tech, oracle, os)},
+                            {"shares", sharesJson(shares)},
                             {"screen", metricsJson(screen, ref, rs)},
                             {"note", "technique: ao.denoised against the screen-space oracle (what settings can "
                                      "still fix); screen: the oracle against the truth (what the G-buffer does not hold)"}};
-        char b[200];
-        std::snprintf(b, sizeof b, "; split: technique (vs the screen-space oracle) %.4f, screen (oracle vs truth) %.4f",
-                      tech.rmse, screen.rmse);
+        char b[320];
+        std::snprintf(b, sizeof b,
+                      "; split: technique (vs the screen-space oracle) %.4f, screen (oracle vs truth) %.4f; shares of "
+                      "the squared error: technique %.2f + screen %.2f + interaction %+.2f = 1",
+                      tech.rmse, screen.rmse, shares.technique, shares.screen, shares.interaction);
         split = b;
         oracleKept = std::move(oracle);
     }
@@ -324,6 +341,24 @@ std::string judgeAgainstReference(const RenderOptions& o, const Renderer& r, con
                                         : "",
                   split.c_str());
     return line;
+}
+
+// --motion: the path's frames against their references; the "motion" block, and the summary line.
+std::string judgeMotion(const RenderOptions& o, Renderer& r, const RenderJob& job, const FrameCapture& frame,
+                        nlohmann::json& m) {
+    ReferenceSettings rs = referenceSettingsFor(frame.radius, o.referenceRays, parseVariant(o.referenceVariant));
+    if (job.referenceRadius) rs.radius = *job.referenceRadius;
+    ReferenceProvider provider(job.scene, o.noCache ? std::string() : referenceCacheDir());
+    MotionTruth truth;
+    {
+        ProgressBar bar("motion references " + std::to_string(o.motionPath.frames) + " frames", !o.quiet);
+        truth = traceMotionTruth(provider, r.bounds(), job.camera, r.width(), r.height(), o.motionPath, rs,
+                                 [&](double f) { bar.update(f); });
+    }
+    const MotionMetrics mm = measureMotion(r, job.settings, truth);
+    m["motion"] = motionJson(mm, truth);
+    writeFileAtomically((std::filesystem::path(o.out) / "metrics.json").string(), dumpJson(m) + "\n");
+    return motionLine(mm, truth) + "\n";
 }
 
 void printRenderSummary(const RenderOptions& o, const RenderJob& job, const std::string& glRenderer,
@@ -366,13 +401,17 @@ int runRender(const RenderOptions& o) {
     FrameReport first = r->render();
     while (r->accumulating()) // temporal accumulation: the frames it blends, deterministically
         first = r->render();
+    // Captured before the timing frames: a forced temporal pass would blend the last frame in again.
+    const FrameCapture frame = captureFrame(*r, job.style);
     const nlohmann::json timing = timePasses(*r, first, o.timingFrames);
     run.checkGl("while rendering " + job.scene.name);
-    const FrameCapture frame = captureFrame(*r, job.style);
+    if (const ViewRadiusCheck vr = checkViewRadius(frame); vr.tooLarge) printWarnings({vr.message()});
     nlohmann::json m = writeOutputs(frame, o.out, job.info, first, timing);
     const std::string line = o.reference ? judgeAgainstReference(o, *r, frame, job.scene, job.referenceRadius, m) : "";
+    const std::string motionText = o.motion ? judgeMotion(o, *r, job, frame, m) : "";
     run.checkGl("while writing the outputs");
     printRenderSummary(o, job, run.glRenderer(), first, m, timing, line);
+    if (!o.quiet) std::printf("%s", motionText.c_str());
     long bad = 0;
     for (auto& [name, b] : m["buffers"].items())
         bad += b["nonfinite"].get<long>();

@@ -1,6 +1,7 @@
 // `ssaolab render`: headless render of one scene with one settings set into an output folder.
 #pragma once
 #include "scene/camera.h"
+#include "scene/camera_path.h"
 
 #include <string>
 #include <vector>
@@ -33,6 +34,8 @@ struct RenderOptions {
     double oracleThickness = 1.0;  // its surfaces' thickness, x R (inf: a height field)
     int oracleGuard = 0;           // pixels its G-buffer holds beyond each edge
     std::vector<std::string> score; // AO images of the same view made elsewhere, judged alike
+    bool motion = false;           // also score the AO along a camera path (bench/motion_measure.h)
+    CameraPathSpec motionPath;
     bool verboseGl = false;
     bool quiet = false;
 };

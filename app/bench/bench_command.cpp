@@ -3,6 +3,7 @@
 #include "bench/bench_answer.h"
 #include "bench/bench_report.h"
 #include "bench/bench_run.h"
+#include "bench/motion_measure.h"
 #include "bench/shard.h"
 #include "bench/thumbnails.h"
 #include "bench/viewpoints.h"
@@ -61,6 +62,8 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
         ->check(cliRange(0.0001, 0.5));
     cmd.add_option("--out", o.out, "output folder")->type_name(kOutDir)->capture_default_str();
     cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)")->type_name(kInDir);
+    cmd.add_option("--shaders", o.shaderDir, "shader folder (default: the installed or source tree's shaders/)")
+        ->type_name(kInDir);
     cmd.add_option("--baseline", o.baseline, "the preset every row is compared with")->type_name("PRESET")->capture_default_str();
     cmd.add_flag(
         "--no-oracle", [&o](int64_t) { o.oracle = false; },
@@ -81,8 +84,16 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
     cmd.add_option("--budget-ms", o.budgetMs,
                    "answer: the most accurate configuration whose AO + denoise time is at most this (ms)")
         ->check(cliRange(1e-6, 1e6));
+    cmd.add_option("--budget-ratio", o.budgetRatio,
+                   "answer: the most accurate configuration whose time is at most this many times the baseline's "
+                   "(the plot's axis: 0.5 = half the baseline's time)")
+        ->check(cliRange(1e-6, 1e6));
     cmd.add_option("--max-error", o.maxError, "answer: the fastest configuration whose RMSE is at most this")
         ->check(cliRange(1e-9, 1.0));
+    cmd.add_flag("--motion", o.motion,
+                 "also score every configuration in motion along a camera path from each view (a reference per "
+                 "frame): motion RMSE, instability, ghosting columns");
+    addMotionPathOptions(cmd, o.motionPath);
     cmd.add_flag(
         "--no-plot", [&o](int64_t) { o.plot = false; }, "skip the matplotlib plot");
     cmd.add_flag("--quiet", o.quiet, "no progress output");
@@ -152,6 +163,13 @@ class SceneBench {
         }
         oracle_ = oracle ? &*oracle : nullptr;
         screen_ = screen;
+        std::optional<MotionTruth> motion; // the path's references, when rows are scored in motion
+        if (o_.motion) {
+            ProgressBar bar("  motion references " + scene.name + " " + vname, !o_.quiet);
+            motion = traceMotionTruth(provider, r_.bounds(), cam, r_.width(), r_.height(), o_.motionPath,
+                                      {radius, o_.referenceRays, variant_}, [&](double f) { bar.update(f); });
+        }
+        motion_ = motion ? &*motion : nullptr;
         const std::string thumbs = thumbnailDir(o_.out, scene.name, vname);
         if (vi == 0) writeReferenceThumbnail(thumbs, ref);
         ProgressBar bar("  " + scene.name + " " + vname + ": " + std::to_string(configs.size()) + " configurations",
@@ -186,6 +204,12 @@ class SceneBench {
         if (!thumbs.empty()) writeThumbnails(thumbs, c, m.evaluation(), ref);
         ViewResult v = m.result();
         if (v.hasSplit) v.screen = screen_;
+        if (motion_) {
+            const MotionMetrics mm = measureMotion(r_, withRadius(cfg.settings, radius), *motion_);
+            runner_.checkGl("measuring " + cfg.label + " in motion on " + scene + " " + vname);
+            v.hasMotion = true;
+            v.motion = {mm.rmseMean, mm.rmseMax, mm.instability, mm.ghosting};
+        }
         v.scene = scene;
         v.viewpoint = vname;
         v.config = c;
@@ -200,6 +224,7 @@ class SceneBench {
     ReferenceVariant variant_;
     const ReferenceImage* oracle_ = nullptr; // of the view being measured
     ErrorMetrics screen_;                    // its oracle against the truth
+    const MotionTruth* motion_ = nullptr;    // its camera path's truth (bench --motion)
 };
 
 void printBenchSummary(const BenchRun& run, const std::string& out, bool plot) {
@@ -246,15 +271,17 @@ std::optional<AnswerContext> answerContext(const BenchRun& run, const std::strin
 int finishBench(BenchRun& run, const std::string& out, const std::string& title, bool plot, bool quiet,
                 const Question& q) {
     run.summary = summarize(run.views, run.sweep.configs.size(), run.sweep.baseline);
-    writeBenchFiles(run, out);
-    if (plot) plotBench(out, title, quiet);
-    if (!quiet) printBenchSummary(run, out, plot);
+    std::optional<Answer> answer; // opens the reports, so it comes first
     if (q.asked()) {
         float radius = 0;
         const auto ctx = answerContext(run, out, radius);
         if (!ctx) throw Error("the results hold no viewpoint of the first scene to answer on");
-        std::printf("%s\n", answerLine(run, q, *ctx, radius).c_str());
+        answer = answerQuestion(run, q, *ctx, radius);
     }
+    writeBenchFiles(run, out, answer ? &*answer : nullptr);
+    if (plot) plotBench(out, title, quiet);
+    if (!quiet) printBenchSummary(run, out, plot);
+    if (answer) std::printf("%s\n", answer->line.c_str());
     long bad = 0;
     for (const auto& s : run.summary)
         bad += s.nonFinite;
@@ -270,12 +297,13 @@ int runBench(const BenchOptions& o) {
     makeOutputFolder(o.out);
     BenchRun run;
     run.sweep = loadSweep(o.sweep, o.presetDir, o.baseline);
+    printWarnings(run.sweep.warnings);
     const ReferenceVariant variant = parseVariant(o.referenceVariant);
     std::vector<std::string> specs = o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
     std::vector<Scene> scenes = loadNamedScenes(specs);
     const std::vector<WorkUnit> units = shardUnits(scenes.size(), size_t(o.views), run.sweep.configs.size(), shard);
 
-    HeadlessRunner runner;
+    HeadlessRunner runner({o.shaderDir, false});
     run.facts = runFacts(runner.glRenderer());
     run.facts["size"] = o.size;
     run.facts["frames"] = o.frames;
@@ -290,6 +318,9 @@ int runBench(const BenchOptions& o) {
                                {"guard_band_px", o.oracleGuard},
                                {"thickness_r", std::isinf(o.oracleThickness) ? nlohmann::json("inf")
                                                                              : nlohmann::json(o.oracleThickness)}};
+    if (o.motion)
+        run.facts["motion"] = {{"frames", o.motionPath.frames}, {"orbit_deg", o.motionPath.orbitDeg},
+                               {"dolly", o.motionPath.dolly}};
     run.facts["scene_specs"] = specs;
     run.facts["scenes"] = nlohmann::json::array();
     std::unique_ptr<Renderer> r = runner.makeRenderer(w, h);
@@ -314,7 +345,7 @@ int runBench(const BenchOptions& o) {
     for (const auto& s : scenes)
         title += (title.empty() ? "" : ", ") + s.name;
     title += " | " + o.size + " | " + runner.glRenderer();
-    return finishBench(run, o.out, title, o.plot, o.quiet, Question{o.budgetMs, o.maxError});
+    return finishBench(run, o.out, title, o.plot, o.quiet, Question{o.budgetMs, o.maxError, o.budgetRatio});
 }
 
 } // namespace ssao

@@ -5,6 +5,7 @@
 #pragma once
 #include "bench/bench_answer.h"
 #include "bench/bench_results.h"
+#include "scene/camera_path.h"
 
 #include <cmath>
 #include <string>
@@ -28,13 +29,17 @@ struct BenchOptions {
     float radiusScene = 0.05f; // R = radiusScene x the scene's bounding-box diagonal
     std::string out = "bench-out";
     std::string presetDir;
+    std::string shaderDir;                // default: the installation's (or source tree's) shaders/
     std::string baseline = "learnopengl"; // the preset every row is compared with
     bool oracle = true;                   // trace the screen-space oracle: split every error
     int oracleLayers = 1;                 // its depth layers (2: a deep G-buffer)
     double oracleThickness = 1.0;         // its surfaces' thickness, x R (inf: a height field)
     int oracleGuard = 0;                  // pixels its G-buffer holds beyond each edge of the frame
     std::string shard = "1/1";            // K/N: run only this part of the work (bench/shard.h)
+    bool motion = false;                  // also score every row along a camera path (bench/motion_measure.h)
+    CameraPathSpec motionPath;
     double budgetMs = 0, maxError = 0;    // the question to answer (bench/bench_answer.h); 0 = none
+    double budgetRatio = 0;               // a budget as a multiple of the baseline's time; 0 = none
     bool plot = true;
     bool quiet = false;
 };
@@ -42,7 +47,7 @@ struct BenchOptions {
 struct BenchMergeOptions {
     std::vector<std::string> dirs; // shard output folders
     std::string out = "bench-merged";
-    double budgetMs = 0, maxError = 0;
+    double budgetMs = 0, maxError = 0, budgetRatio = 0;
     bool plot = true;
     bool quiet = false;
 };
@@ -54,7 +59,8 @@ int runBench(const BenchOptions& o);
 int runBenchMerge(const BenchMergeOptions& o);
 
 // The end of `bench` and of `bench merge`: summaries, files, plot, the printed summary and the
-// answer to --budget-ms / --max-error (bench/bench_answer.h). Returns the exit code.
+// answer to --budget-ms / --budget-ratio / --max-error (bench/bench_answer.h), which also opens
+// report.md and report.html. Returns the exit code.
 int finishBench(BenchRun& run, const std::string& out, const std::string& title, bool plot, bool quiet,
                 const Question& q);
 

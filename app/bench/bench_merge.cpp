@@ -30,6 +30,9 @@ void addBenchMergeOptions(CLI::App& cmd, BenchMergeOptions& o) {
     cmd.add_option("--out", o.out, "output folder of the merged results")->type_name(kOutDir)->capture_default_str();
     cmd.add_option("--budget-ms", o.budgetMs, "answer: the most accurate configuration within this time (ms)")
         ->check(cliRange(1e-6, 1e6));
+    cmd.add_option("--budget-ratio", o.budgetRatio,
+                   "answer: the most accurate configuration whose time is at most this many times the baseline's")
+        ->check(cliRange(1e-6, 1e6));
     cmd.add_option("--max-error", o.maxError, "answer: the fastest configuration whose RMSE is at most this")
         ->check(cliRange(1e-9, 1.0));
     cmd.add_flag(
@@ -41,7 +44,7 @@ namespace {
 
 // The facts every shard must share to be one benchmark.
 void checkSameBenchmark(const BenchRun& a, const BenchRun& b, const std::string& where) {
-    for (const char* k : {"size", "frames", "warmup", "views_per_scene", "reference", "oracle"})
+    for (const char* k : {"size", "frames", "warmup", "views_per_scene", "reference", "oracle", "motion"})
         if (a.facts.value(k, nlohmann::json()) != b.facts.value(k, nlohmann::json()))
             throw Error(where + ": its '" + k + "' (" + b.facts.value(k, nlohmann::json()).dump() +
                         ") differs from the first folder's (" + a.facts.value(k, nlohmann::json()).dump() + ")");
@@ -127,8 +130,10 @@ int runBenchMerge(const BenchMergeOptions& o) {
         std::map<long, nlohmann::json> vps;
         for (size_t pi = 0; pi < parts.size(); ++pi)
             for (const auto& vp : parts[pi].facts["scenes"][si]["viewpoints"]) {
+                // One view: the same name and camera (how long its reference took, or whether it came
+                // from a cache, is the shard's own).
                 const auto [at, fresh] = vps.emplace(vp["index"].get<long>(), vp);
-                if (!fresh && at->second != vp)
+                if (!fresh && (at->second["name"] != vp["name"] || at->second["camera"] != vp["camera"]))
                     throw Error(o.dirs[pi] + ": viewpoint " + vp["name"].get<std::string>() + " of " +
                                 run.facts["scenes"][si]["name"].get<std::string>() + " differs from another folder's");
             }
@@ -157,7 +162,7 @@ int runBenchMerge(const BenchMergeOptions& o) {
     if (!o.quiet)
         std::printf("bench merge: %zu shards, %zu rows, %zu configurations\n", run.shards.size(), run.views.size(),
                     run.sweep.configs.size());
-    return finishBench(run, o.out, title, o.plot, o.quiet, Question{o.budgetMs, o.maxError});
+    return finishBench(run, o.out, title, o.plot, o.quiet, Question{o.budgetMs, o.maxError, o.budgetRatio});
 }
 
 } // namespace ssao

@@ -2,6 +2,7 @@
 
 #include "bench/report_html.h"
 #include "bench/split_report.h"
+#include "metrics/error_split.h"
 #include "output/escape.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -10,6 +11,7 @@
 #include "util/paths.h"
 #include "util/process.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -74,12 +76,22 @@ size_t mostAccurate(const BenchRun& run) {
 
 namespace {
 
+// The split's shares of the squared error (technique, screen, interaction: they sum to 1), from the
+// three RMSEs of the same pixels; empty cells without a split.
+std::string shareCells(bool split, double total, double technique, double screen) {
+    if (!split) return ",,";
+    const ErrorShares s = sharesOfMse(total * total, technique * technique, screen * screen);
+    return num(s.technique) + "," + num(s.screen) + "," + num(s.interaction);
+}
+
 // results.csv: one row per scene, viewpoint and configuration.
 std::string resultsCsv(const BenchRun& run) {
     const auto& cfgs = run.sweep.configs;
     std::ostringstream f;
     f << "scene,viewpoint,label,technique,baseline,pareto," << kMetricHeader
-      << ",baseline_ms,time_ratio,shard,rmse_vs_oracle,rmse_screen,settings\n";
+      << ",baseline_ms,time_ratio,shard,rmse_vs_oracle,rmse_screen,share_technique,share_screen,share_interaction,"
+         "motion_rmse_mean,motion_rmse_max,"
+         "motion_instability,motion_ghosting,settings\n";
     for (const auto& v : run.views) {
         const BenchConfig& c = cfgs[v.config];
         const std::string shard = run.shards.size() > size_t(v.shard) ? run.shards[v.shard].value("shard", "1/1") : "1/1";
@@ -87,7 +99,9 @@ std::string resultsCsv(const BenchRun& run) {
           << csvField(c.settings.ao.technique) << "," << c.baseline << "," << run.summary[v.config].pareto << ","
           << metricCells(v) << "," << num(v.baselineMs) << "," << num(v.timeRatio) << "," << csvField(shard) << ","
           << (v.hasSplit ? num(v.vsOracle.rmse) : "") << "," << (v.hasSplit ? num(v.screen.rmse) : "") << ","
-          << csvField(c.keys.dump()) << "\n";
+          << shareCells(v.hasSplit, v.error.rmse, v.vsOracle.rmse, v.screen.rmse) << ","
+          << num(v.motion.rmseMean) << "," << num(v.motion.rmseMax) << "," << num(v.motion.instability) << ","
+          << num(v.motion.ghosting) << "," << csvField(c.keys.dump()) << "\n";
     }
     return f.str();
 }
@@ -99,7 +113,8 @@ std::string summaryCsv(const BenchRun& run) {
     f << "label,technique,baseline,pareto,views,gpu_ms,gpu_ms_min,gpu_ms_max,rmse,mae,bias,"
          "psnr_geometry_srgb,psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,time_ratio,rmse_ratio,"
          "rmse_first_frame,rmse_vs_oracle,rmse_edge_vs_oracle,rmse_interior_vs_oracle,rmse_screen,"
-         "rmse_edge_screen,rmse_interior_screen,gbuffer_ms,layers_ms,ao_ms,denoise_ms,composite_ms,settings\n";
+         "rmse_edge_screen,rmse_interior_screen,share_technique,share_screen,share_interaction,gbuffer_ms,layers_ms,ao_ms,denoise_ms,composite_ms,motion_rmse_mean,"
+         "motion_instability,motion_ghosting,settings\n";
     for (const auto& s : run.summary) {
         const BenchConfig& c = cfgs[s.config];
         f << csvField(c.label) << "," << csvField(c.settings.ao.technique) << "," << c.baseline << "," << s.pareto
@@ -109,7 +124,10 @@ std::string summaryCsv(const BenchRun& run) {
           << num(s.rmseInterior) << "," << num(s.ssim) << "," << s.nonFinite << "," << num(s.timeRatio)
           << "," << num(s.rmseRatio) << "," << num(s.rmseFirstFrame) << "," << num(s.technique.rmse) << ","
           << num(s.technique.rmseEdge) << "," << num(s.technique.rmseInterior) << "," << num(s.screen.rmse) << ","
-          << num(s.screen.rmseEdge) << "," << num(s.screen.rmseInterior) << "," << passCells(s.passMs) << ","
+          << num(s.screen.rmseEdge) << "," << num(s.screen.rmseInterior) << ","
+          << shareCells(std::isfinite(s.technique.rmse), s.rmse, s.technique.rmse, s.screen.rmse) << ","
+          << passCells(s.passMs) << ","
+          << num(s.motion.rmseMean) << "," << num(s.motion.instability) << "," << num(s.motion.ghosting) << ","
           << csvField(c.keys.dump())
           << "\n";
     }
@@ -118,15 +136,15 @@ std::string summaryCsv(const BenchRun& run) {
 
 } // namespace
 
-void writeBenchFiles(const BenchRun& run, const std::string& dir) {
+void writeBenchFiles(const BenchRun& run, const std::string& dir, const Answer* answer) {
     makeOutputFolder(dir);
     writeFileAtomically((fs::path(dir) / "results.csv").string(), resultsCsv(run));
     writeFileAtomically((fs::path(dir) / "summary.csv").string(), summaryCsv(run));
     // One line: the full run (every view of every configuration, with its settings) runs to megabytes
     // indented; results.csv and summary.csv are the readable views of it.
     writeFileAtomically((fs::path(dir) / "results.json").string(), dumpJson(resultsJson(run), -1) + "\n");
-    writeFileAtomically((fs::path(dir) / "report.md").string(), benchMarkdown(run, "pareto.png"));
-    writeFileAtomically((fs::path(dir) / "report.html").string(), benchHtml(run, dir));
+    writeFileAtomically((fs::path(dir) / "report.md").string(), benchMarkdown(run, "pareto.png", answer));
+    writeFileAtomically((fs::path(dir) / "report.html").string(), benchHtml(run, dir, answer));
 }
 
 // What was run, where, on what; the reference's noise; the shards of a merged run.
@@ -193,10 +211,46 @@ std::string passMarkdown(const BenchRun& run) {
     return md.str();
 }
 
-std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
+// bench --motion: every configuration ranked on a still frame and in motion ("" without).
+static std::string motionMarkdown(const BenchRun& run) {
+    if (!run.facts.contains("motion")) return "";
+    const nlohmann::json& p = run.facts["motion"];
+    auto score = [](const ConfigSummary& s) {
+        const double i = std::isfinite(s.motion.instability) ? s.motion.instability : 0.0;
+        return std::sqrt(s.motion.rmseMean * s.motion.rmseMean + i * i);
+    };
+    std::vector<const ConfigSummary*> still, moving;
+    for (const auto& s : run.summary)
+        if (std::isfinite(s.rmse) && std::isfinite(s.motion.rmseMean)) still.push_back(&s), moving.push_back(&s);
+    if (moving.empty()) return "";
+    std::stable_sort(still.begin(), still.end(), [](auto* a, auto* b) { return a->rmse < b->rmse; });
+    std::stable_sort(moving.begin(), moving.end(), [&](auto* a, auto* b) { return score(*a) < score(*b); });
+    std::vector<size_t> stillRank(run.summary.size(), 0);
+    for (size_t i = 0; i < still.size(); ++i) stillRank[still[i]->config] = i + 1;
+    std::ostringstream md;
+    md << "\n### In motion\n\nEach view's camera path: " << p.value("frames", 0) << " frames orbiting "
+       << num(p.value("orbit_deg", 0.0), 3) << " degrees about the view's target and moving "
+       << num(p.value("dolly", 0.0), 3) << " of the way toward it, each frame against its own reference; temporal "
+          "accumulation carries its history along the path. Motion RMSE: RMS over views of the mean per-frame "
+          "RMSE. Instability: RMS of the AO's frame-to-frame change minus the reference's at the same surface "
+          "point (flicker, crawling grain). Ghosting: mean |error| in the first 2 frames after a disocclusion minus "
+          "the mean at stable pixels. Motion score: sqrt(motion RMSE^2 + instability^2), best first.\n\n"
+          "| configuration | still RMSE | motion RMSE | instability | ghosting | motion score | still rank | motion rank |\n"
+          "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (size_t i = 0; i < moving.size(); ++i) {
+        const ConfigSummary& s = *moving[i];
+        md << "| " << markdownCell(run.sweep.configs[s.config].label) << " | " << num(s.rmse, 4) << " | "
+           << num(s.motion.rmseMean, 4) << " | " << num(s.motion.instability, 4) << " | " << num(s.motion.ghosting, 3)
+           << " | " << num(score(s), 4) << " | " << stillRank[s.config] << " | " << i + 1 << " |\n";
+    }
+    return md.str();
+}
+
+std::string benchMarkdown(const BenchRun& run, const std::string& plotFile, const Answer* answer) {
     const auto& cfgs = run.sweep.configs;
     const ConfigSummary& base = run.summary[run.sweep.baseline];
     std::ostringstream md;
+    if (answer) md << answerMarkdown(run, *answer);
     md << runFacts(run);
     md << "\n\n![time against error](" << plotFile << ")\n\n";
     md << "Baseline: **" << markdownCell(cfgs[run.sweep.baseline].label) << "**: " << num(base.gpuMs, 4)
@@ -233,6 +287,7 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile) {
     table(true);
     md << passMarkdown(run);
     md << splitMarkdown(run);
+    md << motionMarkdown(run);
     md << "\n### Every configuration\n\n";
     table(false);
     md << "\nTime: GPU timer queries (GL_TIME_ELAPSED) of every pass but the G-buffer and the composite, "
@@ -274,8 +329,15 @@ bool plotBench(const std::string& dir, const std::string& title, bool quiet) {
                      script.c_str(), r.started ? "failed" : "could not be started");
         return false;
     }
-    for (const std::string& name : listFilesInside(staging, "", "plot folder", 16))
-        writeFileAtomically((fs::path(dir) / name).string(), readFileInside(staging, name, "plot"));
+    try {
+        for (const std::string& name : listFilesInside(staging, "", "plot folder", 16))
+            writeFileAtomically((fs::path(dir) / name).string(), readFileInside(staging, name, "plot"));
+    } catch (const Error& e) { // the staging folder is ours, not the user's: errors name the output folder
+        std::string msg = e.what();
+        for (size_t at = msg.find(staging); at != std::string::npos; at = msg.find(staging, at + dir.size()))
+            msg.replace(at, staging.size(), dir);
+        throw Error(msg);
+    }
     return true;
 }
 

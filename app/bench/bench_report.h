@@ -2,6 +2,7 @@
 // results.json (both, with the run's facts), report.md (the Pareto front and every row against
 // the baseline), report.html (bench/report_html.h) and the plot through plot_pareto.py.
 #pragma once
+#include "bench/bench_answer.h"
 #include "bench/bench_results.h"
 
 #include <nlohmann/json.hpp>
@@ -11,10 +12,11 @@
 
 namespace ssao {
 
-void writeBenchFiles(const BenchRun& run, const std::string& dir);
+// `answer`: the answer to the user's question (bench --budget-ms ...), which opens both reports.
+void writeBenchFiles(const BenchRun& run, const std::string& dir, const Answer* answer = nullptr);
 
-// Markdown: the run's facts, the front, the headline sentences and the full table.
-std::string benchMarkdown(const BenchRun& run, const std::string& plotFile);
+// Markdown: the answer (if asked), the run's facts, the front, the headline sentences and the full table.
+std::string benchMarkdown(const BenchRun& run, const std::string& plotFile, const Answer* answer = nullptr);
 // Runs plot_pareto.py; returns false (after printing one line) when Python/matplotlib is missing.
 bool plotBench(const std::string& dir, const std::string& title, bool quiet);
 

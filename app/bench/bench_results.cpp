@@ -1,5 +1,6 @@
 #include "bench/bench_results.h"
 
+#include "metrics/error_split.h"
 #include "settings/params.h"
 #include "util/error.h"
 #include "bench/results_check.h"
@@ -28,9 +29,26 @@ void splitJson(nlohmann::json& j, const SplitSummary& t, const SplitSummary& sc)
     j["rmse_edge_screen"] = jnum(sc.rmseEdge), j["rmse_interior_screen"] = jnum(sc.rmseInterior);
 }
 
+// bench --motion's columns (null without).
+void motionJson(nlohmann::json& j, const MotionSummary& m, bool row) {
+    j["motion_rmse_mean"] = jnum(m.rmseMean), j["motion_instability"] = jnum(m.instability);
+    j["motion_ghosting"] = jnum(m.ghosting);
+    if (row) j["motion_rmse_max"] = jnum(m.rmseMax);
+}
+
+// The split's shares of the squared error (metrics/error_split.h), from the three RMSEs of the
+// same pixels: they sum to 1 where the RMSEs do not add (null without a split).
+void sharesFields(nlohmann::json& j, double total, double technique, double screen) {
+    const ErrorShares s = sharesOfMse(total * total, technique * technique, screen * screen);
+    j["share_technique"] = jnum(s.technique), j["share_screen"] = jnum(s.screen);
+    j["share_interaction"] = jnum(s.interaction);
+}
+
 nlohmann::json configJson(const BenchConfig& c, const ConfigSummary& s) {
     nlohmann::json j = configFields(c, s);
     splitJson(j, s.technique, s.screen);
+    sharesFields(j, s.rmse, s.technique.rmse, s.screen.rmse);
+    motionJson(j, s.motion, false);
     return j;
 }
 
@@ -46,6 +64,7 @@ nlohmann::json configFields(const BenchConfig& c, const ConfigSummary& s) {
     return {{"label", c.label},
             {"group", c.group},
             {"keys", c.keys},
+            {"aliases", c.aliases},
             {"settings", toJson(c.settings)},
             {"baseline", c.baseline},
             {"pareto", s.pareto},
@@ -74,6 +93,8 @@ nlohmann::json viewJson(const ViewResult& v, const std::string& label) {
     const SplitSummary none{nan, nan, nan, nan};
     splitJson(j, v.hasSplit ? SplitSummary{v.vsOracle.rmse, v.vsOracle.bias, v.vsOracle.rmseEdge, v.vsOracle.rmseInterior} : none,
               v.hasSplit ? SplitSummary{v.screen.rmse, v.screen.bias, v.screen.rmseEdge, v.screen.rmseInterior} : none);
+    sharesFields(j, v.error.rmse, v.hasSplit ? v.vsOracle.rmse : nan, v.hasSplit ? v.screen.rmse : nan);
+    motionJson(j, v.hasMotion ? v.motion : MotionSummary{}, true);
     return j;
 }
 
@@ -145,6 +166,13 @@ BenchConfig readConfig(const Reader& rd, const nlohmann::json& j, const std::str
     c.label = rd.text(j, "label", where);
     c.group = rd.text(j, "group", where);
     c.keys = rd.at(j, "keys", where);
+    if (j.contains("aliases")) { // the same configuration's other labels (absent before they were kept)
+        const auto& a = j["aliases"];
+        if (!a.is_array()) rd.fail(where + ": 'aliases' is not a list");
+        for (size_t i = 0; i < a.size(); ++i)
+            if (!a[i].is_string()) rd.fail(where + ": 'aliases' holds something other than a label");
+            else c.aliases.push_back(a[i].get<std::string>());
+    }
     const auto& b = rd.at(j, "baseline", where);
     if (!b.is_boolean()) rd.fail(where + ": 'baseline' is not true or false");
     c.baseline = b.get<bool>();
@@ -207,6 +235,14 @@ ViewResult readView(const Reader& rd, const nlohmann::json& j, const std::string
         v.screen.bias = rd.number(j, "bias_screen", where);
         v.screen.rmseEdge = rd.number(j, "rmse_edge_screen", where);
         v.screen.rmseInterior = rd.number(j, "rmse_interior_screen", where);
+    }
+    // Error in motion, when the run scored it (bench --motion; null without).
+    if (j.contains("motion_rmse_mean") && !j["motion_rmse_mean"].is_null()) {
+        v.hasMotion = true;
+        v.motion.rmseMean = rd.number(j, "motion_rmse_mean", where);
+        v.motion.rmseMax = rd.number(j, "motion_rmse_max", where);
+        v.motion.instability = rd.number(j, "motion_instability", where);
+        v.motion.ghosting = rd.number(j, "motion_ghosting", where);
     }
     return v;
 }

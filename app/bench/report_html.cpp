@@ -60,6 +60,14 @@ std::string img(const std::string& root, const std::string& path, const std::str
            "\">";
 }
 
+// "; also: vbao defaults" for a configuration listed under several names ("" for one).
+std::string alsoKnownAs(const BenchConfig& c, const std::string& sep) {
+    std::string out;
+    for (const std::string& a : c.aliases)
+        out += (out.empty() ? sep + "also: " : ", ") + a;
+    return out;
+}
+
 struct Point {
     std::string label, hover;
     double t = 0, e = 0, tmin = 0, tmax = 0; // time as a multiple of the baseline's
@@ -187,7 +195,7 @@ std::vector<Point> pointsOf(const BenchRun& run, const std::vector<const ViewRes
         p.baseline = c == run.sweep.baseline;
         p.t = std::exp(logT[c] / count[c]), p.e = std::sqrt(mse[c] / count[c]);
         p.tmin = lo[c], p.tmax = hi[c];
-        p.hover = p.label + "\ntime " + fmt(p.t, 3) + "x the baseline's\nRMSE " + fmt(p.e) + " (" +
+        p.hover = p.label + alsoKnownAs(run.sweep.configs[c], "\n") + "\ntime " + fmt(p.t, 3) + "x the baseline's\nRMSE " + fmt(p.e) + " (" +
                   (run.summary.size() > run.sweep.baseline ? fmt(p.e / run.summary[run.sweep.baseline].rmse, 3) : "–") +
                   "x the baseline's, over all scenes)";
         pts.push_back(p);
@@ -254,18 +262,28 @@ std::string cell(double v, int digits = 4) {
            "</td>";
 }
 
-// Every configuration, sortable by any column (click a header).
+// Every configuration, sortable by any column (click a header); with bench --motion, its error in motion.
 std::string table(const BenchRun& run) {
+    const bool motion = run.facts.contains("motion");
     std::ostringstream s;
     s << "<table class=\"sortable\"><thead><tr><th>configuration</th><th>group</th><th>technique</th>"
          "<th>x baseline time</th><th>ms (mean)</th><th>RMSE</th><th>x baseline RMSE</th><th>bias</th>"
-         "<th>edge RMSE</th><th>PSNR geo dB</th><th>SSIM</th><th>front</th></tr></thead><tbody>";
+         "<th>edge RMSE</th><th>PSNR geo dB</th><th>SSIM</th>"
+      << (motion ? "<th title=\"RMS over views of the mean per-frame RMSE along the camera path\">motion RMSE</th>"
+                   "<th title=\"RMS of the frame-to-frame AO change minus the reference's\">instability</th>"
+                   "<th title=\"mean |error| in the first frames after a disocclusion minus at stable pixels\">"
+                   "ghosting</th>"
+                 : "")
+      << "<th>front</th></tr></thead><tbody>";
     for (const ConfigSummary& c : run.summary) {
         const BenchConfig& cfg = run.sweep.configs[c.config];
-        s << "<tr class=\"" << (c.pareto ? "on" : "") << (cfg.baseline ? " base" : "") << "\"><td>" << htmlText(cfg.label)
+        s << "<tr class=\"" << (c.pareto ? "on" : "") << (cfg.baseline ? " base" : "") << "\"><td title=\""
+          << htmlAttr(cfg.label + alsoKnownAs(cfg, "; ")) << "\">" << htmlText(cfg.label)
           << "</td><td>" << htmlText(cfg.group) << "</td><td>" << htmlText(cfg.settings.ao.technique) << "</td>" << cell(c.timeRatio, 3)
           << cell(c.gpuMs) << cell(c.rmse) << cell(c.rmseRatio, 3) << cell(c.bias, 3) << cell(c.rmseEdge)
-          << cell(c.psnrGeometrySrgb) << cell(c.ssim) << "<td>" << (c.pareto ? "yes" : "") << "</td></tr>";
+          << cell(c.psnrGeometrySrgb) << cell(c.ssim);
+        if (motion) s << cell(c.motion.rmseMean) << cell(c.motion.instability) << cell(c.motion.ghosting, 3);
+        s << "<td>" << (c.pareto ? "yes" : "") << "</td></tr>";
     }
     s << "</tbody></table>";
     return s.str();
@@ -315,7 +333,7 @@ std::string thumbnails(const BenchRun& run, const std::string& dir) {
 
 } // namespace
 
-std::string benchHtml(const BenchRun& run, const std::string& dir) {
+std::string benchHtml(const BenchRun& run, const std::string& dir, const Answer* answer) {
     std::vector<const ViewResult*> all;
     std::map<std::string, std::vector<const ViewResult*>> byScene;
     std::vector<std::string> sceneOrder;
@@ -328,7 +346,8 @@ std::string benchHtml(const BenchRun& run, const std::string& dir) {
     std::ostringstream h;
     h << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>ssaolab bench: "
       << htmlText(run.sweep.name) << "</title>" << kCheck << kStyle << "</head><body>";
-    h << "<h1>Run time against error: " << htmlText(run.sweep.name) << "</h1><p>" << htmlText(f.value("date", "")) << ", git "
+    h << "<h1>Run time against error: " << htmlText(run.sweep.name) << "</h1>" << (answer ? answerHtml(run, *answer) : "")
+      << "<p>" << htmlText(f.value("date", "")) << ", git "
       << htmlText(f.value("git_revision", "")) << "; " << htmlText(f.value("gl_renderer", "")) << " on " << htmlText(f.value("cpu", ""))
       << "; " << htmlText(f.value("size", "")) << "; " << f.value("frames", 0) << " timed frames (median) per configuration and view; "
       << run.sweep.configs.size() << " configurations; baseline <b>" << htmlText(run.sweep.configs[run.sweep.baseline].label)

@@ -6,14 +6,16 @@
 // A script checks on load that every image decoded and the plots hold points, and records any
 // error in <body data-check=...> (tests/cli/test_report_html.cpp reads it in a real browser).
 #pragma once
+#include "bench/bench_answer.h"
 #include "bench/bench_results.h"
 
 #include <string>
 
 namespace ssao {
 
-// `dir`: the run's output folder, whose thumbs/ the page embeds (bench/thumbnails.h).
-std::string benchHtml(const BenchRun& run, const std::string& dir);
+// `dir`: the run's output folder, whose thumbs/ the page embeds (bench/thumbnails.h); `answer`: the
+// answer to the user's question, which opens the page.
+std::string benchHtml(const BenchRun& run, const std::string& dir, const Answer* answer = nullptr);
 
 // RFC 4648 base64 of `bytes`.
 std::string base64(const std::string& bytes);

@@ -95,6 +95,12 @@ void checkRow(const Facts& f, const ViewResult& v, const std::string& w) {
         checkMetrics(f, v.vsOracle, w + " (vs oracle)", false);
         checkMetrics(f, v.screen, w + " (screen)", false);
     }
+    if (v.hasMotion) { // AO in [0, 1]: a change minus a change lies in [-2, 2]
+        range(f, v.motion.rmseMean, w + ".motion_rmse_mean", 0, 1);
+        range(f, v.motion.rmseMax, w + ".motion_rmse_max", 0, 1);
+        range(f, v.motion.instability, w + ".motion_instability", 0, 2, true);
+        range(f, v.motion.ghosting, w + ".motion_ghosting", -1, 1, true);
+    }
 }
 
 // The facts a run writes beside its rows; returns each scene's viewpoint names.
@@ -110,6 +116,7 @@ std::vector<std::set<std::string>> checkFacts(const Facts& f, const nlohmann::js
     const long views = f.integer(j, "views_per_scene", "facts", 1, long(kMaxResultViewpoints));
     const auto& ref = f.at(j, "reference", "facts");
     f.text(ref, "definition", "facts.reference");
+    if (j.contains("motion")) f.integer(f.at(j, "motion", "facts"), "frames", "facts.motion", 2, 64);
     for (const char* k : {"cpu", "gl_renderer", "date", "git_revision", "build_type", "hostname"})
         f.optionalText(j, k, "facts");
     const auto& scenes = f.list(j, "scenes", "facts", kMaxResultScenes);
@@ -167,9 +174,17 @@ void checkResults(const BenchRun& run, const std::string& origin) {
         for (const char* key : {"hostname", "cpu", "gl_renderer", "date", "git_revision"})
             f.optionalText(run.shards[k], key, where);
     }
-    for (size_t c = 0; c < run.sweep.configs.size(); ++c)
-        if (run.sweep.configs[c].label.size() > kMaxResultText)
+    for (size_t c = 0; c < run.sweep.configs.size(); ++c) {
+        const BenchConfig& cfg = run.sweep.configs[c];
+        if (cfg.label.size() > kMaxResultText)
             f.fail("configurations[" + std::to_string(c) + "].label", "is longer than " + std::to_string(kMaxResultText) + " bytes");
+        if (cfg.aliases.size() > kMaxAliases)
+            f.fail("configurations[" + std::to_string(c) + "].aliases", "holds more than " + std::to_string(kMaxAliases) + " labels");
+        for (const std::string& a : cfg.aliases)
+            if (a.size() > kMaxResultText)
+                f.fail("configurations[" + std::to_string(c) + "].aliases", "holds a label longer than " +
+                       std::to_string(kMaxResultText) + " bytes");
+    }
     if (run.views.size() > kMaxResultRows) f.fail("results", "holds more than " + std::to_string(kMaxResultRows) + " rows");
     std::set<std::tuple<std::string, std::string, size_t>> seen;
     for (size_t i = 0; i < run.views.size(); ++i) {

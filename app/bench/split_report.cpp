@@ -1,6 +1,8 @@
 #include "bench/split_report.h"
 
+#include "metrics/error_split.h"
 #include "output/escape.h"
+#include "techniques/technique.h"
 
 #include <cmath>
 #include <cstdio>
@@ -18,6 +20,13 @@ std::string num(double v, int digits = 3) {
     return b;
 }
 
+std::string signedNum(double v) {
+    if (!std::isfinite(v)) return "–";
+    char b[32];
+    std::snprintf(b, sizeof b, "%+.2f", v);
+    return b;
+}
+
 // RMS of a per-view value over the rows of one scene and configuration.
 struct Rms {
     double sum = 0;
@@ -25,6 +34,7 @@ struct Rms {
     void add(double v) {
         if (std::isfinite(v)) sum += v * v, ++n;
     }
+    double mean() const { return n ? sum / n : NAN; } // of the squares
     double value() const { return n ? std::sqrt(sum / n) : NAN; }
 };
 
@@ -32,8 +42,12 @@ struct Cell {
     Rms total, technique, screen, techniqueEdge, screenEdge, techniqueInterior, screenInterior;
 };
 
-// The rows the section reads: the baseline, each technique at its defaults, the tuned presets.
+// The rows the section reads: the baseline, each technique at its defaults (also when an earlier
+// label of the same settings took its row), the tuned presets.
 bool reported(const BenchConfig& c) {
+    for (const std::string& a : c.aliases)
+        for (const TechniqueInfo& t : techniques())
+            if (a == t.id + " defaults") return true;
     return c.baseline || c.group == "technique defaults" || c.group.rfind("tuned", 0) == 0;
 }
 
@@ -70,16 +84,20 @@ std::string splitMarkdown(const BenchRun& run) {
           "screen-space technique with this G-buffer can recover (the same for every configuration of a view). "
           "*technique* = the AO against the oracle: what the technique's settings can still fix. RMSE over "
           "geometry pixels, RMS over views; edge/interior as in the tables above (within 3 px of a depth "
-          "discontinuity or not). The two do not add: total^2 = technique^2 + screen^2 + twice their "
-          "covariance.\n\n";
+          "discontinuity or not). The two RMSEs do not add up to the total; the share columns do: "
+       << kSharesHowToRead << " (from the views' mean squared errors).\n\n";
     for (const std::string& sc : scenes) {
-        md << "**" << markdownCell(sc) << "**\n\n| configuration | total | technique | screen | technique edge | screen edge | "
-              "technique interior | screen interior |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
-        for (const auto& [config, c] : cells[sc])
+        md << "**" << markdownCell(sc) << "**\n\n| configuration | total | technique | screen | technique share | "
+              "screen share | interaction | technique edge | screen edge | technique interior | screen interior "
+              "|\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+        for (const auto& [config, c] : cells[sc]) {
+            const ErrorShares sh = sharesOfMse(c.total.mean(), c.technique.mean(), c.screen.mean());
             md << "| " << markdownCell(run.sweep.configs[config].label) << " | " << num(c.total.value()) << " | "
-               << num(c.technique.value()) << " | " << num(c.screen.value()) << " | " << num(c.techniqueEdge.value())
+               << num(c.technique.value()) << " | " << num(c.screen.value()) << " | " << num(sh.technique, 2) << " | "
+               << num(sh.screen, 2) << " | " << signedNum(sh.interaction) << " | " << num(c.techniqueEdge.value())
                << " | " << num(c.screenEdge.value()) << " | " << num(c.techniqueInterior.value()) << " | "
                << num(c.screenInterior.value()) << " |\n";
+        }
         md << "\n";
     }
     return md.str();

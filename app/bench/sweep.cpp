@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <set>
 
 namespace ssao {
@@ -78,7 +79,7 @@ class SweepBuilder {
         if (!b.is_object()) throw Error(origin_ + ": base: expected {\"preset\": ..., \"set\": {...}}");
         const std::string preset = textField(b, "preset", "", origin_ + ": base");
         if (!preset.empty()) {
-            base_ = store_.open(preset).settings;
+            base_ = open(preset);
             resetRadius(base_);
         }
         if (b.contains("set")) {
@@ -93,7 +94,7 @@ class SweepBuilder {
         BenchConfig c;
         c.label = preset + " (baseline)";
         c.group = "baseline";
-        c.settings = store_.open(preset).settings;
+        c.settings = open(preset);
         resetRadius(c.settings); // the bench's radius, like every configuration
         c.keys = {{"preset", preset}};
         c.baseline = true;
@@ -111,7 +112,7 @@ class SweepBuilder {
         nlohmann::json gkeys = baseKeys_;
         if (g.contains("preset")) { // the group starts from a preset instead of the base
             if (!g["preset"].is_string()) throw Error(where + ".preset: expected a preset name");
-            gs = store_.open(g["preset"].get<std::string>()).settings;
+            gs = open(g["preset"].get<std::string>());
             resetRadius(gs);
             gkeys = {{"preset", g["preset"]}};
         }
@@ -136,8 +137,17 @@ class SweepBuilder {
     }
 
     std::vector<BenchConfig> configs;
+    std::vector<std::string> warnings;
 
   private:
+    // A preset's settings; its warnings kept for the command to print.
+    Settings open(const std::string& preset) {
+        Preset p = store_.open(preset);
+        for (const std::string& w : p.warnings)
+            if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
+        return p.settings;
+    }
+
     using Axes = std::vector<std::pair<std::string, nlohmann::json>>;
 
     Axes axes(const nlohmann::json& g, const std::string& where) const {
@@ -181,9 +191,23 @@ class SweepBuilder {
         }
     }
 
+    // Two configurations that render alike are one: `vbao defaults` is `ao.technique=vbao
+    // denoise.kind=none` (auto resolves to the technique's own denoiser).
+    static std::string identity(const Settings& s) {
+        Settings e = s;
+        e.denoise = effectiveDenoise(s);
+        return toEffectiveJson(e).dump();
+    }
+
     void add(BenchConfig c) {
-        const std::string key = toEffectiveJson(c.settings).dump();
-        if (!seen_.insert(key).second) return;
+        const auto [at, fresh] = seen_.emplace(identity(c.settings), configs.size());
+        if (!fresh) {
+            std::vector<std::string>& names = configs[at->second].aliases;
+            if (c.label != configs[at->second].label && names.size() < kMaxAliases &&
+                std::find(names.begin(), names.end(), c.label) == names.end())
+                names.push_back(c.label);
+            return;
+        }
         if (configs.size() >= maxConfigs_)
             throw Error(origin_ + ": more than " + std::to_string(maxConfigs_) + " configurations");
         configs.push_back(std::move(c));
@@ -194,7 +218,7 @@ class SweepBuilder {
     size_t maxConfigs_;
     Settings base_ = defaultSettings();
     nlohmann::json baseKeys_ = nlohmann::json::object();
-    std::set<std::string> seen_;
+    std::map<std::string, size_t> seen_; // identity -> index in configs
 };
 
 } // namespace
@@ -219,6 +243,7 @@ Sweep parseSweep(const nlohmann::json& j, const std::string& origin, const std::
     }
     b.techniqueDefaults();
     sw.configs = std::move(b.configs);
+    sw.warnings = std::move(b.warnings);
     return sw;
 }
 

@@ -2,8 +2,9 @@
 // configurations (JSON, assets/bench/sweep_builtin.json is the built-in one):
 //   {"name": "...", "base": {"preset": "learnopengl" | "" (defaults), "set": {"key": value}},
 //    "groups": [{"name": "...", "set": {"key": value}, "vary": {"key": [v1, v2], "key2": [...]}}]}
-// Each group yields base + set + every combination of its "vary" lists. Configurations whose
-// effective settings are equal are kept once; every registered technique at its defaults and the
+// Each group yields base + set + every combination of its "vary" lists. Configurations that render
+// alike (equal effective settings, denoise.kind=auto resolved) are measured once, under the first
+// label, the later labels kept as its aliases; every registered technique at its defaults and the
 // `learnopengl` baseline are always added.
 #pragma once
 #include "settings/settings.h"
@@ -21,12 +22,16 @@ struct BenchConfig {
     Settings settings;   // before the bench's radius is applied
     nlohmann::json keys; // {"ao.power": 2, ...}: what differs from the base
     bool baseline = false;
+    std::vector<std::string> aliases; // later labels of the same configuration ("vbao defaults")
 };
+
+constexpr size_t kMaxAliases = 16; // aliases kept per configuration (a list of equal values repeats one)
 
 struct Sweep {
     std::string name, description;
     std::vector<BenchConfig> configs;
     size_t baseline = 0; // index of the baseline configuration
+    std::vector<std::string> warnings; // of the presets it opened (Preset::warnings), each once
 };
 
 // Keys a sweep may not set: the bench gives every configuration the same radius (the reference's).

@@ -1,12 +1,15 @@
 #include "bench/tune_command.h"
 
 #include "bench/bench_run.h"
+#include "bench/motion_measure.h"
+#include "bench/tune_guard.h"
 #include "bench/viewpoints.h"
 #include "headless_runner.h"
 #include "output/image.h"
 #include "progress_bar.h"
 #include "reference/reference_cache.h"
 #include "render_command.h"
+#include "settings/applicability.h"
 #include "settings/params.h"
 #include "settings/preset.h"
 #include "settings/preset_store.h"
@@ -55,9 +58,22 @@ void addTuneOptions(CLI::App& cmd, TuneOptions& o) {
     cmd.add_option("--set", o.sets, "KEY=VALUE applied to the start, e.g. TECHNIQUE.steps=4 (repeatable)")->type_name("KEY=VALUE");
     cmd.add_option("--knob", o.knobs,
                    "fit only this knob (repeatable: a float parameter key of the technique, or radius_multiplier "
-                   "or ao.power, which are never fitted unless named; default: the technique's float rows)")->type_name("KEY");
+                   "or ao.power; these two and a technique's own radius multiplier (gtao.radius_multiplier) are "
+                   "never fitted unless named; default: the technique's other float rows)")->type_name("KEY");
     cmd.add_option("--out", o.out, "where to save the tuned preset (JSON)")->type_name(kOutFile)->capture_default_str();
     cmd.add_option("--preset-dir", o.presetDir, "folder of user presets")->type_name(kInDir);
+    cmd.add_option("--shaders", o.shaderDir, "shader folder (default: the installed or source tree's shaders/)")
+        ->type_name(kInDir);
+    cmd.add_flag("--save-overfit", o.saveOverfit,
+                 "save the preset even when the fit raised the held-out error (by default: refused, exit 1)");
+    cmd.add_option("--objective", o.objective,
+                   "what the search minimises over the training views: still (the geometry MSE of a still frame) "
+                   "or motion (along each view's camera path, see --motion-*: the mean per-frame MSE + "
+                   "instability^2, instability = the RMS of the AO's frame-to-frame change minus the "
+                   "reference's at the same surface points); the scores printed are its square root")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"still", "motion"}));
+    addMotionPathOptions(cmd, o.motionPath);
     cmd.add_flag("--quiet", o.quiet, "no progress output");
 }
 
@@ -78,18 +94,35 @@ struct View {
     float radius;
     ReferenceImage ref;
     Role role;
+    std::shared_ptr<const MotionTruth> motion; // --objective motion: the references along its camera path
 };
 
-// The knobs: the technique's own float rows that apply; or those named by --knob, which may add
-// the radius multiplier and ao.power (never fitted unless asked: they fit the numbers, not the physics).
+// What the scores are the square root of (--objective).
+std::string objectiveName(const TuneOptions& o) {
+    return o.objective == "motion" ? "motion score (sqrt of mean per-frame MSE + instability^2)" : "geometry RMSE";
+}
+
+// A technique's own radius multiplier (gtao.radius_multiplier) lengthens its search past R, as
+// tune's radius_multiplier lengthens R itself: both fit the numbers, not the physics.
+bool isRadiusMultiplier(const std::string& key) {
+    const std::string own = ".radius_multiplier";
+    return key == "radius_multiplier" ||
+           (key.size() > own.size() && key.compare(key.size() - own.size(), own.size(), own) == 0);
+}
+
+// The knobs: the technique's own float rows that apply but its radius multiplier; or those named by
+// --knob, which may add the radius multipliers and ao.power (never fitted unless asked).
 std::vector<Knob> chooseKnobs(const TuneOptions& o, const Settings& start) {
     std::vector<Knob> own, extra = {{"radius_multiplier", 0.5, 3.0, 1.0}, {"ao.power", 0.5, 4.0, start.ao.power}};
     for (const Param& p : paramTable())
         if (p.group() == o.technique && p.type == Param::Type::Float && p.applies(start))
             own.push_back({p.key, p.min, p.max, p.get(start)});
     if (o.knobs.empty()) {
-        if (own.empty()) throw Error(o.technique + " has no float parameter to fit (name one with --knob)");
-        return own;
+        std::vector<Knob> defaults;
+        for (const Knob& k : own)
+            if (!isRadiusMultiplier(k.key)) defaults.push_back(k);
+        if (defaults.empty()) throw Error(o.technique + " has no float parameter to fit (name one with --knob)");
+        return defaults;
     }
     std::vector<Knob> all = own;
     all.insert(all.end(), extra.begin(), extra.end());
@@ -107,13 +140,14 @@ std::vector<Knob> chooseKnobs(const TuneOptions& o, const Settings& start) {
     return chosen;
 }
 
-// The search: the training views' mean geometry MSE over candidate knob values, each refused when
-// it darkens an open plane.
+// The search: the training views' mean geometry MSE (or motion objective) over candidate knob
+// values, each refused when it darkens an open plane.
 class Tuner {
   public:
     // `scenes`: the training scenes first, then `heldOut` held-out ones.
     Tuner(const TuneOptions& o, Settings start, std::vector<Scene> scenes, size_t heldOut, int w, int h)
-        : o_(o), start_(std::move(start)), scenes_(std::move(scenes)), heldOut_(heldOut), r_(runner_.makeRenderer(w, h)),
+        : o_(o), start_(std::move(start)), scenes_(std::move(scenes)), heldOut_(heldOut),
+          runner_(HeadlessRunner::Options{o.shaderDir, false}), r_(runner_.makeRenderer(w, h)),
           plane_(loadScene("builtin:plane")), planeRenderer_(runner_.makeRenderer(160, 90)) {
         r_->setWanted(std::set<std::string>{"ao.denoised"}); // what is judged: no composite, no albedo
         planeRenderer_->setWanted(std::set<std::string>{"ao.denoised"});
@@ -140,6 +174,9 @@ class Tuner {
                 const bool heldOutScene = si >= scenes_.size() - heldOut_;
                 views_.push_back({si, name, r_->camera(), radius, std::move(ref),
                                   heldOutScene ? Role::HeldOutScene : k % 2 == 0 ? Role::Train : Role::HeldOutView});
+                if (o_.objective == "motion")
+                    views_.back().motion = std::make_shared<MotionTruth>(traceMotionTruth(
+                        *providers_.back(), sc.bounds, cam, r_->width(), r_->height(), o_.motionPath, {radius, o_.referenceRays}));
                 ++k;
             }
         }
@@ -158,8 +195,9 @@ class Tuner {
         return s;
     }
 
-    // Mean geometry MSE over the views of one role (NaN when there are none).
-    double score(const std::vector<Knob>& ks, Role role) {
+    // Mean geometry MSE over the views of one role (NaN when there are none); each view's MSE is also
+    // added to its scene's entry of `perScene` (sum, views; indexed as the scenes).
+    double score(const std::vector<Knob>& ks, Role role, std::vector<std::pair<double, int>>* perScene = nullptr) {
         double mse = 0;
         int n = 0;
         for (const View& v : views_) {
@@ -170,8 +208,10 @@ class Tuner {
             const ViewResult res = measure(*r_, s, v.ref, 0, 0);
             if (res.error.nonFinite > 0)
                 throw Error(std::to_string(res.error.nonFinite) + " non-finite AO pixels on " + scenes_[v.scene].name);
-            mse += res.error.rmse * res.error.rmse;
+            const double e = v.motion ? motionObjective(measureMotion(*r_, s, *v.motion)) : res.error.rmse * res.error.rmse;
+            mse += e;
             ++n;
+            if (perScene) (*perScene)[v.scene].first += e, ++(*perScene)[v.scene].second;
             if (&v == &views_.front()) firstRmse_ = res.error.rmse;
         }
         runner_.checkGl("while tuning");
@@ -250,7 +290,21 @@ struct Scores {
 
 double rmseOf(double mse) { return std::sqrt(mse); }
 
-nlohmann::json scoresJson(const Scores& before, const Scores& after, const Tuner& t, const TuneOptions& o) {
+// Per scene with held-out views, their mean MSE before and after (sums and counts as score() adds them).
+std::vector<HeldOutScore> heldOutScores(const Tuner& t, const std::vector<std::pair<double, int>>& before,
+                                        const std::vector<std::pair<double, int>>& after) {
+    std::vector<HeldOutScore> out;
+    for (size_t i = 0; i < t.sceneCount(); ++i) {
+        if (before[i].second == 0) continue;
+        const bool training = i < t.sceneCount() - t.heldOutScenes();
+        out.push_back({t.scene(i).name + (training ? " (held-out views)" : ""), before[i].first / before[i].second,
+                       after[i].first / after[i].second, before[i].second});
+    }
+    return out;
+}
+
+nlohmann::json scoresJson(const Scores& before, const Scores& after, const FitVerdict& v, const Tuner& t,
+                          const TuneOptions& o) {
     auto side = [](const Scores& s) {
         nlohmann::json j;
         auto put = [&](const char* k, double mse) { j[k] = std::isfinite(mse) ? nlohmann::json(rmseOf(mse)) : nlohmann::json(); };
@@ -260,14 +314,33 @@ nlohmann::json scoresJson(const Scores& before, const Scores& after, const Tuner
     nlohmann::json train = nlohmann::json::array(), held = nlohmann::json::array();
     for (size_t i = 0; i < t.sceneCount(); ++i)
         (i >= t.sceneCount() - t.heldOutScenes() ? held : train).push_back(t.scene(i).name);
-    return {{"metric", "geometry RMSE against the ray-traced reference (visibility, R = " + std::to_string(o.radiusScene) +
-                           " x diagonal, " + std::to_string(o.referenceRays) + " rays), " + o.size},
+    const std::string path = o.objective != "motion" ? "" : ", along a " + std::to_string(o.motionPath.frames) +
+        "-frame path (orbit " + std::to_string(o.motionPath.orbitDeg) + " deg, dolly " + std::to_string(o.motionPath.dolly) + ")";
+    return {{"metric", objectiveName(o) + " against the ray-traced reference (visibility, R = " + std::to_string(o.radiusScene) +
+                           " x diagonal, " + std::to_string(o.referenceRays) + " rays), " + o.size + path},
             {"training_scenes", train},
             {"held_out_scenes", held},
             {"views", {{"train", t.count(Role::Train)}, {"held_out_views", t.count(Role::HeldOutView)},
                        {"held_out_scenes", t.count(Role::HeldOutScene)}}},
             {"defaults", side(before)},
-            {"tuned", side(after)}};
+            {"tuned", side(after)},
+            {"held_out", {{"defaults", v.before}, {"tuned", v.after}}}, // every held-out view, both kinds
+            {"overfit", v.overfit}};
+}
+
+void printTuned(const TuneOptions& o, const Tuner& t, const std::vector<Knob>& knobs, const Scores& before,
+                const Scores& after) {
+    if (o.quiet) return;
+    std::printf("tuned %s on %zu views (held out: %zu views of the same scenes, %zu views of %zu other scenes):",
+                o.technique.c_str(), t.count(Role::Train), t.count(Role::HeldOutView), t.count(Role::HeldOutScene),
+                t.heldOutScenes());
+    for (const Knob& k : knobs)
+        std::printf(" %s=%.4g", k.key == "radius_multiplier" ? "R x" : k.key.c_str(), k.value);
+    std::printf("\n%s, defaults -> tuned: training %.4f -> %.4f, held-out views %.4f -> %.4f", objectiveName(o).c_str(),
+                rmseOf(before.train), rmseOf(after.train), rmseOf(before.heldOutViews), rmseOf(after.heldOutViews));
+    if (t.heldOutScenes())
+        std::printf(", held-out scenes %.4f -> %.4f", rmseOf(before.heldOutScenes), rmseOf(after.heldOutScenes));
+    std::printf("\n");
 }
 
 // The tuned preset carries what reproduces tune's numbers: the first training scene, the size,
@@ -275,7 +348,7 @@ nlohmann::json scoresJson(const Scores& before, const Scores& after, const Tuner
 // reference's fraction), and when a multiplier was fitted, the reference's own R
 // (reference_radius_scene) so `render --reference` judges against the R tune used.
 void saveTuned(const TuneOptions& o, const Tuner& t, const std::vector<Knob>& knobs, const Scores& before,
-               const Scores& after, int w, int h) {
+               const Scores& after, const FitVerdict& v, int w, int h) {
     Preset p;
     p.name = o.technique + "-tuned";
     Settings tuned = t.settingsWith(knobs, 1.0f);
@@ -292,27 +365,21 @@ void saveTuned(const TuneOptions& o, const Tuner& t, const std::vector<Knob>& kn
     p.scene = spec.rfind("builtin:", 0) == 0 ? spec : std::filesystem::absolute(spec, ec).string();
     p.size = std::make_pair(w, h);
     p.camera = cameraToFile(t.firstView().camera, t.scene(t.firstView().scene));
-    p.scores = scoresJson(before, after, t, o);
+    p.scores = scoresJson(before, after, v, t, o);
     char desc[640];
     std::snprintf(desc, sizeof desc,
                   "ssaolab tune: %s fitted to the ray-traced reference (R = %.3g x diagonal) on %zu training views; "
-                  "geometry RMSE train %.4f -> %.4f, held-out views %.4f -> %.4f, held-out scenes %.4f -> %.4f",
-                  o.technique.c_str(), o.radiusScene, t.count(Role::Train), rmseOf(before.train), rmseOf(after.train),
+                  "%s train %.4f -> %.4f, held-out views %.4f -> %.4f, held-out scenes %.4f -> %.4f",
+                  o.technique.c_str(), o.radiusScene, t.count(Role::Train), objectiveName(o).c_str(), rmseOf(before.train), rmseOf(after.train),
                   rmseOf(before.heldOutViews), rmseOf(after.heldOutViews), rmseOf(before.heldOutScenes),
                   rmseOf(after.heldOutScenes));
     p.description = desc;
+    if (v.overfit) {
+        std::snprintf(desc, sizeof desc, " rose %.4f -> %.4f", v.before, v.after);
+        p.description += "; overfit (saved with --save-overfit): held-out " + v.metric + desc;
+    }
     writePresetFile(p, o.out);
     if (o.quiet) return;
-    std::printf("tuned %s on %zu views (held out: %zu views of the same scenes, %zu views of %zu other scenes):",
-                o.technique.c_str(), t.count(Role::Train), t.count(Role::HeldOutView), t.count(Role::HeldOutScene),
-                t.heldOutScenes());
-    for (const Knob& k : knobs)
-        std::printf(" %s=%.4g", k.key == "radius_multiplier" ? "R x" : k.key.c_str(), k.value);
-    std::printf("\ngeometry RMSE, defaults -> tuned: training %.4f -> %.4f, held-out views %.4f -> %.4f",
-                rmseOf(before.train), rmseOf(after.train), rmseOf(before.heldOutViews), rmseOf(after.heldOutViews));
-    if (t.heldOutScenes())
-        std::printf(", held-out scenes %.4f -> %.4f", rmseOf(before.heldOutScenes), rmseOf(after.heldOutScenes));
-    std::printf("\n");
     std::printf("saved %s; its view '%s' alone: RMSE %.6f (ssaolab render --preset %s --reference --reference-rays %d)\n",
                 o.out.c_str(), t.firstView().viewpoint.c_str(), t.firstRmse(), o.out.c_str(), o.referenceRays);
 }
@@ -325,11 +392,17 @@ int runTune(const TuneOptions& o) {
     checkOutputPath(o.out); // before minutes of tuning: a device or a FIFO is never replaced
     findTechnique(o.technique); // throws naming the choices
     Settings start = defaultSettings();
-    if (!o.preset.empty()) start = PresetStore::standard(o.presetDir).open(o.preset).settings;
+    std::vector<std::string> warnings; // settings that do nothing, said so once they are valid
+    if (!o.preset.empty()) {
+        Preset p = PresetStore::standard(o.presetDir).open(o.preset);
+        start = p.settings;
+        warnings = p.warnings;
+    }
     setParam(start, "ao.technique", o.technique);
-    for (const std::string& a : o.sets)
-        applyAssignment(start, a);
+    for (std::string& w : applyAssignments(start, o.sets))
+        warnings.push_back(std::move(w));
     validateSettings(start);
+    printWarnings(warnings);
     std::vector<Scene> scenes;
     std::set<std::string> seen;
     for (const auto& s : o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes)
@@ -342,15 +415,27 @@ int runTune(const TuneOptions& o) {
 
     Tuner t(o, start, std::move(scenes), o.heldOutScenes.size(), w, h);
     t.traceViews();
-    auto scores = [&] {
-        const double heldViews = t.score(knobs, Role::HeldOutView), heldScenes = t.score(knobs, Role::HeldOutScene);
+    using PerScene = std::vector<std::pair<double, int>>; // held-out MSE sum and views, per scene
+    auto scores = [&](PerScene& held) {
+        held.assign(t.sceneCount(), {0.0, 0});
+        const double heldViews = t.score(knobs, Role::HeldOutView, &held);
+        const double heldScenes = t.score(knobs, Role::HeldOutScene, &held);
         const double train = t.score(knobs, Role::Train); // last: firstRmse() is the first training view's
         return Scores{train, heldViews, heldScenes};
     };
-    const Scores before = scores();
+    PerScene heldBefore, heldAfter;
+    const Scores before = scores(heldBefore);
     t.search(knobs, before.train);
-    const Scores after = scores();
-    saveTuned(o, t, knobs, before, after, w, h);
+    const Scores after = scores(heldAfter);
+    FitVerdict verdict = judgeFit(heldOutScores(t, heldBefore, heldAfter));
+    verdict.metric = objectiveName(o);
+    printTuned(o, t, knobs, before, after);
+    if (verdict.overfit && !o.saveOverfit) throw Error(refusalText(verdict, o.out)); // nothing written
+    saveTuned(o, t, knobs, before, after, verdict, w, h);
+    if (verdict.overfit)
+        printWarnings({overfitSavedText(verdict, o.out)});
+    else if (!verdict.worse.empty())
+        printWarnings({worseScenesText(verdict)});
     return 0;
 }
 

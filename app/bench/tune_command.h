@@ -3,9 +3,14 @@
 // search (each parameter on a grid inside a bracket that halves every round), then report the
 // score on held-out viewpoints and on held-out scenes, and save the tuned preset as JSON.
 // Parameters searched: every float parameter of the technique's own group that applies
-// (kernel.bias ...). A radius multiplier (the technique's radius = m x the reference's R) and
-// ao.power only when named by --knob: they fit the numbers without the physics.
+// (kernel.bias ...) but a radius multiplier. A radius multiplier (tune's: the technique's radius =
+// m x the reference's R; a technique's own, gtao.radius_multiplier: its search past R) and ao.power
+// only when named by --knob: they fit the numbers without the physics.
+// --objective motion minimises, per view, the mean per-frame MSE plus instability^2 along a camera
+// path (bench/motion_measure.h) instead of the still frame's MSE. A fit that raises the
+// held-out error is not saved unless --save-overfit (bench/tune_guard.h).
 #pragma once
+#include "scene/camera_path.h"
 #include "settings/params.h"
 
 #include <string>
@@ -28,12 +33,18 @@ struct TuneOptions {
     int grid = 7;   // values per parameter per round
     int referenceRays = 256;
     float radiusScene = 0.05f;
-    // Only these knobs (keys, "radius_multiplier" or "ao.power"); empty = the technique's float rows:
-    // R stays the reference's and power 1 (a power that only darkens is not physics).
+    // Only these knobs (keys, "radius_multiplier" or "ao.power"); empty = the technique's float rows
+    // but its radius multiplier: R stays the reference's and power 1 (a power that only darkens is not physics).
     std::vector<std::string> knobs;
     std::vector<std::string> sets; // KEY=VALUE applied to the start (a quality level's sample counts)
     std::string out = "tuned.json";
     std::string presetDir;
+    std::string shaderDir; // default: the installation's (or source tree's) shaders/
+    bool saveOverfit = false; // save even when the held-out error rose (with a warning)
+    // still: the mean geometry MSE of each view's still frame; motion: along each view's camera path
+    // (bench/motion_measure.h), mean over its frames of the per-frame MSE + instability^2.
+    std::string objective = "still";
+    CameraPathSpec motionPath;
     bool quiet = false;
 };
 

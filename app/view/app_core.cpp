@@ -6,6 +6,7 @@
 #include "util/error.h"
 #include "util/paths.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -193,6 +194,7 @@ bool AppCore::savePreset(const std::string& name) {
         if (frames_.fullSize().first > 0) p.size = frames_.fullSize(); // when still, not the reduced size while moving
         p.camera = cameraToFile(camera_.camera(), *scene_); // a bookmark, in the file's coordinates
         const std::string path = store_.save(p);
+        descriptions_.erase(path);
         loaded_ = p;
         return "saved preset " + name + " to " + path;
     });
@@ -201,6 +203,7 @@ bool AppCore::savePreset(const std::string& name) {
 bool AppCore::renamePreset(const std::string& from, const std::string& to) {
     return attempt("rename preset", [&] {
         store_.rename(from, to);
+        descriptions_.clear();
         if (loaded_.name == from) loaded_.name = to;
         return "renamed preset " + from + " to " + to;
     });
@@ -209,8 +212,21 @@ bool AppCore::renamePreset(const std::string& from, const std::string& to) {
 bool AppCore::deletePreset(const std::string& name) {
     return attempt("delete preset", [&] {
         store_.remove(name);
+        descriptions_.clear();
         return "deleted preset " + name;
     });
+}
+
+const std::string& AppCore::presetDescription(const PresetEntry& e) {
+    auto it = descriptions_.find(e.path);
+    if (it != descriptions_.end()) return it->second;
+    std::string d;
+    try {
+        d = store_.load(e.name).description;
+    } catch (const std::exception& ex) {
+        d = std::string("(does not read: ") + ex.what() + ")";
+    }
+    return descriptions_[e.path] = d;
 }
 
 bool AppCore::unsavedChanges() const {
@@ -293,6 +309,25 @@ void AppCore::renderIfNeeded(int viewW, int viewH) {
         announced_ = false;
     }
     renderedTechnique_ = technique;
+    noteViewRadius();
+}
+
+void AppCore::noteViewRadius() {
+    const ViewRadiusCheck& c = frames_.viewRadius();
+    if (c.tooLarge && !radiusHinted_)
+        setStatus(c.message() + " (Parameters: \"use the view's radius\")", false);
+    radiusHinted_ = c.tooLarge;
+}
+
+void AppCore::useViewRadius() {
+    const ViewRadiusCheck& c = frames_.viewRadius();
+    if (!(c.suggested > 0.0)) return;
+    settings_.ao.radiusMode = RadiusMode::World;
+    settings_.ao.radius = std::clamp(float(c.suggested), 1e-4f, 1e4f); // the ao.radius row's range
+    char b[200];
+    std::snprintf(b, sizeof b, "AO radius %.3g world units: %.0f%% of what the view spans (ao.radius_mode=world)",
+                  double(settings_.ao.radius), 100.0 * kViewRadiusTarget);
+    setStatus(b, false);
 }
 
 void AppCore::pollShaderReload() {

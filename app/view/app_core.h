@@ -62,6 +62,9 @@ class AppCore {
     // the split view, so A | B compares it with the current setting.
     void applyCandidate(const Candidate& c);
     void compareCandidate(const Candidate& c);
+    // The world radius that spans of this view what the scene mode spans of a framed scene
+    // (metrics/radius_check.h): when the scene radius is far larger than the view.
+    void useViewRadius();
 
     // ---- Per frame ----
     // Builds the whole UI (call between ImGui::NewFrame and ImGui::Render); renders what changed.
@@ -81,6 +84,8 @@ class AppCore {
     // ---- State ----
     Settings& settings() { return settings_; }
     const Preset& loadedPreset() const { return loaded_; }
+    // The preset file's "description" (read once per file; a file that no longer reads says why).
+    const std::string& presetDescription(const PresetEntry& e);
     bool unsavedChanges() const;
     const Scene& scene() const { return *scene_; }
     const std::string& sceneSpec() const { return sceneSpec_; }
@@ -106,6 +111,8 @@ class AppCore {
     bool attempt(const char* what, const std::function<std::string()>& action);
     void adoptScene(Scene s, const std::string& spec, bool keepCamera);
     std::string radiusNote() const;
+    // Says once, in the status, when a view's scene radius is far past what it spans.
+    void noteViewRadius();
 
     AppOptions opts_;
     PresetStore store_;
@@ -125,6 +132,8 @@ class AppCore {
     std::optional<Settings> splitCandidate_; // B when SplitKind::Candidate
     std::string renderedTechnique_; // of the last render (a change compiles shaders: announced first)
     bool announced_ = false;
+    bool radiusHinted_ = false; // the status says the radius is too large for the view
+    std::map<std::string, std::string> descriptions_; // preset path -> its description
     FrontPanel front_;
 };
 
@@ -142,6 +151,9 @@ std::string referenceTag(const FrameDriver& frames); // rays per pixel so far, f
 // or for any other buffer. Views cover such a buffer with this text, the readout prints "-".
 std::string referenceEmptyReason(const FrameDriver& frames, const std::string& buffer);
 void rememberRect(ViewState& view, const std::string& key); // the last item's rectangle, for tests
+// Text in the current colour wrapped at spaces only (ImGui's wrap splits "0.8617" after "0."), as
+// one item (a group); hovering it shows the whole text when a word alone overruns the width.
+void wrappedText(const std::string& text, bool disabled = false);
 // A window of the fixed layout (the three tile the screen): drawn without a background of its own,
 // the clear beneath it (clearUiBackground) is its background.
 void beginFixedWindow(const char* name, ImVec2 pos, ImVec2 size, ImGuiWindowFlags extra = 0);

@@ -49,10 +49,14 @@ void ErrorEvaluator::run() {
         working_ = true;
         lock.unlock();
         Result out{evaluate(r.ao, *r.reference), std::move(r.reference), r.tag, std::move(r.oracle), {}, {}};
+        if (!r.aoB.data.empty()) out.metricsB = evaluate(r.aoB, *out.reference).metrics;
         if (out.oracle) {
-            out.technique = evaluate(r.ao, *out.oracle).metrics;
+            const Evaluation technique = evaluate(r.ao, *out.oracle);
+            out.technique = technique.metrics;
             const Image oracleImg{out.oracle->width, out.oracle->height, 1, out.oracle->ao};
             out.screen = evaluate(oracleImg, *out.reference).metrics;
+            if (out.oracle->width == out.reference->width && out.oracle->height == out.reference->height)
+                out.shares = splitShares(technique, *out.oracle, *out.reference);
         }
         lock.lock();
         working_ = false;

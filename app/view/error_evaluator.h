@@ -24,6 +24,8 @@ class ErrorEvaluator {
         // The view's screen-space oracle, when traced: the frame is judged against it too (the
         // technique's share of the error) and it against the reference (the screen's share).
         std::shared_ptr<const ReferenceImage> oracle;
+        // Chain B's ao.denoised in the split view (empty: none, or B shares A's): judged the same way.
+        Image aoB;
     };
     struct Result {
         Evaluation evaluation;
@@ -31,6 +33,8 @@ class ErrorEvaluator {
         uint64_t tag = 0;
         std::shared_ptr<const ReferenceImage> oracle;
         std::optional<ErrorMetrics> technique, screen; // with an oracle
+        std::optional<ErrorShares> shares;             // with an oracle: the parts that add up
+        std::optional<ErrorMetrics> metricsB;          // of Request::aoB, when given
     };
 
     // `wake` (may be empty) is called from the evaluator's thread when a result is ready.

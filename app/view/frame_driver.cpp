@@ -1,7 +1,9 @@
 #include "view/frame_driver.h"
+#include "gl/readback.h"
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -167,6 +169,23 @@ const RadiusInfo& FrameDriver::radiusInfo() {
         radiusKey_ = key;
     }
     return radius_;
+}
+
+const ViewRadiusCheck& FrameDriver::viewRadius() {
+    const Resource* depth = renderer_->graph().find("gbuffer.depth");
+    if (!depth || renderedInteractive_ || interacting()) return viewRadius_;
+    const AoSettings& a = renderer_->settings().ao;
+    char key[160];
+    std::snprintf(key, sizeof key, "%llu/%u/%d/%a", (unsigned long long)depth->version, depth->generation,
+                  int(a.radiusMode), a.radiusScene);
+    if (viewRadiusKey_ != key) {
+        const Image d = readBack(depth->texture, 1);
+        viewRadius_ = checkViewRadius(d.data.data(), d.data.size(), renderer_->camera(),
+                                      double(std::max(d.width, 1)) / double(std::max(d.height, 1)), a,
+                                      2.0 * double(renderer_->sceneRadius()));
+        viewRadiusKey_ = key;
+    }
+    return viewRadius_;
 }
 
 void FrameDriver::noteFrameMs(float ms) {

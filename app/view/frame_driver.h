@@ -2,6 +2,7 @@
 // is dragged, full a quarter second after input stops), the background reference and its error,
 // per-pass timings and the frame-time plot, shader hot reload, and whether the app may sleep.
 #pragma once
+#include "metrics/radius_check.h"
 #include "renderer.h"
 #include "view/buffer_views.h"
 #include "view/live_reference.h"
@@ -44,6 +45,9 @@ class FrameDriver {
     std::pair<int, int> fullSize() const { return fullSize_; } // the render size when input is still
     // The radius at the centre of the view, recomputed when the depth or the settings change.
     const RadiusInfo& radiusInfo();
+    // The scene radius against what the view spans (metrics/radius_check.h), from the depth of the
+    // last full-size still frame (read back once per new depth; while input moves, the last one).
+    const ViewRadiusCheck& viewRadius();
 
     // Idle costs nothing: true while something is still changing (input, a pending render, news from
     // the reference's threads); false = the app may sleep.
@@ -95,6 +99,8 @@ class FrameDriver {
     std::filesystem::file_time_type shaderTime_{};
     RadiusInfo radius_;
     std::string radiusKey_;
+    ViewRadiusCheck viewRadius_;
+    std::string viewRadiusKey_;
     std::pair<int, int> fullSize_{0, 0};
 };
 

@@ -30,6 +30,7 @@ void LiveReference::forget() {
 void LiveReference::clear() {
     shown_.reset();
     metrics_.reset();
+    metricsB_.reset();
     split_.reset();
     // Bumped only when the buffers held something: while the camera moves this runs every frame,
     // and the upload pass must not run with it.
@@ -50,8 +51,9 @@ void LiveReference::publish(const ErrorEvaluator::Result& r) {
     b->version = ++version_;
     buffers_ = std::move(b);
     metrics_ = r.evaluation.metrics;
+    metricsB_ = r.metricsB;
     if (r.technique && r.screen)
-        split_ = Split{*r.technique, *r.screen};
+        split_ = Split{*r.technique, *r.screen, r.shares.value_or(ErrorShares{})};
     else
         split_.reset();
 }
@@ -137,10 +139,17 @@ bool LiveReference::update(Renderer& r, const std::shared_ptr<const Scene>& scen
     // The error follows each new snapshot and ao.denoised (a parameter changed, the reference
     // stays); the evaluation runs on the evaluator's thread and is shown when it is done.
     const Resource* ao = r.graph().find("ao.denoised");
+    // The split view's B, judged beside A when its AO is its own (AO on | off shares A's).
+    const Resource* aoB = r.graph().resolve("b.ao.denoised") != r.graph().resolve("ao.denoised")
+                              ? r.graph().find("b.ao.denoised")
+                              : nullptr;
+    const std::string bKey =
+        aoB ? std::to_string(aoB->version) + "/" + std::to_string(aoB->generation) : std::string();
     if (snapshot_ && ao &&
         (snapshot_ != submitted_ || oracle_ != submittedOracle_ || ao->version != submittedAo_ ||
-         ao->generation != submittedAoGeneration_)) {
-        evaluator_.submit({readBack(ao->texture, 1), snapshot_, ++tag_, oracle_});
+         ao->generation != submittedAoGeneration_ || bKey != submittedB_)) {
+        evaluator_.submit({readBack(ao->texture, 1), snapshot_, ++tag_, oracle_, aoB ? readBack(aoB->texture, 1) : Image{}});
+        submittedB_ = bKey;
         submitted_ = snapshot_;
         submittedOracle_ = oracle_;
         submittedAo_ = ao->version;

@@ -64,12 +64,16 @@ class LiveReference {
     Status status() const;
     // The error of ao.denoised against the snapshot shown; nullopt before the first snapshot.
     const std::optional<ErrorMetrics>& metrics() const { return metrics_; }
+    // The same of chain B's ao.denoised in the split view; nullopt without B or when B shares A's AO.
+    const std::optional<ErrorMetrics>& metricsB() const { return metricsB_; }
     // Once the reference is done, the screen-space oracle of the view is traced (visibility from
-    // the depth layer only, surfaces 1 R thick: the best any screen-space technique could do) and
-    // the error splits: the technique (ao.denoised vs the oracle) and the screen (the oracle vs
-    // the reference). nullopt until both are known.
+    // the depth layer only, surfaces 1 R thick and MASK cut-outs sheets: the best any screen-space
+    // technique could do) and the error splits: the technique (ao.denoised vs the oracle) and the
+    // screen (the oracle vs the reference), with their shares of the squared error (error_split.h).
+    // nullopt until both are known.
     struct Split {
         ErrorMetrics technique, screen;
+        ErrorShares shares; // of the total squared error: technique + screen + interaction = 1
     };
     const std::optional<Split>& split() const { return split_; }
     // Where the oracle is: 0 not started, in (0, 1) tracing, 1 done.
@@ -107,9 +111,11 @@ class LiveReference {
     std::shared_ptr<const ReferenceImage> submitted_; // the one last sent to the evaluator...
     uint64_t submittedAo_ = 0;                        // ...with this ao.denoised version
     unsigned submittedAoGeneration_ = 0;
+    std::string submittedB_; // "version/generation" of B's ao.denoised sent with it ("" without B)
     uint64_t tag_ = 0, validFrom_ = 0; // evaluations tagged below validFrom_ are of an older view
     std::shared_ptr<const ReferenceBuffers> buffers_;
     std::optional<ErrorMetrics> metrics_;
+    std::optional<ErrorMetrics> metricsB_;
     bool oracleStarted_ = false;
     uint64_t oracleJob_ = 0;
     std::shared_ptr<const ReferenceImage> oracle_;          // of the current view, once done

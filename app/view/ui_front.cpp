@@ -1,11 +1,12 @@
 // The "Front" tab: the time-against-error front of the view on screen (front/front_panel.h).
 // A plot drawn with ImGui's draw list - GPU time on a log axis, RMSE against the finished live
-// reference, the front as a step line, the current setting ringed, the baseline black, the
-// reference's noise floor as a grey band - where hovering names a point, a click applies it and
-// a shift+click compares it with the current setting in Split A|B. Under it the two one-click
-// answers and the budget box.
+// reference (the axis clipped above the bulk, outliers as triangles on its top edge), the front as
+// a step line, the current setting ringed, the baseline black, the reference's noise floor as a
+// grey band - where hovering names a point, a click applies it and a shift+click compares it with
+// the current setting in Split A|B. Under it the two one-click answers and the budget box.
 #include "techniques/technique.h"
 #include "view/app_core.h"
+#include "view/ui_layout.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,6 +26,14 @@ std::string pointText(const FrontPoint& p, const FrontPoint* base) {
     return b;
 }
 
+// A point of the plot: a disc, or above the error axis a triangle pointing up on its top edge.
+void dot(ImDrawList* dl, ImVec2 c, float r, ImU32 col, bool offTop) {
+    if (offTop)
+        dl->AddTriangleFilled(ImVec2(c.x, c.y - r - 1), ImVec2(c.x - r - 1, c.y + r), ImVec2(c.x + r + 1, c.y + r), col);
+    else
+        dl->AddCircleFilled(c, r, col);
+}
+
 // The plot; returns the index of the point under the cursor (npos when none).
 size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, size_t baseline, double noise) {
     const ImVec2 origin = ImGui::GetCursorScreenPos();
@@ -34,15 +43,20 @@ size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, si
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const float L = 44, R = 8, T = 8, B = 30;
     dl->AddRectFilled(origin, ImVec2(origin.x + w, origin.y + h), IM_COL32(250, 250, 250, 255));
-    double tlo = 1e300, thi = 0, ehi = noise * 1.2;
+    double tlo = 1e300, thi = 0;
+    std::vector<double> errors;
     for (const auto& p : pts)
         if (p.result.gpuMs > 0 && std::isfinite(p.result.error.rmse))
-            tlo = std::min(tlo, p.result.gpuMs), thi = std::max(thi, p.result.gpuMs), ehi = std::max(ehi, p.result.error.rmse);
+            tlo = std::min(tlo, p.result.gpuMs), thi = std::max(thi, p.result.gpuMs), errors.push_back(p.result.error.rmse);
+    // The error axis stops above the bulk (ui_layout.h): one outlier would squeeze the points people
+    // compare into the bottom strip. Points above it sit on the top edge as triangles.
+    const double ehi = std::max(clippedAxisTop(errors, noise * 1.2) * 1.1, 1e-3);
+    const long above = std::count_if(errors.begin(), errors.end(), [&](double e) { return e > ehi; });
     if (!(thi > 0)) tlo = 0.1, thi = 10;
-    tlo /= 1.2, thi *= 1.2, ehi = std::max(ehi * 1.1, 1e-3);
+    tlo /= 1.2, thi *= 1.2;
     if (!(thi > tlo * 1.01)) thi = tlo * 2;
     auto X = [&](double t) { return origin.x + L + float((std::log(t) - std::log(tlo)) / (std::log(thi) - std::log(tlo))) * (w - L - R); };
-    auto Y = [&](double e) { return origin.y + h - B - float(e / ehi) * (h - T - B); };
+    auto Y = [&](double e) { return origin.y + h - B - float(std::min(e, ehi) / ehi) * (h - T - B); };
     const ImU32 grid = IM_COL32(225, 225, 225, 255), ink = IM_COL32(70, 70, 70, 255);
     if (noise > 0)
         dl->AddRectFilled(ImVec2(origin.x + L, Y(noise)), ImVec2(origin.x + w - R, Y(0)), IM_COL32(228, 228, 228, 255));
@@ -66,7 +80,8 @@ size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, si
     // right end of the x axis, RMSE above the y axis's labels.
     const char* xName = "GPU ms (log) ->";
     dl->AddText(ImVec2(origin.x + w - R - ImGui::CalcTextSize(xName).x, origin.y + h - 14), ink, xName);
-    dl->AddText(ImVec2(origin.x + L + 4, origin.y + T), ink, "RMSE");
+    const std::string yName = above > 0 ? "RMSE (" + std::to_string(above) + " above the axis: triangles)" : "RMSE";
+    dl->AddText(ImVec2(origin.x + L + 4, origin.y + T), ink, yName.c_str());
     // The front as a step line, fastest first.
     std::vector<const FrontPoint*> front;
     for (const auto& p : pts)
@@ -86,7 +101,7 @@ size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, si
         if (!(p.result.gpuMs > 0) || !std::isfinite(p.result.error.rmse)) continue;
         const ImVec2 c(X(p.result.gpuMs), Y(p.result.error.rmse));
         const ImU32 col = i == baseline ? IM_COL32(0, 0, 0, 255) : p.front ? IM_COL32(214, 39, 40, 255) : IM_COL32(150, 150, 150, 255);
-        dl->AddCircleFilled(c, i == baseline ? 5.5f : p.front ? 4.0f : 3.0f, col);
+        dot(dl, c, i == baseline ? 5.5f : p.front ? 4.0f : 3.0f, col, p.result.error.rmse > ehi);
         if (i == current) dl->AddCircle(c, 8.0f, IM_COL32(30, 110, 255, 255), 16, 2.0f);
         app.view().widgetRects["front#point:" + p.candidate.label] = ImVec4(c.x - 2, c.y - 2, c.x + 2, c.y + 2);
         const float d2 = (c.x - mouse.x) * (c.x - mouse.x) + (c.y - mouse.y) * (c.y - mouse.y);

@@ -3,7 +3,9 @@
 // (ui_reference.cpp), and the pixel / sample inspector.
 #include "view/app_core.h"
 
+#include <algorithm>
 #include <cfloat>
+#include <cstdio>
 
 namespace ssao {
 
@@ -17,10 +19,21 @@ void timingSection(FrameDriver& frames, ViewState& view) {
         char h1[48], h2[48];
         std::snprintf(h1, sizeof h1, "full %dx%d", full.width, full.height);
         std::snprintf(h2, sizeof h2, "moving %dx%d", moving.width, moving.height);
-        ImGui::TableSetupColumn("GPU ms");
-        ImGui::TableSetupColumn(h1);
-        ImGui::TableSetupColumn(h2);
-        ImGui::TableHeadersRow();
+        // Weights from the widest text each column holds: without them the first frame (no widths
+        // measured yet) squeezed every column to one character.
+        float names = ImGui::CalcTextSize("all passes").x;
+        for (const auto& name : order)
+            names = std::max(names, ImGui::CalcTextSize(name.c_str()).x);
+        const float numbers = ImGui::CalcTextSize("moving 0000x0000").x;
+        ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthStretch, names);
+        ImGui::TableSetupColumn(h1, ImGuiTableColumnFlags_WidthStretch, numbers);
+        ImGui::TableSetupColumn(h2, ImGuiTableColumnFlags_WidthStretch, numbers);
+        ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+        for (int c = 0; c < 3; ++c) {
+            ImGui::TableSetColumnIndex(c);
+            ImGui::TableHeader(ImGui::TableGetColumnName(c));
+            rememberRect(view, "timing#col" + std::to_string(c));
+        }
         double totals[2] = {0, 0};
         for (const auto& name : order) {
             ImGui::TableNextRow();
@@ -60,7 +73,8 @@ void timingSection(FrameDriver& frames, ViewState& view) {
     std::string ran;
     for (auto& n : frames.lastReport().ran())
         ran += n + " ";
-    ImGui::TextDisabled("last change re-ran: %s", ran.c_str());
+    wrappedText("last change re-ran: " + ran, true);
+    rememberRect(view, "timing#ran");
 }
 
 void inspectorSection(FrameDriver& frames, Inspector& inspector, ViewState& view) {
@@ -104,10 +118,11 @@ void inspectorSection(FrameDriver& frames, Inspector& inspector, ViewState& view
     int counts[5] = {};
     for (const auto& t : pi->taps)
         ++counts[int(t.state)];
-    ImGui::Text("%zu taps (GPU): %d open, %d occluded, %d off screen, %d behind eye, %d sky", pi->taps.size(),
-                counts[int(TapState::Open)], counts[int(TapState::Occluded)],
-                counts[int(TapState::Offscreen)], counts[int(TapState::BehindEye)],
-                counts[int(TapState::Sky)]);
+    char taps[200];
+    std::snprintf(taps, sizeof taps, "%zu taps (GPU): %d open, %d occluded, %d off screen, %d behind eye, %d sky",
+                  pi->taps.size(), counts[int(TapState::Open)], counts[int(TapState::Occluded)],
+                  counts[int(TapState::Offscreen)], counts[int(TapState::BehindEye)], counts[int(TapState::Sky)]);
+    wrappedText(taps);
     int band = 0;
     for (const auto& t : pi->taps)
         band += fromGuardBand(t);

@@ -1,8 +1,10 @@
 // The left panel: status, then tabs for the parameters (generated from the table), the scene and
-// camera, and presets. Timing and the inspector live in the info strip under the image.
+// camera, presets and the front. Timing and the inspector live in the info strip under the image.
 #include "scene/builtin_scenes.h"
 #include "view/app_core.h"
+#include "view/ui_layout.h"
 
+#include <algorithm>
 #include <cstring>
 #include <functional>
 #include <vector>
@@ -12,6 +14,27 @@ namespace ssao {
 void rememberRect(ViewState& view, const std::string& key) {
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
     view.widgetRects[key] = ImVec4(a.x, a.y, b.x, b.y);
+}
+
+void wrappedText(const std::string& text, bool disabled) {
+    const float width = std::max(ImGui::GetContentRegionAvail().x, 40.0f);
+    const MeasureText measure = [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; };
+    bool over = false;
+    if (disabled) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::BeginGroup();
+    for (const std::string& line : wrapWords(text, width, measure)) {
+        ImGui::TextUnformatted(line.c_str());
+        over |= measure(line) > width;
+    }
+    ImGui::EndGroup();
+    if (disabled) ImGui::PopStyleColor();
+    if (over && ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 36.0f);
+        ImGui::TextUnformatted(text.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
 }
 
 namespace {
@@ -24,12 +47,6 @@ bool inputText(const char* label, std::string& s, bool enter = false) {
         ImGui::InputText(label, buf, sizeof buf, enter ? ImGuiInputTextFlags_EnterReturnsTrue : 0);
     s = buf;
     return hit;
-}
-
-bool tab(AppCore& app, const char* name) {
-    const bool open = ImGui::BeginTabItem(name);
-    rememberRect(app.view(), std::string("tab#") + name);
-    return open;
 }
 
 void sceneSection(AppCore& app) {
@@ -123,29 +140,46 @@ void sceneSection(AppCore& app) {
     if (replaceScene) replaceScene();
 }
 
+// One row of the preset list, two lines tall: the name, and under it the description cut at a word
+// (the whole of it on hover). Double-click loads it.
+void presetRow(AppCore& app, const PresetEntry& e, std::string& selected) {
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    std::string name = (e.builtin ? "[shipped] " : "") + e.name;
+    if (e.name == app.loadedPreset().name) name += app.unsavedChanges() ? "  (loaded, changed)" : "  (loaded)";
+    ImGui::PushID(e.path.c_str());
+    if (ImGui::Selectable("##preset", selected == e.name, ImGuiSelectableFlags_AllowDoubleClick,
+                          ImVec2(0, 2.0f * line - ImGui::GetStyle().ItemSpacing.y)))
+        selected = e.name;
+    ImGui::PopID();
+    rememberRect(app.view(), "preset#" + e.name);
+    const bool hovered = ImGui::IsItemHovered();
+    if (hovered && ImGui::IsMouseDoubleClicked(0)) app.openPreset(e.name);
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    const std::string& description = app.presetDescription(e);
+    const MeasureText measure = [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; };
+    bool cut = false;
+    const std::string shown = fitLine(description.empty() ? "(no description)" : description, b.x - a.x, measure, &cut);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddText(a, ImGui::GetColorU32(ImGuiCol_Text), name.c_str());
+    const ImVec2 d(a.x, a.y + line);
+    dl->AddText(d, ImGui::GetColorU32(ImGuiCol_TextDisabled), shown.c_str());
+    app.view().widgetRects["preset#" + e.name + "#description"] =
+        ImVec4(d.x, d.y, d.x + ImGui::CalcTextSize(shown.c_str()).x, d.y + ImGui::GetTextLineHeight());
+    if (hovered && !description.empty()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 36.0f);
+        ImGui::TextUnformatted(description.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::TextDisabled("double-click: load");
+        ImGui::EndTooltip();
+    }
+}
+
 void presetSection(AppCore& app) {
     PresetStore& store = app.presets();
     const std::string current = app.loadedPreset().name + (app.unsavedChanges() ? " (unsaved changes)" : "");
     ImGui::Text("current: %s", current.c_str());
     static std::string selected;
-    if (ImGui::BeginListBox("##presets", ImVec2(-1, ImGui::GetTextLineHeightWithSpacing() * 9))) {
-        // The user's own presets first (what one reloads most), then the shipped ones (the seeds'
-        // reproductions and the tuned technique-quality presets), so a long shipped list never
-        // hides them below the fold.
-        std::vector<const PresetEntry*> order;
-        for (bool builtin : {false, true})
-            for (const auto& e : store.entries())
-                if (e.builtin == builtin) order.push_back(&e);
-        for (const PresetEntry* ep : order) {
-            const PresetEntry& e = *ep;
-            std::string label = (e.builtin ? "[shipped] " : "") + e.name;
-            if (e.name == app.loadedPreset().name && app.unsavedChanges()) label += " *";
-            if (ImGui::Selectable(label.c_str(), selected == e.name)) selected = e.name;
-            if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(0)) app.openPreset(e.name);
-            rememberRect(app.view(), "preset#" + e.name);
-        }
-        ImGui::EndListBox();
-    }
     const PresetEntry* sel = store.find(selected);
     ImGui::BeginDisabled(!sel);
     if (ImGui::Button("Load")) app.openPreset(selected);
@@ -165,9 +199,43 @@ void presetSection(AppCore& app) {
     ImGui::SameLine();
     if (ImGui::Button("Save")) app.savePreset(app.view().newPresetName);
     rememberRect(app.view(), "preset#save");
-    ImGui::TextWrapped("A saved preset keeps the settings, the scene, the view size and the camera; "
-                       "`ssaolab render --preset NAME` renders it headless.");
-    ImGui::TextDisabled("user presets: %s", store.userDir().c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("A saved preset keeps the settings, the scene, the view size and the camera;\n"
+                          "`ssaolab render --preset NAME` renders it headless.\nuser presets: %s",
+                          store.userDir().c_str());
+    // Every preset, the rest of the tab tall: the user's own first (what one reloads most), then
+    // the shipped ones (the seeds' reproductions and the tuned technique-quality presets).
+    const float height = std::max(ImGui::GetContentRegionAvail().y, 6.0f * ImGui::GetTextLineHeightWithSpacing());
+    if (ImGui::BeginChild("##presets", ImVec2(0, height), true)) {
+        for (bool builtin : {false, true})
+            for (const auto& e : store.entries())
+                if (e.builtin == builtin) presetRow(app, e, selected);
+    }
+    ImGui::EndChild();
+    rememberRect(app.view(), "preset#list");
+}
+
+// The panel's tabs as a row of buttons: ImGui's tab bar draws a tab only from the frame after it
+// first appears, so the first frame had none; buttons are laid out on the frame they are submitted.
+int tabStrip(AppCore& app, const std::vector<const char*>& names) {
+    int& current = app.view().panelTab;
+    const ImGuiStyle& st = ImGui::GetStyle();
+    for (size_t i = 0; i < names.size(); ++i) {
+        if (i > 0) ImGui::SameLine(0.0f, st.ItemInnerSpacing.x);
+        const bool on = current == int(i);
+        ImGui::PushStyleColor(ImGuiCol_Button, st.Colors[on ? ImGuiCol_TabActive : ImGuiCol_Tab]);
+        ImGui::PushStyleColor(ImGuiCol_ButtonHovered, st.Colors[ImGuiCol_TabHovered]);
+        ImGui::PushStyleColor(ImGuiCol_ButtonActive, st.Colors[ImGuiCol_TabActive]);
+        if (ImGui::Button(names[i])) current = int(i);
+        ImGui::PopStyleColor(3);
+        rememberRect(app.view(), std::string("tab#") + names[i]);
+    }
+    ImGui::PushStyleColor(ImGuiCol_Separator, st.Colors[ImGuiCol_TabActive]);
+    ImGui::Separator();
+    ImGui::PopStyleColor();
+    return current;
 }
 
 } // namespace
@@ -191,37 +259,35 @@ void clearUiBackground() {
 }
 
 void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size) {
-    beginFixedWindow("ssaolab", pos, size);
+    // The scrollbar always: ImGui adds it on the frame after it learns the content is taller, and the
+    // first frame's widgets were wider than every later frame's.
+    beginFixedWindow("ssaolab", pos, size, ImGuiWindowFlags_AlwaysVerticalScrollbar);
+    app.view().widgetRects["panel"] = ImVec4(pos.x, pos.y, pos.x + size.x, pos.y + size.y);
     // The status has a fixed height (three lines, scrolled if longer): the widgets below never move.
     ImGui::BeginChild("status", ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * 3.0f), false);
     ImGui::PushStyleColor(ImGuiCol_Text,
                           app.statusIsError() ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1));
-    ImGui::TextWrapped("%s", app.status().c_str());
+    wrappedText(app.status());
+    rememberRect(app.view(), "status");
     ImGui::PopStyleColor();
     ImGui::EndChild();
+    if (ImGui::IsItemHovered()) { // the whole status, also when it runs past its three lines
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 36.0f);
+        ImGui::TextUnformatted(app.status().c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
     if (!app.frames().shaderError().empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.4f, 0.4f, 1));
         ImGui::TextWrapped("shader error (last good shaders still running):\n%s", app.frames().shaderError().c_str());
         ImGui::PopStyleColor();
     }
-    if (ImGui::BeginTabBar("panel")) {
-        if (tab(app, "Parameters")) {
-            drawParameters(app);
-            ImGui::EndTabItem();
-        }
-        if (tab(app, "Scene & camera")) {
-            sceneSection(app);
-            ImGui::EndTabItem();
-        }
-        if (tab(app, "Presets")) {
-            presetSection(app);
-            ImGui::EndTabItem();
-        }
-        if (tab(app, "Front")) {
-            drawFrontTab(app);
-            ImGui::EndTabItem();
-        }
-        ImGui::EndTabBar();
+    switch (tabStrip(app, {"Parameters", "Scene & camera", "Presets", "Front"})) {
+    case 0: drawParameters(app); break;
+    case 1: sceneSection(app); break;
+    case 2: presetSection(app); break;
+    default: drawFrontTab(app); break;
     }
     ImGui::End();
 }

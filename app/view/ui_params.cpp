@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace ssao {
 
@@ -23,7 +24,14 @@ std::string rangeText(const Param& p) {
     return "[" + p.format(p.min) + ", " + p.format(p.max) + "]" + (p.unit.empty() ? "" : " " + p.unit);
 }
 
-void tooltip(const Param& p, bool applies) {
+// What '*' and R compare with: the preset loaded last (its values, not the table's defaults, are
+// where a user starts from), or the table's defaults when none was.
+std::string baselineName(const AppCore& app) {
+    const std::string& n = app.loadedPreset().name;
+    return n == "defaults" ? "the table's defaults" : "preset " + n;
+}
+
+void tooltip(const Param& p, bool applies, const AppCore& app, bool changed) {
     if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
@@ -33,6 +41,8 @@ void tooltip(const Param& p, bool applies) {
     if (!p.when.empty())
         ImGui::TextColored(applies ? ImVec4(0.6f, 0.6f, 0.6f, 1) : ImVec4(1, 0.75f, 0.3f, 1),
                            "applies when %s", p.whenText().c_str());
+    ImGui::TextDisabled("%s %s, where it is %s (R resets to it)", changed ? "* : changed from" : "as in",
+                        baselineName(app).c_str(), p.format(p.get(app.loadedPreset().settings)).c_str());
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
 }
@@ -41,13 +51,15 @@ void tooltip(const Param& p, bool applies) {
 bool paramWidget(AppCore& app, const Param& p, Settings& s) {
     ImGui::PushID(p.key.c_str());
     const double before = p.get(s);
+    const double base = p.get(app.loadedPreset().settings);
+    const bool changed = before != base;
     const bool applies = p.applies(s);
     const float resetWidth = ImGui::GetFrameHeight() * 1.6f;
     ImGui::BeginDisabled(!applies);
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.62f - resetWidth);
-    // * marks a changed value; "###key" keeps the widget's ID stable when the * appears, or the first
-    // change of a drag would end the drag.
-    const std::string label = p.label + (p.isDefault(s) ? "" : " *") + "###" + p.key;
+    // * marks a value changed against the loaded preset; "###key" keeps the widget's ID stable when
+    // the * appears, or the first change of a drag would end the drag.
+    const std::string label = p.label + (changed ? " *" : "") + "###" + p.key;
     bool slider = false;
     switch (p.type) {
     case Param::Type::Float: {
@@ -88,15 +100,17 @@ bool paramWidget(AppCore& app, const Param& p, Settings& s) {
     // Dragging a slider renders at the interactive scale until it is released (N8AO does this).
     if (slider && ImGui::IsItemActive()) app.frames().noteInteraction();
     rememberRect(app.view(), p.key);
+    if (changed) rememberRect(app.view(), "changed#" + p.key);
     ImGui::EndDisabled();
-    tooltip(p, applies);
+    tooltip(p, applies, app, changed);
     ImGui::SameLine();
-    ImGui::BeginDisabled(p.isDefault(s) || !applies);
-    if (ImGui::Button("R", ImVec2(resetWidth, 0))) p.set(s, p.def);
+    ImGui::BeginDisabled(!changed || !applies);
+    if (ImGui::Button("R", ImVec2(resetWidth, 0))) p.set(s, base);
     ImGui::EndDisabled();
     rememberRect(app.view(), p.key + "#reset");
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("reset to %s", p.format(p.def).c_str());
+        ImGui::SetTooltip("reset to %s, the value of %s (what * compares with)", p.format(base).c_str(),
+                          baselineName(app).c_str());
     ImGui::PopID();
     return p.get(s) != before;
 }
@@ -108,18 +122,38 @@ void radiusLine(AppCore& app) {
         ImGui::TextDisabled("radius: shown after the first frame");
     } else {
         const RadiusInfo& ri = app.frames().radiusInfo();
+        const ViewRadiusCheck& vr = app.frames().viewRadius();
         const bool tiny = ri.pixels<2.0f, huge = ri.world> 0.25f * ri.sceneDiagonal;
-        const ImVec4 colour =
-            tiny || huge ? ImVec4(1, 0.7f, 0.3f, 1) : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
+        const ImVec4 colour = tiny || huge || vr.tooLarge ? ImVec4(1, 0.7f, 0.3f, 1)
+                                                          : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
         ImGui::TextColored(colour, "= %.4g units, %.1f px at centre (diag %.4g)%s", ri.world, ri.pixels,
                            ri.sceneDiagonal,
-                           tiny   ? " SUB-PIXEL: flat AO"
-                           : huge ? " >25%% OF SCENE"
-                                  : "");
+                           tiny          ? " SUB-PIXEL: flat AO"
+                           : huge        ? " >25%% OF SCENE"
+                           : vr.tooLarge ? " WIDE FOR THE VIEW"
+                                         : "");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "The AO radius in scene units and in pixels at the centre of the view; the scene's\n"
                 "bounding-box diagonal. Under 2 pixels the kernel sees nothing: AO goes flat grey.");
+        rememberRect(app.view(), "radius#info");
+        if (vr.tooLarge) { // a line of its own only then: the hint of the status, applied in one click
+            char label[96];
+            std::snprintf(label, sizeof label, "use the view's radius: %.3g world units", vr.suggested);
+            if (ImGui::SmallButton(label)) {
+                app.useViewRadius();
+                app.frames().keepAwake();
+            }
+            rememberRect(app.view(), "radius#use_view");
+            if (ImGui::IsItemHovered()) {
+                ImGui::BeginTooltip();
+                ImGui::PushTextWrapPos(ImGui::GetFontSize() * 36.0f);
+                ImGui::TextUnformatted(vr.message().c_str());
+                ImGui::PopTextWrapPos();
+                ImGui::EndTooltip();
+            }
+        }
+        return;
     }
     rememberRect(app.view(), "radius#info");
 }

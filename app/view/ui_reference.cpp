@@ -11,16 +11,64 @@ namespace {
 
 using State = LiveReference::State;
 
-void row(const char* name, const char* tip, const char* fmt, double v) {
-    ImGui::TableNextRow();
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(name);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
-    ImGui::TableNextColumn();
-    if (std::isfinite(v))
-        ImGui::Text(fmt, v);
-    else
-        ImGui::TextDisabled("-"); // e.g. no edge pixels in view: no value, not 0
+// The rows of the error table: the name (a short one while B's column is beside A's, in the
+// strip's narrow column), what it means, its format and field.
+struct MetricRow {
+    const char *name, *shortName, *tip, *fmt;
+    double ErrorMetrics::*field;
+    const char* key; // the cells' rectangles: reference#KEY_a, reference#KEY_b
+};
+const MetricRow kRows[] = {
+    {"RMSE", "RMSE", "root mean square of ao.denoised - reference over geometry pixels (linear AO)", "%.4f",
+     &ErrorMetrics::rmse, "rmse"},
+    {"bias", "bias", "mean of ao.denoised - reference: + too bright (under-occluded), - too dark", "%+.4f",
+     &ErrorMetrics::bias, "bias"},
+    {"PSNR dB", "PSNR dB", "of the sRGB-encoded AO over geometry pixels (peak 1)", "%.2f",
+     &ErrorMetrics::psnrGeometrySrgb, "psnr"},
+    {"SSIM", "SSIM", "structural similarity of the sRGB-encoded AO, whole frame (Wang et al. 2004)", "%.4f",
+     &ErrorMetrics::ssim, "ssim"},
+    {"RMSE edge", "edge", "RMSE within 3 px of a depth discontinuity", "%.4f", &ErrorMetrics::rmseEdge, "rmse_edge"},
+    {"RMSE interior", "interior", "RMSE away from depth discontinuities", "%.4f", &ErrorMetrics::rmseInterior,
+     "rmse_interior"},
+    {"ref. noise", "noise", "RMS standard error of the reference itself: errors below it are noise", "%.4f",
+     &ErrorMetrics::referenceNoise, "noise"},
+};
+
+// The error of A's ao.denoised against the reference, and of B's beside it (`b`: the split view,
+// when B has an AO of its own).
+void metricsTable(const ErrorMetrics& a, const ErrorMetrics* b, ViewState& view) {
+    if (!ImGui::BeginTable("reference", b ? 3 : 2, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) return;
+    // Explicit weights: the columns are sane from the first frame, before ImGui measured them.
+    const float number = ImGui::CalcTextSize("+0.0000").x;
+    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch, ImGui::CalcTextSize(b ? "interior" : "RMSE interior").x);
+    ImGui::TableSetupColumn("A", ImGuiTableColumnFlags_WidthStretch, number);
+    if (b) {
+        ImGui::TableSetupColumn("B", ImGuiTableColumnFlags_WidthStretch, number);
+        ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+        const char* tips[3] = {"", "A: the current settings", "B: the split view's other side (b.ao.denoised), same reference"};
+        for (int c = 0; c < 3; ++c) {
+            ImGui::TableSetColumnIndex(c);
+            ImGui::TableHeader(ImGui::TableGetColumnName(c));
+            if (c > 0 && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tips[c]);
+        }
+    }
+    const ErrorMetrics* m[2] = {&a, b};
+    for (const MetricRow& r : kRows) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(b ? r.shortName : r.name);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.tip);
+        for (int i = 0; i < (b ? 2 : 1); ++i) {
+            ImGui::TableNextColumn();
+            const double v = m[i]->*r.field;
+            if (std::isfinite(v))
+                ImGui::Text(r.fmt, v);
+            else
+                ImGui::TextDisabled("-"); // e.g. no edge pixels in view: no value, not 0
+            rememberRect(view, std::string("reference#") + r.key + (i ? "_b" : "_a"));
+        }
+    }
+    ImGui::EndTable();
 }
 
 void progressLine(const LiveReference::Status& s) {
@@ -54,7 +102,7 @@ void progressLine(const LiveReference::Status& s) {
 }
 
 // The error split (live_reference.h): what settings can still fix against what the depth buffer
-// does not hold. The two need not add up: RMSEs of two differences, not a sum of squares.
+// does not hold. The two RMSEs need not add up; their shares of the squared error do.
 void splitSection(const LiveReference& ref) {
     const auto& sp = ref.split();
     if (!sp) {
@@ -66,14 +114,16 @@ void splitSection(const LiveReference& ref) {
         }
         return;
     }
-    // One line, so the strip's height holds it; the rest on hover.
-    ImGui::Text("split: technique %.4f  screen %.4f", sp->technique.rmse, sp->screen.rmse);
+    // Short, wrapped at spaces in a narrow strip; the rest on hover.
+    char line[96];
+    std::snprintf(line, sizeof line, "split: technique %.4f  screen %.4f", sp->technique.rmse, sp->screen.rmse);
+    wrappedText(line);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("RMSE of ao.denoised against the screen-space oracle (technique: what settings can\n"
                           "still fix) and of the oracle against the reference (screen: what the depth buffer\n"
                           "does not hold - back faces, hidden and off-screen occluders, true thickness).\n"
                           "The oracle: the same integral and R, visibility decided by the depth buffer alone\n"
-                          "(surfaces 1 R thick).\n\n"
+                          "(surfaces 1 R thick, cut-out MASK surfaces sheets).\n\n"
                           "            technique   screen\n"
                           "RMSE        %.4f      %.4f\n"
                           "bias        %+.4f     %+.4f\n"
@@ -82,6 +132,19 @@ void splitSection(const LiveReference& ref) {
                           sp->technique.rmse, sp->screen.rmse, sp->technique.bias, sp->screen.bias,
                           sp->technique.rmseEdge, sp->screen.rmseEdge, sp->technique.rmseInterior,
                           sp->screen.rmseInterior);
+    const ErrorShares& sh = sp->shares;
+    if (std::isfinite(sh.technique))
+        ImGui::Text("shares: technique %.2f  screen %.2f  interaction %+.2f", sh.technique, sh.screen,
+                    sh.interaction);
+    else
+        ImGui::TextDisabled("shares: - (no error to share)");
+    if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 36.0f);
+        ImGui::TextUnformatted(kSharesHowToRead);
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
 }
 
 } // namespace
@@ -126,25 +189,15 @@ void drawReferenceSection(FrameDriver& frames, ViewState& view) {
     rememberRect(view, "reference#progress");
     const auto& m = frames.reference().metrics();
     if (!m || s.state == State::Waiting) return;
-    if (ImGui::BeginTable("reference", 2, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
-        row("RMSE", "root mean square of ao.denoised - reference over geometry pixels (linear AO)", "%.4f",
-            m->rmse);
-        row("bias", "mean of ao.denoised - reference: + too bright (under-occluded), - too dark", "%+.4f",
-            m->bias);
-        row("PSNR", "of the sRGB-encoded AO over geometry pixels (peak 1), dB", "%.2f dB",
-            m->psnrGeometrySrgb);
-        row("SSIM", "structural similarity of the sRGB-encoded AO, whole frame (Wang et al. 2004)", "%.4f",
-            m->ssim);
-        row("RMSE edge", "RMSE within 3 px of a depth discontinuity", "%.4f", m->rmseEdge);
-        row("RMSE interior", "RMSE away from depth discontinuities", "%.4f", m->rmseInterior);
-        row("ref. noise", "RMS standard error of the reference itself: errors below it are noise", "%.4f",
-            m->referenceNoise);
-        ImGui::EndTable();
-    }
+    // B's numbers beside A's when the split view's B has its own AO (not A's, shared).
+    const auto& mb = frames.reference().metricsB();
+    metricsTable(*m, view.mode == ViewMode::Split && mb ? &*mb : nullptr, view);
     rememberRect(view, "reference#metrics");
-    ImGui::TextDisabled("R %.4g units, %.1f s, %.1f Mrays/s", s.radius, s.seconds, s.mraysPerSecond);
+    char about[96];
+    std::snprintf(about, sizeof about, "R %.4g units, %.1f s, %.1f Mrays/s", s.radius, s.seconds, s.mraysPerSecond);
+    wrappedText(about, true);
     splitSection(frames.reference());
-    rememberRect(view, "reference#split");
+    rememberRect(view, "reference#split"); // the shares' line, the last of the section
 }
 
 } // namespace ssao

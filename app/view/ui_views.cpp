@@ -3,6 +3,7 @@
 // or their signed difference. Dragging orbits (left) or pans (right/middle); the wheel zooms;
 // WASD/QE fly in fly mode.
 #include "view/app_core.h"
+#include "view/ui_layout.h"
 
 #include <epoxy/gl.h>
 
@@ -22,20 +23,6 @@ void fit(ImVec2 avail, float aspect, ImVec2& outPos, ImVec2& outSize) {
     if (s.y > avail.y) s = ImVec2(avail.y * aspect, avail.y);
     outPos = ImVec2((avail.x - s.x) * 0.5f, (avail.y - s.y) * 0.5f);
     outSize = s;
-}
-
-// The number of grid columns that shows `n` views of this aspect largest (fewer on a tie): the
-// grid has 8 buffers, 10 with the reference's, and the window may have any shape.
-int gridColumns(int n, ImVec2 avail, float aspect) {
-    int best = 1;
-    float bestWidth = -1.0f;
-    for (int cols = 1; cols <= std::max(n, 1); ++cols) {
-        const int rows = (n + cols - 1) / cols;
-        ImVec2 off, sz;
-        fit(ImVec2(avail.x / float(cols) - 4, avail.y / float(std::max(rows, 1)) - 4), aspect, off, sz);
-        if (sz.x > bestWidth + 0.5f) best = cols, bestWidth = sz.x;
-    }
-    return best;
 }
 
 // Camera interaction and hover over an image rectangle; returns true on a click (no drag).
@@ -97,15 +84,39 @@ bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
     return click;
 }
 
-// A label in the image's top-left corner, clipped to the image (long ranges never spill over).
-// A label over the top left of an image, wrapped onto more lines when wider than the image (a
-// clipped "x -4.96..4.96 y -4.95." once hid the ranges a user came for).
-void label(ImDrawList* dl, ImVec2 pos, const std::string& text, float maxWidth = 1e9f) {
-    const float wrap = std::max(maxWidth - 8.0f, 40.0f);
-    const ImVec2 ts = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap);
+// A one-line label over the top left of an enlarged image (as wide as the view: the ranges fit).
+void label(ImDrawList* dl, ImVec2 pos, const std::string& text) {
+    const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
     dl->AddRectFilled(pos, ImVec2(pos.x + ts.x + 8, pos.y + ts.y + 4), IM_COL32(0, 0, 0, 170));
-    dl->AddText(nullptr, 0.0f, ImVec2(pos.x + 4, pos.y + 2), IM_COL32(255, 255, 255, 255), text.c_str(), nullptr,
-                wrap);
+    dl->AddText(ImVec2(pos.x + 4, pos.y + 2), IM_COL32(255, 255, 255, 255), text.c_str());
+}
+
+// A grid cell's label on the two lines above its image: the buffer's name, and its range cut at a
+// group or word to the image's width (never inside a number: "x -6.37..7.1" stays whole or goes,
+// a triangle says something was left off); the whole text on hover. Returns its rectangle.
+ImVec4 labelLines(ImDrawList* dl, ImVec2 pos, const std::string& name, const std::string& range, float width) {
+    const MeasureText measure = [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; };
+    const float room = std::max(width - 8.0f - 10.0f, 0.0f); // padding and the triangle
+    bool cutName = false, cutRange = false;
+    const std::string lines[2] = {fitLine(name, room, measure, &cutName, ""),
+                                  fitLine(range, room, measure, &cutRange, "")};
+    const bool cut[2] = {cutName, cutRange};
+    const float lh = ImGui::GetTextLineHeight();
+    float w = 0;
+    for (int i = 0; i < 2; ++i)
+        w = std::max(w, measure(lines[i]) + (cut[i] ? 10.0f : 0.0f));
+    const ImVec2 q(pos.x + std::min(w + 8.0f, width), pos.y + (range.empty() ? 1.0f : 2.0f) * lh + 4.0f);
+    dl->AddRectFilled(pos, q, IM_COL32(0, 0, 0, 170));
+    for (int i = 0; i < 2; ++i) {
+        const ImVec2 t(pos.x + 4, pos.y + 2 + float(i) * lh);
+        dl->AddText(t, i == 0 ? IM_COL32(255, 255, 255, 255) : IM_COL32(210, 210, 210, 255), lines[i].c_str());
+        if (!cut[i]) continue;
+        const float x = t.x + measure(lines[i]) + 3.0f, y = t.y + lh * 0.5f;
+        dl->AddTriangleFilled(ImVec2(x, y - 4), ImVec2(x, y + 4), ImVec2(x + 5, y), IM_COL32(255, 200, 60, 255));
+    }
+    if ((cutName || cutRange) && ImGui::IsMouseHoveringRect(pos, q))
+        ImGui::SetTooltip("%s\n%s", name.c_str(), range.c_str());
+    return ImVec4(pos.x, pos.y, q.x, q.y);
 }
 
 // The reference's buffers say how far the trace is (or why it waits) on their label.
@@ -253,6 +264,42 @@ void image(ImDrawList* dl, const BufferViews::View* v, ImVec2 p, ImVec2 q, ImVec
     dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
 }
 
+// Every buffer, each under its label, laid out to fill `avail` (ui_layout.h); a click enlarges one.
+void drawGrid(AppCore& app, ImVec2 origin, ImVec2 avail, float aspect) {
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    BufferViews& views = app.frames().views();
+    const auto buffers = app.renderer().buffers();
+    // Each image under two lines of its own for its name and range: the label never covers it.
+    const float labelHeight = 2.0f * ImGui::GetTextLineHeight() + 4.0f;
+    const GridLayout grid = gridLayout(int(buffers.size()), avail.x, avail.y, aspect, labelHeight, 4.0f);
+    app.view().widgetRects["view#grid"] = ImVec4(origin.x, origin.y, origin.x + avail.x, origin.y + avail.y);
+    float widest = 1.0f;
+    for (size_t i = 0; i < buffers.size() && i < grid.slots.size(); ++i) {
+        const std::string& name = buffers[i]->desc.name;
+        const GridSlot& g = grid.slots[i];
+        const ImVec2 p(origin.x + g.x, origin.y + g.y), q(p.x + g.w, p.y + g.h);
+        ImGui::PushID(int(i));
+        const bool clicked = interact(app, "cell", p, ImVec2(g.w, g.h));
+        ImGui::PopID();
+        const BufferViews::View* v = views.find(name);
+        image(dl, v, p, q);
+        cover(dl, p, q, referenceEmptyReason(app.frames(), name));
+        // The view's label is "name  range": the range goes on the second line.
+        std::string range = (v ? v->label.substr(std::min(name.size(), v->label.size())) : "") + tag(app, name);
+        range.erase(0, std::min(range.find_first_not_of(' '), range.size()));
+        app.view().widgetRects["label#" + name] = labelLines(dl, ImVec2(p.x, origin.y + g.labelY), name, range, g.w);
+        app.view().widgetRects["view#" + name] = ImVec4(p.x, p.y, q.x, q.y);
+        widest = std::max(widest, g.w);
+        if (clicked) {
+            app.view().enlarged = name;
+            app.view().mode = ViewMode::Single;
+            app.frames().keepAwake();
+        }
+    }
+    // Painted at the largest cell's size next frame (rows of fewer images have larger ones).
+    app.view().gridCellPx = std::max(1, int(std::ceil(widest * ImGui::GetIO().DisplayFramebufferScale.x)));
+}
+
 } // namespace
 
 void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
@@ -274,31 +321,7 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
     BufferViews& views = app.frames().views();
 
     if (app.view().mode == ViewMode::Grid) {
-        const auto buffers = r.buffers();
-        const int cols = gridColumns(int(buffers.size()), avail, aspect);
-        const int rows = int((buffers.size() + size_t(cols) - 1) / size_t(cols));
-        const ImVec2 cell(avail.x / float(cols), avail.y / float(std::max(rows, 1)));
-        for (size_t i = 0; i < buffers.size(); ++i) {
-            const std::string& name = buffers[i]->desc.name;
-            ImVec2 off, sz;
-            fit(ImVec2(cell.x - 4, cell.y - 4), aspect, off, sz);
-            const ImVec2 p(origin.x + float(i % cols) * cell.x + off.x,
-                           origin.y + float(i / cols) * cell.y + off.y);
-            ImGui::PushID(int(i));
-            const bool clicked = interact(app, "cell", p, sz);
-            ImGui::PopID();
-            const BufferViews::View* v = views.find(name);
-            image(dl, v, p, ImVec2(p.x + sz.x, p.y + sz.y));
-            cover(dl, p, ImVec2(p.x + sz.x, p.y + sz.y), referenceEmptyReason(app.frames(), name));
-            label(dl, p, (v ? v->label : name) + tag(app, name), sz.x);
-            app.view().widgetRects["view#" + name] = ImVec4(p.x, p.y, p.x + sz.x, p.y + sz.y);
-            app.view().gridCellPx = std::max(1, int(std::ceil(sz.x * fbScale.x))); // painted at this size next frame
-            if (clicked) {
-                app.view().enlarged = name;
-                app.view().mode = ViewMode::Single;
-                app.frames().keepAwake();
-            }
-        }
+        drawGrid(app, origin, avail, aspect);
     } else {
         ImVec2 off, sz;
         fit(avail, aspect, off, sz);

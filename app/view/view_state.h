@@ -40,6 +40,7 @@ struct ViewState {
     // The cursor is on chain B now: the split view shows B there (not the grid, not A - B).
     bool cursorOnB() const { return hoverChain && mode == ViewMode::Split && !splitDifference; }
     std::string newPresetName;
+    int panelTab = 0; // the control panel's tab: Parameters, Scene & camera, Presets, Front
     // Rectangles of widgets drawn last frame, by parameter key or action name (for tests).
     std::map<std::string, ImVec4> widgetRects;
 };

@@ -87,6 +87,23 @@ SplitSummary splitOf(const std::vector<const ErrorMetrics*>& m) {
     s.rmseInterior = interiors ? std::sqrt(interior / interiors) : nan;
     return s;
 }
+// Over the rows of one configuration that were measured in motion.
+MotionSummary motionOf(const std::vector<const MotionSummary*>& m) {
+    MotionSummary s;
+    double mse = 0, inst = 0, ghost = 0;
+    int insts = 0, ghosts = 0;
+    for (const MotionSummary* v : m) {
+        mse += v->rmseMean * v->rmseMean;
+        s.rmseMax = std::isnan(s.rmseMax) ? v->rmseMax : std::max(s.rmseMax, v->rmseMax);
+        if (std::isfinite(v->instability)) inst += v->instability * v->instability, ++insts;
+        if (std::isfinite(v->ghosting)) ghost += v->ghosting, ++ghosts;
+    }
+    if (m.empty()) return s;
+    s.rmseMean = std::sqrt(mse / double(m.size()));
+    if (insts) s.instability = std::sqrt(inst / insts);
+    if (ghosts) s.ghosting = ghost / ghosts;
+    return s;
+}
 } // namespace
 
 std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t configCount, size_t baseline) {
@@ -96,6 +113,7 @@ std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t conf
         ConfigSummary& s = out[c];
         s.config = c;
         std::vector<const ErrorMetrics*> technique, screen;
+        std::vector<const MotionSummary*> motion;
         double mse = 0, mseGeo = 0, mseFull = 0, edge = 0, interior = 0, mseFirst = 0, logRatio = 0;
         int edgeViews = 0, interiorViews = 0, ratioViews = 0;
         s.gpuMsMin = std::numeric_limits<double>::infinity();
@@ -122,9 +140,11 @@ std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t conf
             s.nonFinite += v.error.nonFinite;
             if (std::isfinite(v.timeRatio) && v.timeRatio > 0) logRatio += std::log(v.timeRatio), ++ratioViews;
             if (v.hasSplit) technique.push_back(&v.vsOracle), screen.push_back(&v.screen);
+            if (v.hasMotion) motion.push_back(&v.motion);
         }
         s.technique = splitOf(technique);
         s.screen = splitOf(screen);
+        s.motion = motionOf(motion);
         if (s.views == 0) {
             const double nan = std::numeric_limits<double>::quiet_NaN();
             s.gpuMs = s.gpuMsMin = s.gpuMsMax = s.rmse = s.mae = s.bias = nan;

@@ -28,6 +28,15 @@ struct PassTimes {
 // The part of a frame-graph pass by its name, an index into PassTimes (-1: not part of the frame).
 int passCategory(const std::string& passName);
 
+// Error in motion (metrics/motion_metrics.h; bench --motion), NaN where not measured. Per view: the
+// mean and max per-frame RMSE over the path, the instability, the ghosting excess. Per
+// configuration: the RMS over views of the mean RMSE and of the instability, the max of the
+// maxima, the mean of the ghosting over the views that had disoccluded pixels.
+struct MotionSummary {
+    double rmseMean = std::numeric_limits<double>::quiet_NaN(), rmseMax = std::numeric_limits<double>::quiet_NaN();
+    double instability = std::numeric_limits<double>::quiet_NaN(), ghosting = std::numeric_limits<double>::quiet_NaN();
+};
+
 struct ViewResult {
     std::string scene, viewpoint;
     PassTimes passMs; // medians over the timed frames
@@ -46,6 +55,8 @@ struct ViewResult {
     // not hold, the same for every configuration of a view. Without an oracle, hasSplit is false.
     bool hasSplit = false;
     ErrorMetrics vsOracle, screen;
+    bool hasMotion = false; // bench --motion measured this row along its view's camera path
+    MotionSummary motion;
 };
 
 // RMS over views of a split's RMSE, and its edge/interior parts (NaN when no view has a split).
@@ -68,6 +79,7 @@ struct ConfigSummary {
     double timeRatio = 0, rmseRatio = 0;
     bool pareto = false; // on the front of (timeRatio, rmse)
     SplitSummary technique, screen; // the AO against the oracle; the oracle against the truth
+    MotionSummary motion;           // over the views measured in motion (NaN: none)
 };
 
 double median(std::vector<double> v); // NaN when empty

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace ssao {
 
@@ -30,6 +31,20 @@ Evaluation evaluate(const Image& ao, const ReferenceImage& ref, const MetricsOpt
     if (ref.ambiguous.size() == ref.ao.size()) in.exclude = ref.ambiguous.data();
     e.metrics = computeErrorMetrics(in, opt);
     return e;
+}
+
+ErrorShares splitShares(const Evaluation& technique, const ReferenceImage& oracle, const ReferenceImage& truth) {
+    SplitImages in;
+    in.width = truth.width, in.height = truth.height;
+    if (technique.test.width != truth.width || technique.test.height != truth.height || oracle.width != truth.width ||
+        oracle.height != truth.height)
+        throw std::invalid_argument("splitShares: the AO, the oracle and the truth are of different sizes");
+    in.test = technique.test.data.data();
+    in.oracle = oracle.ao.data();
+    in.reference = truth.ao.data();
+    in.geometry = truth.geometry.data();
+    if (truth.ambiguous.size() == truth.ao.size()) in.exclude = truth.ambiguous.data();
+    return errorShares(in);
 }
 
 Image errorHeatmap(const Image& error, const std::vector<float>& geometry, float range) {

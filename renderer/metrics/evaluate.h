@@ -2,6 +2,7 @@
 // error image and its heat map, and the JSON block metrics.json, the bench and the app report.
 #pragma once
 #include "metrics/error_metrics.h"
+#include "metrics/error_split.h"
 #include "output/image.h"
 #include "reference/reference_ao.h"
 
@@ -17,6 +18,10 @@ struct Evaluation {
 
 // `ao`: channel 0 of the AO under test, any resolution covering the same view.
 Evaluation evaluate(const Image& ao, const ReferenceImage& ref, const MetricsOptions& opt = {});
+
+// The additive split (error_split.h) of one view: `technique` is the AO judged against `oracle`
+// (its test image at the oracle's size), `truth` the reference of the same view and size.
+ErrorShares splitShares(const Evaluation& technique, const ReferenceImage& oracle, const ReferenceImage& truth);
 
 // Diverging heat map of a signed error: blue where the AO is too dark (over-occlusion), red where
 // it is too bright, white at 0; saturates at ±range. Sky (mask 0) is mid grey.

@@ -22,6 +22,10 @@ class EmbreeScene {
     RTCScene handle() const { return scene_; }
     const Scene& scene() const { return *source_; }
     double buildMs() const { return buildMs_; }
+    // Whether triangle `primID` belongs to a MASK draw: a cut-out sheet (the oracle, screen_layers.h).
+    bool sheet(unsigned primID) const {
+        return mask_ && primID < mask_->drawOf.size() && mask_->drawOf[primID] >= 0;
+    }
 
     // What the MASK filter reads (alpha_mask.h): per triangle its draw, -1 when not MASK.
     struct MaskData {

@@ -207,10 +207,14 @@ void ReferenceTracer::traceGuardBand(const Camera& camera) {
             glm::vec3 ng = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
             if (glm::dot(ng, glm::vec3(d)) > 0.0f) ng = -ng;
             const glm::vec3 p = h.point();
-            screen_->set(0, x, y, p, ng);
+            screen_->set(0, x, y, p, ng, kindOf(rh.hit.primID));
             if (settings_.layers > 1) storeSecondLayer(x, y, p, glm::vec3(d), h.far);
         }
     }, {});
+}
+
+SurfaceKind ReferenceTracer::kindOf(unsigned primID) const {
+    return scene_.sheet(primID) ? SurfaceKind::Sheet : SurfaceKind::Solid;
 }
 
 void ReferenceTracer::storeHit(size_t i, const RTCRayHit& rh, const glm::vec3& d) {
@@ -235,7 +239,7 @@ void ReferenceTracer::storeHit(size_t i, const RTCRayHit& rh, const glm::vec3& d
     }
     const glm::vec3 o = offsetRayOrigin(backOffTowardEye(p, -d, scale), ng);
     hits_[i] = Hit{o.x, o.y, o.z, n.x, n.y, n.z};
-    if (screen_) screen_->set(0, i, p, ng); // the oracle's first layer: this surface's tangent plane
+    if (screen_) screen_->set(0, i, p, ng, kindOf(rh.hit.primID)); // the oracle's first layer: its tangent plane
     if (coincidentFace(scene_.handle(), o, ng, n, std::max(scale, rh.ray.tfar))) ambiguous_[i] = 1.0f;
 }
 
@@ -243,6 +247,7 @@ void ReferenceTracer::storeHit(size_t i, const RTCRayHit& rh, const glm::vec3& d
 // thickness, as a back-face depth buffer holds it), else the nearest surface at least
 // layerSeparation x R behind the first (a deep G-buffer's second layer, Mara et al. 2016).
 void ReferenceTracer::storeSecondLayer(int x, int y, const glm::vec3& p, const glm::vec3& d, float far) {
+    unsigned prim = 0;
     auto nearest = [&](float offset, glm::vec3& hit, glm::vec3& ng) {
         alignas(16) RTCRayHit rh{};
         const glm::vec3 o = p + d * offset;
@@ -258,19 +263,20 @@ void ReferenceTracer::storeSecondLayer(int x, int y, const glm::vec3& p, const g
         if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
         ng = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
         hit = o + d * rh.ray.tfar;
+        prim = rh.hit.primID;
         return true;
     };
     glm::vec3 hit, ng;
     // Just behind the first surface (256 ULPs of its coordinates, as the AO rays' own back-off).
     const float eps = 256.0f * std::numeric_limits<float>::epsilon() *
                       std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.0f});
-    if (nearest(eps, hit, ng) && glm::dot(ng, d) > 0.0f) {
-        screen_->set(1, x, y, hit, -ng, true); // stored facing the viewer, flagged a back face
+    if (nearest(eps, hit, ng) && glm::dot(ng, d) > 0.0f && !scene_.sheet(prim)) { // a sheet bounds no solid
+        screen_->set(1, x, y, hit, -ng, SurfaceKind::BackFace); // stored facing the viewer
         return;
     }
     if (!nearest(settings_.layerSeparation * settings_.radius, hit, ng)) return;
     if (glm::dot(ng, d) > 0.0f) ng = -ng; // as a G-buffer would store it: facing the viewer
-    screen_->set(1, x, y, hit, ng);
+    screen_->set(1, x, y, hit, ng, kindOf(prim));
 }
 
 // A stream of AO rays handed to Embree kBatch at a time; each result lands in its pixel's tallies.

@@ -98,6 +98,8 @@ class ReferenceTracer {
     void storeSecondLayer(int x, int y, const glm::vec3& p, const glm::vec3& d, float far);
     // The oracle's guard band: the first (and second) layer of the pixels beyond the frame's edges.
     void traceGuardBand(const Camera& camera);
+    // How the oracle's G-buffer holds a surface of triangle primID: MASK triangles are sheets.
+    SurfaceKind kindOf(unsigned primID) const;
 
     const EmbreeScene& scene_;
     std::unique_ptr<ScreenLayers> screen_; // the oracle's G-buffer (visibility = Screen)

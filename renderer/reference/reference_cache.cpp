@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -72,7 +73,8 @@ std::string ReferenceKey::text() const {
     if (settings.visibility == ReferenceVisibility::Screen)
         s << " visibility=screen layers=" << settings.layers << " thickness=" << bits(settings.thickness)
           << " separation=" << bits(settings.layerSeparation) << " guard=" << settings.guardBand
-          << " second=backface-v5"; // the second layer: the back face when it is next (screen_layers.h)
+          << " second=backface-v5" // the second layer: the back face when it is next (screen_layers.h)
+          << (sheets ? " sheets=mask" : "");
     return s.str();
 }
 
@@ -175,7 +177,9 @@ bool storeCachedReference(const ReferenceKey& key, const ReferenceImage& img, co
 }
 
 ReferenceProvider::ReferenceProvider(const Scene& scene, std::string cacheDir)
-    : scene_(scene), hash_(sceneContentHash(scene)), dir_(std::move(cacheDir)) {}
+    : scene_(scene), hash_(sceneContentHash(scene)),
+      sheets_(std::any_of(scene.draws.begin(), scene.draws.end(), [](const Draw& d) { return d.mask; })),
+      dir_(std::move(cacheDir)) {}
 
 ReferenceProvider::~ReferenceProvider() = default;
 
@@ -187,7 +191,7 @@ const EmbreeScene& ReferenceProvider::embree() {
 ReferenceImage ReferenceProvider::get(const Camera& camera, int width, int height,
                                       const ReferenceSettings& settings, const ReferenceTracer::Progress& progress,
                                       bool* cached) {
-    const ReferenceKey key{hash_, camera, width, height, settings};
+    const ReferenceKey key{hash_, camera, width, height, settings, sheets_};
     if (!dir_.empty())
         if (auto hit = loadCachedReference(key, dir_)) {
             if (cached) *cached = true;

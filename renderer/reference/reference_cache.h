@@ -24,6 +24,9 @@ struct ReferenceKey {
     Camera camera;
     int width = 0, height = 0;
     ReferenceSettings settings;
+    // The scene has MASK triangles, which the oracle holds as sheets (screen_layers.h): its entries
+    // traced before that miss; other scenes' keys stay as they were.
+    bool sheets = false;
     std::string text() const; // human-readable, exact (floats as hex bits)
     std::string fileStem() const; // "ref-" + 16 hex digits of the text's hash
 };
@@ -50,6 +53,7 @@ class ReferenceProvider {
   private:
     const Scene& scene_;
     uint64_t hash_;
+    bool sheets_; // any MASK draw (ReferenceKey::sheets)
     std::string dir_;
     std::unique_ptr<EmbreeScene> embree_;
 };

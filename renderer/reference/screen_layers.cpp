@@ -41,13 +41,14 @@ void ScreenLayers::checkBudget(int width, int height, int layers, int guard) {
     throw Error(text);
 }
 
-void ScreenLayers::set(int layer, size_t pixel, const glm::vec3& point, const glm::vec3& normal, bool backFace) {
-    set(layer, int(pixel % size_t(width_)), int(pixel / size_t(width_)), point, normal, backFace);
+void ScreenLayers::set(int layer, size_t pixel, const glm::vec3& point, const glm::vec3& normal, SurfaceKind kind) {
+    set(layer, int(pixel % size_t(width_)), int(pixel / size_t(width_)), point, normal, kind);
 }
 
-void ScreenLayers::set(int layer, int x, int y, const glm::vec3& point, const glm::vec3& normal, bool backFace) {
+void ScreenLayers::set(int layer, int x, int y, const glm::vec3& point, const glm::vec3& normal, SurfaceKind kind) {
     const size_t plane = size_t(width_ + 2 * guard_) * size_t(height_ + 2 * guard_);
-    surfaces_[size_t(layer) * plane + index(x, y)] = {point, normal, true, backFace && layer == 1};
+    surfaces_[size_t(layer) * plane + index(x, y)] = {point, normal, true, kind == SurfaceKind::BackFace && layer == 1,
+                                                      kind == SurfaceKind::Sheet};
 }
 
 // The rasteriser's mapping (reference_ao.cpp PrimaryRays): NDC x = 2 (x + 0.5) / W - 1, y up;
@@ -81,6 +82,12 @@ float ScreenLayers::gapBehind(const Surface& s, const glm::vec3& q) const {
     return glm::dot(q - eye_, r) - glm::dot(s.p - eye_, r); // edge-on: the two points' distances along r
 }
 
+bool ScreenLayers::blocks(const Surface& s, const glm::vec3& q, const glm::vec3& before) const {
+    const float g = gapBehind(s, q);
+    if (s.sheet) return (g > 0.0f) != (gapBehind(s, before) > 0.0f); // the step crossed its plane here
+    return g > 0.0f && g <= thickness_;
+}
+
 bool ScreenLayers::occluded(const glm::vec3& o, const glm::vec3& d, float R, size_t ownPixel) const {
     // The part in front of the near plane (behind it the screen holds nothing).
     float tEnd = R;
@@ -107,6 +114,12 @@ bool ScreenLayers::occluded(const glm::vec3& o, const glm::vec3& d, float R, siz
         if (!project(q, x, y, fx, fy)) continue; // not on the screen: unknown, occludes nothing
         const size_t px = index(x, y);
         if (px == own) continue;
+        if (surfaces_[px].sheet) {
+            if (blocks(surfaces_[px], q, before)) return true;
+            // A back face behind a sheet: its solid's front is hidden, and it occludes nothing behind itself.
+            if (layers_ > 1 && !surfaces_[plane + px].back && blocks(surfaces_[plane + px], q, before)) return true;
+            continue;
+        }
         const float g0 = gapBehind(surfaces_[px], q);
         if (layers_ > 1 && surfaces_[plane + px].back) {
             // The first surface's solid ends at its back face: between the two, whatever the
@@ -121,10 +134,7 @@ bool ScreenLayers::occluded(const glm::vec3& o, const glm::vec3& d, float R, siz
             continue;
         }
         if (g0 > 0.0f && g0 <= thickness_) return true;
-        if (layers_ > 1) {
-            const float g1 = gapBehind(surfaces_[plane + px], q);
-            if (g1 > 0.0f && g1 <= thickness_) return true;
-        }
+        if (layers_ > 1 && blocks(surfaces_[plane + px], q, before)) return true;
     }
     return false;
 }

@@ -7,7 +7,9 @@
 // A second layer that is a back face (the far side of the first layer's solid, as a back-face
 // depth buffer holds it) bounds that solid instead: the first surface is solid exactly down to it,
 // and the back face occludes nothing behind itself. A second layer that faces the camera is
-// another surface, solid for `thickness` behind itself like the first.
+// another surface, solid for `thickness` behind itself like the first. A cut-out surface (a MASK
+// material: foliage, fences, labels on quads) is a sheet with no thickness: it blocks a ray only
+// where the ray crosses it, from either side (a G-buffer can mark such pixels by their material).
 // The ground truth (reference_ao.h) asks the scene instead; the difference between the two is
 // what no screen-space technique with these buffers can see.
 #pragma once
@@ -23,6 +25,10 @@ namespace ssao {
 // What the oracle's G-buffer may take: 1 GiB (a 4K frame with a 256-pixel band and two layers
 // takes 0.6 GiB; a 64 x 36 frame with a 4096-pixel band and two layers would take 3.5 GiB).
 constexpr uint64_t kScreenLayersBudget = uint64_t(1) << 30;
+
+// What a layer's surface is: the front of a solid (solid for the thickness behind it), the far side
+// of the first layer's solid (layer 1 only), or a sheet (no thickness).
+enum class SurfaceKind { Solid, BackFace, Sheet };
 
 class ScreenLayers {
   public:
@@ -40,9 +46,11 @@ class ScreenLayers {
 
     // The surface of `layer` at `pixel` of the frame (row-major, top row first), or at (x, y) with
     // x in [-guard, width + guard) and y likewise.
-    // `backFace`: the surface faces away from the camera (layer 1 only: the first layer's far side).
-    void set(int layer, size_t pixel, const glm::vec3& point, const glm::vec3& normal, bool backFace = false);
-    void set(int layer, int x, int y, const glm::vec3& point, const glm::vec3& normal, bool backFace = false);
+    // BackFace: the surface faces away from the camera (layer 1 only: the first layer's far side).
+    void set(int layer, size_t pixel, const glm::vec3& point, const glm::vec3& normal,
+             SurfaceKind kind = SurfaceKind::Solid);
+    void set(int layer, int x, int y, const glm::vec3& point, const glm::vec3& normal,
+             SurfaceKind kind = SurfaceKind::Solid);
     int guard() const { return guard_; }
 
     // Marches o + t d for t in (0, R] one pixel at a time.
@@ -58,7 +66,10 @@ class ScreenLayers {
         glm::vec3 p{0.0f}, n{0.0f};
         bool valid = false;
         bool back = false;
+        bool sheet = false;
     };
+    // Whether the step from `before` to `q` is blocked by s, a surface that is not a back face.
+    bool blocks(const Surface& s, const glm::vec3& q, const glm::vec3& before) const;
     // How far q lies behind the surface's tangent plane along the view ray through q (negative: in
     // front); NaN for no surface.
     float gapBehind(const Surface& s, const glm::vec3& q) const;

@@ -1,6 +1,7 @@
 #include "scene/gltf_guard.h"
 
 #include "util/error.h"
+#include "util/file_kind.h"
 #include "util/json_file.h"
 
 #include <cstdint>
@@ -171,9 +172,16 @@ GuardedGltf guardGltf(const std::string& path, const SceneBudget& budget) {
     if (g.binary) {
         chunks = glbChunks(data, bytes.size(), what);
         json = bytes.substr(chunks.jsonAt, chunks.jsonSize);
+    } else if (const std::string kind = binaryFileKind(bytes); !kind.empty()) {
+        // An image or a buffer named instead of its .gltf: said so, not "not valid JSON".
+        throw Error("scene " + path + " is " + kind + ", not a glTF scene (.gltf or .glb)" +
+                    (fs::path(path).extension() == ".bin" ? "; a .bin is a glTF's buffer: give the .gltf that names it"
+                                                           : ""));
     }
     nlohmann::json j = parseJsonText(json, what + ":");
     if (!j.is_object()) throw Error(what + ": the JSON is not an object");
+    if (!g.binary && !j.contains("asset")) // a preset or a sweep, say
+        throw Error("scene " + path + " is JSON without glTF's \"asset\": not a glTF scene (.gltf or .glb)");
     checkIndices(j, what);
     if (j.contains("images")) {
         g.images = j["images"];

@@ -2,6 +2,7 @@
 
 #include "settings/param_rows.h"
 #include "settings/preset.h"
+#include "util/closest_name.h"
 #include "util/error.h"
 
 #include <nlohmann/json.hpp>
@@ -262,6 +263,17 @@ std::string choiceList(const Param& p) {
     return out;
 }
 
+// Every key, for "did you mean" on a mistyped one.
+const std::vector<std::string>& allKeys() {
+    static const std::vector<std::string> keys = [] {
+        std::vector<std::string> k;
+        for (const Param& p : paramTable())
+            k.push_back(p.key);
+        return k;
+    }();
+    return keys;
+}
+
 // Shortest decimal text that reads back as the same float (presets stay human-readable).
 double shortFloat(double v) {
     char buf[32];
@@ -346,7 +358,7 @@ Settings defaultSettings() {
 
 void setParam(Settings& s, const std::string& key, const std::string& text) {
     const Param* p = findParam(key);
-    if (!p) throw Error("unknown parameter '" + key + "'");
+    if (!p) throw Error("unknown parameter '" + key + "'" + didYouMean(key, allKeys()));
     switch (p->type) {
     case T::Bool:
         if (text == "true" || text == "1" || text == "on") return p->set(s, 1);
@@ -420,7 +432,7 @@ void applyJson(Settings& s, const nlohmann::json& patch, const std::string& orig
         for (auto& [name, value] : members.items()) {
             const std::string key = group + "." + name;
             const Param* p = findParam(key);
-            if (!p) throw Error(origin + ": unknown key '" + key + "'");
+            if (!p) throw Error(origin + ": unknown key '" + key + "'" + didYouMean(key, allKeys()));
             try {
                 switch (p->type) {
                 case T::Bool:

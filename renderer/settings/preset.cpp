@@ -1,5 +1,6 @@
 #include "settings/preset.h"
 
+#include "settings/applicability.h"
 #include "settings/params.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -176,8 +177,12 @@ Preset readPresetFile(const std::string& path) {
     std::error_code ec;
     if (!fs::exists(path, ec)) throw Error("preset file not found: " + path);
     const nlohmann::json j = readJsonFile(path, "preset"); // regular files only, nesting bounded
+    if (j.is_object() && j.contains("asset") && j["asset"].is_object() && j["asset"].contains("version"))
+        throw Error("preset " + path + " is a glTF scene, not a preset");
     Preset p = presetFromJson(j, "preset " + path, fs::path(path).parent_path().string());
     if (p.name.empty()) p.name = fs::path(path).stem().string();
+    for (const std::string& w : inapplicablePresetKeys(p.settings, p.keys))
+        p.warnings.push_back("preset " + path + ": " + w);
     return p;
 }
 

@@ -15,6 +15,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace ssao {
 
@@ -33,6 +34,9 @@ struct Preset {
     // How the preset scored where it was made (tune: training and held-out geometry RMSE, scenes);
     // kept as written, shown, never applied.
     nlohmann::json scores;
+    // readPresetFile: one line per key the file sets that has no effect under its own settings,
+    // "preset PATH: KEY has no effect: ..." (settings/applicability.h); the CLI prints them.
+    std::vector<std::string> warnings;
 
     // True when the preset chooses the AO radius itself; otherwise the radius follows the scene.
     bool fixesRadius() const;

@@ -2,6 +2,7 @@
 
 #include "util/paths.h"
 
+#include "util/closest_name.h"
 #include "util/error.h"
 #include "util/user_dirs.h"
 
@@ -28,7 +29,11 @@ std::string PresetStore::resolve(const std::string& nameOrPath) const {
     if (const PresetEntry* e = find(nameOrPath)) return e->path;
     if (nameOrPath.find('/') != std::string::npos || fs::path(nameOrPath).extension() == ".json")
         throw Error("preset file not found: " + nameOrPath);
-    throw Error("no preset named '" + nameOrPath + "' (looked in " + builtinDir_ + " and " + userDir_ + ")");
+    std::vector<std::string> names;
+    for (const auto& e : entries_)
+        names.push_back(e.name);
+    throw Error("no preset named '" + nameOrPath + "'" + didYouMean(nameOrPath, names) + " (looked in " + builtinDir_ +
+                " and " + userDir_ + ")");
 }
 
 Preset PresetStore::open(const std::string& nameOrPath) const {

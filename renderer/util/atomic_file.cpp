@@ -48,7 +48,8 @@ void writeFileAtomically(const std::string& path, const std::string& bytes) {
         fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
         if (fd < 0 && errno != EEXIST) break;
     }
-    if (fd < 0) throw Error("cannot write " + path + ": cannot create " + tmp + " (" + std::strerror(errno) + ")");
+    // The staging name is ours, not the user's: the error names the destination only.
+    if (fd < 0) throw Error("cannot write " + path + ": cannot create a file in its folder (" + std::strerror(errno) + ")");
     auto fail = [&](const char* what, int err) {
         if (fd >= 0) ::close(fd);
         ::unlink(tmp.c_str());

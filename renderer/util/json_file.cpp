@@ -1,6 +1,7 @@
 #include "util/json_file.h"
 
 #include "util/error.h"
+#include "util/file_kind.h"
 
 #include <algorithm>
 
@@ -47,7 +48,11 @@ nlohmann::json parseJsonText(const std::string& text, const std::string& label) 
 }
 
 nlohmann::json readJsonFile(const std::string& path, const std::string& what) {
-    return parseJsonText(readRegularFile(path, what), what + " " + path);
+    const std::string text = readRegularFile(path, what);
+    // An image or other binary file named by mistake: said so, before a parser reads its bytes.
+    if (const std::string kind = binaryFileKind(text); !kind.empty())
+        throw Error(what + " " + path + " is " + kind + ", not a " + what + " (JSON text)");
+    return parseJsonText(text, what + " " + path);
 }
 
 std::string dumpJson(const nlohmann::json& j, int indent) {

@@ -21,7 +21,8 @@ size_t jsonNestingDepth(const char* text, size_t size);
 void checkJsonNesting(const std::string& text, const std::string& what);
 // checkJsonNesting + parse; a syntax error is "LABEL is not valid JSON (REASON)", never quoting the text.
 nlohmann::json parseJsonText(const std::string& text, const std::string& label);
-// readRegularFile + parseJsonText; a syntax error names the file.
+// readRegularFile + parseJsonText; a syntax error names the file, a binary file (an image, a GLB)
+// is named as what it is: "WHAT PATH is a PNG image, not a WHAT (JSON text)".
 nlohmann::json readJsonFile(const std::string& path, const std::string& what);
 // Text for JSON output whatever bytes a string holds (a file name that is not UTF-8): invalid
 // sequences become U+FFFD, so a dump never throws half way through a report.

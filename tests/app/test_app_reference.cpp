@@ -253,6 +253,10 @@ TEST_F(AppReference, AppearsAsBuffersAndRefinesToItsTarget) {
     EXPECT_GT(sp.technique.rmse, 0.0);
     EXPECT_LT(sp.screen.rmse, app().frames().reference().metrics()->rmse);
     EXPECT_EQ(sp.technique.nonFinite + sp.screen.nonFinite, 0);
+    // Their shares of the squared error add up (metrics/error_split.h), each the square of its RMSE.
+    EXPECT_NEAR(sp.shares.technique + sp.shares.screen + sp.shares.interaction, 1.0, 1e-9);
+    EXPECT_NEAR(sp.shares.mseTechnique, sp.technique.rmse * sp.technique.rmse, 1e-9);
+    EXPECT_NEAR(sp.shares.mseScreen, sp.screen.rmse * sp.screen.rmse, 1e-9);
     ui_->frame();
     EXPECT_TRUE(ui_->has("reference#split"));
 

@@ -1,12 +1,16 @@
 // The benchmark's pure parts: viewpoints orbit the scene's camera without changing what it looks
 // at or how far away it is; sweeps expand to the configurations they describe.
 #include "bench/sweep.h"
+#include "bench/tune_guard.h"
 #include "bench/viewpoints.h"
 #include "settings/params.h"
 #include "techniques/technique.h"
 #include "util/error.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
 
 using namespace ssao;
 
@@ -130,4 +134,50 @@ TEST(BenchSweep, BadSweepsAreRefusedNamingTheProblem) {
     fails(R"({"groups": [3]})", "group 1 must be an object");
     fails(R"({"groups": [{"vary": {"kernel.samples": [1,2,3,4,5,6,7,8,9,10], "kernel.bias": [0,0.1,0.2,0.3,0.4,0.5,0.6,0.7,0.8,0.9], "kernel.seed": [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19,20,21]}}]})",
           "more than");
+}
+
+// One configuration under two names (vbao's auto denoiser is none) is one configuration: measured
+// once, listed once under its first name, the other kept as its alias.
+TEST(BenchSweep, TwoNamesOfOneConfigurationAreOneConfigurationWithAnAlias) {
+    const Sweep s = parseSweep(nlohmann::json::parse(R"({"groups": [
+        {"name": "plain", "set": {"ao.technique": "vbao", "denoise.kind": "none"}},
+        {"name": "again", "set": {"ao.technique": "vbao", "denoise.kind": "auto", "vbao.slices": 4}}]})"),
+                               "test");
+    ASSERT_EQ(s.configs.size(), 1u + 1u + techniques().size() - 1u); // baseline, plain, the others' defaults
+    std::set<std::string> settings;
+    for (const auto& c : s.configs) {
+        EXPECT_NE(c.label, "vbao defaults");
+        settings.insert(toEffectiveJson(c.settings).dump());
+    }
+    EXPECT_EQ(settings.size(), s.configs.size());
+    const BenchConfig& plain = s.configs[1];
+    EXPECT_EQ(plain.label, "ao.technique=vbao denoise.kind=none");
+    EXPECT_EQ(plain.aliases, (std::vector<std::string>{"ao.technique=vbao denoise.kind=auto vbao.slices=4", "vbao defaults"}));
+    // The built-in sweep lists no configuration twice either.
+    const Sweep builtin = loadSweep("builtin");
+    std::set<std::string> labels;
+    for (const auto& c : builtin.configs)
+        EXPECT_TRUE(labels.insert(c.label).second) << c.label;
+}
+
+// tune's guard: the held-out error is every held-out view's (a scene's weight is its views); a fit
+// that leaves it where it was is kept, one that raises it is overfit, and a scene that got worse
+// is named either way.
+TEST(TuneGuard, TheHeldOutErrorOfEveryViewDecides) {
+    const FitVerdict same = judgeFit({{"a", 0.01, 0.01, 2}});
+    EXPECT_FALSE(same.overfit);
+    EXPECT_TRUE(same.worse.empty());
+    // b rises on 1 view, a falls on 3: better overall, b named.
+    const FitVerdict mixed = judgeFit({{"a (held-out views)", 0.04, 0.01, 3}, {"b", 0.01, 0.02, 1}});
+    EXPECT_FALSE(mixed.overfit);
+    EXPECT_EQ(mixed.worse, std::vector<std::string>{"b"});
+    EXPECT_DOUBLE_EQ(mixed.before, std::sqrt((0.04 * 3 + 0.01) / 4));
+    EXPECT_DOUBLE_EQ(mixed.after, std::sqrt((0.01 * 3 + 0.02) / 4));
+    // The same rise on 3 views outweighs the fall on 1.
+    const FitVerdict worse = judgeFit({{"a", 0.04, 0.01, 1}, {"b", 0.01, 0.03, 3}});
+    EXPECT_TRUE(worse.overfit);
+    const std::string line = refusalText(worse, "t.json");
+    EXPECT_NE(line.find("--save-overfit"), std::string::npos) << line;
+    EXPECT_NE(line.find("b"), std::string::npos) << line;
+    EXPECT_EQ(line.find('\n'), std::string::npos);
 }

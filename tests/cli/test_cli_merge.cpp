@@ -188,3 +188,33 @@ TEST_F(Merge, NamesWithShellSyntaxRunNothing) {
     EXPECT_TRUE(fs::exists(out + "/pareto.png")) << "the plot was not drawn";
     EXPECT_FALSE(ran()) << "a name ran as a shell command";
 }
+
+TEST_F(Merge, ShardsOfOneViewMergeWhetherTheirReferenceWasTracedOrCached) {
+    // Both shards measure configurations of the one view: the first traces its reference, the
+    // second finds it in the cache. The view is the same (name and camera); the rest is the shard's.
+    const std::string sweep =
+        writeTemp("merge_one_view.json", R"({"name": "one", "groups": [{"name": "k", "vary": {"kernel.samples": [8, 16, 32]}}]})");
+    const std::string cache = root() + "/one_view_cache"; // empty: shard 1 traces, shard 2 reads the cache
+    fs::remove_all(cache);
+    for (int k = 1; k <= 2; ++k) {
+        const std::string out = root() + "/one_view_" + std::to_string(k);
+        fs::remove_all(out);
+        CliRun r = ssaolab("bench --scene builtin:corner --size 64x36 --views 1 --frames 1 --warmup 0 --reference-rays 4 "
+                           "--no-plot --quiet --sweep " + sweep + " --shard " + std::to_string(k) + "/2 --out " + out,
+                           "SSAOLAB_CACHE_DIR=" + cache);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+    }
+    EXPECT_NE(results(root() + "/one_view_1")["scenes"][0]["viewpoints"][0]["reference_cached"],
+              results(root() + "/one_view_2")["scenes"][0]["viewpoints"][0]["reference_cached"]);
+    CliRun r = ssaolab("bench merge " + root() + "/one_view_1 " + root() + "/one_view_2 --no-plot --quiet --out " + root() + "/one_view");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    // A camera that differs is another view: refused, naming the folder.
+    const std::string moved = root() + "/one_view_moved";
+    fs::remove_all(moved);
+    fs::copy(root() + "/one_view_2", moved, fs::copy_options::recursive);
+    nlohmann::json j = results(moved);
+    j["scenes"][0]["viewpoints"][0]["camera"]["eye"][0] = 123.0;
+    rewrite(moved, j);
+    expectCleanFailure(ssaolab("bench merge " + root() + "/one_view_1 " + moved + " --no-plot --quiet --out " + root() + "/o8"),
+                       "differs from another folder's");
+}

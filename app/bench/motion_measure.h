@@ -1,0 +1,55 @@
+// Error in motion, measured: the ray-traced truth along a camera path through a view (a cached
+// reference per frame, and each frame's pixels followed into the frame before), and one
+// configuration's frames along it as the explorer draws them - temporal accumulation, when the
+// settings enable it, carries its history from frame to frame - judged by metrics/motion_metrics.h.
+// `render --motion`, `bench --motion` and `tune --objective motion` share it.
+#pragma once
+#include "metrics/motion_metrics.h"
+#include "reference/reference_cache.h"
+#include "renderer.h"
+#include "scene/camera_path.h"
+
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace ssao {
+
+// --motion-frames, --motion-orbit, --motion-dolly (render, bench, tune).
+void addMotionPathOptions(CLI::App& cmd, CameraPathSpec& spec);
+
+struct MotionTruth {
+    CameraPathSpec spec;
+    int width = 0, height = 0;
+    std::vector<Camera> path;     // the cameras set on the renderer
+    std::vector<Camera> rendered; // as rendered (clip planes fitted): what the references trace
+    std::vector<ReferenceImage> refs;
+    std::vector<std::vector<int>> toPrevious; // metrics/reprojection.h; [0] is empty
+    ReferenceSettings settings;
+    int cached = 0;     // references that came from the cache
+    double seconds = 0; // tracing time of the others
+};
+
+// The truth of the path from `start` (a camera as set: its clip planes are fitted to `bounds` as the
+// renderer fits them). `progress` gets 0..1 over the whole path.
+MotionTruth traceMotionTruth(ReferenceProvider& provider, const Bounds& bounds, const Camera& start, int width,
+                             int height, const CameraPathSpec& spec, const ReferenceSettings& rs,
+                             const std::function<void(double)>& progress = {});
+
+// Renders `s` along the truth's path on `r` (its scene and size those of the truth): the first frame
+// as render and bench judge a still view (temporal accumulation, from an empty history, run to its
+// end), then one frame per camera. Leaves `r` set to the path's first camera.
+MotionMetrics measureMotion(Renderer& r, const Settings& s, const MotionTruth& truth);
+
+// metrics.json's "motion" block; NaN -> null.
+nlohmann::json motionJson(const MotionMetrics& m, const MotionTruth& t);
+// "motion (8 frames, ...): RMSE mean ..., instability ..., ghosting ..." (no newline).
+std::string motionLine(const MotionMetrics& m, const MotionTruth& t);
+
+} // namespace ssao

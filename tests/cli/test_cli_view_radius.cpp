@@ -1,0 +1,68 @@
+// Two things a new user misread, through the whole program: a close-up of a scene whose scene-mode
+// radius is wider than the view gets one warning naming the world radius that matches the view
+// (metrics/radius_check.h); and the error split's shares of the squared error (metrics/error_split.h)
+// are in metrics.json and the summary line, summing to 1 where the two RMSEs do not add up.
+#include "cli_run.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <regex>
+
+using namespace ssaotest;
+
+namespace {
+// 0.4 units from the showcase's red sphere: the view spans about half a unit, the scene radius 0.86.
+const char* kCloseUp = "--camera -1.5,0.8,-0.8,-1.5,0.8,-2";
+
+long warningLines(const std::string& err) {
+    long n = 0;
+    for (size_t at = 0; (at = err.find("ssaolab: warning: ", at)) != std::string::npos; ++at)
+        ++n;
+    return n;
+}
+} // namespace
+
+TEST(CliViewRadius, ACloseUpWarnsOnceWithTheWorldRadiusThatMatchesTheView) {
+    const CliRun close = ssaolab(std::string("render --scene builtin:showcase --size 64x36 --timing-frames 1 --quiet ") +
+                                 kCloseUp + " --out " + outDir("view_radius_close"));
+    ASSERT_EQ(close.exitCode, 0) << close.err;
+    std::printf("%s", close.err.c_str());
+    EXPECT_EQ(warningLines(close.err), 1) << close.err;
+    const std::regex hint("ssaolab: warning: the AO radius ([0-9.]+) units \\(ao.radius_mode=scene[^\\n]*"
+                          "\\(([0-9.]+) units across[^\\n]*--set ao.radius=([0-9.e-]+) \\(world units\\)");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(close.err, m, hint)) << close.err;
+    const double radius = std::stod(m[1]), extent = std::stod(m[2]), suggested = std::stod(m[3]);
+    EXPECT_NEAR(radius, 0.05 * std::sqrt(12.0 * 12 + 3 * 3 + 12 * 12), 0.01) << "5 % of the diagonal";
+    EXPECT_LT(extent, 1.0);
+    EXPECT_GT(radius, 0.6 * extent);
+    EXPECT_NEAR(suggested, 0.05 * extent, 0.002);
+
+    // Following it: no warning (a world radius is the user's own); the showcase's own view: none either.
+    const CliRun world = ssaolab(std::string("render --scene builtin:showcase --size 64x36 --timing-frames 1 --quiet ") +
+                                 kCloseUp + " --set ao.radius=" + std::string(m[3]) + " --out " +
+                                 outDir("view_radius_world"));
+    ASSERT_EQ(world.exitCode, 0) << world.err;
+    EXPECT_EQ(world.err.find("the AO radius"), std::string::npos) << world.err;
+    const CliRun framed = ssaolab("render --scene builtin:showcase --size 64x36 --timing-frames 1 --quiet --out " +
+                                  outDir("view_radius_framed"));
+    ASSERT_EQ(framed.exitCode, 0) << framed.err;
+    EXPECT_EQ(framed.err.find("the AO radius"), std::string::npos) << framed.err;
+}
+
+TEST(CliViewRadius, TheSplitsSharesAddUpInMetricsAndTheSummary) {
+    const std::string out = outDir("split_shares");
+    const CliRun r = ssaolab("render --scene builtin:showcase --size 64x36 --timing-frames 1 --reference "
+                             "--reference-rays 8 --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("shares of the squared error: technique "), std::string::npos) << r.out;
+    const nlohmann::json m = nlohmann::json::parse(slurp(out + "/metrics.json"));
+    const nlohmann::json& sp = m["error_split"];
+    const double t = sp["shares"]["technique"], s = sp["shares"]["screen"], i = sp["shares"]["interaction"];
+    EXPECT_NEAR(t + s + i, 1.0, 1e-9);
+    const double total = m["error"]["rmse"], rt = sp["technique"]["rmse"], rs = sp["screen"]["rmse"];
+    EXPECT_NEAR(t, rt * rt / (total * total), 1e-6);
+    EXPECT_NEAR(s, rs * rs / (total * total), 1e-6);
+    EXPECT_NE(sp["shares"]["how_to_read"].get<std::string>().find("negative interaction"), std::string::npos);
+}
