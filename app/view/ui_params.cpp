@@ -126,11 +126,11 @@ void radiusLine(AppCore& app) {
         const bool tiny = ri.pixels<2.0f, huge = ri.world> 0.25f * ri.sceneDiagonal;
         const ImVec4 colour = tiny || huge || vr.tooLarge ? ImVec4(1, 0.7f, 0.3f, 1)
                                                           : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
-        ImGui::TextColored(colour, "= %.4g units, %.1f px at centre (diag %.4g)%s", ri.world, ri.pixels,
-                           ri.sceneDiagonal,
+        ImGui::TextColored(colour, "= %.4g units, %.*f px at centre (diag %.4g)%s", ri.world, ri.pixels < 100 ? 1 : 0,
+                           ri.pixels, ri.sceneDiagonal,
                            tiny          ? " SUB-PIXEL: flat AO"
                            : huge        ? " >25%% OF SCENE"
-                           : vr.tooLarge ? " WIDE FOR THE VIEW"
+                           : vr.tooLarge ? " TOO WIDE"
                                          : "");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
