@@ -1,5 +1,6 @@
 #include "bench/bench_report.h"
 
+#include "bench/motion_measure.h"
 #include "bench/report_html.h"
 #include "bench/split_report.h"
 #include "metrics/error_split.h"
@@ -215,10 +216,7 @@ std::string passMarkdown(const BenchRun& run) {
 static std::string motionMarkdown(const BenchRun& run) {
     if (!run.facts.contains("motion")) return "";
     const nlohmann::json& p = run.facts["motion"];
-    auto score = [](const ConfigSummary& s) {
-        const double i = std::isfinite(s.motion.instability) ? s.motion.instability : 0.0;
-        return std::sqrt(s.motion.rmseMean * s.motion.rmseMean + i * i);
-    };
+    auto score = [](const ConfigSummary& s) { return motionScore(s.motion.rmseMean, s.motion.instability); };
     std::vector<const ConfigSummary*> still, moving;
     for (const auto& s : run.summary)
         if (std::isfinite(s.rmse) && std::isfinite(s.motion.rmseMean)) still.push_back(&s), moving.push_back(&s);

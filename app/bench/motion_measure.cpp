@@ -5,9 +5,11 @@
 #include "metrics/evaluate.h"
 #include "metrics/reprojection.h"
 #include "scene/view_fit.h"
+#include "util/error.h"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -28,12 +30,13 @@ void addMotionPathOptions(CLI::App& cmd, CameraPathSpec& spec) {
 
 MotionTruth traceMotionTruth(ReferenceProvider& provider, const Bounds& bounds, const Camera& start, int w, int h,
                              const CameraPathSpec& spec, const ReferenceSettings& rs,
-                             const std::function<void(double)>& progress) {
+                             const std::function<void(double)>& progress, const std::atomic<bool>* cancel) {
     MotionTruth t;
     t.spec = spec, t.width = w, t.height = h, t.settings = rs;
     t.path = cameraPath(start, spec);
     const size_t n = t.path.size();
     for (size_t k = 0; k < n; ++k) {
+        if (cancel && cancel->load()) throw Error("motion: the path's references were cancelled");
         t.rendered.push_back(effectiveCamera(t.path[k], bounds)); // as Renderer::render() fits it
         bool cached = false;
         t.refs.push_back(provider.get(t.rendered[k], w, h, rs,
@@ -56,34 +59,61 @@ MotionTruth traceMotionTruth(ReferenceProvider& provider, const Bounds& bounds, 
 }
 
 MotionMetrics measureMotion(Renderer& r, const Settings& s, const MotionTruth& truth) {
-    r.setCamera(truth.path[0]);
-    if (s.temporal.enabled) { // an empty history: one frame without accumulation drops it
-        Settings off = s;
-        off.temporal.enabled = false;
-        r.setSettings(off);
-        r.render();
+    MotionMeasurement m(s, truth);
+    while (!m.step(r)) {
     }
-    r.setSettings(s);
-    std::vector<Image> tests;
-    for (size_t k = 0; k < truth.path.size(); ++k) {
-        r.setCamera(truth.path[k]);
-        r.render();
-        while (k == 0 && r.accumulating()) // the still view the path starts from
+    return m.result();
+}
+
+bool MotionMeasurement::step(Renderer& r) {
+    if (done_) return true;
+    const MotionTruth& t = *truth_;
+    if (!started_) {
+        started_ = true;
+        r.setCamera(t.path[0]);
+        if (settings_.temporal.enabled) { // an empty history: one frame without accumulation drops it
+            Settings off = settings_;
+            off.temporal.enabled = false;
+            r.setSettings(off);
             r.render();
-        tests.push_back(evaluate(readBack(r.texture("ao.denoised"), 1), truth.refs[k]).test);
+            r.setSettings(settings_);
+            return false;
+        }
+        r.setSettings(settings_);
     }
-    r.setCamera(truth.path[0]); // back at the view: the next still measurement sets no camera of its own
+    if (!inFrame_) {
+        r.setCamera(t.path[frame_]);
+        inFrame_ = true;
+    }
+    r.render();
+    if (frame_ == 0 && r.accumulating()) return false; // the still view the path starts from
+    tests_.push_back(evaluate(readBack(r.texture("ao.denoised"), 1), t.refs[frame_]).test);
+    inFrame_ = false;
+    if (++frame_ < t.path.size()) return false;
+    finish(r);
+    return true;
+}
+
+void MotionMeasurement::finish(Renderer& r) {
+    const MotionTruth& t = *truth_;
+    r.setCamera(t.path[0]); // back at the view: the next still measurement sets no camera of its own
     std::vector<MotionFrameInput> frames;
-    for (size_t k = 0; k < tests.size(); ++k) {
-        const ReferenceImage& ref = truth.refs[k];
+    for (size_t k = 0; k < tests_.size(); ++k) {
+        const ReferenceImage& ref = t.refs[k];
         MotionFrameInput f;
-        f.test = tests[k].data.data(), f.reference = ref.ao.data(), f.geometry = ref.geometry.data();
+        f.test = tests_[k].data.data(), f.reference = ref.ao.data(), f.geometry = ref.geometry.data();
         f.depth = ref.depth.data(), f.referenceStdErr = ref.stdErr.data();
         if (ref.ambiguous.size() == ref.ao.size()) f.exclude = ref.ambiguous.data();
-        if (k) f.toPrevious = truth.toPrevious[k].data();
+        if (k) f.toPrevious = t.toPrevious[k].data();
         frames.push_back(f);
     }
-    return computeMotionMetrics(truth.width, truth.height, frames);
+    result_ = computeMotionMetrics(t.width, t.height, frames);
+    tests_.clear();
+    done_ = true;
+}
+
+double MotionMeasurement::progress() const {
+    return done_ ? 1.0 : double(frame_) / double(std::max<size_t>(truth_->path.size(), 1));
 }
 
 namespace {

@@ -5,12 +5,14 @@
 // `render --motion`, `bench --motion` and `tune --objective motion` share it.
 #pragma once
 #include "metrics/motion_metrics.h"
+#include "output/image.h"
 #include "reference/reference_cache.h"
 #include "renderer.h"
 #include "scene/camera_path.h"
 
 #include <nlohmann/json.hpp>
 
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -37,15 +39,39 @@ struct MotionTruth {
 };
 
 // The truth of the path from `start` (a camera as set: its clip planes are fitted to `bounds` as the
-// renderer fits them). `progress` gets 0..1 over the whole path.
+// renderer fits them). `progress` gets 0..1 over the whole path. A raised `cancel` is seen between
+// frames (a frame's trace runs to its end and is cached): it throws ssao::Error.
 MotionTruth traceMotionTruth(ReferenceProvider& provider, const Bounds& bounds, const Camera& start, int width,
                              int height, const CameraPathSpec& spec, const ReferenceSettings& rs,
-                             const std::function<void(double)>& progress = {});
+                             const std::function<void(double)>& progress = {},
+                             const std::atomic<bool>* cancel = nullptr);
 
 // Renders `s` along the truth's path on `r` (its scene and size those of the truth): the first frame
 // as render and bench judge a still view (temporal accumulation, from an empty history, run to its
 // end), then one frame per camera. Leaves `r` set to the path's first camera.
 MotionMetrics measureMotion(Renderer& r, const Settings& s, const MotionTruth& truth);
+
+// measureMotion one rendered frame per step, for the explorer's front panel between its frames.
+// `r` is this measurement's alone from its first step to its last; `truth` outlives it.
+class MotionMeasurement {
+  public:
+    MotionMeasurement(const Settings& s, const MotionTruth& truth) : settings_(s), truth_(&truth) {}
+    bool step(Renderer& r); // true once done
+    bool done() const { return done_; }
+    double progress() const; // 0..1: path frames judged
+    const MotionMetrics& result() const { return result_; }
+    const Settings& settings() const { return settings_; }
+
+  private:
+    void finish(Renderer& r);
+
+    Settings settings_;
+    const MotionTruth* truth_;
+    bool started_ = false, inFrame_ = false, done_ = false;
+    size_t frame_ = 0; // the path frame being rendered
+    std::vector<Image> tests_;
+    MotionMetrics result_;
+};
 
 // metrics.json's "motion" block; NaN -> null.
 nlohmann::json motionJson(const MotionMetrics& m, const MotionTruth& t);

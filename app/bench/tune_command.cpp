@@ -68,7 +68,7 @@ void addTuneOptions(CLI::App& cmd, TuneOptions& o) {
                  "save the preset even when the fit raised the held-out error (by default: refused, exit 1)");
     cmd.add_option("--objective", o.objective,
                    "what the search minimises over the training views: still (the geometry MSE of a still frame) "
-                   "or motion (along each view's camera path, see --motion-*: the mean per-frame MSE + "
+                   "or motion (along each view's camera path, see --motion-*: the mean per-frame RMSE^2 + "
                    "instability^2, instability = the RMS of the AO's frame-to-frame change minus the "
                    "reference's at the same surface points); the scores printed are its square root")
         ->capture_default_str()
@@ -99,7 +99,7 @@ struct View {
 
 // What the scores are the square root of (--objective).
 std::string objectiveName(const TuneOptions& o) {
-    return o.objective == "motion" ? "motion score (sqrt of mean per-frame MSE + instability^2)" : "geometry RMSE";
+    return o.objective == "motion" ? "motion score (sqrt of mean per-frame RMSE^2 + instability^2)" : "geometry RMSE";
 }
 
 // A technique's own radius multiplier (gtao.radius_multiplier) lengthens its search past R, as

@@ -6,10 +6,11 @@
 // (kernel.bias ...) but a radius multiplier. A radius multiplier (tune's: the technique's radius =
 // m x the reference's R; a technique's own, gtao.radius_multiplier: its search past R) and ao.power
 // only when named by --knob: they fit the numbers without the physics.
-// --objective motion minimises, per view, the mean per-frame MSE plus instability^2 along a camera
-// path (bench/motion_measure.h) instead of the still frame's MSE. A fit that raises the
+// --objective motion minimises, per view, the motion score squared (mean per-frame RMSE^2 plus
+// instability^2) along a camera path (bench/motion_measure.h) instead of the still frame's MSE. A fit that raises the
 // held-out error is not saved unless --save-overfit (bench/tune_guard.h).
 #pragma once
+#include "bench/engine_options.h"
 #include "scene/camera_path.h"
 #include "settings/params.h"
 
@@ -45,6 +46,7 @@ struct TuneOptions {
     // (bench/motion_measure.h), mean over its frames of the per-frame MSE + instability^2.
     std::string objective = "still";
     CameraPathSpec motionPath;
+    EngineTuneOptions engine; // --engine: a web engine's own settings instead (bench/engine_tune.h)
     bool quiet = false;
 };
 

@@ -113,6 +113,7 @@ void FrontMeasurer::updateFront() {
             p.rmseRatio = p.result.error.rmse / points_[b].result.error.rmse;
         }
         t.push_back(p.result.gpuMs), e.push_back(p.result.error.rmse);
+        p.score = p.result.error.rmse, p.scoreRatio = p.rmseRatio;
     }
     const std::vector<bool> f = paretoFront(t, e);
     for (size_t i = 0; i < points_.size(); ++i)

@@ -7,6 +7,7 @@
 #pragma once
 #include "bench/measurement.h"
 #include "front/candidates.h"
+#include "metrics/motion_metrics.h"
 #include "scene/scene.h"
 
 #include <chrono>
@@ -22,7 +23,10 @@ struct FrontPoint {
     Candidate candidate;
     ViewResult result;
     double timeRatio = 0, rmseRatio = 0; // to the baseline candidate (once it is measured)
-    bool front = false;                  // on the front of (time, RMSE) of the points measured so far
+    bool front = false;                  // on the front of (time, score) of the points measured so far
+    // The Front tab's y axis (front_panel.h): the RMSE, or on the motion axis the motion score.
+    double score = 0, scoreRatio = 0;
+    std::optional<MotionMetrics> motion; // on the motion axis
 };
 
 // What one measurement is of: a change of any of it cancels the one running.

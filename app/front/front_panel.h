@@ -1,9 +1,12 @@
 // The explorer's "Front" tab as state and answers, without drawing (view/ui_front.cpp draws it):
 // when the live reference of the view is finished, measure the candidates on it in the background
 // (front/front_measurer.h); answer "cheapest at <= this error" and "most accurate at <= this time"
-// relative to the current setting, and the budget box's "best within X ms / at most E".
+// relative to the current setting, and the budget box's "best within X ms / at most E". The y axis
+// is a choice: the still frame's RMSE, or the motion score along the camera path through the view
+// (front/front_motion.h); the answers and the front follow it.
 #pragma once
 #include "front/front_measurer.h"
+#include "front/front_motion.h"
 #include "settings/preset_store.h"
 #include "view/frame_driver.h"
 
@@ -13,7 +16,11 @@ namespace ssao {
 
 class FrontPanel {
   public:
-    explicit FrontPanel(std::string shaderDir) : m_(std::move(shaderDir)) {}
+    enum class Axis { Still, Motion };
+
+    // `wake` (may be empty) is called from the motion path's tracing thread: the loop sleeps otherwise.
+    explicit FrontPanel(const std::string& shaderDir, std::function<void()> wake = {})
+        : m_(shaderDir), motion_(shaderDir, std::move(wake)) {}
 
     // Once per UI frame after the main render: starts (when the reference is finished), continues
     // (steps for `budgetMs`) or cancels (the view changed) the measurement.
@@ -23,13 +30,22 @@ class FrontPanel {
     bool active = false; // the tab has been opened: from then on the front is measured in the background
     bool paused = false;
     double budgetMs = 0, maxError = 0; // the budget box (0 = not set)
+    Axis axis = Axis::Still;
+    CameraPathSpec motionPath;                    // bench --motion's path by default
+    int motionMaxWidth = 320, motionMaxHeight = 180; // the motion size: the view's, fit inside this
+    std::string motionCacheDir = referenceCacheDir(); // the path's references ("" = not cached)
+    // The y axis's name: "RMSE" or "motion score sqrt(RMSE^2 + instability^2)".
+    std::string axisName() const;
     // Why nothing is being measured ("waiting for the reference (42%)"); "" while measuring or done.
     const std::string& waiting() const { return waiting_; }
 
     const FrontMeasurer& measurer() const { return m_; }
-    const std::vector<FrontPoint>& points() const { return m_.points(); }
-    size_t currentIndex() const; // the "current" point, npos until measured
-    // Relative to the current point: the fastest whose RMSE is at most the current's, and the most
+    const FrontMotion& motion() const { return motion_; }
+    // The points on the chosen axis: the still ones, or those with a motion score too (score set).
+    const std::vector<FrontPoint>& points() const { return points_; }
+    size_t currentIndex() const;  // the "current" point, npos until measured
+    size_t baselineIndex() const; // the baseline's point, npos until measured
+    // Relative to the current point: the fastest whose score is at most the current's, and the most
     // accurate whose time is at most the current's (other than the current itself); npos if none.
     size_t cheapestAtMostCurrentError() const;
     size_t mostAccurateWithinCurrentTime() const;
@@ -38,7 +54,12 @@ class FrontPanel {
     double referenceNoise() const; // the reference's noise floor (RMS of its standard error)
 
   private:
+    void updateMotion(const FrameDriver& frames, const std::shared_ptr<const Scene>& scene, unsigned sceneVersion);
+    void compose(); // points_ from the measurers, on the chosen axis
+
     FrontMeasurer m_;
+    FrontMotion motion_;
+    std::vector<FrontPoint> points_;
     std::vector<Candidate> candidates_;
     std::string candidatesKey_;
     std::string waiting_;

@@ -34,7 +34,7 @@ AppCore::AppCore(const AppOptions& o)
     : opts_(o), store_(PresetStore::standard(o.userPresetDir)),
       frames_(o.shaderDir.empty() ? shaderRoot() : o.shaderDir, o.renderScale, o.interactiveScale, o.reference,
               o.wake),
-      front_(o.shaderDir.empty() ? shaderRoot() : o.shaderDir) {
+      front_(o.shaderDir.empty() ? shaderRoot() : o.shaderDir, o.wake) {
     loaded_.name = "defaults";
     // A bad --preset or --scene opens the window anyway, on the defaults and the built-in scene, with
     // the problem in the status line: the user fixes it from the panel instead of reading a log.

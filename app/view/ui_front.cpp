@@ -1,6 +1,7 @@
 // The "Front" tab: the time-against-error front of the view on screen (front/front_panel.h).
 // A plot drawn with ImGui's draw list - GPU time on a log axis, RMSE against the finished live
-// reference (the axis clipped above the bulk, outliers as triangles on its top edge), the front as
+// reference or the motion score along the camera path through the view ("still | motion"; the axis
+// clipped above the bulk, outliers as triangles on its top edge), the front as
 // a step line, the current setting ringed, the baseline black, the reference's noise floor as a
 // grey band - where hovering names a point, a click applies it and a shift+click compares it with
 // the current setting in Split A|B. Under it the two one-click answers and the budget box.
@@ -17,12 +18,19 @@ namespace ssao {
 namespace {
 
 std::string pointText(const FrontPoint& p, const FrontPoint* base) {
-    char b[320];
-    std::snprintf(b, sizeof b, "%s\n%.3f ms GPU (AO + denoise)%s\nRMSE %.4f%s, bias %+.4f, edge RMSE %.4f",
-                  p.candidate.label.c_str(), p.result.gpuMs,
-                  base ? (", " + std::to_string(p.timeRatio).substr(0, 5) + "x the baseline's").c_str() : "",
-                  p.result.error.rmse, base ? (", " + std::to_string(p.rmseRatio).substr(0, 5) + "x").c_str() : "",
-                  p.result.error.bias, p.result.error.rmseEdge);
+    char b[480];
+    const std::string tr = base ? ", " + std::to_string(p.timeRatio).substr(0, 5) + "x the baseline's" : "";
+    const std::string er = base ? ", " + std::to_string(p.scoreRatio).substr(0, 5) + "x" : "";
+    if (p.motion)
+        std::snprintf(b, sizeof b,
+                      "%s\n%.3f ms GPU (AO + denoise)%s\nmotion score %.4f%s: per-frame RMSE %.4f, instability "
+                      "%.4f, ghosting %+.4f\nstill RMSE %.4f",
+                      p.candidate.label.c_str(), p.result.gpuMs, tr.c_str(), p.score, er.c_str(), p.motion->rmseMean,
+                      p.motion->instability, p.motion->ghosting, p.result.error.rmse);
+    else
+        std::snprintf(b, sizeof b, "%s\n%.3f ms GPU (AO + denoise)%s\nRMSE %.4f%s, bias %+.4f, edge RMSE %.4f",
+                      p.candidate.label.c_str(), p.result.gpuMs, tr.c_str(), p.result.error.rmse, er.c_str(),
+                      p.result.error.bias, p.result.error.rmseEdge);
     return b;
 }
 
@@ -35,7 +43,8 @@ void dot(ImDrawList* dl, ImVec2 c, float r, ImU32 col, bool offTop) {
 }
 
 // The plot; returns the index of the point under the cursor (npos when none).
-size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, size_t baseline, double noise) {
+size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, size_t baseline, double noise,
+            const std::string& axisName) {
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const float w = std::max(ImGui::GetContentRegionAvail().x, 200.0f), h = 260.0f;
     ImGui::InvisibleButton("front#plot", ImVec2(w, h));
@@ -46,8 +55,8 @@ size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, si
     double tlo = 1e300, thi = 0;
     std::vector<double> errors;
     for (const auto& p : pts)
-        if (p.result.gpuMs > 0 && std::isfinite(p.result.error.rmse))
-            tlo = std::min(tlo, p.result.gpuMs), thi = std::max(thi, p.result.gpuMs), errors.push_back(p.result.error.rmse);
+        if (p.result.gpuMs > 0 && std::isfinite(p.score))
+            tlo = std::min(tlo, p.result.gpuMs), thi = std::max(thi, p.result.gpuMs), errors.push_back(p.score);
     // The error axis stops above the bulk (ui_layout.h): one outlier would squeeze the points people
     // compare into the bottom strip. Points above it sit on the top edge as triangles.
     const double ehi = std::max(clippedAxisTop(errors, noise * 1.2) * 1.1, 1e-3);
@@ -77,19 +86,21 @@ size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, si
         dl->AddText(ImVec2(origin.x + 2, Y(v) - 7), ink, b);
     }
     // Axis names where they cannot run out of the plot, whatever the panel's width: time under the
-    // right end of the x axis, RMSE above the y axis's labels.
+    // right end of the x axis, the error's above the y axis's labels.
     const char* xName = "GPU ms (log) ->";
     dl->AddText(ImVec2(origin.x + w - R - ImGui::CalcTextSize(xName).x, origin.y + h - 14), ink, xName);
-    const std::string yName = above > 0 ? "RMSE (" + std::to_string(above) + " above the axis: triangles)" : "RMSE";
+    const std::string yName =
+        axisName + (above > 0 ? " (" + std::to_string(above) + " above the axis: triangles)" : "");
     dl->AddText(ImVec2(origin.x + L + 4, origin.y + T), ink, yName.c_str());
+    app.view().widgetRects["front#y:" + axisName] = ImVec4(origin.x + L, origin.y + T, origin.x + w - R, origin.y + T + 14);
     // The front as a step line, fastest first.
     std::vector<const FrontPoint*> front;
     for (const auto& p : pts)
         if (p.front) front.push_back(&p);
     std::sort(front.begin(), front.end(), [](auto* a, auto* b) { return a->result.gpuMs < b->result.gpuMs; });
     for (size_t i = 1; i < front.size(); ++i) {
-        const ImVec2 a(X(front[i - 1]->result.gpuMs), Y(front[i - 1]->result.error.rmse));
-        const ImVec2 c(X(front[i]->result.gpuMs), Y(front[i]->result.error.rmse));
+        const ImVec2 a(X(front[i - 1]->result.gpuMs), Y(front[i - 1]->score));
+        const ImVec2 c(X(front[i]->result.gpuMs), Y(front[i]->score));
         dl->AddLine(a, ImVec2(c.x, a.y), IM_COL32(214, 39, 40, 200), 1.5f);
         dl->AddLine(ImVec2(c.x, a.y), c, IM_COL32(214, 39, 40, 200), 1.5f);
     }
@@ -98,23 +109,23 @@ size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, si
     float best = 8.0f * 8.0f;
     for (size_t i = 0; i < pts.size(); ++i) {
         const FrontPoint& p = pts[i];
-        if (!(p.result.gpuMs > 0) || !std::isfinite(p.result.error.rmse)) continue;
-        const ImVec2 c(X(p.result.gpuMs), Y(p.result.error.rmse));
+        if (!(p.result.gpuMs > 0) || !std::isfinite(p.score)) continue;
+        const ImVec2 c(X(p.result.gpuMs), Y(p.score));
         const ImU32 col = i == baseline ? IM_COL32(0, 0, 0, 255) : p.front ? IM_COL32(214, 39, 40, 255) : IM_COL32(150, 150, 150, 255);
-        dot(dl, c, i == baseline ? 5.5f : p.front ? 4.0f : 3.0f, col, p.result.error.rmse > ehi);
+        dot(dl, c, i == baseline ? 5.5f : p.front ? 4.0f : 3.0f, col, p.score > ehi);
         if (i == current) dl->AddCircle(c, 8.0f, IM_COL32(30, 110, 255, 255), 16, 2.0f);
         app.view().widgetRects["front#point:" + p.candidate.label] = ImVec4(c.x - 2, c.y - 2, c.x + 2, c.y + 2);
         const float d2 = (c.x - mouse.x) * (c.x - mouse.x) + (c.y - mouse.y) * (c.y - mouse.y);
         if (ImGui::IsItemHovered() && d2 < best) best = d2, hover = i;
     }
     if (hover != std::string::npos) {
-        const ImVec2 c(X(pts[hover].result.gpuMs), Y(pts[hover].result.error.rmse));
+        const ImVec2 c(X(pts[hover].result.gpuMs), Y(pts[hover].score));
         dl->AddCircle(c, 6.0f, IM_COL32(0, 0, 0, 255), 12, 1.5f);
     }
     return hover;
 }
 
-// "label: t ms (x), RMSE e (x)" relative to the current point, and a button that applies it.
+// "label: t ms (x), RMSE e (x)" (or the motion score) relative to the current point, and a button that applies it.
 void answer(AppCore& app, const char* question, size_t i, const std::string& key) {
     const FrontPanel& f = app.front();
     ImGui::TextWrapped("%s", question);
@@ -124,9 +135,9 @@ void answer(AppCore& app, const char* question, size_t i, const std::string& key
     }
     const FrontPoint& p = f.points()[i];
     const FrontPoint& c = f.points()[f.currentIndex()];
-    ImGui::TextWrapped("  %s: %.3f ms (%.2fx current), RMSE %.4f (%.2fx current)", p.candidate.label.c_str(),
-                       p.result.gpuMs, p.result.gpuMs / c.result.gpuMs, p.result.error.rmse,
-                       p.result.error.rmse / c.result.error.rmse);
+    ImGui::TextWrapped("  %s: %.3f ms (%.2fx current), %s %.4f (%.2fx current)", p.candidate.label.c_str(),
+                       p.result.gpuMs, p.result.gpuMs / c.result.gpuMs, p.motion ? "motion score" : "RMSE", p.score,
+                       p.score / c.score);
     if (ImGui::SmallButton(("apply##" + key).c_str())) app.applyCandidate(p.candidate);
     rememberRect(app.view(), "front#apply_" + key);
     ImGui::SameLine();
@@ -143,10 +154,48 @@ void grainNote(AppCore& app) {
     ImGui::TextWrapped("Grain: denoise 'auto' leaves %s unfiltered - its noise is finer than the detail a blur "
                        "erases, and every blur raised its error against the reference on the bench scenes. For a "
                        "still camera, temporal accumulation (temporal.enabled) averages it away; the points here "
-                       "are scored on a still frame.",
+                       "are scored on a still frame unless the axis is 'motion'.",
                        s.ao.technique.c_str());
     ImGui::PopStyleColor();
     rememberRect(app.view(), "front#grain");
+}
+
+// The y axis's choice, and on the motion axis what its numbers are of and how far they are.
+void motionAxis(AppCore& app) {
+    FrontPanel& f = app.front();
+    ImGui::TextUnformatted("y axis:");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("still", f.axis == FrontPanel::Axis::Still)) f.axis = FrontPanel::Axis::Still;
+    rememberRect(app.view(), "front#axis_still");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("motion", f.axis == FrontPanel::Axis::Motion)) f.axis = FrontPanel::Axis::Motion;
+    rememberRect(app.view(), "front#axis_motion");
+    if (f.axis != FrontPanel::Axis::Motion || !f.waiting().empty()) return;
+    const FrontMotion& m = f.motion();
+    if (!m.hasView()) return;
+    const MotionView& v = m.view();
+    char what[160];
+    std::snprintf(what, sizeof what, "%d frames at %dx%d (orbit %.3g deg, dolly %.3g), %d-ray references",
+                  v.spec.frames, v.width, v.height, v.spec.orbitDeg, v.spec.dolly, v.settings.samples);
+    const FrontMotion::Progress pr = m.progress();
+    char b[256];
+    if (!pr.error.empty()) {
+        ImGui::TextWrapped("the motion path's references failed: %s", pr.error.c_str());
+    } else if (m.tracing()) {
+        std::snprintf(b, sizeof b, "tracing the motion path's references: %s", what);
+        ImGui::ProgressBar(float(pr.traceFraction), ImVec2(-1, 0), b);
+    } else if (m.measuring()) {
+        std::snprintf(b, sizeof b, "scoring %zu / %zu candidates in motion", pr.done, pr.total);
+        ImGui::ProgressBar(float(pr.fraction), ImVec2(-1, 0), b);
+    } else {
+        ImGui::TextDisabled("motion: %s", what);
+    }
+    rememberRect(app.view(), "front#motion_progress");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Each candidate along the camera path through this view, as `ssaolab bench --motion`\n"
+                          "scores it, at a reduced size (the path needs a reference per frame): every\n"
+                          "frame against its own reference. Motion score = sqrt(mean per-frame RMSE^2 +\n"
+                          "instability^2), bench's motion rank; points appear once scored.");
 }
 
 } // namespace
@@ -166,6 +215,7 @@ void drawFrontTab(AppCore& app) {
         ImGui::Text("%zu candidates measured on this view (%.1f s)", pr.total, pr.seconds);
     }
     rememberRect(app.view(), "front#progress");
+    motionAxis(app);
     ImGui::Checkbox("pause", &f.paused);
     ImGui::SameLine();
     ImGui::TextDisabled("(?)");
@@ -176,8 +226,8 @@ void drawFrontTab(AppCore& app) {
                           "reference - the numbers `ssaolab bench` gives for the same view.\n"
                           "Click a point: apply it. Shift+click: compare it with the current one in A|B.");
     const auto& pts = f.points();
-    const size_t base = m.baselineIndex(), cur = f.currentIndex();
-    const size_t hover = plot(app, pts, cur, base, f.referenceNoise());
+    const size_t base = f.baselineIndex(), cur = f.currentIndex();
+    const size_t hover = plot(app, pts, cur, base, f.referenceNoise(), f.axisName());
     if (hover != std::string::npos) {
         ImGui::SetTooltip("%s", pointText(pts[hover], base == std::string::npos ? nullptr : &pts[base]).c_str());
         if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
@@ -202,7 +252,8 @@ void drawFrontTab(AppCore& app) {
     rememberRect(app.view(), "front#budget_ms");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(110);
-    ImGui::InputDouble("max RMSE", &f.maxError, 0, 0, "%.4f");
+    ImGui::InputDouble(f.axis == FrontPanel::Axis::Motion ? "max score###max" : "max RMSE###max", &f.maxError, 0,
+                       0, "%.4f");
     rememberRect(app.view(), "front#max_error");
     if (f.budgetMs > 0 || f.maxError > 0) {
         const size_t b = f.bestForBudget();

@@ -9,8 +9,18 @@
 
 namespace ssao {
 
+double motionScore(double rmseMean, double instability) {
+    const double i = std::isfinite(instability) ? instability : 0.0;
+    return std::sqrt(rmseMean * rmseMean + i * i);
+}
+
+double motionScore(const MotionMetrics& m) {
+    return motionScore(m.rmseMean, m.instability);
+}
+
 double motionObjective(const MotionMetrics& m) {
-    return m.mseMean + (std::isfinite(m.instability) ? m.instability * m.instability : 0.0);
+    const double s = motionScore(m);
+    return s * s;
 }
 
 namespace {

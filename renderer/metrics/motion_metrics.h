@@ -50,8 +50,11 @@ struct MotionMetrics {
     long disoccludedPixels = 0, stablePixels = 0;
 };
 
-// What `tune --objective motion` minimises: the mean per-frame MSE plus the squared instability
-// (an RMS of its own; NaN counts as 0).
+// The motion score, one number for ranking (bench's motion rank, the explorer's motion axis):
+// sqrt(mean per-frame RMSE^2 + instability^2), the instability an RMS of its own (NaN counts as 0).
+double motionScore(double rmseMean, double instability);
+double motionScore(const MotionMetrics& m);
+// What `tune --objective motion` minimises per view: the motion score squared.
 double motionObjective(const MotionMetrics& m);
 
 // Throws std::invalid_argument when a size is negative or a frame lacks test or reference.

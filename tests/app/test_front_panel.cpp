@@ -8,6 +8,8 @@
 #include "ui_driver.h"
 
 #include "bench/bench_run.h"
+#include "bench/motion_measure.h"
+#include "front/front_panel.h"
 #include "front/front_measurer.h"
 #include "headless_runner.h"
 #include "reference/reference_cache.h"
@@ -245,4 +247,86 @@ TEST_F(FrontPanelApp, SaysWhyAnUnfilteredPointLooksGrainy) {
     app().settings().denoise.kind = DenoiseKind::Bilateral;
     ui_->frames(2);
     EXPECT_FALSE(ui_->has("front#grain"));
+}
+
+TEST_F(FrontPanelApp, TheMotionAxisScoresEveryCandidateAsBenchMotionDoes) {
+    FrontPanel& f = app().front();
+    f.motionPath.frames = 4;
+    f.motionMaxWidth = 96, f.motionMaxHeight = 54; // the cap applies: the view is larger
+    f.motionCacheDir = std::string(SSAOLAB_TEST_TMP) + "/front_motion_cache";
+    std::filesystem::remove_all(f.motionCacheDir);
+    ui_->click("tab#Front");
+    ASSERT_TRUE(untilMeasured());
+    EXPECT_TRUE(ui_->has("front#y:RMSE"));
+    const size_t still = f.points().size();
+    ui_->click("front#axis_motion");
+    ASSERT_EQ(f.axis, FrontPanel::Axis::Motion);
+    // Until every candidate has its motion score, the tab says what it waits for.
+    bool said = false, done = false;
+    for (int i = 0; i < 20000 && !done; ++i) {
+        const bool busy = f.motion().busy();
+        app().view().widgetRects.clear();
+        ui_->frame();
+        said |= busy && ui_->has("front#motion_progress");
+        done = f.motion().hasView() && !f.motion().busy() && !f.measurer().busy() && f.points().size() == still;
+    }
+    ASSERT_TRUE(done) << f.points().size() << " of " << still << " scored: " << f.motion().progress().error;
+    EXPECT_TRUE(said) << "no progress shown while the motion scores were not ready";
+    app().view().widgetRects.clear();
+    ui_->frames(2);
+    EXPECT_TRUE(ui_->has("front#y:" + f.axisName()));
+    EXPECT_NE(f.axisName().find("motion score"), std::string::npos);
+    EXPECT_FALSE(ui_->has("front#y:RMSE"));
+    for (const auto& p : f.points()) {
+        ASSERT_TRUE(p.motion.has_value()) << p.candidate.label;
+        EXPECT_TRUE(std::isfinite(p.score) && p.score > 0) << p.candidate.label;
+        EXPECT_EQ(p.score, motionScore(*p.motion)) << p.candidate.label;
+    }
+    // The path as asked, at the capped size of the view's reference.
+    const MotionView& v = f.motion().view();
+    const auto& key = *app().frames().reference().key();
+    EXPECT_EQ(v.spec.frames, 4);
+    EXPECT_EQ(std::make_pair(v.width, v.height), motionSize(key.width, key.height, 96, 54));
+    EXPECT_LE(v.width, 96);
+    EXPECT_LE(v.height, 54);
+    EXPECT_LT(v.width, key.width);
+    // One candidate scored anew, outside the app: traceMotionTruth (no cache) and measureMotion.
+    const size_t cur = f.currentIndex();
+    ASSERT_NE(cur, std::string::npos);
+    const FrontPoint& c = f.points()[cur];
+    ReferenceProvider provider(*v.scene, "");
+    const MotionTruth truth = traceMotionTruth(provider, v.scene->bounds, key.camera, v.width, v.height,
+                                               f.motionPath, v.settings);
+    Renderer r(SSAOLAB_SHADER_DIR);
+    r.setWanted(std::set<std::string>{"ao.denoised"});
+    r.setSize(v.width, v.height);
+    r.setScene(*v.scene);
+    const MotionMetrics m = measureMotion(r, c.candidate.settings, truth);
+    EXPECT_NEAR(c.score, motionScore(m), 1e-9 * motionScore(m));
+    EXPECT_NEAR(c.motion->rmseMean, m.rmseMean, 1e-9);
+    EXPECT_NEAR(c.motion->instability, m.instability, 1e-9);
+    EXPECT_EQ(c.motion->pairs, m.pairs);
+    std::printf("current: motion score %.6f (app) %.6f (measureMotion), still RMSE %.6f, %dx%d, %zu candidates\n",
+                c.score, motionScore(m), c.result.error.rmse, v.width, v.height, f.points().size());
+    // The answers are on the motion axis.
+    const size_t cheap = f.cheapestAtMostCurrentError();
+    if (cheap != std::string::npos) {
+        EXPECT_LE(f.points()[cheap].score, c.score);
+    }
+    // Back to still: the y axis is the RMSE again.
+    ui_->click("front#axis_still");
+    app().view().widgetRects.clear();
+    ui_->frames(2);
+    EXPECT_TRUE(ui_->has("front#y:RMSE"));
+    EXPECT_EQ(f.points().size(), still);
+    // On the motion axis, a camera move cancels as it does the still front.
+    ui_->click("front#axis_motion");
+    ui_->frame();
+    EXPECT_TRUE(f.motion().hasView());
+    app().cameraController().rotate(60, 0);
+    app().frames().noteInteraction();
+    ui_->frame();
+    EXPECT_FALSE(f.motion().hasView());
+    EXPECT_TRUE(f.points().empty());
+    EXPECT_NE(f.waiting().find("waiting for the reference"), std::string::npos) << f.waiting();
 }
