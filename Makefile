@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build run test screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column
+.PHONY: deps configure build engine-modules run test screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column
 
 deps:
 	@bash .ci/install-deps.sh
@@ -14,6 +14,12 @@ configure: deps
 
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
+
+# The web engines' npm packages (three.js, N8AO, playwright-core) at the versions
+# app/bench/peers/package-lock.json pins, into $(BUILD)/peers by npm ci once per lock: `ssaolab tune
+# --engine`, `make peers` and the tests run them in Debian's chromium.
+engine-modules: deps
+	@bash .ci/engine-modules.sh $(BUILD)
 
 # Main job: the app (a window when there is a display; otherwise a headless render of the
 # default scene into ./out/, with a hint on how to get a window).
@@ -28,7 +34,7 @@ screenshot: build
 
 # Every test, then a short libFuzzer run (60 s a target, ASan+UBSan, build-fuzz/) of the glTF
 # loader, the settings parsers and bench merge's shard reader.
-test: build
+test: build engine-modules
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 	@bash .ci/fuzz.sh build-fuzz $(SCENES)
 

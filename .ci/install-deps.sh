@@ -15,8 +15,15 @@ PKGS=(
   glslang-tools  # glslangValidator: every shader variant compiles offline (tests/gl/test_glsl_validator.cpp)
   assimp-testmodels  # 53 glTF files, many broken on purpose (tests/cli/test_cli.cpp)
   xvfb xauth
-  chromium  # report.html opened in a real browser (tests/cli/test_report_html.cpp)
+  chromium  # report.html opened in a real browser (tests/cli/test_report_html.cpp); the web engines (tune --engine)
 )
+# Node.js with npm: the web engines' npm packages (make engine-modules) and their driver. Debian 12's
+# nodejs is 18, which the pinned playwright-core accepts; a newer Node.js already on PATH (e.g.
+# NodeSource's, which bundles npm) is kept rather than replaced.
+if ! command -v node >/dev/null || ! command -v npm >/dev/null ||
+   [ "$(node -p 'process.versions.node.split(".")[0]' 2>/dev/null || echo 0)" -lt 18 ]; then
+  PKGS+=(nodejs npm)
+fi
 
 missing=()
 for p in "${PKGS[@]}"; do

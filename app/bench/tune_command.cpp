@@ -1,6 +1,7 @@
 #include "bench/tune_command.h"
 
 #include "bench/bench_run.h"
+#include "bench/engine_tune.h"
 #include "bench/motion_measure.h"
 #include "bench/tune_guard.h"
 #include "bench/viewpoints.h"
@@ -74,6 +75,7 @@ void addTuneOptions(CLI::App& cmd, TuneOptions& o) {
         ->capture_default_str()
         ->check(CLI::IsMember({"still", "motion"}));
     addMotionPathOptions(cmd, o.motionPath);
+    addEngineTuneOptions(cmd, o.engine);
     cmd.add_flag("--quiet", o.quiet, "no progress output");
 }
 
@@ -387,6 +389,7 @@ void saveTuned(const TuneOptions& o, const Tuner& t, const std::vector<Knob>& kn
 } // namespace
 
 int runTune(const TuneOptions& o) {
+    if (!o.engine.engine.empty()) return runEngineTune(o);
     int w = 0, h = 0;
     parseSizeOption(o.size, w, h);
     checkOutputPath(o.out); // before minutes of tuning: a device or a FIFO is never replaced

@@ -48,6 +48,15 @@ window.setupPeers = async (config) => {
         for (const m of mats) m.side = THREE.DoubleSide;
         flipped += orientNormals(o.geometry);
     });
+    makeCamera();
+    const gl = renderer.getContext();
+    const info = gl.getExtension('WEBGL_debug_renderer_info');
+    return { renderer: info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER),
+             three: THREE.REVISION, meshes, hidden, flipped };
+};
+
+// three.js's camera from cfg.camera (ssaolab's metrics.json camera, in the file's coordinates).
+function makeCamera() {
     const c = cfg.camera;
     const far = c.far === 'inf' ? 1e7 : c.far;
     camera = new THREE.PerspectiveCamera(c.fov_y_deg, cfg.width / cfg.height, c.near, far);
@@ -55,11 +64,7 @@ window.setupPeers = async (config) => {
     camera.up.fromArray(c.up);
     camera.lookAt(new THREE.Vector3().fromArray(c.target));
     camera.updateMatrixWorld(true);
-    const gl = renderer.getContext();
-    const info = gl.getExtension('WEBGL_debug_renderer_info');
-    return { renderer: info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER),
-             three: THREE.REVISION, meshes, hidden, flipped };
-};
+}
 
 // Turns each vertex normal towards the sum of its triangles' winding normals; returns how many
 // were turned.
@@ -86,9 +91,23 @@ function orientNormals(g) {
 // One peer's pass, at its defaults but for the radius. SAOPass's kernel radius is in pixels: R
 // projected at the distance from the eye to the camera's target.
 function makePass(name, opts) {
+    Math.random = seededRandom(0x55a0);
     const p = makePeerPass(name, opts);
     if (p.normalMaterial) p.normalMaterial = viewFacingNormals();
     return p;
+}
+
+// SSAOPass draws its kernel and noise, GTAOPass its denoiser's noise, from Math.random when built:
+// a fixed sequence (mulberry32), restarted for every pass, so one setting gives one image in every
+// session (a tune compares settings measured in different sessions).
+function seededRandom(seed) {
+    let s = seed >>> 0;
+    return () => {
+        s = (s + 0x6D2B79F5) >>> 0;
+        let t = Math.imul(s ^ (s >>> 15), s | 1);
+        t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+        return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+    };
 }
 
 // The passes' normal pre-pass, as ssaolab's G-buffer writes normals: both sides drawn, the
@@ -123,7 +142,7 @@ function viewFacingNormals() {
 function makePeerPass(name, opts) {
     const w = cfg.width, h = cfg.height, R = cfg.radius;
     if (name === 'ssao') {
-        const p = new SSAOPass(scene, camera, w, h);
+        const p = new SSAOPass(scene, camera, w, h, opts.kernelSize); // its one constructor-only setting
         p.kernelRadius = R;
         const c = cfg.camera, far = c.far === 'inf' ? 1e7 : c.far;
         p.maxDistance = R / (far - c.near); // in linear depth over the clip range
@@ -179,17 +198,28 @@ function timeFrames(draw, frames) {
 // Returns the median frame times (with the peer, and the RenderPass alone) and the AO read back
 // from the canvas: one byte per pixel, rows bottom-up as GL reads them, base64.
 window.runPeer = (name, opts, frames) => {
-    const plain = new EffectComposer(renderer);
-    plain.setPixelRatio(1);
-    plain.setSize(cfg.width, cfg.height);
+    const plain = newComposer();
     plain.addPass(new RenderPass(scene, camera));
-    const composer = new EffectComposer(renderer);
-    composer.setPixelRatio(1);
-    composer.setSize(cfg.width, cfg.height);
+    const composer = newComposer();
     composer.addPass(new RenderPass(scene, camera));
     composer.addPass(makePass(name, opts));
     const plainMs = timeFrames(() => plain.render(), frames);
     const peerMs = timeFrames(() => composer.render(), frames);
+    const ao = readAo();
+    plain.dispose();
+    composer.dispose();
+    return { name, frame_ms: peerMs, plain_ms: plainMs, ao_ms: peerMs - plainMs, width: cfg.width, height: cfg.height, ao };
+};
+
+function newComposer() {
+    const c = new EffectComposer(renderer);
+    c.setPixelRatio(1);
+    c.setSize(cfg.width, cfg.height);
+    return c;
+}
+
+// The canvas's red channel (the AO), one byte per pixel, rows bottom-up as GL reads them, base64.
+function readAo() {
     const gl = renderer.getContext(), w = cfg.width, h = cfg.height;
     const rgba = new Uint8Array(w * h * 4);
     gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
@@ -197,8 +227,87 @@ window.runPeer = (name, opts, frames) => {
     for (let i = 0; i < w * h; ++i) ao[i] = rgba[4 * i];
     let s = '';
     for (let i = 0; i < ao.length; i += 0x8000) s += String.fromCharCode.apply(null, ao.subarray(i, i + 0x8000));
-    plain.dispose();
-    composer.dispose();
-    return { name, frame_ms: peerMs, plain_ms: plainMs, ao_ms: peerMs - plainMs, width: w, height: h, ao: btoa(s) };
+    return btoa(s);
+}
+
+// ssaolab tune --engine (run_engine.mjs): one engine at many parameter sets over several views in
+// one session. `params` are rows of the engine's table (app/bench/peers/engines/*.json): each is
+// written as the table says (a property path, an update call, or a constructor argument) over the
+// make-peers settings above, which stand for every row a job leaves out; the pass and its
+// composer are kept per view and constructor values, so a value set costs no shader rebuild
+// unless the engine's own setter rebuilds.
+let engineView = -1, enginePlainMs = null;
+const engines = new Map(); // JSON of the constructor values -> { composer, pass, base }
+
+function readPath(o, path) {
+    for (const k of path.split('.')) o = o?.[k];
+    return o;
+}
+
+function writePath(o, path, v) {
+    const keys = path.split('.'), last = keys.pop();
+    for (const k of keys) o = o[k];
+    o[last] = v;
+}
+
+function readParams(pass, params) {
+    return Object.fromEntries(params.map((p) => {
+        const v = readPath(pass, p.read);
+        return [p.name, p.type === 'boolean' ? Boolean(v) : Number(v)];
+    }));
+}
+
+// The view every later job renders: ssaolab's metrics.json camera and R (scene units).
+window.setEngineView = (index, cam, radius) => {
+    if (index === engineView) return;
+    for (const e of engines.values()) e.composer.dispose();
+    engines.clear();
+    enginePlainMs = null;
+    cfg.camera = cam;
+    cfg.radius = radius;
+    makeCamera();
+    engineView = index;
 };
+
+// job: { peer, params, values: { name: value }, frames }. frames 0: two frames drawn (the first
+// compiles), no timing; else the median frame times as runPeer measures them.
+window.runEngine = (job) => {
+    const ctor = {};
+    for (const p of job.params)
+        if (p.write.constructor_arg !== undefined && job.values[p.name] !== undefined) ctor[p.name] = job.values[p.name];
+    const key = JSON.stringify(ctor);
+    let e = engines.get(key);
+    if (!e) {
+        const pass = makePass(job.peer, ctor);
+        const composer = newComposer();
+        composer.addPass(new RenderPass(scene, camera));
+        composer.addPass(pass);
+        e = { composer, pass, base: readParams(pass, job.params) };
+        engines.set(key, e);
+    }
+    for (const p of job.params) {
+        if (p.write.constructor_arg !== undefined) continue;
+        const v = job.values[p.name] ?? e.base[p.name];
+        if (p.write.call) e.pass[p.write.call]({ [p.write.key]: v });
+        else writePath(e.pass, p.write.path, v);
+    }
+    const out = { values: readParams(e.pass, job.params) };
+    if (job.frames > 0) {
+        if (enginePlainMs === null) {
+            const plain = newComposer();
+            plain.addPass(new RenderPass(scene, camera));
+            enginePlainMs = timeFrames(() => plain.render(), job.frames);
+            plain.dispose();
+        }
+        out.frame_ms = timeFrames(() => e.composer.render(), job.frames);
+        out.plain_ms = enginePlainMs;
+        out.ao_ms = out.frame_ms - enginePlainMs;
+    } else {
+        e.composer.render();
+        e.composer.render();
+    }
+    out.ao = readAo();
+    return out;
+};
+
 window.peersReady = true;

@@ -1,0 +1,15 @@
+// `tune --engine`'s own options (bench/engine_tune.h): part of TuneOptions, so one `tune` command
+// line takes both.
+#pragma once
+#include <string>
+
+namespace ssao {
+
+struct EngineTuneOptions {
+    std::string engine;  // --engine NAME: tune this web engine's own settings (bench/engine_table.h)
+    std::string modules; // --engine-modules DIR: the npm packages (default: the build folder's peers/node_modules)
+    std::string snippet; // --snippet FILE: the JavaScript (default: --out with .js)
+    int timingFrames = 10; // frames whose median times defaults and tuned at the end
+};
+
+} // namespace ssao

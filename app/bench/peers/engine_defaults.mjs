@@ -1,0 +1,33 @@
+// Each engine's own defaults, from the installed package itself: the pass is constructed in Node
+// (constructing needs no GL context) as its table's "class" says, and every parameter is read
+// where its table's "read" path says. Prints {engine: {version, defaults: {name: value}}} as JSON;
+// tests/cli/test_cli_engines.cpp compares it with the tables.
+//
+// node engine_defaults.mjs --modules DIR --tables a.json,b.json
+import fs from 'node:fs';
+import path from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { parseArgs } from './session.mjs';
+
+const args = parseArgs(process.argv, ['modules', 'tables'], 'engine_defaults');
+const modules = path.resolve(args.modules);
+const load = (rel) => import(pathToFileURL(path.join(modules, rel)).href);
+const THREE = await load('three/build/three.module.js');
+const out = {};
+for (const file of args.tables.split(',')) {
+    const table = JSON.parse(fs.readFileSync(file, 'utf8'));
+    const Pass = (await load(table.class.module))[table.class.export];
+    const given = { scene: new THREE.Scene(), camera: new THREE.PerspectiveCamera(), width: 64, height: 64,
+                    resolution: new THREE.Vector2(64, 64) };
+    const pass = new Pass(...table.class.constructor.map((a) => given[a]));
+    const defaults = {};
+    for (const p of table.parameters) {
+        let v = pass;
+        for (const k of p.read.split('.')) v = v?.[k];
+        defaults[p.name] = p.type === 'boolean' ? Boolean(v) : v === undefined ? null : Number(v);
+    }
+    const pkg = JSON.parse(fs.readFileSync(path.join(modules, table.package, 'package.json'), 'utf8'));
+    out[table.engine] = { version: pkg.version, defaults };
+}
+console.log(JSON.stringify(out));
+process.exit(0);

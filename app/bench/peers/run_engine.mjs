@@ -1,0 +1,49 @@
+// One web engine's AO at many parameter sets, over several views of one scene, in one browser
+// session (session.mjs, peers.js runEngine): what `ssaolab tune --engine` asks for each step of
+// its search, then scores in-process against its reference.
+//
+// node run_engine.mjs --modules DIR --jobs FILE --out DIR
+// FILE: { scene (.gltf/.glb), width, height, peer (peers.js's name), params (rows of the engine's
+//         table), views: [{ camera (metrics.json's), radius (R, scene units) }], frames,
+//         jobs: [{ view, values: { name: value }, image (file name), frames (optional) }] }
+// Writes each job's AO as DIR/IMAGE (binary PGM, top row first) and DIR/results.json:
+// { renderer, three_revision, jobs: [{ image, values (what the pass ran with), frame_ms, plain_ms, ao_ms }] }
+import fs from 'node:fs';
+import path from 'node:path';
+import { openSession, parseArgs, pgmBytes } from './session.mjs';
+
+const args = parseArgs(process.argv, ['modules', 'jobs', 'out'], 'run_engine');
+const spec = JSON.parse(fs.readFileSync(args.jobs, 'utf8'));
+const { width, height } = spec;
+let session;
+try {
+    session = await openSession({ modules: args.modules, sceneFile: spec.scene, width, height,
+                                  camera: spec.views[0].camera, radius: spec.views[0].radius, tool: 'run_engine' });
+} catch (e) {
+    console.error(`run_engine: ${e.message.split('\n')[0]}`);
+    process.exit(1);
+}
+let failed = false;
+try {
+    const { page, setup } = session;
+    fs.mkdirSync(args.out, { recursive: true });
+    const results = { renderer: setup.renderer, three_revision: setup.three, jobs: new Array(spec.jobs.length) };
+    // By view, so each view's passes are built once.
+    const order = spec.jobs.map((_, i) => i).sort((a, b) => spec.jobs[a].view - spec.jobs[b].view || a - b);
+    for (const i of order) {
+        const job = spec.jobs[i], view = spec.views[job.view];
+        await page.evaluate(([k, c, r]) => window.setEngineView(k, c, r), [job.view, view.camera, view.radius]);
+        const r = await page.evaluate((j) => window.runEngine(j),
+            { peer: spec.peer, params: spec.params, values: job.values ?? {}, frames: job.frames ?? spec.frames ?? 0 });
+        fs.writeFileSync(path.join(args.out, path.basename(job.image)), pgmBytes(r.ao, width, height));
+        const { ao, ...rest } = r;
+        results.jobs[i] = { image: path.basename(job.image), ...rest };
+    }
+    fs.writeFileSync(path.join(args.out, 'results.json'), JSON.stringify(results, null, 1));
+} catch (e) {
+    console.error(`run_engine: ${e.message.split('\n')[0]}`);
+    failed = true;
+} finally {
+    await session.close();
+}
+process.exit(failed || session.failed() ? 1 : 0);
