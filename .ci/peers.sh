@@ -19,11 +19,7 @@ for tool in node npm /usr/bin/chromium; do
   command -v "$tool" >/dev/null || { echo "peers: $tool not found (Node.js with npm, and Debian's chromium)" >&2; exit 1; }
 done
 # The peers' packages, at the versions the lock pins (from the npm registry, once per lock).
-if ! cmp -s app/bench/peers/package-lock.json "$MODS/package-lock.json" || [ ! -d "$MODS/node_modules/three" ]; then
-  rm -rf "$MODS" && mkdir -p "$MODS"
-  cp app/bench/peers/package.json app/bench/peers/package-lock.json "$MODS/"
-  (cd "$MODS" && npm ci --no-audit --no-fund >/dev/null)
-fi
+bash .ci/engine-modules.sh "$BUILD"
 # Every configuration at the same R, 5 % of the scene's diagonal (as `bench`): the baseline's own
 # preset has a world radius of 0.5.
 R_SET=(--set ao.radius_mode=scene --set ao.radius_scene=0.05)
