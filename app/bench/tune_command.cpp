@@ -390,6 +390,7 @@ void saveTuned(const TuneOptions& o, const Tuner& t, const std::vector<Knob>& kn
 
 int runTune(const TuneOptions& o) {
     if (!o.engine.engine.empty()) return runEngineTune(o);
+    if (!o.engine.snippet.empty()) throw Error("--snippet writes an engine's settings as JavaScript: add --engine NAME");
     int w = 0, h = 0;
     parseSizeOption(o.size, w, h);
     checkOutputPath(o.out); // before minutes of tuning: a device or a FIFO is never replaced

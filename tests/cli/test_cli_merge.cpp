@@ -25,7 +25,8 @@ std::string b64(const std::string& s) {
 // Two shards of one small benchmark, measured once for every test here.
 class Merge : public ::testing::Test {
   protected:
-    static std::string root() { return std::string(SSAOLAB_TEST_TMP) + "/merge"; }
+    // Per process: ctest runs each test of this suite in a process of its own, side by side.
+    static std::string root() { return std::string(SSAOLAB_TEST_TMP) + "/merge_" + std::to_string(::getpid()); }
     static std::string shard(int k) { return root() + "/shard" + std::to_string(k); }
 
     static void SetUpTestSuite() {
