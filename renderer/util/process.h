@@ -1,6 +1,7 @@
 // Starting another program (git, python3, chromium) from an argv vector with posix_spawnp: never
 // through a shell, so a name holding quotes, `$(...)`, backticks, ';' or newlines is one argument and
-// nothing else (tests/cpu/test_file_gate.cpp fails the build on system( or popen( in app/ and renderer/).
+// nothing else (tests/cpu/test_file_gate.cpp fails on any call of the C library's shell runners in
+// app/ and renderer/).
 #pragma once
 #include <string>
 #include <vector>

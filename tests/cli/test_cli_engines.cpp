@@ -42,10 +42,11 @@ bool nodeRuns() {
     return ssao::runProgram({"node", "--version"}, ssao::ChildStream::Discard, ssao::ChildStream::Discard).exitCode == 0;
 }
 
+// `make test` and `make test-sanitize` install them first: missing, the test fails and says how.
 #define NEED_MODULES()                                                                                             \
-    if (!nodeRuns() || !modulesInstalled())                                                                        \
-    GTEST_SKIP() << "Node.js or the pinned npm packages are not installed in " << kModules                        \
-                 << " (make engine-modules installs them from app/bench/peers/package-lock.json)"
+    ASSERT_TRUE(nodeRuns() && modulesInstalled())                                                                  \
+        << "Node.js or the pinned npm packages are not installed in " << kModules                                 \
+        << " (make engine-modules installs them from app/bench/peers/package-lock.json)"
 
 // A corner: floor, back wall and left wall, 2 units a side, with normals; buffer as a data URI.
 std::string writeCornerGltf(const std::string& name) {
@@ -156,7 +157,7 @@ TEST(EngineTables, DefaultsAreThePinnedPackagesOwn) {
 }
 
 TEST(EngineSnippet, ParsesAsJavaScriptAndSetsExactlyTheTunedValues) {
-    if (!nodeRuns()) GTEST_SKIP() << "Node.js is not installed (make deps)";
+    ASSERT_TRUE(nodeRuns()) << "Node.js is not installed (make deps)";
     for (const std::string& n : ssao::engineNames()) {
         const ssao::EngineTable t = ssao::findEngine(n);
         std::vector<std::pair<std::string, double>> values;
