@@ -133,6 +133,9 @@ struct Commands {
                         "folder for saved presets (default $XDG_CONFIG_HOME/ssaolab/presets)")->type_name(ssao::kInDir);
         view.add_option("--size", windowSize, "window size WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
         ssao::addLensOptions(view, viewProjection, viewDepth);
+        view.add_option("--engine-modules", wo.app.engineModules,
+                        "the web engines' npm packages for the Front tab (default: the build folder's peers/node_modules, from make engine-modules)")
+            ->type_name(ssao::kInDir);
         view.add_option("--frames", wo.frames, "draw N frames then exit (for tests and screenshots)")
             ->check(ssao::cliRange(0, 1000000));
         view.add_option("--screenshot", wo.screenshot, "with --frames: save the last frame as PNG")->type_name(ssao::kOutFile);

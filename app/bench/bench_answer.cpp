@@ -15,6 +15,7 @@ size_t answer(const BenchRun& run, const Question& q) {
     size_t best = std::string::npos;
     for (const ConfigSummary& s : run.summary) {
         if (!std::isfinite(s.rmse) || !std::isfinite(s.timeRatio)) continue;
+        if (run.sweep.configs[s.config].isEngine()) continue; // the answer is a preset ssaolab renders
         if (q.budgetMs > 0 && !(s.gpuMs <= q.budgetMs)) continue;
         if (q.budgetRatio > 0 && !(s.timeRatio <= q.budgetRatio)) continue;
         if (q.maxError > 0 && !(s.rmse <= q.maxError)) continue;

@@ -24,9 +24,11 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <set>
 
@@ -94,6 +96,7 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
                  "also score every configuration in motion along a camera path from each view (a reference per "
                  "frame): motion RMSE, instability, ghosting columns");
     addMotionPathOptions(cmd, o.motionPath);
+    addBenchEngineOptions(cmd, o.engines);
     cmd.add_flag(
         "--no-plot", [&o](int64_t) { o.plot = false; }, "skip the matplotlib plot");
     cmd.add_flag("--quiet", o.quiet, "no progress output");
@@ -111,10 +114,12 @@ std::string hostName() {
 // baseline on that view) and its configurations.
 class SceneBench {
   public:
-    SceneBench(const BenchOptions& o, HeadlessRunner& runner, Renderer& r, BenchRun& run, ReferenceVariant variant)
-        : o_(o), runner_(runner), r_(r), run_(run), variant_(variant) {}
+    SceneBench(const BenchOptions& o, HeadlessRunner& runner, Renderer& r, BenchRun& run, ReferenceVariant variant,
+               BenchEngines& engines)
+        : o_(o), runner_(runner), r_(r), run_(run), variant_(variant), engines_(engines) {}
 
     void run(size_t si, const std::string& spec, Scene& scene, const std::vector<WorkUnit>& units) {
+        const size_t firstRow = run_.views.size();
         const float radius = o_.radiusScene * 2.0f * scene.bounds.radius();
         r_.setScene(scene);
         ReferenceProvider provider(scene);
@@ -132,6 +137,14 @@ class SceneBench {
             if (!configs.empty()) facts["viewpoints"].push_back(view(scene, vps[vi].first, vps[vi].second, vi, radius, provider, configs));
         }
         run_.facts["scenes"].push_back(facts);
+        if (!engines_.active()) return;
+        engines_.runScene(spec, scene, radius, o_.quiet, run_);
+        std::map<std::string, size_t> order; // the engines' rows among the others: viewpoint, then configuration
+        for (size_t vi = 0; vi < vps.size(); ++vi)
+            order[vps[vi].first] = vi;
+        std::stable_sort(run_.views.begin() + long(firstRow), run_.views.end(), [&](const ViewResult& a, const ViewResult& b) {
+            return order[a.viewpoint] != order[b.viewpoint] ? order[a.viewpoint] < order[b.viewpoint] : a.config < b.config;
+        });
     }
 
   private:
@@ -178,20 +191,31 @@ class SceneBench {
         const ViewResult base = one(sweep.baseline, scene.name, vname, radius, ref, vi == 0 ? thumbs : "");
         const bool ownsBaseline = std::find(configs.begin(), configs.end(), sweep.baseline) != configs.end();
         if (ownsBaseline) run_.views.push_back(base);
+        EngineViewWork engineWork{vname, r_.camera(), {}, {}, screen, base.gpuMs, vi == 0 ? thumbs : "", {}};
         for (size_t k = 0; k < configs.size(); ++k) {
             if (configs[k] == sweep.baseline) continue;
+            if (engines_.isEngine(configs[k])) { // measured with the scene's other engine rows, in one browser session
+                engineWork.configs.push_back(configs[k]);
+                continue;
+            }
             ViewResult v = one(configs[k], scene.name, vname, radius, ref, vi == 0 ? thumbs : "");
             v.baselineMs = base.gpuMs;
             run_.views.push_back(v);
             bar.update(double(k + 1) / double(configs.size()));
         }
-        return {{"name", vname},
-                {"index", vi},
-                {"camera", cameraToJson(cam)},
-                {"reference_cached", cached},
-                {"reference_seconds", ref.seconds},
-                {"reference_ambiguous_pixels", ref.ambiguousPixels()},
-                {"reference_mrays_per_second", ref.raysPerSecond() * 1e-6}};
+        nlohmann::json facts = {{"name", vname},
+                                {"index", vi},
+                                {"camera", cameraToJson(cam)},
+                                {"reference_cached", cached},
+                                {"reference_seconds", ref.seconds},
+                                {"reference_ambiguous_pixels", ref.ambiguousPixels()},
+                                {"reference_mrays_per_second", ref.raysPerSecond() * 1e-6}};
+        if (!engineWork.configs.empty()) {
+            engineWork.ref = std::move(ref);
+            engineWork.oracle = std::move(oracle);
+            engines_.addView(std::move(engineWork));
+        }
+        return facts;
     }
 
     ViewResult one(size_t c, const std::string& scene, const std::string& vname, float radius, const ReferenceImage& ref,
@@ -225,6 +249,7 @@ class SceneBench {
     const ReferenceImage* oracle_ = nullptr; // of the view being measured
     ErrorMetrics screen_;                    // its oracle against the truth
     const MotionTruth* motion_ = nullptr;    // its camera path's truth (bench --motion)
+    BenchEngines& engines_;                  // the web engines' rows (bench --engines)
 };
 
 void printBenchSummary(const BenchRun& run, const std::string& out, bool plot) {
@@ -294,12 +319,14 @@ int runBench(const BenchOptions& o) {
     int w = 0, h = 0;
     parseSizeOption(o.size, w, h);
     const ShardSpec shard = parseShard(o.shard);
+    std::vector<std::string> specs = o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
+    BenchEngines engines(o.engines, specs, w, h, o.frames); // a missing browser or a builtin scene: refused here
     makeOutputFolder(o.out);
     BenchRun run;
     run.sweep = loadSweep(o.sweep, o.presetDir, o.baseline);
+    engines.appendTo(run.sweep);
     printWarnings(run.sweep.warnings);
     const ReferenceVariant variant = parseVariant(o.referenceVariant);
-    std::vector<std::string> specs = o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
     std::vector<Scene> scenes = loadNamedScenes(specs);
     const std::vector<WorkUnit> units = shardUnits(scenes.size(), size_t(o.views), run.sweep.configs.size(), shard);
 
@@ -331,7 +358,7 @@ int runBench(const BenchOptions& o) {
                     shard.whole() ? "" : (" (shard " + shard.text() + ": " + std::to_string(units.size()) + " of " +
                                           std::to_string(scenes.size() * o.views * run.sweep.configs.size()) + " units)")
                                              .c_str());
-    SceneBench bench(o, runner, *r, run, variant);
+    SceneBench bench(o, runner, *r, run, variant, engines);
     for (size_t si = 0; si < scenes.size(); ++si)
         bench.run(si, specs[si], scenes[si], units);
     run.shards = nlohmann::json::array({{{"shard", shard.text()},

@@ -4,6 +4,7 @@
 // `--shard K/N` runs a part of the work; `ssaolab bench merge DIR...` joins the parts.
 #pragma once
 #include "bench/bench_answer.h"
+#include "bench/bench_engines.h"
 #include "bench/bench_results.h"
 #include "scene/camera_path.h"
 
@@ -40,6 +41,7 @@ struct BenchOptions {
     CameraPathSpec motionPath;
     double budgetMs = 0, maxError = 0;    // the question to answer (bench/bench_answer.h); 0 = none
     double budgetRatio = 0;               // a budget as a multiple of the baseline's time; 0 = none
+    BenchEngineOptions engines;           // web engines as rows (bench/bench_engines.h)
     bool plot = true;
     bool quiet = false;
 };

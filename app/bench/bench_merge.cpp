@@ -61,7 +61,7 @@ void checkSameBenchmark(const BenchRun& a, const BenchRun& b, const std::string&
         a.sweep.baseline != b.sweep.baseline)
         throw Error(where + ": its sweep has other configurations than the first folder's");
     for (size_t c = 0; c < a.sweep.configs.size(); ++c)
-        if (a.sweep.configs[c].label != b.sweep.configs[c].label ||
+        if (a.sweep.configs[c].label != b.sweep.configs[c].label || a.sweep.configs[c].engine != b.sweep.configs[c].engine ||
             toJson(a.sweep.configs[c].settings) != toJson(b.sweep.configs[c].settings))
             throw Error(where + ": configuration " + std::to_string(c) + " ('" + b.sweep.configs[c].label +
                         "') differs from the first folder's ('" + a.sweep.configs[c].label + "')");

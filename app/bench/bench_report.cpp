@@ -97,7 +97,7 @@ std::string resultsCsv(const BenchRun& run) {
         const BenchConfig& c = cfgs[v.config];
         const std::string shard = run.shards.size() > size_t(v.shard) ? run.shards[v.shard].value("shard", "1/1") : "1/1";
         f << csvField(v.scene) << "," << csvField(v.viewpoint) << "," << csvField(c.label) << ","
-          << csvField(c.settings.ao.technique) << "," << c.baseline << "," << run.summary[v.config].pareto << ","
+          << csvField(c.technique()) << "," << c.baseline << "," << run.summary[v.config].pareto << ","
           << metricCells(v) << "," << num(v.baselineMs) << "," << num(v.timeRatio) << "," << csvField(shard) << ","
           << (v.hasSplit ? num(v.vsOracle.rmse) : "") << "," << (v.hasSplit ? num(v.screen.rmse) : "") << ","
           << shareCells(v.hasSplit, v.error.rmse, v.vsOracle.rmse, v.screen.rmse) << ","
@@ -118,7 +118,7 @@ std::string summaryCsv(const BenchRun& run) {
          "motion_instability,motion_ghosting,settings\n";
     for (const auto& s : run.summary) {
         const BenchConfig& c = cfgs[s.config];
-        f << csvField(c.label) << "," << csvField(c.settings.ao.technique) << "," << c.baseline << "," << s.pareto
+        f << csvField(c.label) << "," << csvField(c.technique()) << "," << c.baseline << "," << s.pareto
           << "," << s.views << "," << num(s.gpuMs) << "," << num(s.gpuMsMin) << "," << num(s.gpuMsMax)
           << "," << num(s.rmse) << "," << num(s.mae) << "," << num(s.bias) << ","
           << num(s.psnrGeometrySrgb) << "," << num(s.psnrFullSrgb) << "," << num(s.rmseEdge) << ","
@@ -244,6 +244,21 @@ static std::string motionMarkdown(const BenchRun& run) {
     return md.str();
 }
 
+// bench --engines: what the engines' rows are and how their time differs from the others' ("" without).
+static std::string engineMarkdown(const BenchRun& run) {
+    std::string names;
+    for (const BenchConfig& c : run.sweep.configs)
+        if (c.isEngine())
+            names += (names.empty() ? "" : ", ") + markdownCell(c.label) + " (" + markdownCell(c.engine.value("package", "")) +
+                     " " + markdownCell(c.engine.value("version", "")) + ")";
+    if (names.empty()) return "";
+    return "\n### Web engines\n\n" + names + ": each engine run in Chromium on the same views, camera, size and R, "
+           "its AO read back and scored against the same reference (defaults: the engine's own with every length set "
+           "from R). Their time is not a GPU timer query: it is the frame with the pass minus the frame without, each "
+           "ended by a 1-pixel read, median over the timed frames after 3 warm-up frames, on Chromium's WebGL; their "
+           "ratio to the baseline compares that with the baseline's GL timer query on the same view.\n";
+}
+
 std::string benchMarkdown(const BenchRun& run, const std::string& plotFile, const Answer* answer) {
     const auto& cfgs = run.sweep.configs;
     const ConfigSummary& base = run.summary[run.sweep.baseline];
@@ -286,6 +301,7 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile, cons
     md << passMarkdown(run);
     md << splitMarkdown(run);
     md << motionMarkdown(run);
+    md << engineMarkdown(run);
     md << "\n### Every configuration\n\n";
     table(false);
     md << "\nTime: GPU timer queries (GL_TIME_ELAPSED) of every pass but the G-buffer and the composite, "

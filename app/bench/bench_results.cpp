@@ -46,6 +46,7 @@ void sharesFields(nlohmann::json& j, double total, double technique, double scre
 
 nlohmann::json configJson(const BenchConfig& c, const ConfigSummary& s) {
     nlohmann::json j = configFields(c, s);
+    if (c.isEngine()) j["settings"] = nullptr, j["engine"] = c.engine; // a web engine's row: its own settings
     splitJson(j, s.technique, s.screen);
     sharesFields(j, s.rmse, s.technique.rmse, s.screen.rmse);
     motionJson(j, s.motion, false);
@@ -177,6 +178,12 @@ BenchConfig readConfig(const Reader& rd, const nlohmann::json& j, const std::str
     if (!b.is_boolean()) rd.fail(where + ": 'baseline' is not true or false");
     c.baseline = b.get<bool>();
     c.settings = defaultSettings();
+    if (j.contains("engine") && !j["engine"].is_null()) { // a web engine's row (results_check.h checks it)
+        if (!j["engine"].is_object()) rd.fail(where + ": 'engine' is not an object");
+        if (!rd.at(j, "settings", where).is_null()) rd.fail(where + ": an engine's row has ssaolab 'settings'");
+        c.engine = j["engine"];
+        return c;
+    }
     try {
         applyJson(c.settings, rd.at(j, "settings", where), where + ".settings");
         validateSettings(c.settings);

@@ -60,13 +60,18 @@ int playwrightNeeds(const std::string& modules) {
 } // namespace
 
 std::string defaultEngineModules() {
+    if (dataRootSource() == "installed") return enginePeersDir() + "/node_modules"; // cmake --install copies them there
     const std::string exe = executablePath();
     if (exe.empty()) return "";
     return (fs::path(exe).parent_path().parent_path() / "peers" / "node_modules").string(); // BUILD/app/ssaolab
 }
 
 EngineTools locateEngineTools(const std::string& modules, const EngineTable& table) {
-    const std::string what = "tune --engine " + table.engine + " runs " + table.title + " in Chromium: ";
+    return locateEngineTools(modules, table, "tune --engine");
+}
+
+EngineTools locateEngineTools(const std::string& modules, const EngineTable& table, const std::string& command) {
+    const std::string what = command + " " + table.engine + " runs " + table.title + " in Chromium: ";
     EngineTools t{"node", modules.empty() ? defaultEngineModules() : modules, enginePeersDir()};
     const int major = nodeMajor(t.node);
     if (major == 0) throw Error(what + "node (Node.js) is not on PATH; " + kInstallHint);
@@ -112,29 +117,40 @@ EngineRunner::~EngineRunner() {
 
 std::vector<EngineResult> EngineRunner::run(const std::vector<EngineJob>& jobs) {
     const std::string tag = "s" + std::to_string(sessions_++), dir = work_ + "/" + tag;
-    nlohmann::json params = nlohmann::json::array(), views = nlohmann::json::array(), list = nlohmann::json::array();
-    for (const EngineParam& p : table_.params)
-        if (p.role != EngineParam::Role::Fixed) params.push_back(p.row);
+    auto rows = [](const EngineTable& t) {
+        nlohmann::json params = nlohmann::json::array();
+        for (const EngineParam& p : t.params)
+            if (p.role != EngineParam::Role::Fixed) params.push_back(p.row);
+        return params;
+    };
+    nlohmann::json views = nlohmann::json::array(), list = nlohmann::json::array(), tables = nlohmann::json::object();
     for (const EngineView& v : views_)
         views.push_back({{"camera", v.camera}, {"radius", v.radius}});
     for (size_t i = 0; i < jobs.size(); ++i) {
-        nlohmann::json values = nlohmann::json::object();
+        const EngineTable& t = jobs[i].table ? *jobs[i].table : table_;
+        nlohmann::json values = nlohmann::json::object(), scale = nlohmann::json::object();
         for (const auto& [name, v] : jobs[i].values)
-            if (const EngineParam* p = table_.find(name)) values[name] = engineValueJson(*p, v);
+            if (const EngineParam* p = t.find(name)) values[name] = engineValueJson(*p, v);
+        for (const auto& [name, f] : jobs[i].scale)
+            if (t.find(name)) scale[name] = f;
         list.push_back({{"view", jobs[i].view}, {"values", values}, {"image", "j" + std::to_string(i) + ".pgm"},
                         {"frames", jobs[i].frames}});
+        if (!scale.empty()) list.back()["scale"] = scale;
+        if (t.peer != table_.peer) list.back()["peer"] = t.peer, tables[t.peer] = rows(t);
     }
     const nlohmann::json spec = {{"scene", scene_}, {"width", width_}, {"height", height_}, {"peer", table_.peer},
-                                 {"params", params}, {"views", views}, {"frames", 0}, {"jobs", list}};
+                                 {"params", rows(table_)}, {"tables", tables}, {"views", views}, {"frames", 0},
+                                 {"jobs", list}};
     writeFileAtomically(dir + ".json", dumpJson(spec) + "\n");
     const ProgramRun r = runProgram({tools_.node, tools_.scripts + "/run_engine.mjs", "--modules", tools_.modules,
                                      "--jobs", dir + ".json", "--out", dir},
                                     ChildStream::Capture, ChildStream::Capture);
-    if (!r.started) throw Error("cannot start " + tools_.node + " for " + table_.title);
-    if (r.exitCode != 0) throw Error(table_.title + " in Chromium failed: " + lastLine(r.out));
+    const std::string who = tables.empty() ? table_.title : "the web engines"; // several in one session
+    if (!r.started) throw Error("cannot start " + tools_.node + " for " + who);
+    if (r.exitCode != 0) throw Error(who + " in Chromium failed: " + lastLine(r.out));
     const nlohmann::json res = readJsonFile(dir + "/results.json", "engine results");
     if (!res.contains("jobs") || !res["jobs"].is_array() || res["jobs"].size() != jobs.size())
-        throw Error(table_.title + " in Chromium returned " + dir + "/results.json without one entry per job");
+        throw Error(who + " in Chromium returned " + dir + "/results.json without one entry per job");
     std::vector<EngineResult> out;
     for (size_t i = 0; i < jobs.size(); ++i) {
         const nlohmann::json& j = res["jobs"][i];
@@ -144,6 +160,8 @@ std::vector<EngineResult> EngineRunner::run(const std::vector<EngineJob>& jobs) 
             for (const auto& [name, v] : j["values"].items())
                 if (v.is_number() || v.is_boolean()) e.values[name] = v.is_boolean() ? double(v.get<bool>()) : v.get<double>();
         if (j.contains("ao_ms") && j["ao_ms"].is_number()) e.aoMs = j["ao_ms"].get<double>();
+        if (j.contains("ao_ms_min") && j["ao_ms_min"].is_number()) e.aoMsMin = j["ao_ms_min"].get<double>();
+        if (j.contains("ao_ms_max") && j["ao_ms_max"].is_number()) e.aoMsMax = j["ao_ms_max"].get<double>();
         out.push_back(std::move(e));
     }
     std::error_code ec;

@@ -1,9 +1,9 @@
 // A web engine's AO, rendered for real: Node.js runs app/bench/peers/run_engine.mjs, which drives
 // Debian's Chromium (playwright-core from the npm packages app/bench/peers/package-lock.json pins,
 // installed by `make engine-modules` into the build folder) through one session per batch of jobs:
-// one scene, several views (ssaolab's camera and R), many parameter sets. Each job's AO comes back
-// as a PGM, read here as AO in [0, 1] at the view's pixels, to be scored in-process with
-// metrics/evaluate.h, as `render --score` scores it.
+// one scene, several views (ssaolab's camera and R), many parameter sets (of one engine, or of
+// several: bench --engines). Each job's AO comes back as a PGM, read here as AO in [0, 1] at the
+// view's pixels, to be scored in-process with metrics/evaluate.h, as `render --score` scores it.
 #pragma once
 #include "bench/engine_table.h"
 #include "output/image.h"
@@ -27,6 +27,8 @@ struct EngineTools {
 // table names; `modules` "" = the build folder's peers/node_modules (beside app/ssaolab). Anything
 // missing throws one line naming what to install.
 EngineTools locateEngineTools(const std::string& modules, const EngineTable& table);
+// The same, its messages opening with `command` ("bench --engines") instead of `tune --engine`'s.
+EngineTools locateEngineTools(const std::string& modules, const EngineTable& table, const std::string& command);
 
 // The build folder's peers/node_modules, found from this binary's place in it ("" when unknown).
 std::string defaultEngineModules();
@@ -40,12 +42,16 @@ struct EngineJob {
     int view = 0;
     std::map<std::string, double> values; // rows left out keep the make-peers settings
     int frames = 0;                       // 0: one image, no timing; else the median of this many frames
+    std::map<std::string, double> scale;  // rows set to the make-peers value times this (a tune's relative settings)
+    const EngineTable* table = nullptr;   // another engine than the runner's, in the same session (bench --engines)
 };
 
 struct EngineResult {
     Image ao;                             // 1 channel, [0, 1], top row first
     std::map<std::string, double> values; // what the pass ran with, every non-fixed row
     double aoMs = std::numeric_limits<double>::quiet_NaN(); // frame with the pass - frame without (frames > 0)
+    // The fastest and slowest timed frame with the pass, less the same frame without (frames > 0).
+    double aoMsMin = std::numeric_limits<double>::quiet_NaN(), aoMsMax = std::numeric_limits<double>::quiet_NaN();
 };
 
 class EngineRunner {

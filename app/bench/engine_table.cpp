@@ -77,6 +77,12 @@ void readSearch(EngineParam& p, const nlohmann::json& row, const std::string& wh
     p.searchLo = numberOf(s["range"][0], EngineParam::Type::Number, where + " search range");
     p.searchHi = numberOf(s["range"][1], EngineParam::Type::Number, where + " search range");
     p.relative = s.value("relative", false);
+    if (s.contains("per_radius")) {
+        if (!s["per_radius"].is_number_integer() || std::abs(s["per_radius"].get<int>()) != 1)
+            throw Error(where + ": \"per_radius\" is 1 (a length: x R) or -1 (x 1 / R)");
+        p.perRadius = s["per_radius"].get<int>();
+    }
+    if (p.relative && p.perRadius) throw Error(where + ": a search is relative to the make-peers value or per R, not both");
     p.log = s.value("log", false);
     if (!(p.searchLo < p.searchHi) || (p.log && p.searchLo <= 0))
         throw Error(where + ": the search range must be lo < hi (lo > 0 on a log grid)");
@@ -109,6 +115,12 @@ EngineParam readParam(const nlohmann::json& row, const std::string& file) {
     }
     readWrite(p, row, where);
     readSearch(p, row, where);
+    if (row.contains("scales_with_budget")) {
+        if (!row["scales_with_budget"].is_boolean()) throw Error(where + ": \"scales_with_budget\" must be true or false");
+        p.scalesWithBudget = row["scales_with_budget"].get<bool>();
+        if (p.scalesWithBudget && (p.role != EngineParam::Role::Cost || p.type == EngineParam::Type::Boolean || p.defaultValue <= 0))
+            throw Error(where + ": only a positive numeric cost parameter scales with the budget");
+    }
     p.row = row;
     return p;
 }

@@ -30,8 +30,15 @@ struct EngineParam {
     int constructorArg = -1;
     // Shape rows: the search space, in units of the harness's value for the view (relative) or of
     // the parameter itself; log: grid spaced evenly in log(value).
+    // perRadius: in units of R^perRadius of the view (1: a length the engine compares with scene
+    // distances, such as SAOPass's bias under the harness's scale; -1: a factor on such a length,
+    // such as its intensity), so one value fits scenes of any scale; 0: not.
     bool relative = false, log = false;
+    int perRadius = 0;
     double searchLo = 0, searchHi = 0;
+    // Cost rows: the value scales with a time budget (a sample count: more is a finer estimate of the
+    // same AO); `tune --engine --budget-*` multiplies every such row by one factor.
+    bool scalesWithBudget = false;
     nlohmann::json row; // the row as the table writes it (sent to the runner)
 };
 

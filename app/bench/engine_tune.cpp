@@ -1,6 +1,10 @@
 #include "bench/engine_tune.h"
 
+#include "bench/bench_run.h"
+#include "bench/engine_compare.h"
 #include "bench/engine_runner.h"
+#include "bench/engine_tune_page.h"
+#include "bench/engine_tuner.h"
 #include "bench/engine_snippet.h"
 #include "bench/engine_table.h"
 #include "bench/tune_guard.h"
@@ -40,6 +44,15 @@ void addEngineTuneOptions(CLI::App& cmd, EngineTuneOptions& o) {
         ->type_name(kInDir);
     cmd.add_option("--snippet", o.snippet, "with --engine: the settings as JavaScript for the engine's API (default: --out with .js)")
         ->type_name(kOutFile);
+    cmd.add_option("--budget-ms", o.budgetMs,
+                   "with --engine: the AO time (ms, training views' mean) that chooses the sample counts: the largest "
+                   "that fits, after the shape is fitted (default: the engine's own counts)")
+        ->type_name("MS")
+        ->check(cliRange(0.0, 1e6));
+    cmd.add_option("--budget-ratio", o.budgetRatio,
+                   "with --engine: the budget as a multiple of the defaults' AO time, measured in the same run")
+        ->type_name("X")
+        ->check(cliRange(0.0, 1000.0));
     cmd.add_option("--timing-frames", o.timingFrames, "with --engine: frames whose median times the defaults and the tuned settings")
         ->capture_default_str()
         ->check(cliRange(1, 1000));
@@ -47,227 +60,38 @@ void addEngineTuneOptions(CLI::App& cmd, EngineTuneOptions& o) {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Which score a view counts in: fitted on; held out of a training scene; of a held-out scene.
-enum class Role { Train, HeldOutView, HeldOutScene };
-
-struct View {
+// One scene's views of one role: [0] defaults, [1] tuned; MSE and AO ms means.
+struct SceneScore {
     size_t scene;
-    int index; // in its scene's runner
-    std::string viewpoint;
-    Role role;
-    Camera camera; // fitted clip planes, scene frame
-    ReferenceImage ref;
-    std::map<std::string, double> base; // what the engine ran with at its make-peers settings here
-};
-
-struct Knob {
-    const EngineParam* p;
-    double lo, hi, value; // value: x the view's make-peers value when p->relative, else the value itself
-};
-using Candidate = std::vector<Knob>; // empty: the make-peers settings
-
-struct Sample {
-    size_t view;
-    double mse, ms;
-};
-
-double meanOf(const std::vector<double>& v) {
-    double s = 0;
-    for (double x : v)
-        s += x;
-    return v.empty() ? kNaN : s / double(v.size());
-}
-
-class EngineTuner {
-  public:
-    EngineTuner(const TuneOptions& o, EngineTable table, int w, int h)
-        : o_(o), table_(std::move(table)), tools_(locateEngineTools(o.engine.modules, table_)), w_(w), h_(h) {}
-
-    // Scenes (glTF files: the browser loads them), their viewpoints and references, one runner each.
-    void prepare() {
-        std::vector<std::string> specs = o_.scenes;
-        specs.insert(specs.end(), o_.heldOutScenes.begin(), o_.heldOutScenes.end());
-        for (size_t si = 0; si < specs.size(); ++si) {
-            scenes_.push_back(loadNamedScene(specs[si]));
-            addViews(si, specs[si], si >= o_.scenes.size());
-        }
-    }
-
-    // The make-peers settings on every view: what each ran with becomes its base.
-    void measureDefaults() {
-        const auto samples = measure({Candidate{}}, [](Role) { return true; }, 0, true);
-        for (const Sample& s : samples[0])
-            defaults_[s.view] = s.mse;
-    }
-
-    std::vector<Knob> chooseKnobs() const {
-        std::vector<Knob> knobs;
-        for (const EngineParam& p : table_.params) {
-            const bool named = std::find(o_.knobs.begin(), o_.knobs.end(), p.name) != o_.knobs.end();
-            if (p.role == EngineParam::Role::Shape && (o_.knobs.empty() || named))
-                knobs.push_back({&p, p.searchLo, p.searchHi, p.relative ? 1.0 : views_[firstTrain()].base.at(p.name)});
-        }
-        for (const std::string& k : o_.knobs) {
-            const EngineParam* p = table_.find(k);
-            if (!p || p->role != EngineParam::Role::Shape)
-                throw Error("--knob " + k + " is not a shape parameter of " + table_.engine + " (" + shapeNames() +
-                            "; cost parameters are chosen by a budget, not fitted)");
-        }
-        return knobs;
-    }
-
-    double trainScore() const {
-        std::vector<double> v;
-        for (const View& view : views_)
-            if (view.role == Role::Train) v.push_back(defaults_.at(&view - views_.data()));
-        return meanOf(v);
-    }
-
-    // Coordinate search: each knob over a grid inside its bracket, which halves every round.
-    void search(std::vector<Knob>& knobs, double best) {
-        ProgressBar bar("  search " + std::to_string(knobs.size()) + " parameters of " + table_.title, !o_.quiet);
-        const int total = o_.rounds * int(knobs.size());
-        int done = 0;
-        for (int round = 0; round < o_.rounds; ++round)
-            for (Knob& k : knobs) {
-                std::vector<Candidate> cands;
-                for (int i = 0; i < o_.grid; ++i) {
-                    cands.push_back(knobs);
-                    cands.back()[size_t(&k - knobs.data())].value = gridValue(k, i);
-                }
-                const auto samples = measure(cands, [](Role r) { return r == Role::Train; }, 0, false);
-                for (size_t c = 0; c < cands.size(); ++c) {
-                    std::vector<double> mse;
-                    for (const Sample& s : samples[c])
-                        mse.push_back(s.mse);
-                    if (const double m = meanOf(mse); m < best) best = m, k.value = cands[c][size_t(&k - knobs.data())].value;
-                }
-                shrink(k);
-                bar.update(double(++done) / total);
-            }
-    }
-
-    // Defaults and tuned on every view, timed: [0] the defaults' samples, [1] the tuned ones'.
-    std::vector<std::vector<Sample>> finalMeasure(const std::vector<Knob>& tuned) {
-        return measure({Candidate{}, tuned}, [](Role) { return true; }, o_.engine.timingFrames, false);
-    }
-
-    // The engine's value of each knob on a view.
-    std::map<std::string, double> valuesFor(const Candidate& c, const View& v) const {
-        std::map<std::string, double> out;
-        for (const Knob& k : c) {
-            const double x = k.p->relative ? v.base.at(k.p->name) * k.value : k.value;
-            out[k.p->name] = exportedValue(k.p->type == EngineParam::Type::Integer ? std::round(x) : x);
-        }
-        return out;
-    }
-
-    const std::vector<View>& views() const { return views_; }
-    const View& firstTrainView() const { return views_[firstTrain()]; }
-    const std::vector<Scene>& scenes() const { return scenes_; }
-    const EngineTable& table() const { return table_; }
-    int sessions() const {
-        int n = 0;
-        for (const auto& r : runners_)
-            n += r->sessions();
-        return n;
-    }
-    std::string sceneSpec(size_t i) const { return specs_[i]; }
-
-  private:
-    void addViews(size_t si, const std::string& spec, bool heldOutScene) {
-        const Scene& sc = scenes_.back();
-        const float radius = o_.radiusScene * 2.0f * sc.bounds.radius();
-        ReferenceProvider provider(sc);
-        std::vector<EngineView> engineViews;
-        int k = 0;
-        for (const auto& [name, cam] : viewpoints(defaultCamera(sc), o_.views)) {
-            const Camera c = effectiveCamera(cam, sc.bounds); // the clip planes ssaolab's renderer fits
-            ProgressBar bar("  reference " + sc.name + " " + name, !o_.quiet);
-            ReferenceImage ref = provider.get(c, w_, h_, {radius, o_.referenceRays}, [&](double f) { bar.update(f); });
-            views_.push_back({si, k, name, heldOutScene ? Role::HeldOutScene : k % 2 == 0 ? Role::Train : Role::HeldOutView, c,
-                              std::move(ref), {}});
-            engineViews.push_back({cameraToJson(cameraToFile(c, sc)), radius});
-            ++k;
-        }
-        specs_.push_back(spec);
-        runners_.push_back(std::make_unique<EngineRunner>(tools_, table_, spec, w_, h_, std::move(engineViews)));
-    }
-
-    // Every candidate on every view `want` keeps, one browser session per scene; recordBase: each
-    // view's base becomes what the engine ran with.
-    template <class Want>
-    std::vector<std::vector<Sample>> measure(const std::vector<Candidate>& cands, Want want, int frames, bool recordBase) {
-        std::vector<std::vector<Sample>> out(cands.size());
-        for (size_t si = 0; si < runners_.size(); ++si) {
-            std::vector<EngineJob> jobs;
-            std::vector<std::pair<size_t, size_t>> of; // (candidate, view) of each job
-            for (size_t c = 0; c < cands.size(); ++c)
-                for (size_t v = 0; v < views_.size(); ++v)
-                    if (views_[v].scene == si && want(views_[v].role)) {
-                        jobs.push_back({views_[v].index, valuesFor(cands[c], views_[v]), frames});
-                        of.emplace_back(c, v);
-                    }
-            if (jobs.empty()) continue;
-            const std::vector<EngineResult> res = runners_[si]->run(jobs);
-            for (size_t j = 0; j < jobs.size(); ++j) {
-                View& view = views_[of[j].second];
-                const ErrorMetrics e = evaluate(res[j].ao, view.ref).metrics;
-                if (e.nonFinite > 0) throw Error(table_.title + " returned non-finite AO on " + scenes_[si].name);
-                if (recordBase) view.base = res[j].values;
-                out[of[j].first].push_back({of[j].second, e.rmse * e.rmse, res[j].aoMs});
-            }
-        }
-        return out;
-    }
-
-    double gridValue(const Knob& k, int i) const {
-        const double t = i / double(o_.grid - 1);
-        return k.p->log ? std::exp(std::log(k.lo) + (std::log(k.hi) - std::log(k.lo)) * t) : k.lo + (k.hi - k.lo) * t;
-    }
-
-    void shrink(Knob& k) const {
-        if (k.p->log) {
-            const double half = (std::log(k.hi) - std::log(k.lo)) / 4.0, c = std::log(k.value);
-            k.lo = std::max(k.p->searchLo, std::exp(c - half));
-            k.hi = std::min(k.p->searchHi, std::exp(c + half));
-        } else {
-            const double half = (k.hi - k.lo) / 4.0;
-            k.lo = std::max(k.p->searchLo, k.value - half);
-            k.hi = std::min(k.p->searchHi, k.value + half);
-        }
-    }
-
-    size_t firstTrain() const {
-        for (size_t i = 0; i < views_.size(); ++i)
-            if (views_[i].role == Role::Train) return i;
-        throw Error("no training view");
-    }
-
-    std::string shapeNames() const {
-        std::string s;
-        for (const EngineParam& p : table_.params)
-            if (p.role == EngineParam::Role::Shape) s += (s.empty() ? "shape parameters: " : ", ") + p.name;
-        return s;
-    }
-
-    const TuneOptions& o_;
-    EngineTable table_;
-    EngineTools tools_;
-    int w_, h_;
-    std::vector<Scene> scenes_;
-    std::vector<std::string> specs_;
-    std::vector<View> views_;
-    std::vector<std::unique_ptr<EngineRunner>> runners_;
-    std::map<size_t, double> defaults_; // view -> MSE at the make-peers settings
+    TuneRole role;
+    int views = 0;
+    double mse[2] = {0, 0}, ms[2] = {0, 0};
 };
 
 struct Outcome {
     double train[2], heldViews[2], heldScenes[2], ms[2]; // [0] defaults, [1] tuned; MSE means, AO ms
     FitVerdict verdict;
+    std::vector<SceneScore> perScene; // by scene, then role
 };
+
+std::vector<SceneScore> perSceneScores(const EngineTuner& t, const std::vector<std::vector<Sample>>& s) {
+    std::map<std::pair<size_t, int>, SceneScore> by;
+    for (int side = 0; side < 2; ++side)
+        for (const Sample& x : s[side]) {
+            const TuneView& v = t.views()[x.view];
+            SceneScore& sc = by[{v.scene, int(v.role)}];
+            sc.scene = v.scene, sc.role = v.role;
+            sc.views += side == 0;
+            sc.mse[side] += x.mse, sc.ms[side] += x.ms;
+        }
+    std::vector<SceneScore> out;
+    for (auto& [key, sc] : by) {
+        for (int side = 0; side < 2; ++side)
+            sc.mse[side] /= sc.views, sc.ms[side] /= sc.views;
+        out.push_back(sc);
+    }
+    return out;
+}
 
 // Scores per role and the held-out verdict from the final, timed measurement.
 Outcome judge(const EngineTuner& t, const std::vector<std::vector<Sample>>& s) {
@@ -276,12 +100,12 @@ Outcome judge(const EngineTuner& t, const std::vector<std::vector<Sample>>& s) {
     for (int side = 0; side < 2; ++side) {
         std::vector<double> byRole[3], ms;
         for (const Sample& x : s[side]) {
-            const View& v = t.views()[x.view];
+            const TuneView& v = t.views()[x.view];
             byRole[int(v.role)].push_back(x.mse);
             ms.push_back(x.ms);
-            if (v.role == Role::Train) continue;
+            if (v.role == TuneRole::Train) continue;
             HeldOutScore& h = held[v.scene];
-            h.scene = t.scenes()[v.scene].name + (v.role == Role::HeldOutView ? " (held-out views)" : "");
+            h.scene = t.scenes()[v.scene].name + (v.role == TuneRole::HeldOutView ? " (held-out views)" : "");
             (side == 0 ? h.before : h.after) += x.mse;
             h.views += side == 0;
         }
@@ -294,11 +118,26 @@ Outcome judge(const EngineTuner& t, const std::vector<std::vector<Sample>>& s) {
         list.push_back(h);
     }
     o.verdict = judgeFit(list);
+    o.perScene = perSceneScores(t, s);
     return o;
 }
 
 nlohmann::json rmseJson(double mse) {
     return std::isfinite(mse) ? nlohmann::json(std::sqrt(mse)) : nlohmann::json();
+}
+
+const char* roleName(TuneRole r) {
+    return r == TuneRole::Train ? "train" : r == TuneRole::HeldOutView ? "held-out views" : "held-out scene";
+}
+
+nlohmann::json perSceneJson(const EngineTuner& t, const Outcome& r) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const SceneScore& s : r.perScene)
+        rows.push_back({{"scene", t.scenes()[s.scene].name}, {"role", roleName(s.role)}, {"views", s.views},
+                        {"rmse", {{"defaults", rmseJson(s.mse[0])}, {"tuned", rmseJson(s.mse[1])}}},
+                        {"ao_ms", {{"defaults", std::isfinite(s.ms[0]) ? nlohmann::json(s.ms[0]) : nlohmann::json()},
+                                   {"tuned", std::isfinite(s.ms[1]) ? nlohmann::json(s.ms[1]) : nlohmann::json()}}}});
+    return rows;
 }
 
 nlohmann::json scoresJson(const TuneOptions& o, const Outcome& r) {
@@ -321,13 +160,14 @@ nlohmann::json scoresJson(const TuneOptions& o, const Outcome& r) {
 void printOutcome(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& knobs, const Outcome& r, double seconds) {
     if (o.quiet) return;
     size_t n[3] = {0, 0, 0};
-    for (const View& v : t.views())
+    for (const TuneView& v : t.views())
         ++n[int(v.role)];
     std::printf("tuned %s on %zu views (held out: %zu views of the same scenes, %zu views of %zu other scenes):",
                 t.table().title.c_str(), n[0], n[1], n[2], o.heldOutScenes.size());
     const auto values = t.valuesFor(knobs, t.firstTrainView());
     for (const Knob& k : knobs)
-        std::printf(k.p->relative ? " %s=%.4g (x%.3g)" : " %s=%.4g", k.p->name.c_str(), values.at(k.p->name), k.value);
+        std::printf(k.p->relative ? " %s=%.4g (x%.3g)" : k.p->perRadius == 1 ? " %s=%.4g (%.3g R)" : k.p->perRadius ? " %s=%.4g (%.3g / R)" : " %s=%.4g", k.p->name.c_str(),
+                    values.at(k.p->name), k.value);
     std::printf("\ngeometry RMSE, defaults -> tuned: training %.4f -> %.4f, held-out views %.4f -> %.4f",
                 std::sqrt(r.train[0]), std::sqrt(r.train[1]), std::sqrt(r.heldViews[0]), std::sqrt(r.heldViews[1]));
     if (n[2]) std::printf(", held-out scenes %.4f -> %.4f", std::sqrt(r.heldScenes[0]), std::sqrt(r.heldScenes[1]));
@@ -341,21 +181,92 @@ std::string snippetPath(const TuneOptions& o) {
     return std::filesystem::path(o.out).replace_extension(".js").string();
 }
 
-void save(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& knobs, const Outcome& r, double seconds, int w, int h) {
+std::string pagePath(const TuneOptions& o) {
+    return std::filesystem::path(o.out).replace_extension(".html").string();
+}
+
+std::vector<std::vector<std::string>> settingRows(const EngineTuner& t, const std::vector<Knob>& knobs) {
+    const TuneView& v = t.firstTrainView();
+    const auto tuned = t.valuesFor(knobs, v);
+    std::vector<std::vector<std::string>> rows;
+    for (const EngineParam& p : t.table().params) {
+        if (p.role == EngineParam::Role::Fixed || !v.base.count(p.name)) continue;
+        const auto it = tuned.find(p.name);
+        rows.push_back({p.name, engineValueJson(p, exportedValue(v.base.at(p.name))).dump(),
+                        it == tuned.end() ? "(defaults)" : engineValueJson(p, it->second).dump(),
+                        p.role == EngineParam::Role::Shape ? "shape (fitted)" : "cost (the budget's)", p.unit});
+    }
+    return rows;
+}
+
+// The page's rows: each scene's roles, its shown view's images, and ssaolab's shipped presets
+// measured there, the most accurate within the tuned engine's time chosen.
+std::vector<PageRow> pageRows(const TuneOptions& o, const EngineTuner& t, const Outcome& r, const std::vector<std::vector<Sample>>& s) {
+    std::unique_ptr<HeadlessRunner> runner;
+    std::vector<PageRow> rows;
+    for (const SceneScore& sc : r.perScene) {
+        PageRow row{t.scenes()[sc.scene].name, roleName(sc.role), sc.views,
+                    {"defaults", std::sqrt(sc.mse[0]), sc.ms[0], nullptr}, {"tuned", std::sqrt(sc.mse[1]), sc.ms[1], nullptr}};
+        for (size_t side = 0; side < 2; ++side)
+            for (const Sample& x : s[side]) {
+                const TuneView& v = t.views()[x.view];
+                if (v.scene != sc.scene || v.role != sc.role || !v.shown || !x.eval) continue;
+                row.shownView = v.viewpoint, row.ref = &v.ref;
+                (side == 0 ? row.defaults : row.tuned).eval = x.eval;
+                if (side == 0) continue;
+                if (!runner) runner = std::make_unique<HeadlessRunner>(HeadlessRunner::Options{o.shaderDir, false});
+                ProgressBar bar("  ssaolab's presets on " + row.scene + " " + v.viewpoint, !o.quiet);
+                const float radius = o.radiusScene * 2.0f * t.scenes()[sc.scene].bounds.radius();
+                const auto points = measureShippedPresets(*runner, t.scenes()[sc.scene], v.camera, v.ref, radius, 1,
+                                                          std::min(o.engine.timingFrames, 5));
+                bar.update(1);
+                if (const PresetPoint* best = mostAccurateWithin(points, x.ms))
+                    row.hasSsaolab = true, row.ssaolab = {best->preset, best->rmse, best->ms, best->eval};
+            }
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+void writePage(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& knobs, const Outcome& r,
+               const std::vector<std::vector<Sample>>& s, double seconds) {
     const EngineTable& tab = t.table();
-    const View& v = t.firstTrainView();
+    EnginePage p{tab.title, tab.package, tab.version, o.size, scoresJson(o, r)["metric"].get<std::string>(),
+                 runFacts("Chromium (WebGL 2) for the engine; EGL for ssaolab"), settingRows(t, knobs),
+                 r.verdict.before, r.verdict.after, r.ms[1] / r.ms[0], seconds, pageRows(o, t, r, s)};
+    writeFileAtomically(pagePath(o), engineTunePageHtml(p));
+    if (!o.quiet) std::printf("saved %s\n", pagePath(o).c_str());
+}
+
+nlohmann::json costJson(const EngineTable& tab, const TuneView& v, const std::vector<Knob>& knobs, const std::vector<BudgetRung>& rungs) {
+    nlohmann::json values = nlohmann::json::object(), ladder = nlohmann::json::array();
+    for (const EngineParam& p : tab.params)
+        if (p.role == EngineParam::Role::Cost && v.base.count(p.name)) values[p.name] = engineValueJson(p, v.base.at(p.name));
+    for (const Knob& k : knobs)
+        if (k.p->role == EngineParam::Role::Cost) values[k.p->name] = engineValueJson(*k.p, k.value);
+    if (rungs.empty()) return {{"values", values}, {"note", "no budget given: the engine's defaults"}};
+    for (const BudgetRung& r : rungs)
+        ladder.push_back({{"factor", r.factor}, {"ao_ms", r.ms}, {"chosen", r.chosen}});
+    return {{"values", values}, {"budget_ms", rungs.front().budget}, {"rungs", ladder},
+            {"note", "the sample counts x factor whose training views' mean AO time fits the budget (the largest; the smallest when none fits)"}};
+}
+
+void save(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& knobs, const std::vector<BudgetRung>& rungs,
+          const Outcome& r, double seconds, int w, int h) {
+    const EngineTable& tab = t.table();
+    const TuneView& v = t.firstTrainView();
     const auto values = t.valuesFor(knobs, v);
     std::vector<std::pair<std::string, double>> ordered;
-    nlohmann::json settings = nlohmann::json::object(), defaults = nlohmann::json::object(), search = nlohmann::json::object(),
-                   cost = nlohmann::json::object();
+    nlohmann::json settings = nlohmann::json::object(), defaults = nlohmann::json::object(), search = nlohmann::json::object();
     for (const Knob& k : knobs) {
         ordered.emplace_back(k.p->name, values.at(k.p->name));
         settings[k.p->name] = engineValueJson(*k.p, values.at(k.p->name));
         defaults[k.p->name] = engineValueJson(*k.p, exportedValue(v.base.at(k.p->name)));
-        search[k.p->name] = k.p->relative ? nlohmann::json{{"x_make_peers_value", exportedValue(k.value)}} : nlohmann::json{{"value", exportedValue(k.value)}};
+        if (k.p->role == EngineParam::Role::Shape)
+            search[k.p->name] = k.p->relative    ? nlohmann::json{{"x_make_peers_value", exportedValue(k.value)}}
+                                : k.p->perRadius ? nlohmann::json{{k.p->perRadius == 1 ? "x_R" : "x_1_over_R", exportedValue(k.value)}}
+                                                 : nlohmann::json{{"value", exportedValue(k.value)}};
     }
-    for (const EngineParam& p : tab.params)
-        if (p.role == EngineParam::Role::Cost && v.base.count(p.name)) cost[p.name] = engineValueJson(p, v.base.at(p.name));
     const Scene& sc = t.scenes()[v.scene];
     char head[400];
     std::snprintf(head, sizeof head, "fitted to the ray-traced reference on %s (view '%s', %dx%d, R = %.4g scene units); held-out RMSE %.4f -> %.4f",
@@ -366,10 +277,10 @@ void save(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& k
     const nlohmann::json out = {
         {"engine", tab.engine}, {"title", tab.title}, {"package", tab.package}, {"version", tab.version},
         {"settings", settings}, {"make_peers_settings", defaults}, {"search", search},
-        {"cost_settings", {{"values", cost}, {"note", "no budget given: the engine's defaults"}}},
+        {"cost_settings", costJson(tab, v, knobs, rungs)},
         {"view", {{"scene", std::filesystem::absolute(t.sceneSpec(v.scene), ec).string()}, {"viewpoint", v.viewpoint},
                   {"camera", cameraToJson(cameraToFile(v.camera, sc))}, {"size", {w, h}}, {"radius", o.radiusScene * 2.0 * sc.bounds.radius()}}},
-        {"scores", scoresJson(o, r)}, {"tuning_seconds", seconds}, {"browser_sessions", t.sessions()},
+        {"scores", scoresJson(o, r)}, {"per_scene", perSceneJson(t, r)}, {"tuning_seconds", seconds}, {"browser_sessions", t.sessions()},
         {"snippet", std::filesystem::path(js).filename().string()}};
     writeFileAtomically(o.out, dumpJson(out) + "\n");
     writeFileAtomically(js, snippet);
@@ -390,6 +301,10 @@ void refuseTechniqueOptions(const TuneOptions& o, const EngineTable& t) {
     if (!o.preset.empty()) throw Error("--preset starts a technique's tune; --engine starts from the engine's own defaults");
     if (!o.sets.empty()) throw Error("--set KEY=VALUE sets ssaolab's parameters; --engine tunes the engine's own");
     if (o.objective != "still") throw Error("--objective motion is not measured for --engine (a still frame per view)");
+    if (o.engine.budgetMs > 0 && o.engine.budgetRatio > 0) throw Error("--budget-ms and --budget-ratio: give one budget");
+    const bool scales = std::any_of(t.params.begin(), t.params.end(), [](const EngineParam& p) { return p.scalesWithBudget; });
+    if ((o.engine.budgetMs > 0 || o.engine.budgetRatio > 0) && !scales)
+        throw Error(t.title + " has no sample count a budget could scale (its cost parameters change the denoiser only): drop --budget-ms/--budget-ratio");
 }
 
 } // namespace
@@ -402,16 +317,20 @@ int runEngineTune(const TuneOptions& o) {
     refuseTechniqueOptions(o, table);
     checkOutputPath(o.out); // before minutes of tuning
     checkOutputPath(snippetPath(o));
+    checkOutputPath(pagePath(o));
     EngineTuner t(o, std::move(table), w, h);
     t.prepare();
     t.measureDefaults();
     std::vector<Knob> knobs = t.chooseKnobs();
     t.search(knobs, t.trainScore());
-    const Outcome r = judge(t, t.finalMeasure(knobs));
+    const std::vector<BudgetRung> rungs = t.chooseCost(knobs);
+    const std::vector<std::vector<Sample>> final = t.finalMeasure(knobs);
+    const Outcome r = judge(t, final);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     printOutcome(o, t, knobs, r, seconds);
     if (r.verdict.overfit && !o.saveOverfit) throw Error(refusalText(r.verdict, o.out)); // nothing written
-    save(o, t, knobs, r, seconds, w, h);
+    save(o, t, knobs, rungs, r, seconds, w, h);
+    writePage(o, t, knobs, r, final, seconds);
     if (r.verdict.overfit)
         printWarnings({overfitSavedText(r.verdict, o.out)});
     else if (!r.verdict.worse.empty())

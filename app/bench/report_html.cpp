@@ -279,7 +279,7 @@ std::string table(const BenchRun& run) {
         const BenchConfig& cfg = run.sweep.configs[c.config];
         s << "<tr class=\"" << (c.pareto ? "on" : "") << (cfg.baseline ? " base" : "") << "\"><td title=\""
           << htmlAttr(cfg.label + alsoKnownAs(cfg, "; ")) << "\">" << htmlText(cfg.label)
-          << "</td><td>" << htmlText(cfg.group) << "</td><td>" << htmlText(cfg.settings.ao.technique) << "</td>" << cell(c.timeRatio, 3)
+          << "</td><td>" << htmlText(cfg.group) << "</td><td>" << htmlText(cfg.technique()) << "</td>" << cell(c.timeRatio, 3)
           << cell(c.gpuMs) << cell(c.rmse) << cell(c.rmseRatio, 3) << cell(c.bias, 3) << cell(c.rmseEdge)
           << cell(c.psnrGeometrySrgb) << cell(c.ssim);
         if (motion) s << cell(c.motion.rmseMean) << cell(c.motion.instability) << cell(c.motion.ghosting, 3);
@@ -304,8 +304,8 @@ std::vector<std::pair<std::string, std::string>> thumbViews(const BenchRun& run)
 std::string thumbnails(const BenchRun& run, const std::string& dir) {
     const auto views = thumbViews(run);
     std::vector<const ConfigSummary*> rows;
-    for (const auto& c : run.summary)
-        if (c.pareto || c.config == run.sweep.baseline) rows.push_back(&c);
+    for (const auto& c : run.summary) // and every web engine's row (bench --engines), beside them
+        if (c.pareto || c.config == run.sweep.baseline || run.sweep.configs[c.config].isEngine()) rows.push_back(&c);
     std::sort(rows.begin(), rows.end(), [](auto* a, auto* b) { return a->timeRatio < b->timeRatio; });
     std::ostringstream s;
     s << "<table class=\"thumbs\"><tr><td></td>";
@@ -367,7 +367,13 @@ std::string benchHtml(const BenchRun& run, const std::string& dir, const Answer*
     h << "<h2>Per scene</h2><div class=\"plots\">";
     for (const auto& sc : sceneOrder)
         h << svgPlot(pointsOf(run, byScene[sc]), sc, noiseOf(byScene[sc]), 560);
-    h << "</div><h2>The front and the baseline, side by side</h2>" << thumbnails(run, dir)
+    const bool engines = std::any_of(run.sweep.configs.begin(), run.sweep.configs.end(), [](const BenchConfig& c) { return c.isEngine(); });
+    h << "</div><h2>The front" << (engines ? ", the web engines" : "") << " and the baseline, side by side</h2>"
+      << (engines ? "<p>Web engines (rows 'engine NAME'): run in Chromium on the same views, camera, size and R, scored "
+                    "against the same reference; their time is the frame with the pass minus the frame without on "
+                    "Chromium's WebGL (median), not a GL timer query.</p>"
+                  : "")
+      << thumbnails(run, dir)
       << "<h2>Every configuration</h2><p>Click a column to sort.</p>" << table(run) << kSort << "</body></html>\n";
     return h.str();
 }

@@ -103,6 +103,40 @@ void checkRow(const Facts& f, const ViewResult& v, const std::string& w) {
     }
 }
 
+// A web engine's row (bench --engines): a name as the tables spell them, its package, and the
+// values it was given, each a finite number or a boolean (scale: a positive factor).
+void checkEngine(const Facts& f, const BenchConfig& c, const std::string& where) {
+    constexpr size_t kMaxName = 64, kMaxValues = 64;
+    if (c.baseline) f.fail(where, "is an engine's row and the baseline: the baseline is one of ssaolab's presets");
+    const std::string name = f.text(c.engine, "name", where + ".engine");
+    if (name.empty() || name.size() > kMaxName ||
+        name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-") != std::string::npos)
+        f.fail(where + ".engine.name", "is not an engine's name (lower-case letters, digits and '-')");
+    for (const char* k : {"title", "package", "version"})
+        f.text(c.engine, k, where + ".engine");
+    for (const char* k : {"values", "scale"}) {
+        const nlohmann::json& m = f.at(c.engine, k, where + ".engine");
+        if (!m.is_object() || m.size() > kMaxValues)
+            f.fail(where + ".engine." + k, "is not an object of at most " + std::to_string(kMaxValues) + " values");
+        const bool values = std::string(k) == "values";
+        for (const auto& [key, v] : m.items()) {
+            const bool number = v.is_number() && std::isfinite(v.get<double>());
+            const bool ok = values ? number || v.is_boolean() : number && v.get<double>() > 0;
+            if (key.empty() || key.size() > kMaxName || !ok)
+                f.fail(where + ".engine." + k, "holds an entry that is not a parameter's finite value");
+        }
+    }
+    if (!c.engine.contains("per_radius")) return;
+    const nlohmann::json& pr = c.engine["per_radius"];
+    if (!pr.is_object() || pr.size() > kMaxValues) f.fail(where + ".engine.per_radius", "is not an object of at most 64 entries");
+    for (const auto& [key, v] : pr.items()) {
+        const bool ok = v.is_object() && v.contains("factor") && v["factor"].is_number() && std::isfinite(v["factor"].get<double>()) &&
+                        v.contains("exponent") && v["exponent"].is_number_integer() && std::abs(v["exponent"].get<int>()) == 1;
+        if (key.empty() || key.size() > kMaxName || !ok)
+            f.fail(where + ".engine.per_radius", "holds an entry that is not a finite factor with exponent 1 or -1");
+    }
+}
+
 // The facts a run writes beside its rows; returns each scene's viewpoint names.
 std::vector<std::set<std::string>> checkFacts(const Facts& f, const nlohmann::json& j) {
     int w = 0, h = 0;
@@ -184,6 +218,7 @@ void checkResults(const BenchRun& run, const std::string& origin) {
             if (a.size() > kMaxResultText)
                 f.fail("configurations[" + std::to_string(c) + "].aliases", "holds a label longer than " +
                        std::to_string(kMaxResultText) + " bytes");
+        if (cfg.isEngine()) checkEngine(f, cfg, "configurations[" + std::to_string(c) + "]");
     }
     if (run.views.size() > kMaxResultRows) f.fail("results", "holds more than " + std::to_string(kMaxResultRows) + " rows");
     std::set<std::tuple<std::string, std::string, size_t>> seen;

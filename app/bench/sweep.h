@@ -23,6 +23,13 @@ struct BenchConfig {
     nlohmann::json keys; // {"ao.power": 2, ...}: what differs from the base
     bool baseline = false;
     std::vector<std::string> aliases; // later labels of the same configuration ("vbao defaults")
+    // A web engine's row (bench --engines, bench/bench_engines.h): {"name", "title", "package",
+    // "version", "values", "scale"}; null for ssaolab's own configurations (then `settings` holds it).
+    nlohmann::json engine;
+
+    bool isEngine() const { return engine.is_object(); }
+    // The technique column: ssaolab's technique, or the engine's name.
+    std::string technique() const { return isEngine() ? engine.value("name", std::string()) : settings.ao.technique; }
 };
 
 constexpr size_t kMaxAliases = 16; // aliases kept per configuration (a list of equal values repeats one)

@@ -75,18 +75,30 @@ std::string referenceThumbnail(const std::string& dir) {
     return dir + "/reference.png";
 }
 
-void writeThumbnails(const std::string& dir, size_t config, const Evaluation& e, const ReferenceImage& ref) {
-    ensureDir(dir);
+Image aoThumbnailImage(const Evaluation& e, const ReferenceImage& ref) {
     Image ao = e.test;
     for (size_t i = 0; i < ao.data.size(); ++i)
         if (!(ref.geometry[i] > 0.0f)) ao.data[i] = float(SSAO_SKY_GREY);
-    writePng(small(ao), aoThumbnail(dir, config));
-    writePng(small(errorHeatmap(e.error, ref.geometry)), errorThumbnail(dir, config));
+    return small(ao);
+}
+
+Image errorThumbnailImage(const Evaluation& e, const ReferenceImage& ref) {
+    return small(errorHeatmap(e.error, ref.geometry));
+}
+
+Image referenceThumbnailImage(const ReferenceImage& ref) {
+    return small(referencePreview(ref));
+}
+
+void writeThumbnails(const std::string& dir, size_t config, const Evaluation& e, const ReferenceImage& ref) {
+    ensureDir(dir);
+    writePng(aoThumbnailImage(e, ref), aoThumbnail(dir, config));
+    writePng(errorThumbnailImage(e, ref), errorThumbnail(dir, config));
 }
 
 void writeReferenceThumbnail(const std::string& dir, const ReferenceImage& ref) {
     ensureDir(dir);
-    writePng(small(referencePreview(ref)), referenceThumbnail(dir));
+    writePng(referenceThumbnailImage(ref), referenceThumbnail(dir));
 }
 
 } // namespace ssao

@@ -19,6 +19,11 @@ std::string errorThumbnail(const std::string& dir, size_t config); // dir/c<conf
 std::string referenceThumbnail(const std::string& dir);            // dir/reference.png
 
 // Box-filtered to kThumbnailWidth: the AO (sky in the views' grey) and error.png's heat map.
+// The same images in memory (a page that embeds them: tune --engine's).
+Image aoThumbnailImage(const Evaluation& e, const ReferenceImage& ref);
+Image errorThumbnailImage(const Evaluation& e, const ReferenceImage& ref);
+Image referenceThumbnailImage(const ReferenceImage& ref);
+
 void writeThumbnails(const std::string& dir, size_t config, const Evaluation& e, const ReferenceImage& ref);
 void writeReferenceThumbnail(const std::string& dir, const ReferenceImage& ref);
 

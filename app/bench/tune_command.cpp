@@ -391,6 +391,8 @@ void saveTuned(const TuneOptions& o, const Tuner& t, const std::vector<Knob>& kn
 int runTune(const TuneOptions& o) {
     if (!o.engine.engine.empty()) return runEngineTune(o);
     if (!o.engine.snippet.empty()) throw Error("--snippet writes an engine's settings as JavaScript: add --engine NAME");
+    if (o.engine.budgetMs > 0 || o.engine.budgetRatio > 0)
+        throw Error("--budget-ms and --budget-ratio choose an engine's sample counts: add --engine NAME (bench --budget-ms answers for ssaolab's techniques)");
     int w = 0, h = 0;
     parseSizeOption(o.size, w, h);
     checkOutputPath(o.out); // before minutes of tuning: a device or a FIFO is never replaced

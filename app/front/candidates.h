@@ -13,10 +13,12 @@ namespace ssao {
 
 struct Candidate {
     std::string label;  // "gtao-high", "current", "current + ao.resolution=half"
-    std::string origin; // "preset", "current" or "neighbour"
-    Settings settings;  // with the reference's world radius (withRadius)
+    std::string origin; // "preset", "current", "neighbour" or "engine" (front/engine_front.h)
+    Settings settings;  // with the reference's world radius (withRadius); unused for an engine
     bool baseline = false;
     bool current = false;
+    // A web engine's point: its settings are the engine's own (JavaScript), not ssaolab's.
+    bool isEngine() const { return origin == "engine"; }
 };
 
 // Distinct candidates (by effective settings; the first label wins), the baseline preset included

@@ -9,8 +9,13 @@
 
 namespace ssao {
 
+std::string FrontPanel::tunedDir(const PresetStore& store) {
+    return store.userDir() + "/engines";
+}
+
 void FrontPanel::update(const Settings& current, const PresetStore& store, FrameDriver& frames,
-                        const std::shared_ptr<const Scene>& scene, double budgetMs) {
+                        const std::shared_ptr<const Scene>& scene, const std::string& sceneFile, double budgetMs) {
+    frames.takeNews(); // before the engines' state is read: a result after it wakes the next frame
     if (!active || paused) return;
     const LiveReference& live = frames.reference();
     const auto ref = live.finished();
@@ -18,6 +23,7 @@ void FrontPanel::update(const Settings& current, const PresetStore& store, Frame
         // The view changed (or is changing): what was measured is of another view.
         if (m_.busy()) m_.cancel();
         if (motion_.hasView()) motion_.cancel();
+        engines_.cancel();
         const LiveReference::Status st = live.status();
         char b[96];
         std::snprintf(b, sizeof b, "waiting for the reference of this view (%.0f%%)", 100.0 * st.fraction);
@@ -53,6 +59,9 @@ void FrontPanel::update(const Settings& current, const PresetStore& store, Frame
     else if (motion_.hasView())
         motion_.work(0.0); // takes the path's references once traced
     if (m_.busy() || motion_.measuring()) frames.keepAwake(); // the loop must not sleep while work is left
+    // The engines after ssaolab's own candidates: the browser and the timed frames share the CPU.
+    if (!m_.busy()) engines_.request(v, sceneFile, tunedDir(store));
+    engines_.poll();
     compose();
 }
 
@@ -90,12 +99,19 @@ void FrontPanel::compose() {
         }
         points_.push_back(std::move(q));
     }
+    if (axis == Axis::Still) // an engine's frame is scored still; it has no motion score
+        for (FrontPoint& p : engines_.points())
+            points_.push_back(std::move(p));
     size_t b = std::string::npos;
     for (size_t i = 0; i < points_.size(); ++i)
         if (points_[i].candidate.baseline) b = i;
     std::vector<double> t, e;
     for (auto& p : points_) {
         p.scoreRatio = b != std::string::npos ? p.score / points_[b].score : 0.0;
+        if (p.candidate.isEngine() && b != std::string::npos) {
+            p.timeRatio = p.result.gpuMs / points_[b].result.gpuMs;
+            p.rmseRatio = p.result.error.rmse / points_[b].result.error.rmse;
+        }
         t.push_back(p.result.gpuMs), e.push_back(p.score);
     }
     const std::vector<bool> f = paretoFront(t, e);
@@ -125,7 +141,7 @@ size_t FrontPanel::cheapestAtMostCurrentError() const {
     const auto& p = points();
     size_t best = std::string::npos;
     for (size_t i = 0; i < p.size(); ++i)
-        if (i != c && p[i].score <= p[c].score &&
+        if (i != c && !p[i].candidate.isEngine() && p[i].score <= p[c].score &&
             (best == std::string::npos || p[i].result.gpuMs < p[best].result.gpuMs))
             best = i;
     return best;
@@ -137,7 +153,7 @@ size_t FrontPanel::mostAccurateWithinCurrentTime() const {
     const auto& p = points();
     size_t best = std::string::npos;
     for (size_t i = 0; i < p.size(); ++i)
-        if (i != c && p[i].result.gpuMs <= p[c].result.gpuMs &&
+        if (i != c && !p[i].candidate.isEngine() && p[i].result.gpuMs <= p[c].result.gpuMs &&
             (best == std::string::npos || p[i].score < p[best].score))
             best = i;
     return best;
@@ -149,6 +165,7 @@ size_t FrontPanel::bestForBudget() const {
     size_t best = std::string::npos;
     for (size_t i = 0; i < p.size(); ++i) {
         const ViewResult& r = p[i].result;
+        if (p[i].candidate.isEngine()) continue; // an answer is applied
         if ((budgetMs > 0 && !(r.gpuMs <= budgetMs)) || (maxError > 0 && !(p[i].score <= maxError))) continue;
         if (best == std::string::npos) {
             best = i;

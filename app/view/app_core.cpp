@@ -34,7 +34,11 @@ AppCore::AppCore(const AppOptions& o)
     : opts_(o), store_(PresetStore::standard(o.userPresetDir)),
       frames_(o.shaderDir.empty() ? shaderRoot() : o.shaderDir, o.renderScale, o.interactiveScale, o.reference,
               o.wake),
-      front_(o.shaderDir.empty() ? shaderRoot() : o.shaderDir, o.wake) {
+      front_(o.shaderDir.empty() ? shaderRoot() : o.shaderDir, o.wake, [this] {
+          frames_.postNews(); // an engine's result: the sleeping loop draws a frame
+          if (opts_.wake) opts_.wake();
+      }) {
+    front_.engines().modules = o.engineModules;
     loaded_.name = "defaults";
     // A bad --preset or --scene opens the window anyway, on the defaults and the built-in scene, with
     // the problem in the status line: the user fixes it from the panel instead of reading a log.
@@ -234,18 +238,42 @@ bool AppCore::unsavedChanges() const {
 }
 
 void AppCore::applyCandidate(const Candidate& c) {
+    if (c.isEngine()) { // JavaScript for another renderer: "copy snippet" in the Front tab gives it
+        compareCandidate(c);
+        return;
+    }
     settings_ = withRadiusOf(c.settings, settings_);
     frames_.keepAwake();
     setStatus("applied " + c.label + " (the radius stays yours)", false);
 }
 
 void AppCore::compareCandidate(const Candidate& c) {
-    splitCandidate_ = withRadiusOf(c.settings, settings_);
     view_.splitCandidateB = c.label;
     view_.splitKind = SplitKind::Candidate;
     view_.mode = ViewMode::Split;
+    view_.splitCandidateImage = c.isEngine();
     frames_.keepAwake();
-    setStatus("split view: A = current, B = " + c.label, false);
+    if (!c.isEngine()) {
+        splitCandidate_ = withRadiusOf(c.settings, settings_);
+        setStatus("split view: A = current, B = " + c.label, false);
+        return;
+    }
+    splitCandidate_.reset(); // no chain B: B is the engine's frame
+    view_.splitDifference = false;
+    if (view_.splitBuffer == "composite") view_.splitBuffer = "ao.denoised"; // its AO against the current AO
+    setStatus("split view: A = current " + view_.splitBuffer + ", B = the AO frame of " + c.label +
+                  " from Chromium (an image: B shows AO whatever A shows)",
+              false);
+}
+
+const gl::Texture2D* AppCore::splitImageB(std::string& why) {
+    const std::shared_ptr<const EngineSample> s = front_.engines().sample(view_.splitCandidateB);
+    if (!s) {
+        why = view_.splitCandidateB + ": no frame of this view yet (the Front tab measures it)";
+        return nullptr;
+    }
+    splitImage_.show(std::shared_ptr<const Image>(s, &s->shown)); // uploaded once per frame measured
+    return splitImage_.texture();
 }
 
 std::optional<Settings> AppCore::settingsB() {
@@ -279,7 +307,7 @@ void AppCore::drawUi() {
     drawInfoStrip(frames_, inspector_, view_, ImVec2(panelWidth, io.DisplaySize.y - infoHeight),
                   ImVec2(io.DisplaySize.x - panelWidth, infoHeight));
     try { // after the frame on screen: the front's slice of work for this frame
-        front_.update(settings_, store_, frames_, scene_);
+        front_.update(settings_, store_, frames_, scene_, sceneSpec_);
     } catch (const std::exception& e) {
         front_.paused = true;
         setStatus(std::string("front panel: ") + e.what(), true);

@@ -8,6 +8,7 @@
 #include "front/front_panel.h"
 #include "view/camera_controller.h"
 #include "view/frame_driver.h"
+#include "view/image_texture.h"
 #include "view/inspector.h"
 #include "view/view_state.h"
 
@@ -33,6 +34,7 @@ struct AppOptions {
     bool reference = true;          // trace the ray-traced reference of the view in the background
     std::optional<Projection> projection; // the camera's lens and depth mapping (default: the camera's)
     std::optional<DepthMode> depth;
+    std::string engineModules; // the web engines' npm packages ("" = the build folder's peers/node_modules)
     // Called from the reference's worker thread when it has news (the window posts an empty event
     // to wake its loop); may be empty.
     std::function<void()> wake;
@@ -59,9 +61,13 @@ class AppCore {
     // loaded again with the camera kept; on failure the mode and the scene stay as they were.
     bool setTransparent(Transparent mode);
     // A point of the front: its settings become the current ones (with the user's radius), or B of
-    // the split view, so A | B compares it with the current setting.
+    // the split view, so A | B compares it with the current setting. A web engine's point has no
+    // ssaolab settings: B is its AO frame (an image), and applying it compares it.
     void applyCandidate(const Candidate& c);
     void compareCandidate(const Candidate& c);
+    // Split B as an image (ViewState::imageB): the engine point's AO frame of this view as a texture
+    // (top row at v = 0), or null with why there is none yet.
+    const gl::Texture2D* splitImageB(std::string& why);
     // The world radius that spans of this view what the scene mode spans of a framed scene
     // (metrics/radius_check.h): when the scene radius is far larger than the view.
     void useViewRadius();
@@ -130,6 +136,7 @@ class AppCore {
     std::string cachedSplitPreset_;
     std::optional<Settings> cachedSplitSettings_;
     std::optional<Settings> splitCandidate_; // B when SplitKind::Candidate
+    ImageTexture splitImage_;                // B when it is an engine's frame
     std::string renderedTechnique_; // of the last render (a change compiles shaders: announced first)
     bool announced_ = false;
     bool radiusHinted_ = false; // the status says the radius is too large for the view
@@ -141,6 +148,7 @@ class AppCore {
 void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size);
 void drawParameters(AppCore& app);
 void drawFrontTab(AppCore& app); // ui_front.cpp: the time-against-error front of this view
+void drawEngineSection(AppCore& app); // ui_engines.cpp: the Front tab's web engines
 void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size);
 // Each panel gets the parts it draws: the strip under the image reads the frames and the inspector.
 void drawInfoStrip(FrameDriver& frames, Inspector& inspector, ViewState& view, ImVec2 pos,

@@ -8,6 +8,7 @@
 #include "view/live_reference.h"
 #include "view/view_state.h"
 
+#include <atomic>
 #include <deque>
 #include <filesystem>
 #include <functional>
@@ -51,7 +52,10 @@ class FrameDriver {
 
     // Idle costs nothing: true while something is still changing (input, a pending render, news from
     // the reference's threads); false = the app may sleep.
-    bool busy() const { return busyFrames_ > 0 || reference_.hasNews(); }
+    bool busy() const { return busyFrames_ > 0 || reference_.hasNews() || news_; }
+    // Another background thread has news (any thread may call it); taken by the UI frame that reads it.
+    void postNews() { news_ = true; }
+    bool takeNews() { return news_.exchange(false); }
     void keepAwake(int frames = 3) { busyFrames_ = std::max(busyFrames_, frames); }
     void endUiFrame() {
         if (busyFrames_ > 0) --busyFrames_;
@@ -93,6 +97,7 @@ class FrameDriver {
     std::string shaderError_;
     bool reloaded_ = false;
     int busyFrames_ = 3;
+    std::atomic<bool> news_{false};
     int framesRendered_ = 0;
     double lastInteraction_ = -1e9;
     bool renderedInteractive_ = false;

@@ -19,6 +19,16 @@ namespace {
 
 std::string pointText(const FrontPoint& p, const FrontPoint* base) {
     char b[480];
+    if (p.candidate.isEngine()) {
+        std::snprintf(b, sizeof b,
+                      "%s (a web engine in Chromium)\n%.3f ms AO: frame with the pass - frame without%s\nRMSE "
+                      "%.4f%s, bias %+.4f, edge RMSE %.4f\nclick: its AO frame in Split B",
+                      p.candidate.label.c_str(), p.result.gpuMs,
+                      base ? (", " + std::to_string(p.timeRatio).substr(0, 5) + "x the baseline's").c_str() : "",
+                      p.result.error.rmse, base ? (", " + std::to_string(p.scoreRatio).substr(0, 5) + "x").c_str() : "",
+                      p.result.error.bias, p.result.error.rmseEdge);
+        return b;
+    }
     const std::string tr = base ? ", " + std::to_string(p.timeRatio).substr(0, 5) + "x the baseline's" : "";
     const std::string er = base ? ", " + std::to_string(p.scoreRatio).substr(0, 5) + "x" : "";
     if (p.motion)
@@ -34,9 +44,19 @@ std::string pointText(const FrontPoint& p, const FrontPoint* base) {
     return b;
 }
 
-// A point of the plot: a disc, or above the error axis a triangle pointing up on its top edge.
-void dot(ImDrawList* dl, ImVec2 c, float r, ImU32 col, bool offTop) {
-    if (offTop)
+// A point of the plot: a disc (a web engine's: a diamond), or above the error axis a triangle
+// pointing up on its top edge; the baseline black and large, the front red, an engine orange.
+void dot(ImDrawList* dl, ImVec2 c, const FrontPoint& p, bool baseline, bool offTop) {
+    const bool engine = p.candidate.isEngine();
+    const float r = baseline ? 5.5f : p.front || engine ? 4.0f : 3.0f;
+    const ImU32 col = baseline ? IM_COL32(0, 0, 0, 255)
+                      : p.front ? IM_COL32(214, 39, 40, 255)
+                      : engine  ? IM_COL32(230, 130, 20, 255)
+                                : IM_COL32(150, 150, 150, 255);
+    if (engine && !offTop)
+        dl->AddQuadFilled(ImVec2(c.x, c.y - r - 1.5f), ImVec2(c.x + r + 1.5f, c.y), ImVec2(c.x, c.y + r + 1.5f),
+                          ImVec2(c.x - r - 1.5f, c.y), col);
+    else if (offTop)
         dl->AddTriangleFilled(ImVec2(c.x, c.y - r - 1), ImVec2(c.x - r - 1, c.y + r), ImVec2(c.x + r + 1, c.y + r), col);
     else
         dl->AddCircleFilled(c, r, col);
@@ -111,8 +131,7 @@ size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, si
         const FrontPoint& p = pts[i];
         if (!(p.result.gpuMs > 0) || !std::isfinite(p.score)) continue;
         const ImVec2 c(X(p.result.gpuMs), Y(p.score));
-        const ImU32 col = i == baseline ? IM_COL32(0, 0, 0, 255) : p.front ? IM_COL32(214, 39, 40, 255) : IM_COL32(150, 150, 150, 255);
-        dot(dl, c, i == baseline ? 5.5f : p.front ? 4.0f : 3.0f, col, p.score > ehi);
+        dot(dl, c, p, i == baseline, p.score > ehi);
         if (i == current) dl->AddCircle(c, 8.0f, IM_COL32(30, 110, 255, 255), 16, 2.0f);
         app.view().widgetRects["front#point:" + p.candidate.label] = ImVec4(c.x - 2, c.y - 2, c.x + 2, c.y + 2);
         const float d2 = (c.x - mouse.x) * (c.x - mouse.x) + (c.y - mouse.y) * (c.y - mouse.y);
@@ -224,22 +243,24 @@ void drawFrontTab(AppCore& app) {
                           "denoisers, quality ladder), each with the reference's radius R: GPU time at\n"
                           "this view's size (median of 5 frames after 2) and RMSE against the finished\n"
                           "reference - the numbers `ssaolab bench` gives for the same view.\n"
-                          "Click a point: apply it. Shift+click: compare it with the current one in A|B.");
+                          "Click a point: apply it. Shift+click: compare it with the current one in A|B.\n"
+                          "Diamonds: web engines run in Chromium (Engines, below); a click shows\n"
+                          "one's AO frame in Split B. The answers pick among ssaolab's settings.");
     const auto& pts = f.points();
     const size_t base = f.baselineIndex(), cur = f.currentIndex();
     const size_t hover = plot(app, pts, cur, base, f.referenceNoise(), f.axisName());
     if (hover != std::string::npos) {
         ImGui::SetTooltip("%s", pointText(pts[hover], base == std::string::npos ? nullptr : &pts[base]).c_str());
         if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
-            if (ImGui::GetIO().KeyShift)
+            if (ImGui::GetIO().KeyShift || pts[hover].candidate.isEngine()) // an engine's: B is its frame
                 app.compareCandidate(pts[hover].candidate);
             else
                 app.applyCandidate(pts[hover].candidate);
         }
     }
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("blue ring: current   black: baseline (learnopengl)   red: the front   grey band: "
-                       "the reference's own noise");
+    ImGui::TextWrapped("blue ring: current   black: baseline (learnopengl)   red: the front   diamonds: web "
+                       "engines   grey band: the reference's own noise");
     ImGui::PopStyleColor();
     grainNote(app);
     if (cur != std::string::npos) {
@@ -263,6 +284,7 @@ void drawFrontTab(AppCore& app) {
             answer(app, f.budgetMs > 0 ? "Most accurate within the budget:" : "Fastest at most that error:", b, "budget");
         }
     }
+    drawEngineSection(app);
 }
 
 } // namespace ssao

@@ -182,18 +182,23 @@ void splitControls(AppCore& app) {
     }
     ImGui::SameLine();
     ImGui::SetNextItemWidth(130);
-    if (ImGui::BeginCombo("compare", v.splitBuffer.c_str())) {
-        // Every buffer chain B has too (its own or shared with A), from the graph.
+    if (ImGui::BeginCombo(v.imageB() ? "A shows" : "compare", v.splitBuffer.c_str())) {
+        // Every buffer chain B has too (its own or shared with A), from the graph; against an
+        // engine's frame (an image, no chain B) every buffer of A.
         for (const Resource* r : app.renderer().buffers()) {
             const std::string& b = r->desc.name;
-            if (app.renderer().graph().find("b." + b) && ImGui::Selectable(b.c_str(), v.splitBuffer == b))
+            if ((v.imageB() || app.renderer().graph().find("b." + b)) && ImGui::Selectable(b.c_str(), v.splitBuffer == b))
                 v.splitBuffer = b, f.keepAwake();
         }
         ImGui::EndCombo();
     }
     ImGui::SameLine();
+    ImGui::BeginDisabled(v.imageB()); // A - B is drawn from two chains of the renderer
     if (ImGui::Checkbox("A - B", &v.splitDifference)) f.keepAwake();
+    ImGui::EndDisabled();
     rememberRect(v, "split#difference");
+    if (v.imageB() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("B is the engine's AO frame from Chromium, an image: A - B needs two of ssaolab's chains");
     if (v.splitDifference) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(90);
@@ -262,6 +267,30 @@ void image(ImDrawList* dl, const BufferViews::View* v, ImVec2 p, ImVec2 q, ImVec
     dl->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisable(GL_BLEND); }, nullptr);
     dl->AddImage(texId(v->target.texture()), p, q, uv0, uv1);
     dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
+}
+
+// Split A | B where B is an engine's AO frame (an image of the view, ViewState::imageB): A is the
+// buffer chosen, B the frame whatever A shows.
+void drawImageSplit(AppCore& app, ImDrawList* dl, ImVec2 p, ImVec2 q) {
+    ViewState& v = app.view();
+    const float s = v.splitPosition, x = p.x + (q.x - p.x) * s;
+    image(dl, app.frames().views().find(v.splitBuffer), p, ImVec2(x, q.y), ImVec2(0, 1), ImVec2(s, 0));
+    std::string why;
+    if (const gl::Texture2D* t = app.splitImageB(why)) {
+        dl->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisable(GL_BLEND); }, nullptr);
+        dl->AddImage(texId(*t), ImVec2(x, p.y), q, ImVec2(s, 0), ImVec2(1, 1)); // its top row first
+        dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
+    } else {
+        cover(dl, ImVec2(x, p.y), q, why);
+    }
+    v.widgetRects["split#image_b"] = ImVec4(x, p.y, q.x, q.y);
+    dl->AddLine(ImVec2(x, p.y), ImVec2(x, q.y), IM_COL32(255, 255, 0, 255), 3.0f);
+    dl->AddCircleFilled(ImVec2(x, (p.y + q.y) * 0.5f), 6.0f, IM_COL32(255, 255, 0, 255));
+    v.widgetRects["split#divider"] = ImVec4(x - 4, p.y, x + 4, q.y);
+    label(dl, p, "A: current  " + v.splitBuffer);
+    const std::string bl = "B: " + v.splitCandidateB + "  AO 0..1 (Chromium)" +
+                           (v.splitBuffer.rfind("ao.", 0) == 0 ? "" : ", whatever A shows");
+    label(dl, ImVec2(q.x - ImGui::CalcTextSize(bl.c_str()).x - 10, p.y), bl);
 }
 
 // Every buffer, each under its label, laid out to fill `avail` (ui_layout.h); a click enlarges one.
@@ -334,6 +363,8 @@ void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
             cover(dl, p, q, referenceEmptyReason(app.frames(), app.view().enlarged));
             label(dl, p, (v ? v->label : app.view().enlarged) + tag(app, app.view().enlarged));
             drawSamples(app, dl, p, sz);
+        } else if (app.view().imageB()) {
+            drawImageSplit(app, dl, p, q);
         } else if (app.view().splitDifference) {
             if (r.graph().find("b." + app.view().splitBuffer)) {
                 const BufferViews::View& d =

@@ -22,6 +22,9 @@ struct ViewState {
     SplitKind splitKind = SplitKind::AoOnOff;
     std::string splitPresetB = "crytek-sphere";
     std::string splitCandidateB; // the label of the front point shown as B (SplitKind::Candidate)
+    // B is that point's image, not a chain the renderer draws: a web engine's AO frame.
+    bool splitCandidateImage = false;
+    bool imageB() const { return mode == ViewMode::Split && splitKind == SplitKind::Candidate && splitCandidateImage; }
     std::string splitBuffer = "composite"; // what A | B compares: composite, ao.denoised or ao.raw
     bool splitDifference = false;          // show (A - B) * diffScale instead of the two halves
     float diffScale = 4.0f;
@@ -38,8 +41,9 @@ struct ViewState {
     bool cursorOnImage = false; // the cursor was over the image last frame (the readout wants every buffer)
     int hoverChain = 0; // 1 when the cursor was last over the B half of the split view
     // The cursor is on chain B now: the split view shows B there (not the grid, not A - B).
-    bool cursorOnB() const { return hoverChain && mode == ViewMode::Split && !splitDifference; }
+    bool cursorOnB() const { return hoverChain && mode == ViewMode::Split && !splitDifference && !imageB(); }
     std::string newPresetName;
+    std::string engineFile; // the Front tab's "tuned settings" path field
     int panelTab = 0; // the control panel's tab: Parameters, Scene & camera, Presets, Front
     // Rectangles of widgets drawn last frame, by parameter key or action name (for tests).
     std::map<std::string, ImVec4> widgetRects;

@@ -144,7 +144,7 @@ Image readImage(const std::string& path, const ImageBudget& budget, const std::s
     return decodeImage(readImageFile(path, budget, what), budget, what + " " + path);
 }
 
-void writePng(const Image& img, const std::string& path, float scale, float offset) {
+std::string encodePng(const Image& img, float scale, float offset) {
     const int outC = img.channels == 1 ? 1 : img.channels >= 3 ? 3 : img.channels;
     std::vector<unsigned char> px(size_t(img.width) * img.height * outC);
     for (size_t p = 0; p < size_t(img.width) * img.height; ++p) {
@@ -162,7 +162,17 @@ void writePng(const Image& img, const std::string& path, float scale, float offs
         static_cast<std::string*>(ctx)->append(static_cast<const char*>(data), size_t(size));
     };
     if (!stbi_write_png_to_func(append, &bytes, img.width, img.height, outC, px.data(), img.width * outC))
-        throw Error("cannot write " + path + ": PNG encoding failed");
+        throw Error("PNG encoding failed");
+    return bytes;
+}
+
+void writePng(const Image& img, const std::string& path, float scale, float offset) {
+    std::string bytes;
+    try {
+        bytes = encodePng(img, scale, offset);
+    } catch (const Error& e) {
+        throw Error("cannot write " + path + ": " + e.what());
+    }
     writeFileAtomically(path, bytes);
 }
 

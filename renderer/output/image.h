@@ -31,6 +31,8 @@ float quantile(std::vector<float>& values, double q);
 void writeExr(const Image& img, const std::string& path);
 // 8-bit PNG of `img` mapped through value * scale + offset, clamped to [0,1]; NaN → magenta.
 void writePng(const Image& img, const std::string& path, float scale = 1.0f, float offset = 0.0f);
+// The same PNG's bytes, for a page that embeds it.
+std::string encodePng(const Image& img, float scale = 1.0f, float offset = 0.0f);
 
 // Reading: the file through the file gate (a regular file, at most imageFileBytes(budget)), its
 // header through checkImageBudget, then decoded from memory. Errors name the file as `what PATH`.

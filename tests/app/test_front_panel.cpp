@@ -121,6 +121,7 @@ class FrontPanelApp : public GlTest {
         ui_ = std::make_unique<UiDriver>(o, 1600, 900);
         app().frames().referenceRays = 8;
         app().frames().referenceOn = true;
+        app().front().engines().enabled = false; // the browser's engines: test_front_engines.cpp
         ui_->settle();
     }
     void TearDown() override {

@@ -3,9 +3,11 @@
 // package itself sets; the snippet parses as JavaScript and sets exactly the tuned values; one
 // engine's AO round trip at a tiny size; the refusals when Node.js or the browser is missing.
 #include "bench/engine_runner.h"
+#include "bench/engine_settings_file.h"
 #include "bench/engine_snippet.h"
 #include "bench/engine_table.h"
 #include "cli_run.h"
+#include "engine_test_util.h"
 #include "headless_runner.h"
 #include "metrics/evaluate.h"
 #include "reference/reference_cache.h"
@@ -18,7 +20,9 @@
 
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <set>
+#include <tuple>
 
 using namespace ssaotest;
 namespace fs = std::filesystem;
@@ -29,55 +33,6 @@ namespace {
 // (its defaults with aoRadius = R, and with 2 R), as measured when the round trip was written
 // (llvmpipe, Chromium 156); the tolerance is well inside the 0.008 between the two.
 constexpr double kStoredRmse = 0.0754, kStoredRmse2R = 0.0837, kRoundTripTolerance = 0.003;
-
-const std::string kPeers = std::string(SSAOLAB_SOURCE_DIR) + "/app/bench/peers";
-const std::string kModules = std::string(SSAOLAB_BUILD_DIR) + "/peers/node_modules";
-
-bool modulesInstalled() {
-    return fs::is_regular_file(kModules + "/three/package.json") && fs::is_regular_file(kModules + "/n8ao/package.json") &&
-           fs::is_regular_file(kModules + "/playwright-core/package.json");
-}
-
-bool nodeRuns() {
-    return ssao::runProgram({"node", "--version"}, ssao::ChildStream::Discard, ssao::ChildStream::Discard).exitCode == 0;
-}
-
-// `make test` and `make test-sanitize` install them first: missing, the test fails and says how.
-#define NEED_MODULES()                                                                                             \
-    ASSERT_TRUE(nodeRuns() && modulesInstalled())                                                                  \
-        << "Node.js or the pinned npm packages are not installed in " << kModules                                 \
-        << " (make engine-modules installs them from app/bench/peers/package-lock.json)"
-
-// A corner: floor, back wall and left wall, 2 units a side, with normals; buffer as a data URI.
-std::string writeCornerGltf(const std::string& name) {
-    const float q[3][4][6] = {
-        {{-1, 0, -1, 0, 1, 0}, {1, 0, -1, 0, 1, 0}, {1, 0, 1, 0, 1, 0}, {-1, 0, 1, 0, 1, 0}},
-        {{-1, 0, -1, 0, 0, 1}, {1, 0, -1, 0, 0, 1}, {1, 2, -1, 0, 0, 1}, {-1, 2, -1, 0, 0, 1}},
-        {{-1, 0, -1, 1, 0, 0}, {-1, 2, -1, 1, 0, 0}, {-1, 2, 1, 1, 0, 0}, {-1, 0, 1, 1, 0, 0}}};
-    std::vector<float> pos, nrm;
-    std::vector<uint16_t> idx;
-    for (int f = 0; f < 3; ++f) {
-        for (int v = 0; v < 4; ++v)
-            pos.insert(pos.end(), q[f][v], q[f][v] + 3), nrm.insert(nrm.end(), q[f][v] + 3, q[f][v] + 6);
-        for (int i : {0, 1, 2, 0, 2, 3})
-            idx.push_back(uint16_t(f * 4 + i));
-    }
-    std::vector<unsigned char> bin(pos.size() * 4 + nrm.size() * 4 + idx.size() * 2);
-    std::memcpy(bin.data(), pos.data(), pos.size() * 4);
-    std::memcpy(bin.data() + pos.size() * 4, nrm.data(), nrm.size() * 4);
-    std::memcpy(bin.data() + pos.size() * 8, idx.data(), idx.size() * 2);
-    const std::string pb = std::to_string(pos.size() * 4);
-    const std::string text = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
- "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2}]}],
- "buffers": [{"byteLength": )" + std::to_string(bin.size()) + R"(, "uri": "data:application/octet-stream;base64,)" + base64(bin) + R"("}],
- "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": )" + pb + R"(},
-                 {"buffer": 0, "byteOffset": )" + pb + R"(, "byteLength": )" + pb + R"(},
-                 {"buffer": 0, "byteOffset": )" + std::to_string(pos.size() * 8) + R"(, "byteLength": )" + std::to_string(idx.size() * 2) + R"(}],
- "accessors": [{"bufferView": 0, "componentType": 5126, "count": 12, "type": "VEC3", "min": [-1, 0, -1], "max": [1, 2, 1]},
-               {"bufferView": 1, "componentType": 5126, "count": 12, "type": "VEC3"},
-               {"bufferView": 2, "componentType": 5123, "count": 18, "type": "SCALAR"}]})";
-    return writeTemp(name, text);
-}
 
 // Runs the snippet after a mock of the pass that records every assignment ("configuration.aoRadius")
 // and every update call's keys ("updateGtaoMaterial(radius)"); returns the record.
@@ -231,4 +186,133 @@ TEST(CliEngine, TuneWritesTheSettingsAndASnippetThatSetsThem) {
     EXPECT_TRUE(j["scores"]["time_ratio"].is_number());
     const nlohmann::json got = runSnippet("n8aopass", slurp(js), "tuned");
     EXPECT_EQ(got, (nlohmann::json{{"configuration.aoRadius", j["settings"]["aoRadius"]}})) << slurp(js);
+}
+
+// A time budget scales the sample counts, never the shape: the table marks which rows it scales.
+TEST(EngineTables, OnlySampleCountsScaleWithTheBudget) {
+    std::map<std::string, std::set<std::string>> scaled;
+    for (const std::string& n : ssao::engineNames())
+        for (const ssao::EngineParam& p : ssao::findEngine(n).params)
+            if (p.scalesWithBudget) {
+                EXPECT_EQ(p.role, ssao::EngineParam::Role::Cost) << n << " " << p.name;
+                EXPECT_EQ(p.type, ssao::EngineParam::Type::Integer) << n << " " << p.name;
+                scaled[n].insert(p.name);
+            }
+    EXPECT_EQ(scaled["n8ao"], (std::set<std::string>{"aoSamples", "denoiseSamples"}));
+    EXPECT_EQ(scaled["three-gtao"], (std::set<std::string>{"samples", "pdSamples"}));
+    EXPECT_EQ(scaled["three-ssao"], (std::set<std::string>{"kernelSize"}));
+    EXPECT_TRUE(scaled["three-sao"].empty()); // its sample count is a shader constant, not a setting
+    nlohmann::json t = ssao::readJsonFile(ssao::enginePeersDir() + "/engines/n8ao.json", "table");
+    t["parameters"][0]["scales_with_budget"] = true; // aoRadius: a shape row
+    const std::string bad = writeTemp("engine_budget_shape.json", t.dump());
+    try {
+        ssao::loadEngineTable(bad);
+        ADD_FAILURE() << "a shape row that scales with the budget was accepted";
+    } catch (const ssao::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("only a positive numeric cost parameter scales with the budget"), std::string::npos) << e.what();
+    }
+}
+
+TEST(CliEngine, BudgetOptionsAreRefusedWhereNoBudgetApplies) {
+    const std::string scene = writeCornerGltf("engine_budget_refusal.gltf");
+    const std::string out = outDir("engine_budget_refusal") + ".json";
+    expectCleanFailure(ssaolab("tune --scene builtin:corner --budget-ms 5 --out " + out), "add --engine NAME");
+    expectCleanFailure(ssaolab("tune --engine three-sao --scene " + scene + " --budget-ratio 2 --out " + out),
+                       "has no sample count a budget could scale");
+    expectCleanFailure(ssaolab("tune --engine n8ao --scene " + scene + " --budget-ratio 2 --budget-ms 5 --out " + out), "give one budget");
+    EXPECT_FALSE(fs::exists(out));
+}
+
+// The budget picks the largest sample counts that fit (every rung fits a budget of 100 s), after
+// the fit, and the snippet carries them.
+TEST(CliEngine, ABudgetChoosesTheSampleCountsAfterTheShape) {
+    NEED_MODULES();
+    const std::string scene = writeCornerGltf("engine_budget.gltf");
+    for (const auto& [budget, samples] : std::vector<std::pair<std::string, int>>{{"100000", 64}}) {
+        const std::string out = outDir("engine_budget_" + std::to_string(samples)) + ".json";
+        const CliRun r = ssaolab("tune --engine n8ao --scene " + scene + " --size 96x54 --views 2 --rounds 1 --grid 3 --knob aoRadius "
+                                 "--reference-rays 8 --timing-frames 2 --save-overfit --budget-ms " + budget + " --out " + out + " --quiet");
+        ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+        const nlohmann::json j = ssao::readJsonFile(out, "tuned");
+        EXPECT_EQ(j["settings"]["aoSamples"], samples) << j.dump(1);
+        EXPECT_EQ(j["settings"]["denoiseSamples"], samples / 2) << j.dump(1);
+        ASSERT_EQ(j["cost_settings"]["rungs"].size(), 5u) << j.dump(1);
+        EXPECT_EQ(j["cost_settings"]["rungs"][4]["factor"], 4.0);
+        EXPECT_EQ(j["cost_settings"]["rungs"][4]["chosen"], true) << j.dump(1);
+        EXPECT_TRUE(j["search"].contains("aoRadius") && !j["search"].contains("aoSamples")) << j.dump(1); // fitted vs budgeted
+        const std::string js = fs::path(out).replace_extension(".js").string();
+        EXPECT_NE(slurp(js).find("n8aopass.configuration.aoSamples = " + std::to_string(samples) + ";"), std::string::npos) << slurp(js);
+    }
+}
+
+// The report page beside --out: the three columns' thumbnails for each shown view, every name as
+// text (a scene file named with markup).
+TEST(CliEngine, TuneWritesAPageWithDefaultsTunedAndSsaolabsBest) {
+    NEED_MODULES();
+    const std::string scene = writeCornerGltf("engine_page_<b>x&y.gltf");
+    const std::string out = outDir("engine_page") + ".json", page = outDir("engine_page") + ".html";
+    fs::remove(page);
+    const CliRun r = ssaolab("tune --engine n8ao --scene '" + scene + "' --size 96x54 --views 2 --rounds 1 --grid 3 --knob aoRadius "
+                             "--reference-rays 8 --timing-frames 2 --save-overfit --out " + out + " --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    const std::string html = slurp(page);
+    EXPECT_EQ(html.find("<b>x"), std::string::npos);
+    EXPECT_NE(html.find("engine_page_&lt;b&gt;x&amp;y"), std::string::npos);
+    size_t images = 0;
+    for (size_t at = html.find("data:image/png;base64,"); at != std::string::npos; at = html.find("data:image/png;base64,", at + 1))
+        ++images;
+    EXPECT_GE(images, 5u); // the held-out view: reference, defaults and tuned AO + error
+    EXPECT_NE(html.find("ssaolab within the tuned time"), std::string::npos);
+    EXPECT_NE(html.find("N8AO (N8AOPass) defaults"), std::string::npos);
+}
+
+// A length the engine compares with scene distances is searched per R, so one fitted value holds on
+// scenes of any scale (SAOPass's bias is a length and its intensity a factor on one under the
+// harness's saoScale = far / R); the table says which, and nothing else.
+TEST(EngineTables, PerRadiusSearchesAreLengthsOrFactorsOnLengths) {
+    const ssao::EngineTable sao = ssao::findEngine("three-sao");
+    EXPECT_EQ(sao.find("saoBias")->perRadius, 1);
+    EXPECT_EQ(sao.find("saoIntensity")->perRadius, -1);
+    EXPECT_GE(sao.find("saoBias")->searchLo, 0.0) << "a negative bias occludes an open plane";
+    nlohmann::json t = ssao::readJsonFile(ssao::enginePeersDir() + "/engines/three-sao.json", "table");
+    for (const auto& [field, value, message] : std::vector<std::tuple<std::string, nlohmann::json, std::string>>{
+             {"per_radius", 2, "\"per_radius\" is 1 (a length: x R) or -1 (x 1 / R)"},
+             {"relative", true, "relative to the make-peers value or per R, not both"}}) {
+        nlohmann::json bad = t;
+        bad["parameters"][0]["search"][field] = value;
+        try {
+            ssao::loadEngineTable(writeTemp("engine_per_radius.json", bad.dump()));
+            ADD_FAILURE() << field << " accepted";
+        } catch (const ssao::Error& e) {
+            EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+        }
+    }
+}
+
+// A tune result read back as its fit (bench --engine-settings and the Front tab share the reader): a
+// relative knob stays a factor, a per-R knob becomes its multiple of R^exponent on each view, every
+// other value is the engine's own.
+TEST(EngineSettingsFile, ATunedFileAppliesItsFitOnAViewOfAnyScale) {
+    const ssao::EngineTable sao = ssao::findEngine("three-sao");
+    const std::string file = writeTemp("engine_settings_sao.json", nlohmann::json{
+        {"engine", "three-sao"}, {"version", sao.version},
+        {"settings", {{"saoBias", 0.25}, {"saoIntensity", 0.5}, {"saoKernelRadius", 20.0}, {"saoMinResolution", 0.001}}},
+        {"search", {{"saoBias", {{"x_R", 0.5}}}, {"saoIntensity", {{"x_1_over_R", 0.2}}}, {"saoKernelRadius", {{"x_make_peers_value", 2.0}}},
+                    {"saoMinResolution", {{"value", 0.001}}}}},
+        {"cost_settings", {{"values", {{"saoBlur", false}}}}}}.dump());
+    const ssao::TunedEngine t = ssao::readTunedEngine(file);
+    EXPECT_EQ(t.scale, (std::map<std::string, double>{{"saoKernelRadius", 2.0}}));
+    for (const double radius : {0.04, 40.0}) {
+        const auto v = ssao::tunedJobValues(t, radius);
+        EXPECT_DOUBLE_EQ(v.at("saoBias"), ssao::exportedValue(0.5 * radius)) << radius;
+        EXPECT_DOUBLE_EQ(v.at("saoIntensity"), ssao::exportedValue(0.2 / radius)) << radius;
+        EXPECT_DOUBLE_EQ(v.at("saoMinResolution"), 0.001);
+        EXPECT_DOUBLE_EQ(v.at("saoBlur"), 0.0);
+        EXPECT_EQ(v.count("saoKernelRadius"), 0u); // the runner multiplies the view's make-peers value
+    }
+    const std::string old = writeTemp("engine_settings_old.json", R"({"engine": "three-sao", "version": "0.1.0", "settings": {}})");
+    EXPECT_THROW(ssao::readTunedEngine(old), ssao::Error);
+    const std::string fixed = writeTemp("engine_settings_fixed.json", nlohmann::json{
+        {"engine", "three-sao"}, {"version", sao.version}, {"settings", {{"output", 1}}}}.dump());
+    EXPECT_THROW(ssao::readTunedEngine(fixed), ssao::Error);
 }

@@ -1,5 +1,6 @@
 // Presets carry their scene and size; `render` and the app find presets by name in the same
 // places; an installed binary runs from anywhere.
+#include "engine_test_util.h"
 #include "test_util.h"
 
 #include <gtest/gtest.h>
@@ -117,4 +118,13 @@ TEST(CliInstall, TheInstalledTreeRunsFromAnywhereWithoutTheSources) {
               0)
         << log;
     EXPECT_TRUE(fs::exists(out + "/ao.denoised.png"));
+    // The web engines run from the installed tables, scripts and pinned packages.
+    using ssaotest::kModules, ssaotest::modulesInstalled, ssaotest::nodeRuns;
+    NEED_MODULES();
+    const std::string scene = ssaotest::writeCornerGltf("installed_engine.gltf");
+    ASSERT_EQ(run("cd / && '" + exe + "' tune --engine n8ao --scene '" + scene + "' --size 64x36 --views 2 --rounds 1 --grid 3 "
+                  "--knob aoRadius --reference-rays 8 --timing-frames 1 --save-overfit --quiet --out " + base + "/engine.json", &log),
+              0)
+        << log;
+    EXPECT_TRUE(fs::exists(base + "/engine.js"));
 }

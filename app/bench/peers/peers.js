@@ -183,7 +183,8 @@ function makePeerPass(name, opts) {
     throw new Error(`unknown peer '${name}'`);
 }
 
-function timeFrames(draw, frames) {
+// Every timed frame's ms, sorted.
+function frameTimes(draw, frames) {
     const gl = renderer.getContext(), px = new Uint8Array(4), times = [];
     for (let i = 0; i < frames + 3; ++i) { // 3 warm-up frames: shader compiles, first uploads
         const t0 = performance.now();
@@ -191,7 +192,11 @@ function timeFrames(draw, frames) {
         gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
         if (i >= 3) times.push(performance.now() - t0);
     }
-    times.sort((a, b) => a - b);
+    return times.sort((a, b) => a - b);
+}
+
+function timeFrames(draw, frames) {
+    const times = frameTimes(draw, frames);
     return times[Math.floor(times.length / 2)];
 }
 
@@ -269,13 +274,15 @@ window.setEngineView = (index, cam, radius) => {
     engineView = index;
 };
 
-// job: { peer, params, values: { name: value }, frames }. frames 0: two frames drawn (the first
-// compiles), no timing; else the median frame times as runPeer measures them.
+// job: { peer, params, values: { name: value }, scale: { name: factor }, frames }. scale: the
+// make-peers value times the factor (a tuned setting relative to the view's R). frames 0: two
+// frames drawn (the first compiles), no timing; else the median frame times as runPeer measures
+// them, and the fastest and slowest frame's AO ms (bench --engines).
 window.runEngine = (job) => {
     const ctor = {};
     for (const p of job.params)
         if (p.write.constructor_arg !== undefined && job.values[p.name] !== undefined) ctor[p.name] = job.values[p.name];
-    const key = JSON.stringify(ctor);
+    const key = JSON.stringify([job.peer, ctor]); // one session may run several engines (bench --engines)
     let e = engines.get(key);
     if (!e) {
         const pass = makePass(job.peer, ctor);
@@ -287,7 +294,8 @@ window.runEngine = (job) => {
     }
     for (const p of job.params) {
         if (p.write.constructor_arg !== undefined) continue;
-        const v = job.values[p.name] ?? e.base[p.name];
+        const scale = job.scale?.[p.name];
+        const v = job.values[p.name] ?? (scale !== undefined ? e.base[p.name] * scale : e.base[p.name]);
         if (p.write.call) e.pass[p.write.call]({ [p.write.key]: v });
         else writePath(e.pass, p.write.path, v);
     }
@@ -299,9 +307,12 @@ window.runEngine = (job) => {
             enginePlainMs = timeFrames(() => plain.render(), job.frames);
             plain.dispose();
         }
-        out.frame_ms = timeFrames(() => e.composer.render(), job.frames);
+        const times = frameTimes(() => e.composer.render(), job.frames);
+        out.frame_ms = times[Math.floor(times.length / 2)];
         out.plain_ms = enginePlainMs;
         out.ao_ms = out.frame_ms - enginePlainMs;
+        out.ao_ms_min = times[0] - enginePlainMs;
+        out.ao_ms_max = times[times.length - 1] - enginePlainMs;
     } else {
         e.composer.render();
         e.composer.render();

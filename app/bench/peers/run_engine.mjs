@@ -5,9 +5,12 @@
 // node run_engine.mjs --modules DIR --jobs FILE --out DIR
 // FILE: { scene (.gltf/.glb), width, height, peer (peers.js's name), params (rows of the engine's
 //         table), views: [{ camera (metrics.json's), radius (R, scene units) }], frames,
-//         jobs: [{ view, values: { name: value }, image (file name), frames (optional) }] }
+//         jobs: [{ view, values: { name: value }, scale: { name: factor } (optional), image (file name),
+//                  frames (optional), peer (optional: another engine, whose rows are tables[peer]) }],
+//         tables: { peer: params } (optional: the rows of each other engine the jobs name) }
 // Writes each job's AO as DIR/IMAGE (binary PGM, top row first) and DIR/results.json:
-// { renderer, three_revision, jobs: [{ image, values (what the pass ran with), frame_ms, plain_ms, ao_ms }] }
+// { renderer, three_revision, jobs: [{ image, values (what the pass ran with), frame_ms, plain_ms, ao_ms,
+//   ao_ms_min, ao_ms_max }] }
 import fs from 'node:fs';
 import path from 'node:path';
 import { openSession, parseArgs, pgmBytes } from './session.mjs';
@@ -33,8 +36,9 @@ try {
     for (const i of order) {
         const job = spec.jobs[i], view = spec.views[job.view];
         await page.evaluate(([k, c, r]) => window.setEngineView(k, c, r), [job.view, view.camera, view.radius]);
+        const peer = job.peer ?? spec.peer, params = job.peer ? spec.tables[job.peer] : spec.params;
         const r = await page.evaluate((j) => window.runEngine(j),
-            { peer: spec.peer, params: spec.params, values: job.values ?? {}, frames: job.frames ?? spec.frames ?? 0 });
+            { peer, params, values: job.values ?? {}, scale: job.scale ?? {}, frames: job.frames ?? spec.frames ?? 0 });
         fs.writeFileSync(path.join(args.out, path.basename(job.image)), pgmBytes(r.ao, width, height));
         const { ao, ...rest } = r;
         results.jobs[i] = { image: path.basename(job.image), ...rest };

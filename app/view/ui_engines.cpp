@@ -1,0 +1,117 @@
+// The Front tab's web engines (front/engine_front.h): a switch, one line of state (how far they
+// are, or why they are off), a row per engine point - its AO time and error against the current
+// setting's, "A|B" (its AO frame in Split B) and "copy snippet" (its settings for this view as
+// JavaScript for the engine's API) - and where tuned settings come from.
+#include "view/app_core.h"
+#include "view/ui_layout.h"
+
+#include <cstdio>
+#include <cstring>
+
+namespace ssao {
+
+namespace {
+
+const char* const kEnginesHelp =
+    "three.js SSAOPass, SAOPass and GTAOPass and N8AO, run for real in Chromium (Node.js and the\n"
+    "npm packages `make engine-modules` pins) on this glTF file at this view's camera, size and\n"
+    "R, once ssaolab's candidates are measured. Each engine at its defaults with every length\n"
+    "from R (as `make peers` runs it), and each `ssaolab tune --engine NAME --out FILE.json`\n"
+    "result in the tuned folder below or added by path: its fit applied to this view (a knob\n"
+    "tuned relative to R scales with this view's R), as tune scores its held-out views.\n"
+    "The AO is scored against the same reference as every point. Time: the browser's frame\n"
+    "with the pass minus the frame without (median of 5 frames), not a GPU timer query.\n"
+    "copy snippet: the settings it ran with here, as JavaScript for the engine's API.";
+
+// The engine point labelled so, as the front's answers pass candidates on.
+Candidate engineCandidate(const std::string& label) {
+    Candidate c;
+    c.label = label;
+    c.origin = "engine";
+    return c;
+}
+
+// One engine point: its numbers against the current setting's, and its two actions.
+void engineRow(AppCore& app, const EngineSample& s, const FrontPoint* cur) {
+    const std::string& label = s.candidate.label;
+    char ms[32] = "time under the browser's timer";
+    if (s.aoMs > 0) std::snprintf(ms, sizeof ms, "%.2f ms", s.aoMs);
+    char b[320];
+    std::snprintf(b, sizeof b, "%s: %s, RMSE %.4f", label.c_str(), ms, s.error.rmse);
+    std::string text = b;
+    if (cur && cur->result.gpuMs > 0 && cur->result.error.rmse > 0 && s.aoMs > 0) {
+        std::snprintf(b, sizeof b, " (%.2fx, %.2fx current)", s.aoMs / cur->result.gpuMs, s.error.rmse / cur->result.error.rmse);
+        text += b;
+    }
+    ImGui::PushID(label.c_str());
+    wrappedText(text);
+    if (ImGui::SmallButton("A|B")) app.compareCandidate(engineCandidate(label));
+    rememberRect(app.view(), "front#engine_compare:" + label);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Split A|B: the current setting's AO against this engine's AO frame");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("copy snippet")) {
+        ImGui::SetClipboardText(s.snippet.c_str());
+        app.setStatus("copied the settings of " + label + " for this view as JavaScript (" + s.title + ")", false);
+    }
+    rememberRect(app.view(), "front#engine_snippet:" + label);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.snippet.c_str());
+    ImGui::PopID();
+}
+
+// Tuned settings by path: a `tune --engine --out` file joins the engines' candidates.
+void addTunedFile(AppCore& app, EngineFront& e) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, "%s", app.view().engineFile.c_str());
+    ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - 60.0f, 80.0f));
+    const bool enter = ImGui::InputText("##engine_file", buf, sizeof buf, ImGuiInputTextFlags_EnterReturnsTrue);
+    app.view().engineFile = buf;
+    rememberRect(app.view(), "front#engine_file");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("a tuned settings file (ssaolab tune --engine NAME --out FILE.json)");
+    ImGui::SameLine();
+    if ((ImGui::SmallButton("add") || enter) && !app.view().engineFile.empty()) {
+        const std::string error = e.addFile(app.view().engineFile);
+        app.setStatus(error.empty() ? "engines: added " + app.view().engineFile : error, !error.empty());
+        if (error.empty()) app.view().engineFile.clear();
+    }
+    rememberRect(app.view(), "front#engine_add");
+}
+
+} // namespace
+
+void drawEngineSection(AppCore& app) {
+    FrontPanel& f = app.front();
+    EngineFront& e = f.engines();
+    ImGui::Separator();
+    if (ImGui::Checkbox("engines", &e.enabled)) app.frames().keepAwake();
+    rememberRect(app.view(), "front#engines_on");
+    ImGui::SameLine();
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kEnginesHelp);
+    std::string line = e.status();
+    if (line.empty() && e.enabled && f.waiting().empty() && f.measurer().busy())
+        line = "engines: after ssaolab's candidates";
+    if (line.empty() && e.enabled && f.axis == FrontPanel::Axis::Motion)
+        line = "engines: on the still axis (a frame each, no motion score)";
+    if (!line.empty()) {
+        wrappedText(line, !e.off());
+        rememberRect(app.view(), "front#engines");
+    }
+    if (e.off() || !e.enabled) return;
+    const size_t ci = f.currentIndex();
+    const FrontPoint* cur = ci == std::string::npos ? nullptr : &f.points()[ci];
+    for (const auto& s : e.samples())
+        engineRow(app, *s, cur);
+    for (const std::string& err : e.errors())
+        wrappedText(err);
+    for (const std::string& err : e.tunedErrors())
+        wrappedText(err, true);
+    wrappedText("tuned settings: the tune --engine --out files in " + FrontPanel::tunedDir(app.presets()) +
+                    ", and files added here:",
+                true);
+    if (ImGui::SmallButton("rescan")) e.rescan(), app.frames().keepAwake();
+    rememberRect(app.view(), "front#engine_rescan");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("read the tuned settings folder again (a tune run since the view was measured)");
+    addTunedFile(app, e);
+}
+
+} // namespace ssao

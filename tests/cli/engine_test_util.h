@@ -1,0 +1,67 @@
+// What the tests of the web engines share (test_cli_engines.cpp, test_cli_bench_engines.cpp): where
+// the peers' scripts and the pinned npm packages are, whether Node.js runs, and a small glTF corner.
+#pragma once
+#include "cli_run.h"
+#include "util/process.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ssaotest {
+
+inline const std::string kPeers = std::string(SSAOLAB_SOURCE_DIR) + "/app/bench/peers";
+inline const std::string kModules = std::string(SSAOLAB_BUILD_DIR) + "/peers/node_modules";
+
+inline bool modulesInstalled() {
+    namespace fs = std::filesystem;
+    return fs::is_regular_file(kModules + "/three/package.json") && fs::is_regular_file(kModules + "/n8ao/package.json") &&
+           fs::is_regular_file(kModules + "/playwright-core/package.json");
+}
+
+inline bool nodeRuns() {
+    return ssao::runProgram({"node", "--version"}, ssao::ChildStream::Discard, ssao::ChildStream::Discard).exitCode == 0;
+}
+
+// `make test` and `make test-sanitize` install them first: missing, the test fails and says how.
+#define NEED_MODULES()                                                                                             \
+    ASSERT_TRUE(nodeRuns() && modulesInstalled())                                                                  \
+        << "Node.js or the pinned npm packages are not installed in " << kModules                                 \
+        << " (make engine-modules installs them from app/bench/peers/package-lock.json)"
+
+// A corner: floor, back wall and left wall, 2 units a side, with normals; buffer as a data URI.
+inline std::string writeCornerGltf(const std::string& name) {
+    const float q[3][4][6] = {
+        {{-1, 0, -1, 0, 1, 0}, {1, 0, -1, 0, 1, 0}, {1, 0, 1, 0, 1, 0}, {-1, 0, 1, 0, 1, 0}},
+        {{-1, 0, -1, 0, 0, 1}, {1, 0, -1, 0, 0, 1}, {1, 2, -1, 0, 0, 1}, {-1, 2, -1, 0, 0, 1}},
+        {{-1, 0, -1, 1, 0, 0}, {-1, 2, -1, 1, 0, 0}, {-1, 2, 1, 1, 0, 0}, {-1, 0, 1, 1, 0, 0}}};
+    std::vector<float> pos, nrm;
+    std::vector<uint16_t> idx;
+    for (int f = 0; f < 3; ++f) {
+        for (int v = 0; v < 4; ++v)
+            pos.insert(pos.end(), q[f][v], q[f][v] + 3), nrm.insert(nrm.end(), q[f][v] + 3, q[f][v] + 6);
+        for (int i : {0, 1, 2, 0, 2, 3})
+            idx.push_back(uint16_t(f * 4 + i));
+    }
+    std::vector<unsigned char> bin(pos.size() * 4 + nrm.size() * 4 + idx.size() * 2);
+    std::memcpy(bin.data(), pos.data(), pos.size() * 4);
+    std::memcpy(bin.data() + pos.size() * 4, nrm.data(), nrm.size() * 4);
+    std::memcpy(bin.data() + pos.size() * 8, idx.data(), idx.size() * 2);
+    const std::string pb = std::to_string(pos.size() * 4);
+    const std::string text = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2}]}],
+ "buffers": [{"byteLength": )" + std::to_string(bin.size()) + R"(, "uri": "data:application/octet-stream;base64,)" + base64(bin) + R"("}],
+ "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": )" + pb + R"(},
+                 {"buffer": 0, "byteOffset": )" + pb + R"(, "byteLength": )" + pb + R"(},
+                 {"buffer": 0, "byteOffset": )" + std::to_string(pos.size() * 8) + R"(, "byteLength": )" + std::to_string(idx.size() * 2) + R"(}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 12, "type": "VEC3", "min": [-1, 0, -1], "max": [1, 2, 1]},
+               {"bufferView": 1, "componentType": 5126, "count": 12, "type": "VEC3"},
+               {"bufferView": 2, "componentType": 5123, "count": 18, "type": "SCALAR"}]})";
+    return writeTemp(name, text);
+}
+
+} // namespace ssaotest
