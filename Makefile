@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build engine-modules run test screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column
+.PHONY: deps configure build engine-modules run test docs screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column
 
 deps:
 	@bash .ci/install-deps.sh
@@ -25,6 +25,11 @@ engine-modules: deps
 # default scene into ./out/, with a hint on how to get a window).
 run: build
 	@$(BUILD)/app/ssaolab
+
+# The manual's generated pages (tests/cli/test_cli_docs.cpp fails when they are stale).
+docs: build
+	@$(BUILD)/app/ssaolab docs commands > docs/commands.md
+	@$(BUILD)/app/ssaolab docs parameters > docs/parameters.md
 
 # README screenshot, taken by the app itself under Xvfb.
 screenshot: build

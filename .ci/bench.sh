@@ -76,7 +76,8 @@ MD
     echo "Regenerate this section alone with \`make $2\` (it runs \`.ci/$3\`)."
     if [ -f "$4" ]; then echo; cat "$4"; fi
     echo
-    sed -e 's/^### What the screen cannot see$/### The split per scene/' "$5"
+    # the section's page links its images beside itself (docs/bench/); this page is one folder up
+    sed -e 's/^### What the screen cannot see$/### The split per scene/' -e 's#](\([a-z_]*\.png\))#](bench/\1)#g' "$5"
     echo
     echo "Raw data: [$6](bench/$6)."
   }

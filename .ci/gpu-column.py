@@ -60,7 +60,7 @@ def main(merged, scal_run, check, note, docs, skips=None):
           f"Baseline learnopengl: {float(base['gpu_ms']):.3f} ms AO + denoise, geometry RMSE "
           f"{float(base['rmse']):.4f}. Ratios are to the baseline measured in the same run (GPU, or llvmpipe "
           "in the run above); the errors of the two runs agree to the reference's noise.", "",
-          "![GPU front](bench/gpu_pareto.png)", "",
+          "![GPU front](gpu_pareto.png)", "",
           "| configuration | GPU ms | x baseline | GPU front | llvmpipe ms | x baseline | llvmpipe front | RMSE GPU | RMSE llvmpipe | x baseline |",
           "|---|---:|---:|:-:|---:|---:|:-:|---:|---:|---:|"]
     shown = [r for r in gpu.values() if r["pareto"] == "1" or r["baseline"] == "1" or

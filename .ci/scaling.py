@@ -106,7 +106,7 @@ def report(run, docs):
         out["curves"].append({"panel": panel, "label": label, "x": xname, "xs": xs, "ms": ys, "exponent": k, "fit_miss": miss})
         pts = ", ".join(f"{x:.4g}: {y:.3g}" for x, y in zip(xs, ys))
         md.append(f"| {panel}: {label} | {xname} | {pts} | {k:.2f} | {miss:.0%} |")
-    md += ["", "![scaling](bench/scaling.png)", ""]
+    md += ["", "![scaling](scaling.png)", ""]
     os.makedirs(docs, exist_ok=True)
     json.dump(out, open(os.path.join(docs, "scaling.json"), "w"), indent=1)
     open(os.path.join(docs, "scaling.md"), "w").write("\n".join(md) + "\n")

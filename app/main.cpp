@@ -14,6 +14,7 @@
 #include "util/paths.h"
 #include "view/window_app.h"
 
+#include "cli_reference.h"
 #include "cli_util.h"
 
 #include <CLI/CLI.hpp>
@@ -67,6 +68,7 @@ struct Commands {
     ssao::StressOptions stress;
     ssao::WindowOptions window;
     std::string windowSize = "1600x900", viewProjection, viewDepth;
+    std::string docsPage;
 
     Commands() {
         app.require_subcommand(0, 1);
@@ -114,6 +116,8 @@ struct Commands {
         sub("paths", "where this binary finds its shaders, assets and presets");
         app.add_subcommand("options", "every option of every command with its kind, as JSON lines (for tests)")
             ->group(""); // hidden: tests/cli/test_cli_paths.cpp takes the path options from it
+        CLI::App* docs = app.add_subcommand("docs", "print a generated page of the manual (make docs)")->group(""); // hidden
+        docs->add_option("page", docsPage, "commands or parameters")->required()->check(CLI::IsMember({"commands", "parameters"}));
         addView(*sub("view", "open the interactive explorer window (GLFW + Dear ImGui)"));
     }
 
@@ -160,6 +164,11 @@ struct Commands {
         ssao::setTransparentMode(ssao::parseTransparent(transparent));
         if (app.got_subcommand("params")) {
             printParams();
+            return 0;
+        }
+        if (app.got_subcommand("docs")) {
+            const std::string page = docsPage == "commands" ? ssao::commandReference(app) : ssao::parameterReference();
+            std::fwrite(page.data(), 1, page.size(), stdout);
             return 0;
         }
         if (app.got_subcommand("options")) {
