@@ -88,7 +88,7 @@ explorer: build
 	@bash .ci/explorer.sh $(BUILD) $(SCENES)
 
 # docs/benchmarks.md "The GPU column": from the folder .ci/gpu-run.sh filled on a machine with a GPU
-# (GPU_RUN=DIR; GPU_NOTE says what the run should carry about that machine). Needs no GPU here.
+# (GPU_RUN=DIR; GPU_NOTE: the machine line, e.g. the GPU, driver and host). Needs no GPU here.
 gpu-column: build
 	@bash .ci/gpu-column.sh $(BUILD) $(GPU_RUN) "$(GPU_NOTE)" $(SCENES)
 

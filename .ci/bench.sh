@@ -10,8 +10,8 @@ SIZE=${BENCH_SIZE:-640x360}
 OUT=docs/bench
 mkdir -p "$OUT"
 
-# BENCH_REPORT_ONLY=1: reassemble docs/benchmarks.md from the last run's files (e.g. after editing
-# docs/bench-discussion.md) without measuring again.
+# BENCH_REPORT_ONLY=1: reassemble docs/benchmarks.md from the last run's files without measuring
+# again.
 if [ -z "${BENCH_REPORT_ONLY:-}" ]; then
 "$BUILD/tests/bench_reference" --benchmark_min_time=2 2>/dev/null | tee "$OUT/reference_rays.txt"
 # The run writes a thumbnail of every configuration (for merging shards); the page keeps the
@@ -33,16 +33,16 @@ fi
 # Benchmarks: run time against error
 
 Regenerate everything on this page with one command: `make bench` (it runs `.ci/bench.sh`).
-Error is measured against the ray-traced reference (README, "Ground truth"): geometry-pixel RMSE
-of linear AO is the headline; PSNR is of sRGB-encoded AO (XeGTAO's convention; XeGTAO's own
-GTAO "High" scores about 21.4 dB full-frame against its 512-ray reference on Bistro). Every
+Each section is made by its own script from its own run and starts with that run's machine line.
+Error is measured against the ray-traced reference ([guide](guide/reference.md)): geometry-pixel
+RMSE of linear AO is the headline; PSNR is of sRGB-encoded AO (XeGTAO's convention). Every
 configuration gets the same world radius R as the reference (5 % of the scene's diagonal). The
 `learnopengl` preset is the baseline: every row gives its time and error as ratios to the
-baseline measured in the same run.
+baseline measured in the same run, and those ratios are what compare across machines.
 
-Times on llvmpipe (Mesa's CPU rasteriser) rank configurations by their work, not by what a GPU
-would take: texture fetches and ALU cost roughly alike there. No GPU was lent to the session
-that made this page; a GPU measured apart is in "The GPU column" below.
+How to read the times: on llvmpipe (Mesa's CPU rasteriser) they rank configurations by their work,
+not by what a GPU would take (texture fetches and arithmetic cost roughly alike there); "The GPU
+column", where present, is the same sweep on a GPU.
 
 ## Reference tracer throughput (CornellBox, 640x360, R = 5 % of the diagonal)
 
@@ -53,8 +53,11 @@ MD
   echo
   echo "## Time against error (\`ssaolab bench\`, built-in sweep)"
   echo
-  # The hand-written reading of the front (docs/bench-discussion.md), dated to the run it reads.
-  if [ -f docs/bench-discussion.md ]; then cat docs/bench-discussion.md; echo; fi
+  echo "How to read it: the front is every configuration that no other beats on both time and error;"
+  echo "read across a row for its ratios to the baseline, and down the front for the cheapest way to a"
+  echo "given error. A ratio below 1 is better on both axes. Per scene, the held-out scenes are the ones"
+  echo "the tuned presets never saw: a preset that wins only on the training scenes has not won."
+  echo
   sed -e 's#](pareto.png)#](bench/pareto.png)#' "$OUT/report.md"
   echo
   echo "### Per scene: training and held-out scenes"
@@ -67,29 +70,36 @@ MD
   echo "hover, the AO, signed error and reference of every front configuration and the baseline, a sortable table)."
   echo
   echo "Raw data: [results.csv](bench/results.csv), [summary.csv](bench/summary.csv), [results.json](bench/results.json)."
-  # A section made by its own make target: title, target, the hand-written reading, the data.
-  section() { # TITLE TARGET SCRIPT DISCUSSION DATA_MD RAW
+  # A section made by its own make target: title, target, how to read it, the data.
+  section() { # TITLE TARGET SCRIPT HOW_TO_READ DATA_MD RAW
     [ -f "$5" ] || return 0
     echo
     echo "## $1"
     echo
-    echo "Regenerate this section alone with \`make $2\` (it runs \`.ci/$3\`)."
-    if [ -f "$4" ]; then echo; cat "$4"; fi
+    echo "Regenerate this section alone with \`make $2\` (it runs \`.ci/$3\`). $4"
     echo
     # the section's page links its images beside itself (docs/bench/); this page is one folder up
     sed -e 's/^### What the screen cannot see$/### The split per scene/' -e 's#](\([a-z_]*\.png\))#](bench/\1)#g' "$5"
     echo
     echo "Raw data: [$6](bench/$6)."
   }
-  section "What the screen cannot see (\`make screen\`, every shared scene, 640x360)" screen screen.sh \
-    docs/screen-discussion.md "$OUT/screen.md" screen.json
-  section "The web peers (\`make peers\`, four scenes, one run)" peers peers.sh docs/peers-discussion.md \
+  section "What the screen cannot see (\`make screen\`)" screen screen.sh \
+    "How to read it: the screen share is what no technique reading one depth layer can fix; a remedy's column is what it closes of that share." \
+    "$OUT/screen.md" screen.json
+  section "The web peers (\`make peers\`)" peers peers.sh \
+    "How to read it: each peer at its defaults with every length from R, judged by ssaolab's own metric on the same view; a preset listed beside it has at most half its RMSE in at most half its time." \
     "$OUT/peers.md" peers.json
-  section "The explorer's frame times (\`make explorer\`)" explorer explorer.sh docs/explorer-discussion.md \
+  section "The explorer's frame times (\`make explorer\`)" explorer explorer.sh \
+    "How to read it: still, drag and idle frames of the real UI; the ratios to the learnopengl seed's frames of the same run are what compare." \
     "$OUT/explorer.md" explorer.md
-  section "Skipped work (\`ssaolab skips\`)" skips skips.sh docs/skips-discussion.md "$OUT/skips.md" skips.json
-  section "Scaling (\`make scaling\`)" scaling scaling.sh docs/scaling-discussion.md "$OUT/scaling.md" scaling.json
+  section "Skipped work (\`ssaolab skips\`)" skips skips.sh \
+    "How to read it: each skip against the same frame without it, alternating frame by frame; an exact skip changes no geometry pixel." \
+    "$OUT/skips.md" skips.json
+  section "Scaling (\`make scaling\`)" scaling scaling.sh \
+    "How to read it: each curve's exponent is how cost grows with that quantity (1: linear)." \
+    "$OUT/scaling.md" scaling.json
   section "The GPU column (\`.ci/gpu-run.sh\` on a GPU, then \`make gpu-column\`)" gpu-column gpu-column.sh \
-    docs/gpu-discussion.md "$OUT/gpu.md" gpu_summary.csv
+    "How to read it: the same sweep, scaling and skips on a GPU; compare its ratios, not its times, with the llvmpipe sections." \
+    "$OUT/gpu.md" gpu_summary.csv
 } > docs/benchmarks.md
 echo "wrote docs/benchmarks.md"

@@ -21,7 +21,7 @@ cmake --build "$BUILD" --target bench_explorer -j 2 >/dev/null
   "$BUILD/tests/bench_explorer" --single --no-reference
   echo
   echo "Grid as above, the half-resolution preset vbao-half-medium in place of the start preset (a point"
-  echo "of the front; whether its still frame stays under 100 ms: docs/explorer-discussion.md):"
+  echo "of the front):"
   echo
   "$BUILD/tests/bench_explorer" --preset vbao-half-medium
 } > "$OUT.tmp"

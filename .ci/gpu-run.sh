@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# The GPU column of docs/benchmarks.md, measured on a machine with a GPU (the device tool's, or
-# yours): the GL renders of `make scaling` (.ci/scaling.sh with SCALING_RENDERS_ONLY: the reference is
-# Embree on the CPU and stays out), the sweep and scenes of `make bench` in three sequential shards
-# (a run cut short keeps the shards it finished), and the skips a GPU may answer differently
-# (`ssaolab skips` on the scenes of `make skips`, one scene at a time). Then, on any machine:
+# The GPU column of docs/benchmarks.md, measured on a machine with a GPU: the GL renders of
+# `make scaling` (.ci/scaling.sh with SCALING_RENDERS_ONLY: the reference is Embree on the CPU and
+# stays out), the sweep and scenes of `make bench` in three sequential shards (a run cut short
+# keeps the shards it finished), and the skips a GPU may answer differently (`ssaolab skips` on
+# the scenes of `make skips`, one scene at a time). Then, on any machine:
 # `make gpu-column GPU_RUN=OUT` puts them on the page beside the llvmpipe run.
 # Usage: .ci/gpu-run.sh BUILD_DIR SCENES_DIR OUT   (BUILD_DIR/app/ssaolab; PYTHON: one with numpy)
 set -u

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `make scaling`: how cost grows (docs/benchmarks.md, "Scaling"), on this machine's GL (llvmpipe in
-# CI; the device tool's GPU when one is lent):
+# CI, a GPU where there is one):
 #  1. AO + denoise time against pixels (640x360 .. 3840x2160), per technique (its medium preset)
 #     and the learnopengl baseline, CornellBox;
 #  2. against the radius in pixels (R = 1.25 % .. 20 % of the diagonal at 1280x720): the
