@@ -20,7 +20,7 @@ inline const std::string kModules = std::string(SSAOLAB_BUILD_DIR) + "/peers/nod
 inline bool modulesInstalled() {
     namespace fs = std::filesystem;
     return fs::is_regular_file(kModules + "/three/package.json") && fs::is_regular_file(kModules + "/n8ao/package.json") &&
-           fs::is_regular_file(kModules + "/playwright-core/package.json");
+           fs::is_regular_file(kModules + "/postprocessing/package.json") && fs::is_regular_file(kModules + "/playwright-core/package.json");
 }
 
 inline bool nodeRuns() {

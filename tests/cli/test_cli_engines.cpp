@@ -18,6 +18,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <map>
@@ -33,6 +35,9 @@ namespace {
 // (its defaults with aoRadius = R, and with 2 R), as measured when the round trip was written
 // (llvmpipe, Chromium 156); the tolerance is well inside the 0.008 between the two.
 constexpr double kStoredRmse = 0.0754, kStoredRmse2R = 0.0837, kRoundTripTolerance = 0.003;
+// postprocessing 6.39.6's SSAOEffect on the same view, at its make-peers settings and with twice
+// that radius (measured as above); the tolerance is well inside the 0.0096 between the two.
+constexpr double kPpStoredRmse = 0.0911, kPpStoredRmse2x = 0.0815;
 
 // Runs the snippet after a mock of the pass that records every assignment ("configuration.aoRadius")
 // and every update call's keys ("updateGtaoMaterial(radius)"); returns the record.
@@ -57,7 +62,7 @@ nlohmann::json runSnippet(const std::string& variable, const std::string& snippe
 
 TEST(EngineTables, EveryTableParsesWithEachDefaultInsideItsRange) {
     const std::vector<std::string> names = ssao::engineNames();
-    EXPECT_EQ(names, (std::vector<std::string>{"n8ao", "three-gtao", "three-sao", "three-ssao"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"n8ao", "pp-ssao", "three-gtao", "three-sao", "three-ssao"}));
     for (const std::string& n : names) {
         const ssao::EngineTable t = ssao::findEngine(n);
         EXPECT_EQ(t.engine, n);
@@ -106,7 +111,9 @@ TEST(EngineTables, DefaultsAreThePinnedPackagesOwn) {
         for (const ssao::EngineParam& p : t.params) {
             const nlohmann::json& v = got[n]["defaults"][p.name];
             ASSERT_FALSE(v.is_null()) << n << " " << p.name << " is not where its table reads it (" << p.row["read"] << ")";
-            EXPECT_EQ(v.is_boolean() ? double(v.get<bool>()) : v.get<double>(), p.defaultValue) << n << " " << p.name;
+            // To the last digits only: postprocessing keeps a falloff as its cutoff's end, so it reads back 1 - 0.97.
+            EXPECT_NEAR(v.is_boolean() ? double(v.get<bool>()) : v.get<double>(), p.defaultValue, 1e-15 * std::max(1.0, std::abs(p.defaultValue)))
+                << n << " " << p.name;
         }
     }
 }
@@ -168,6 +175,54 @@ TEST(CliEngine, RunnerRoundTripMatchesTheStoredResult) {
     EXPECT_EQ(runner.sessions(), 1);
 }
 
+// postprocessing's SSAOEffect runs in that library's own composer (RenderPass, NormalPass, EffectPass)
+// in the same session harness: its make-peers settings put the sampling disc at R projected at the
+// target and the proximity cutoff at R in depth, its AO alone is read back and scored, and a timed
+// job gets a time. Stored RMSEs as for N8AO.
+TEST(CliEngine, PostprocessingRoundTripMatchesTheStoredResult) {
+    NEED_MODULES();
+    const ssao::EngineTable t = ssao::findEngine("pp-ssao");
+    const ssao::EngineTools tools = ssao::locateEngineTools(kModules, t);
+    const std::string file = writeCornerGltf("engine_roundtrip_pp.gltf");
+    const ssao::Scene sc = ssao::loadNamedScene(file);
+    const ssao::Camera cam = ssao::effectiveCamera(ssao::defaultCamera(sc), sc.bounds);
+    const float radius = 0.05f * 2.0f * sc.bounds.radius();
+    const nlohmann::json camJson = ssao::cameraToJson(ssao::cameraToFile(cam, sc));
+    ssao::EngineRunner runner(tools, t, file, 96, 54, {{camJson, radius}});
+    const std::vector<ssao::EngineResult> res = runner.run({{0, {}, 0}, {0, {}, 0, {{"radius", 2.0}}}, {0, {}, 2}});
+    ASSERT_EQ(res.size(), 3u);
+    const double depth = camJson["far"].get<double>() - camJson["near"].get<double>();
+    EXPECT_NEAR(res[0].values.at("proximityThreshold") + res[0].values.at("proximityFalloff"), radius / depth, 1e-6);
+    EXPECT_NEAR(res[0].values.at("proximityThreshold"), 4.0 * res[0].values.at("proximityFalloff"), 1e-9);
+    EXPECT_DOUBLE_EQ(res[1].values.at("radius"), 2.0 * res[0].values.at("radius"));
+    EXPECT_EQ(res[0].values.at("samples"), 9.0); // every other setting is the package's default
+    EXPECT_TRUE(std::isfinite(res[2].aoMs) && std::isfinite(res[2].aoMsMin) && std::isfinite(res[2].aoMsMax));
+    ssao::ReferenceProvider provider(sc, std::string(SSAOLAB_TEST_TMP) + "/cache");
+    const ssao::ReferenceImage ref = provider.get(cam, 96, 54, {radius, 64});
+    const double rmse = ssao::evaluate(res[0].ao, ref).metrics.rmse, rmse2 = ssao::evaluate(res[1].ao, ref).metrics.rmse;
+    EXPECT_NEAR(rmse, kPpStoredRmse, kRoundTripTolerance) << "SSAOEffect's make-peers settings on the corner at 96x54";
+    EXPECT_NEAR(rmse2, kPpStoredRmse2x, kRoundTripTolerance) << "SSAOEffect at twice the radius";
+    EXPECT_EQ(ssao::evaluate(res[2].ao, ref).metrics.rmse, rmse); // the timed frames draw the same AO
+    EXPECT_EQ(runner.sessions(), 1);
+}
+
+TEST(CliEngine, TuneRunsPostprocessingAndWritesItsSnippet) {
+    NEED_MODULES();
+    const std::string scene = writeCornerGltf("engine_tune_pp.gltf");
+    const std::string out = outDir("engine_tune_pp") + ".json", js = outDir("engine_tune_pp") + ".js";
+    fs::remove(out), fs::remove(js);
+    const CliRun r = ssaolab("tune --engine pp-ssao --scene " + scene + " --size 96x54 --views 2 --rounds 1 --grid 3 --knob radius "
+                             "--reference-rays 8 --timing-frames 2 --save-overfit --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("tuned postprocessing SSAOEffect on 1 views"), std::string::npos) << r.out;
+    const nlohmann::json j = ssao::readJsonFile(out, "tuned");
+    EXPECT_EQ(j["version"], "6.39.6");
+    ASSERT_EQ(j["settings"].size(), 1u) << j.dump(1);
+    EXPECT_TRUE(j["scores"]["time_ratio"].is_number()) << j.dump(1);
+    const nlohmann::json got = runSnippet("ssaoEffect", slurp(js), "tuned_pp");
+    EXPECT_EQ(got, (nlohmann::json{{"ssaoMaterial.radius", j["settings"]["radius"]}})) << slurp(js);
+}
+
 TEST(CliEngine, TuneWritesTheSettingsAndASnippetThatSetsThem) {
     NEED_MODULES();
     const std::string scene = writeCornerGltf("engine_tune.gltf");
@@ -201,6 +256,7 @@ TEST(EngineTables, OnlySampleCountsScaleWithTheBudget) {
     EXPECT_EQ(scaled["n8ao"], (std::set<std::string>{"aoSamples", "denoiseSamples"}));
     EXPECT_EQ(scaled["three-gtao"], (std::set<std::string>{"samples", "pdSamples"}));
     EXPECT_EQ(scaled["three-ssao"], (std::set<std::string>{"kernelSize"}));
+    EXPECT_EQ(scaled["pp-ssao"], (std::set<std::string>{"samples"}));
     EXPECT_TRUE(scaled["three-sao"].empty()); // its sample count is a shader constant, not a setting
     nlohmann::json t = ssao::readJsonFile(ssao::enginePeersDir() + "/engines/n8ao.json", "table");
     t["parameters"][0]["scales_with_budget"] = true; // aoRadius: a shape row

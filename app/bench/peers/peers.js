@@ -6,7 +6,8 @@
 // Every length a peer takes is set from ssaolab's R (the radius itself; SSAOPass's depth range
 // as a fraction of the clip range; GTAOPass's thickness at the 4:1 ratio of three.js's example,
 // radius 0.25, thickness 1); every other setting is the peer's own default, as a user who adds
-// the pass would get.
+// the pass would get. postprocessing's SSAOEffect (pp-ssao) runs in that library's own composer
+// instead, timed against its RenderPass alone (makePpPipeline).
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
@@ -17,6 +18,7 @@ import { GTAOPass } from 'three/addons/postprocessing/GTAOPass.js';
 import { N8AOPass } from 'n8ao';
 
 let renderer, scene, camera, cfg;
+let pp = null; // postprocessing, loaded in setupPeers (its effects run in its own EffectComposer)
 
 // cfg: { scene (URL of the .gltf/.glb), width, height, radius (world units),
 //        camera: ssaolab's metrics.json camera (eye, target, up, fov_y_deg, near, far) }
@@ -28,6 +30,7 @@ window.setupPeers = async (config) => {
                                          powerPreference: 'high-performance' });
     renderer.setPixelRatio(1);
     renderer.setSize(cfg.width, cfg.height, false);
+    pp = await import('postprocessing').catch(() => null); // only pp-ssao needs it
     const gltf = await new GLTFLoader().loadAsync(cfg.scene);
     scene = gltf.scene;
     scene.background = new THREE.Color(1, 1, 1);
@@ -173,6 +176,7 @@ function makePeerPass(name, opts) {
         for (const m of [p.gtaoMaterial, p.pdMaterial]) { m.defines.NORMAL_VECTOR_TYPE = 0; m.needsUpdate = true; }
         return p;
     }
+    if (name === 'pp-ssao') return makePpSsao(opts.normalBuffer);
     if (name === 'n8ao') {
         const p = new N8AOPass(scene, camera, w, h);
         p.configuration.aoRadius = R;
@@ -181,6 +185,72 @@ function makePeerPass(name, opts) {
         return p;
     }
     throw new Error(`unknown peer '${name}'`);
+}
+
+// postprocessing's SSAOEffect, at its defaults but for its reach. Its radius is a fraction of the
+// height, scaled with linear depth t by (1 - smoothstep(0, cutoff, t)) x (1 - minRadiusScale) +
+// minRadiusScale: R projected at the camera's target distance, over that scale there. A sample
+// counts while its depth differs by less than proximityThreshold + proximityFalloff (fractions of
+// far - near): R, split 4:1 as the manual's demo (0.4 : 0.1). The world* setters are not used: they
+// convert a depth difference as a distance from the camera, so a length below near sets 0.
+function makePpSsao(normalBuffer) {
+    const e = new pp.SSAOEffect(camera, normalBuffer), m = e.ssaoMaterial;
+    const c = cfg.camera, far = c.far === 'inf' ? 1e7 : c.far, R = cfg.radius;
+    m.proximityThreshold = 0.8 * R / (far - c.near);
+    m.proximityFalloff = 0.2 * R / (far - c.near);
+    const dist = new THREE.Vector3().fromArray(c.eye).distanceTo(new THREE.Vector3().fromArray(c.target));
+    const t = THREE.MathUtils.smoothstep((dist - c.near) / (far - c.near), 0, m.distanceThreshold + m.distanceFalloff);
+    const scale = (1 - t) * (1 - m.minRadiusScale) + m.minRadiusScale;
+    m.radius = R / (2 * dist * Math.tan(THREE.MathUtils.degToRad(c.fov_y_deg) / 2)) / scale;
+    e.luminanceInfluence = 0;                     // the AO alone, whatever the frame's colour
+    e.blendMode.blendFunction = pp.BlendFunction.SRC; // 1 - occlusion, not multiplied onto the frame
+    return e;
+}
+
+// postprocessing's composer: RenderPass, NormalPass (its normals drawn as viewFacingNormals()),
+// EffectPass with the effect, writing linear AO to the canvas (its encodeOutput would convert to
+// sRGB). The glTF's root is a Group, and three.js applies a pass's override material only to a
+// Scene, so these passes render a Scene that holds the glTF's root while they draw (three.js's
+// passes keep rendering the root itself). The composer turns the renderer's autoClear off, which
+// three.js's passes rely on: each call keeps the renderer's setting as it found it.
+const ppScene = new THREE.Scene();
+
+function ppComposer(passes) {
+    const autoClear = renderer.autoClear;
+    const c = new pp.EffectComposer(renderer);
+    for (const p of passes) c.addPass(p);
+    renderer.autoClear = autoClear;
+    return {
+        render() {
+            const a = renderer.autoClear;
+            renderer.autoClear = false;
+            ppScene.add(scene);
+            c.render();
+            ppScene.remove(scene);
+            renderer.autoClear = a;
+        },
+        dispose() { c.dispose(); },
+    };
+}
+
+function makePpPipeline(name, opts) {
+    if (!pp) throw new Error(`${name}: the npm package postprocessing is not installed (make engine-modules)`);
+    const normalPass = new pp.NormalPass(ppScene, camera);
+    normalPass.renderPass.overrideMaterial = viewFacingNormals();
+    const pass = makePass(name, { ...opts, normalBuffer: normalPass.texture });
+    const effectPass = new pp.EffectPass(camera, pass);
+    effectPass.fullscreenMaterial.encodeOutput = false;
+    return { pass, composer: ppComposer([new pp.RenderPass(ppScene, camera), normalPass, effectPass]) };
+}
+
+const isPp = (name) => name.startsWith('pp-');
+
+// The composer without the peer, for its time: the peer's own kind of composer and RenderPass.
+function plainComposer(name) {
+    if (isPp(name)) return ppComposer([new pp.RenderPass(ppScene, camera)]);
+    const plain = newComposer();
+    plain.addPass(new RenderPass(scene, camera));
+    return plain;
 }
 
 // Every timed frame's ms, sorted.
@@ -203,18 +273,29 @@ function timeFrames(draw, frames) {
 // Returns the median frame times (with the peer, and the RenderPass alone) and the AO read back
 // from the canvas: one byte per pixel, rows bottom-up as GL reads them, base64.
 window.runPeer = (name, opts, frames) => {
+    if (isPp(name)) return runPpPeer(name, opts, frames);
     const plain = newComposer();
     plain.addPass(new RenderPass(scene, camera));
     const composer = newComposer();
     composer.addPass(new RenderPass(scene, camera));
     composer.addPass(makePass(name, opts));
+    return timeAndRead(name, plain, composer, frames);
+};
+
+function runPpPeer(name, opts, frames) {
+    const plain = plainComposer(name), { composer } = makePpPipeline(name, opts);
+    return timeAndRead(name, plain, composer, frames);
+}
+
+// The frame with the pass minus the frame without, then the AO the last frame left on the canvas.
+function timeAndRead(name, plain, composer, frames) {
     const plainMs = timeFrames(() => plain.render(), frames);
     const peerMs = timeFrames(() => composer.render(), frames);
     const ao = readAo();
     plain.dispose();
     composer.dispose();
     return { name, frame_ms: peerMs, plain_ms: plainMs, ao_ms: peerMs - plainMs, width: cfg.width, height: cfg.height, ao };
-};
+}
 
 function newComposer() {
     const c = new EffectComposer(renderer);
@@ -241,7 +322,8 @@ function readAo() {
 // make-peers settings above, which stand for every row a job leaves out; the pass and its
 // composer are kept per view and constructor values, so a value set costs no shader rebuild
 // unless the engine's own setter rebuilds.
-let engineView = -1, enginePlainMs = null;
+let engineView = -1;
+const enginePlainMs = new Map(); // the composer's kind ('three', 'pp') -> its frame without a peer
 const engines = new Map(); // JSON of the constructor values -> { composer, pass, base }
 
 function readPath(o, path) {
@@ -267,7 +349,7 @@ window.setEngineView = (index, cam, radius) => {
     if (index === engineView) return;
     for (const e of engines.values()) e.composer.dispose();
     engines.clear();
-    enginePlainMs = null;
+    enginePlainMs.clear();
     cfg.camera = cam;
     cfg.radius = radius;
     makeCamera();
@@ -285,10 +367,15 @@ window.runEngine = (job) => {
     const key = JSON.stringify([job.peer, ctor]); // one session may run several engines (bench --engines)
     let e = engines.get(key);
     if (!e) {
-        const pass = makePass(job.peer, ctor);
-        const composer = newComposer();
-        composer.addPass(new RenderPass(scene, camera));
-        composer.addPass(pass);
+        let pass, composer;
+        if (isPp(job.peer)) {
+            ({ pass, composer } = makePpPipeline(job.peer, ctor));
+        } else {
+            pass = makePass(job.peer, ctor);
+            composer = newComposer();
+            composer.addPass(new RenderPass(scene, camera));
+            composer.addPass(pass);
+        }
         e = { composer, pass, base: readParams(pass, job.params) };
         engines.set(key, e);
     }
@@ -301,18 +388,19 @@ window.runEngine = (job) => {
     }
     const out = { values: readParams(e.pass, job.params) };
     if (job.frames > 0) {
-        if (enginePlainMs === null) {
-            const plain = newComposer();
-            plain.addPass(new RenderPass(scene, camera));
-            enginePlainMs = timeFrames(() => plain.render(), job.frames);
+        const kind = isPp(job.peer) ? 'pp' : 'three';
+        if (!enginePlainMs.has(kind)) {
+            const plain = plainComposer(job.peer);
+            enginePlainMs.set(kind, timeFrames(() => plain.render(), job.frames));
             plain.dispose();
         }
+        const plainMs = enginePlainMs.get(kind);
         const times = frameTimes(() => e.composer.render(), job.frames);
         out.frame_ms = times[Math.floor(times.length / 2)];
-        out.plain_ms = enginePlainMs;
-        out.ao_ms = out.frame_ms - enginePlainMs;
-        out.ao_ms_min = times[0] - enginePlainMs;
-        out.ao_ms_max = times[times.length - 1] - enginePlainMs;
+        out.plain_ms = plainMs;
+        out.ao_ms = out.frame_ms - plainMs;
+        out.ao_ms_min = times[0] - plainMs;
+        out.ao_ms_max = times[times.length - 1] - plainMs;
     } else {
         e.composer.render();
         e.composer.render();
