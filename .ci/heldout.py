@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""The benchmark's headline per scene (docs/bench/heldout.md, from a bench run's results.csv):
-every shipped preset the sweep holds, its AO + denoise time and geometry RMSE as ratios to the
-learnopengl baseline on the same views of the same run, each scene marked as one the presets were
-tuned on (training) or held out from their tuning (assets/presets/*.json scores.training_scenes).
+"""The benchmark's headline per scene (.ci/bench.sh prints it into the benchmark page, from a bench
+run's results.csv): every shipped preset the sweep holds, its AO + denoise time and geometry RMSE as
+ratios to the learnopengl baseline on the same views of the same run, each scene marked as one the
+presets were tuned on (training) or held out from their tuning (assets/presets/*.json
+scores.training_scenes).
 
 Usage: heldout.py RESULTS_CSV PRESETS_DIR OUT_MD (- for standard output)
 """

@@ -13,6 +13,7 @@ SCENES=${2:-../shared/scenes}
 SIZE=${PEERS_SIZE:-640x360}
 FR=${PEERS_FRAMES:-20}
 SSAO="$BUILD/app/ssaolab"
+TECHNIQUES=$("$SSAO" techniques) # the registry's ids, one a line
 RUN="$BUILD/peers-run"
 MODS="$BUILD/peers"
 for tool in node npm /usr/bin/chromium; do
@@ -47,7 +48,11 @@ for name in ${PEERS_SCENES:-CornellBox FlightHelmet Lantern ShaderBall}; do
   for f in "$dir"/peers/*.pgm; do scored+=(--score "$f"); done
   "$SSAO" render --quiet --scene "$scene" --size "$SIZE" --preset learnopengl "${R_SET[@]}" --reference \
     --timing-frames 1 --out "$dir/scored" "${scored[@]}"
-  for f in assets/presets/{kernel,sao,hbao,gtao,vbao}-*.json; do ours "$(basename "$f" .json)"; done
+  for t in $TECHNIQUES; do # every technique's shipped presets
+    for f in assets/presets/"$t"-*.json; do
+      if [ -f "$f" ]; then ours "$(basename "$f" .json)"; fi
+    done
+  done
   echo "peers: $name"
 done
 /usr/bin/python3 .ci/peers.py "$RUN" docs/bench

@@ -21,7 +21,12 @@ rm -rf "$RUN"
 mkdir -p "$RUN"
 SSAO="$BUILD/app/ssaolab"
 SCENE="$SCENES/CornellBox/cornellBox.gltf"
-PRESETS=(learnopengl kernel-medium sao-medium hbao-medium gtao-medium vbao-medium)
+# The learnopengl baseline and every technique's medium preset (`ssaolab techniques`: the registry).
+PRESETS=(learnopengl)
+TECHNIQUES=$("$SSAO" techniques)
+for t in $TECHNIQUES; do
+  if [ -f "assets/presets/$t-medium.json" ]; then PRESETS+=("$t-medium"); else echo "scaling: $t has no medium preset (make presets)"; fi
+done
 FR=${SCALING_FRAMES:-3}
 render() { # OUT ARGS...: one render, its metrics.json kept
   local out=$1

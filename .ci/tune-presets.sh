@@ -4,7 +4,8 @@
 # other four (never fitted on), then writes the shipped presets assets/presets/TECHNIQUE-LEVEL.json
 # with both scores. R stays the reference's 5 % of the diagonal and power 1: only the technique's own
 # float rows are fitted (a larger radius or a darkening power would fit the numbers, not the
-# physics), then rewrites the presets derived from them (vbao-half-*, vbao-max).
+# physics), then rewrites the presets derived from them. The techniques, their levels and the rows
+# fitted come from `ssaolab techniques` (each technique's registration), so a new one needs no edit here.
 # Usage: .ci/tune-presets.sh BUILD_DIR [SCENES_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,33 +21,15 @@ SCENE_ARGS=(--scene "$SCENES/CornellBox/cornellBox.gltf" --scene "$SCENES/2Cylin
             --held-out-scene "$SCENES/ReciprocatingSaw/ReciprocatingSaw.gltf"
             --held-out-scene "$SCENES/ShaderBall/shader_ball.gltf")
 
-# technique level "KEY=VALUE ..." "knob ..."
-LEVELS=(
-  "kernel low    kernel.samples=16                      kernel.bias"
-  "kernel medium kernel.samples=32                      kernel.bias"
-  "kernel high   kernel.samples=64                      kernel.bias"
-  "sao    low    sao.samples=8,sao.turns=3              sao.intensity,sao.bias"
-  "sao    medium sao.samples=11,sao.turns=7             sao.intensity,sao.bias"
-  "sao    high   sao.samples=24,sao.turns=7             sao.intensity,sao.bias"
-  "sao    ultra  sao.samples=48,sao.turns=11            sao.intensity,sao.bias"
-  "hbao   low    hbao.directions=4,hbao.steps=3         hbao.tangent_bias"
-  "hbao   medium hbao.directions=6,hbao.steps=4         hbao.tangent_bias"
-  "hbao   high   hbao.directions=8,hbao.steps=4         hbao.tangent_bias"
-  "hbao   ultra  hbao.directions=8,hbao.steps=8         hbao.tangent_bias"
-  "gtao   low    gtao.quality=low                       gtao.radius_multiplier,gtao.falloff_range,gtao.distribution_power"
-  "gtao   medium gtao.quality=medium                    gtao.radius_multiplier,gtao.falloff_range,gtao.distribution_power"
-  "gtao   high   gtao.quality=high                      gtao.radius_multiplier,gtao.falloff_range,gtao.distribution_power"
-  "gtao   ultra  gtao.quality=ultra                     gtao.radius_multiplier,gtao.falloff_range,gtao.distribution_power"
-  "vbao   low    vbao.slices=2,vbao.steps=4             vbao.thickness,vbao.distribution_power"
-  "vbao   medium vbao.slices=2,vbao.steps=8             vbao.thickness,vbao.distribution_power"
-  "vbao   high   vbao.slices=4,vbao.steps=8             vbao.thickness,vbao.distribution_power"
-  "vbao   ultra  vbao.slices=4,vbao.steps=16            vbao.thickness,vbao.distribution_power"
-)
+# One line per quality level, "ID LEVEL KEY=VALUE,... ROW,...": the rows that set the level and the
+# rows tune fits, from each technique's registration (TechniqueInfo::levels and tuned).
+mapfile -t LEVELS < <("$BUILD/app/ssaolab" techniques --levels)
+[ "${#LEVELS[@]}" -gt 0 ] || { echo "tune-presets: no quality levels from $BUILD/app/ssaolab" >&2; exit 1; }
 for line in "${LEVELS[@]}"; do
   read -r tech level sets knobs <<<"$line"
   args=()
-  for s in ${sets//,/ }; do args+=(--set "$s"); done
-  for k in ${knobs//,/ }; do args+=(--knob "$k"); done
+  [ "$sets" = - ] || for s in ${sets//,/ }; do args+=(--set "$s"); done
+  [ "$knobs" = - ] || for k in ${knobs//,/ }; do args+=(--knob "$k"); done
   echo "== $tech $level"
   "$BUILD/app/ssaolab" tune --technique "$tech" "${args[@]}" "${SCENE_ARGS[@]}" --views 4 --quiet \
     --out "$TMP/$tech-$level.json"
@@ -71,19 +54,24 @@ PY
 done
 
 # The presets derived from the tuned ones follow them (tests/cpu/test_params.cpp checks they do):
-# vbao-half-LEVEL is vbao-LEVEL with the AO at half resolution; vbao-max is vbao-ultra's fitted rows
-# at 8 slices x 24 steps. Only their vbao rows are rewritten; names and descriptions stay.
-/usr/bin/python3 - <<'PY'
-import json
-def derive(src, dst, **override):
-    rows = dict(json.load(open(f"assets/presets/{src}.json"))["vbao"], **override)
+# each takes its technique's rows from the tuned preset it follows, with its own rows over them
+# (TechniqueInfo::derived, `ssaolab techniques --derived`: "ID NAME FROM KEY=VALUE,..."). Only those
+# rows are rewritten; names, descriptions and the other keys stay.
+/usr/bin/python3 - "$("$BUILD/app/ssaolab" techniques --derived)" <<'PY'
+import json, sys
+def value(text):
+    try:
+        return json.loads(text)
+    except ValueError:
+        return text
+for line in sys.argv[1].splitlines():
+    tech, dst, src, sets = line.split()
+    override = {} if sets == "-" else {k.split(".", 1)[1]: value(v) for k, v in (a.split("=", 1) for a in sets.split(","))}
+    rows = dict(json.load(open(f"assets/presets/{src}.json"))[tech], **override)
     path = f"assets/presets/{dst}.json"
     out = json.load(open(path))
-    out["vbao"] = rows
+    out[tech] = rows
     json.dump(out, open(path, "w"), indent=2)
     open(path, "a").write("\n")
-    print(f"{dst}: the vbao rows of {src}" + (f" with {override}" if override else ""))
-for level in ("low", "medium", "high", "ultra"):
-    derive(f"vbao-{level}", f"vbao-half-{level}")
-derive("vbao-ultra", "vbao-max", slices=8, steps=24)
+    print(f"{dst}: the {tech} rows of {src}" + (f" with {override}" if override else ""))
 PY

@@ -4,8 +4,8 @@
 // non-finite output ends the command with one `ssaolab: error:` line (an ssao::Error naming what
 // was being done), so no command writes numbers measured on a broken frame.
 #pragma once
+#include "base/image.h"
 #include "gl/context.h"
-#include "output/image.h"
 #include "renderer.h"
 #include "scene/scene.h"
 

@@ -9,6 +9,7 @@
 #include "settings/params.h"
 #include "stress/stress_command.h"
 #include "settings/preset_store.h"
+#include "techniques/technique.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/paths.h"
@@ -22,6 +23,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -50,6 +52,27 @@ void printParams() {
     }
 }
 
+// `ssaolab techniques` (hidden, for .ci/ scripts): the ids, one a line; with --levels the quality
+// levels `make presets` tunes (ID LEVEL ROWS TUNED) and with --derived the presets that follow them
+// (ID NAME FROM ROWS); lists comma-joined, "-" when empty.
+void printTechniques(bool levels, bool derived) {
+    auto joined = [](const std::vector<std::string>& v) {
+        std::string out;
+        for (const auto& s : v)
+            out += (out.empty() ? "" : ",") + s;
+        return out.empty() ? std::string("-") : out;
+    };
+    for (const auto& t : ssao::techniques()) {
+        if (!levels && !derived) std::printf("%s\n", t.id.c_str());
+        if (levels)
+            for (const auto& l : t.levels)
+                std::printf("%s %s %s %s\n", t.id.c_str(), l.name.c_str(), joined(l.set).c_str(), joined(t.tuned).c_str());
+        if (derived)
+            for (const auto& d : t.derived)
+                std::printf("%s %s %s %s\n", t.id.c_str(), d.name.c_str(), d.from.c_str(), joined(d.set).c_str());
+    }
+}
+
 // Every subcommand's options, parsed into one place.
 struct Commands {
     CLI::App app{"ssaolab — explore screen-space ambient occlusion: every parameter, every buffer, measured.\n"
@@ -69,6 +92,7 @@ struct Commands {
     ssao::WindowOptions window;
     std::string windowSize = "1600x900", viewProjection, viewDepth;
     std::string docsPage;
+    bool techniqueLevels = false, techniqueDerived = false;
 
     Commands() {
         app.require_subcommand(0, 1);
@@ -118,6 +142,10 @@ struct Commands {
             ->group(""); // hidden: tests/cli/test_cli_paths.cpp takes the path options from it
         CLI::App* docs = app.add_subcommand("docs", "print a generated page of the manual (make docs)")->group(""); // hidden
         docs->add_option("page", docsPage, "commands or parameters")->required()->check(CLI::IsMember({"commands", "parameters"}));
+        CLI::App* techs = app.add_subcommand("techniques", "the AO techniques' ids, one a line (for .ci/ scripts)")
+                              ->group(""); // hidden
+        techs->add_flag("--levels", techniqueLevels, "the quality levels make presets tunes: ID LEVEL ROWS TUNED");
+        techs->add_flag("--derived", techniqueDerived, "the presets that follow tuned ones: ID NAME FROM ROWS");
         addView(*sub("view", "open the interactive explorer window (GLFW + Dear ImGui)"));
     }
 
@@ -169,6 +197,10 @@ struct Commands {
         if (app.got_subcommand("docs")) {
             const std::string page = docsPage == "commands" ? ssao::commandReference(app) : ssao::parameterReference();
             std::fwrite(page.data(), 1, page.size(), stdout);
+            return 0;
+        }
+        if (app.got_subcommand("techniques")) {
+            printTechniques(techniqueLevels, techniqueDerived);
             return 0;
         }
         if (app.got_subcommand("options")) {

@@ -1,7 +1,7 @@
 #include "renderer.h"
 
+#include "base/image.h"
 #include "gl/shader_library.h"
-#include "output/image.h"
 #include "passes/back_face_pass.h"
 #include "passes/composite_pass.h"
 #include "passes/denoise_pass.h"
@@ -45,7 +45,7 @@ gpu::FrameConstants packFrameConstants(const Camera& cam, int width, int height,
 Renderer::Renderer(const std::string& shaderDir)
     : shaders_(shaderDir), frameUbo_(sizeof(gpu::FrameConstants), "frame.constants") {
     // llvmpipe answers the first GL_TIME_ELAPSED query around a context's first drawing with
-    // the time since boot (seen: 2.4e6 ms). One tiny clear inside a query up front keeps every
+    // the time since boot. One tiny clear inside a query up front keeps every
     // reported pass time real.
     gl::RenderTarget scratch;
     scratch.ensure(1, 1, GL_R8, "timer-warm-up");

@@ -1,6 +1,6 @@
 // A benchmark's results as data: the run's facts, the sweep's configurations, every view's
 // measurement and the per-configuration summaries; results.json written and read back, so
-// `bench merge` rebuilds a run from the shards' folders (bench/bench_merge.h).
+// `bench merge` rebuilds a run from the shards' folders (bench/bench_merge.cpp).
 #pragma once
 #include "bench/sweep.h"
 #include "metrics/bench_summary.h"

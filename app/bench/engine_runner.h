@@ -5,8 +5,8 @@
 // several: bench --engines). Each job's AO comes back as a PGM, read here as AO in [0, 1] at the
 // view's pixels, to be scored in-process with metrics/evaluate.h, as `render --score` scores it.
 #pragma once
+#include "base/image.h"
 #include "bench/engine_table.h"
-#include "output/image.h"
 
 #include <nlohmann/json.hpp>
 

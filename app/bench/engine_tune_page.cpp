@@ -1,9 +1,9 @@
 #include "bench/engine_tune_page.h"
 
+#include "base/image.h"
 #include "bench/report_html.h"
 #include "bench/thumbnails.h"
 #include "output/escape.h"
-#include "output/image.h"
 
 #include <cmath>
 #include <cstdio>

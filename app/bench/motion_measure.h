@@ -4,8 +4,8 @@
 // settings enable it, carries its history from frame to frame - judged by metrics/motion_metrics.h.
 // `render --motion`, `bench --motion` and `tune --objective motion` share it.
 #pragma once
+#include "base/image.h"
 #include "metrics/motion_metrics.h"
-#include "output/image.h"
 #include "reference/reference_cache.h"
 #include "renderer.h"
 #include "scene/camera_path.h"

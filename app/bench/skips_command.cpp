@@ -1,12 +1,12 @@
 #include "bench/skips_command.h"
 #include "gl/readback.h"
 
+#include "base/image.h"
 #include "bench/bench_run.h"
 #include "bench/skips_report.h"
+#include "display/capture.h"
 #include "headless_runner.h"
 #include "metrics/evaluate.h"
-#include "output/image.h"
-#include "display/capture.h"
 #include "output/skip_report.h"
 #include "reference/reference_cache.h"
 #include "render_command.h"
@@ -291,14 +291,14 @@ void deinterleaveRows(Context& c, ReferenceProvider& provider, const Camera& cam
     }
 }
 
-void gbufferRows(Context& c, const Camera& cam, const std::string& view) {
-    c.note("G-buffer, " + view);
+double gbufferMs(const FrameTime& t) { return t.sum({"gbuffer"}); }
+
+// The G-buffer's own skips: frustum culling, hidden faces, occluded draws; everything wanted (as
+// the headless render and the app's grid).
+void gbufferSkipRows(Context& c, const std::string& view) {
     Renderer& r = c.r;
-    r.setCamera(cam);
-    auto gb = [](const FrameTime& t) { return t.sum({"gbuffer"}); };
-    // Frustum culling: everything wanted (as the headless render and the app's grid).
     r.setWanted(std::nullopt);
-    Settings on = defaultSettings();
+    const Settings on = defaultSettings();
     // A G-buffer skip against the same frame with it off (everything wanted), alternating frames;
     // its counters from one more frame with it on.
     auto gbufferSkip = [&](const char* key, const char* variant, const char* unit, auto off,
@@ -315,63 +315,72 @@ void gbufferRows(Context& c, const Camera& cam, const std::string& view) {
         row.extra = skipCounters(captureFrame(r, {}, false), fr)["gbuffer"];
         c.run.rows.push_back(row);
     };
-    gbufferSkip("cull", "frustum culling", "G-buffer GPU ms", [](Settings& s) { s.skip.cull = false; }, gb);
+    gbufferSkip("cull", "frustum culling", "G-buffer GPU ms", [](Settings& s) { s.skip.cull = false; }, gbufferMs);
     // The hidden side of closed shells culled (skip.hidden_faces).
     gbufferSkip("faces", "hidden faces of closed shells", "G-buffer GPU ms",
-                [](Settings& s) { s.skip.hiddenFaces = false; }, gb);
+                [](Settings& s) { s.skip.hiddenFaces = false; }, gbufferMs);
     // Draws the scene hides left out (skip.occluded): each variant's frames alternate, the culler
     // carrying its visible set from its own last frame; the whole frame's wall time (the box tests
     // wait for the draws before them, which GPU timers miss).
     gbufferSkip("occluded", "draws the scene hides", "frame wall ms",
                 [](Settings& s) { s.skip.occluded = false; }, [](const FrameTime& t) { return t.wallMs; });
-    // Demand: a view of the AO alone (the app's single AO view, `bench`) culls the composite and
-    // the albedo target; whole frame, forced, against the same frame with everything wanted.
-    {
-        std::vector<double> gpu[2], wall[2];
-        r.setSettings(on);
-        for (int f = -1; f < c.o.frames; ++f)
-            for (int k = 0; k < 2; ++k) {
-                if (k == 0)
-                    r.setWanted(std::set<std::string>{"ao.denoised"});
-                else
-                    r.setWanted(std::nullopt);
-                const FrameTime t = timeFrame(r, true);
-                if (f >= 0) gpu[k].push_back(t.all()), wall[k].push_back(t.wallMs);
-            }
-        SkipRow row{"targets", c.scene, view, "AO view: composite culled, 3 targets (whole frame)",
-                    "frame GPU ms"};
-        row.with = median(gpu[0]), row.without = median(gpu[1]);
-        row.wallWith = median(wall[0]), row.wallWithout = median(wall[1]);
-        row.extra["targets_written"] = 3;
-        c.run.rows.push_back(row);
-    }
-    // The joint upsample fused into the composite (skip.fused_upsample): half-resolution AO, a
-    // composite view with nothing else reading ao.denoised (the app without the error or the
-    // readout), against the same view with the upsample as its own pass. Whole frame, forced.
-    {
-        Settings fused = defaultSettings();
-        applyAssignment(fused, "ao.resolution=half");
-        applyAssignment(fused, "denoise.upsample=joint");
-        Settings own = fused;
-        applyAssignment(fused, "skip.fused_upsample=true");
-        r.setWanted(std::set<std::string>{"composite"});
-        auto all = [](const FrameTime& t) { return t.all(); };
-        const AbResult f = compare(r, fused, own, c.o.frames, all, "composite");
-        SkipRow row{"fused", c.scene, view, "half-res AO: joint upsample inside the composite (whole frame)",
-                    "frame GPU ms"};
-        row.with = f.a, row.without = f.b, row.wallWith = f.wallA, row.wallWithout = f.wallB;
-        row.errorChange = f.diff;
-        c.run.rows.push_back(row);
-        r.setSettings(on);
-    }
-    // Unused targets: only the AO wanted (as `bench` judges it); then normals from depth too.
+}
+
+// Demand: a view of the AO alone (the app's single AO view, `bench`) culls the composite and
+// the albedo target; whole frame, forced, against the same frame with everything wanted.
+void demandRow(Context& c, const std::string& view) {
+    Renderer& r = c.r;
+    const Settings on = defaultSettings();
+    std::vector<double> gpu[2], wall[2];
+    r.setSettings(on);
+    for (int f = -1; f < c.o.frames; ++f)
+        for (int k = 0; k < 2; ++k) {
+            if (k == 0)
+                r.setWanted(std::set<std::string>{"ao.denoised"});
+            else
+                r.setWanted(std::nullopt);
+            const FrameTime t = timeFrame(r, true);
+            if (f >= 0) gpu[k].push_back(t.all()), wall[k].push_back(t.wallMs);
+        }
+    SkipRow row{"targets", c.scene, view, "AO view: composite culled, 3 targets (whole frame)",
+                "frame GPU ms"};
+    row.with = median(gpu[0]), row.without = median(gpu[1]);
+    row.wallWith = median(wall[0]), row.wallWithout = median(wall[1]);
+    row.extra["targets_written"] = 3;
+    c.run.rows.push_back(row);
+}
+
+// The joint upsample fused into the composite (skip.fused_upsample): half-resolution AO, a
+// composite view with nothing else reading ao.denoised (the app without the error or the
+// readout), against the same view with the upsample as its own pass. Whole frame, forced.
+void fusedUpsampleRow(Context& c, const std::string& view) {
+    Renderer& r = c.r;
+    Settings fused = defaultSettings();
+    applyAssignment(fused, "ao.resolution=half");
+    applyAssignment(fused, "denoise.upsample=joint");
+    Settings own = fused;
+    applyAssignment(fused, "skip.fused_upsample=true");
+    r.setWanted(std::set<std::string>{"composite"});
+    auto all = [](const FrameTime& t) { return t.all(); };
+    const AbResult f = compare(r, fused, own, c.o.frames, all, "composite");
+    SkipRow row{"fused", c.scene, view, "half-res AO: joint upsample inside the composite (whole frame)",
+                "frame GPU ms"};
+    row.with = f.a, row.without = f.b, row.wallWith = f.wallA, row.wallWithout = f.wallB;
+    row.errorChange = f.diff;
+    c.run.rows.push_back(row);
+    r.setSettings(defaultSettings());
+}
+
+// Unused targets: only the AO wanted (as `bench` judges it); then normals from depth too.
+void unusedTargetRows(Context& c, const std::string& view) {
+    Renderer& r = c.r;
     r.setWanted(std::set<std::string>{"ao.denoised"});
     for (const bool depthNormals : {false, true}) {
         Settings t = defaultSettings();
         if (depthNormals) t.ao.normals = NormalSource::Depth;
         Settings all = t;
         all.skip.unusedTargets = false;
-        const AbResult ab = compare(r, t, all, c.o.frames, gb, "ao.denoised");
+        const AbResult ab = compare(r, t, all, c.o.frames, gbufferMs, "ao.denoised");
         r.setSettings(t);
         r.invalidate();
         const FrameReport fr = r.render();
@@ -384,6 +393,15 @@ void gbufferRows(Context& c, const Camera& cam, const std::string& view) {
         row.extra["targets_written"] = k["gbuffer"]["targets_written"];
         c.run.rows.push_back(row);
     }
+}
+
+void gbufferRows(Context& c, const Camera& cam, const std::string& view) {
+    c.note("G-buffer, " + view);
+    c.r.setCamera(cam);
+    gbufferSkipRows(c, view);
+    demandRow(c, view);
+    fusedUpsampleRow(c, view);
+    unusedTargetRows(c, view);
 }
 
 } // namespace

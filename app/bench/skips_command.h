@@ -1,5 +1,5 @@
 // `ssaolab skips`: every skip of work a scene does not need, measured against the same frame
-// without it in the same run (docs/benchmarks.md, "Skipped work"): passes re-run per dependency,
+// without it in the same run (docs/bench/skips.md): passes re-run per dependency,
 // sky pixels, adaptive sample counts, frustum culling, unused G-buffer targets, idle frames. Each
 // row gives both times, their ratio and the error change (0 for exact skips).
 #pragma once

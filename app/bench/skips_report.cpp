@@ -46,18 +46,10 @@ template <class F> void rows(std::ostringstream& md, const SkipsRun& run, const 
     for (const auto& r : run.rows)
         if (r.skip == skip) md << line(r) << "\n";
 }
-} // namespace
 
-std::string skipsMarkdown(const SkipsRun& run) {
-    std::ostringstream md;
-    md << "Measured by `ssaolab skips` at " << markdownCell(run.facts.value("size", std::string("?"))) << ", median of "
-       << run.facts.value("frames", 0) << " frames per variant, the variants alternating frame by frame on "
-       << markdownCell(run.facts.value("gl_renderer", std::string("?")))
-       << ". \"with\" is the frame with the skip, \"without\" the same frame with it switched off (skip.* "
-          "settings) or, for dirty passes, with every pass forced; ratio = with / without. The output "
-          "change is the largest difference of the judged buffer over geometry pixels (0: bit-exact), "
-          "or for adaptive sampling the change in RMSE against the ray-traced reference.\n";
-
+// The skips inside the AO and its denoiser: what a change re-runs, sky pixels, adaptive samples,
+// deinterleaved sampling.
+void aoTables(std::ostringstream& md, const SkipsRun& run) {
     table(md, "Dirty passes: what each change re-runs",
           "| scene | change | passes run | GPU ms with | every pass forced | ratio | wall ms with / forced | output change |",
           "|---|---|---|---:|---:|---:|---:|---|");
@@ -96,7 +88,11 @@ std::string skipsMarkdown(const SkipsRun& run) {
                num(r.extra.value("rmse_with", 0.0), "%.4f") + " | " + num(r.extra.value("rmse_without", 0.0), "%.4f") +
                " | " + num(r.errorChange, "%+.4f") + " |";
     });
+}
 
+// The skips in the G-buffer and the composite: culling, hidden faces and draws, unread targets,
+// the fused upsample.
+void gbufferTables(std::ostringstream& md, const SkipsRun& run) {
     table(md, "Frustum culling in the G-buffer pass",
           "| scene | view | draws culled | triangles culled | G-buffer ms with | without | ratio | wall ms with / without | output change |",
           "|---|---|---:|---:|---:|---:|---:|---:|---|");
@@ -144,6 +140,21 @@ std::string skipsMarkdown(const SkipsRun& run) {
                " | " + num(r.wallWith, "%.1f") + " / " + num(r.wallWithout, "%.1f") + " | " + change(r.errorChange) +
                " |";
     });
+}
+} // namespace
+
+std::string skipsMarkdown(const SkipsRun& run) {
+    std::ostringstream md;
+    md << "Measured by `ssaolab skips` at " << markdownCell(run.facts.value("size", std::string("?"))) << ", median of "
+       << run.facts.value("frames", 0) << " frames per variant, the variants alternating frame by frame on "
+       << markdownCell(run.facts.value("gl_renderer", std::string("?")))
+       << ". \"with\" is the frame with the skip, \"without\" the same frame with it switched off (skip.* "
+          "settings) or, for dirty passes, with every pass forced; ratio = with / without. The output "
+          "change is the largest difference of the judged buffer over geometry pixels (0: bit-exact), "
+          "or for adaptive sampling the change in RMSE against the ray-traced reference.\n";
+
+    aoTables(md, run);
+    gbufferTables(md, run);
     return md.str();
 }
 

@@ -1,5 +1,5 @@
 // The rows of `ssaolab skips` and their files: skips.json (every row) and skips.md (one table per
-// skip, for docs/benchmarks.md).
+// skip, docs/bench/skips.md).
 #pragma once
 #include <nlohmann/json.hpp>
 

@@ -1,12 +1,12 @@
 #include "bench/tune_command.h"
 
+#include "base/image.h"
 #include "bench/bench_run.h"
 #include "bench/engine_tune.h"
 #include "bench/motion_measure.h"
 #include "bench/tune_guard.h"
 #include "bench/viewpoints.h"
 #include "headless_runner.h"
-#include "output/image.h"
 #include "progress_bar.h"
 #include "reference/reference_cache.h"
 #include "render_command.h"

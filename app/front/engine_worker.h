@@ -5,10 +5,10 @@
 // score it: one browser session per engine (its defaults and its tuned fits). A new job cancels
 // the running one between sessions (a session is not interrupted).
 #pragma once
+#include "base/image.h"
 #include "bench/engine_runner.h"
 #include "front/engine_candidates.h"
 #include "metrics/error_metrics.h"
-#include "output/image.h"
 #include "reference/reference_ao.h"
 
 #include <nlohmann/json.hpp>

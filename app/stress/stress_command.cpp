@@ -1,11 +1,12 @@
 #include "stress/stress_command.h"
 #include "gl/readback.h"
 
+#include "base/image.h"
 #include "headless_runner.h"
-#include "output/image.h"
 #include "render_command.h"
 #include "renderer.h"
 #include "scene/view_fit.h"
+#include "settings/params.h"
 #include "stress/stress_cases.h"
 #include "stress/stress_report.h"
 #include "techniques/technique.h"

@@ -19,8 +19,8 @@ void BufferViews::update(Renderer& r, const ViewStyle& style, const std::vector<
         const bool owedFit = v.refit && !keepRanges;
         if (current && !owedFit) continue;
         // A kept range while moving; in a still frame too, when the buffer changed, with its fit
-        // owed to the next call (measured: the three fits of the grid - position, depth, z-buffer -
-        // each ~1.5 ms of pick pass and read-back, median, Lantern 1172x616).
+        // owed to the next call (each fit is a pick pass and a read-back: the grid's three fits,
+        // position, depth and z-buffer, are spread over frames).
         const bool keep = v.range.fitted && v.style == style && v.target.texture() && !(current && owedFit);
         v.range = painter_.paint(*res, mask, style, v.target, r.shaders(), r.triangle(), nullptr, width,
                                  keep ? &v.range : nullptr);

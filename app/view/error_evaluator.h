@@ -1,6 +1,6 @@
-// Judges an AO frame against a reference snapshot (metrics/evaluate.h) on its own thread: on two
-// cores the metrics of a full-size frame (SSIM, edge mask, percentiles) take ~65 ms, too long for
-// a UI frame. One request at a time; a newer request replaces one still queued.
+// Judges an AO frame against a reference snapshot (metrics/evaluate.h) on its own thread: the
+// metrics of a full-size frame (SSIM, edge mask, percentiles) take longer than a UI frame may.
+// One request at a time; a newer request replaces one still queued.
 #pragma once
 #include "metrics/evaluate.h"
 

@@ -91,8 +91,8 @@ void FrameDriver::render(const Input& in, const ViewState& view, int viewW, int 
         if (r.width() != w || r.height() != h) r.setSize(w, h);
         r.setDisplayScale(scale); // a radius in pixels stays in displayed pixels while moving
         // The grid shows the composite in a cell painted at its own size: drawn at that size, the
-        // cell the same to the pixel (CompositePass::setDisplayWidth). bench_explorer, grid, still
-        // frame's composite pass: 15.0-18.0 -> 4.2-5.8 ms (CornellBox, FlightHelmet; 1172x616).
+        // cell the same to the pixel and the pass paying for the cell's pixels, not the frame's
+        // (CompositePass::setDisplayWidth).
         r.setDisplayWidth(view.mode == ViewMode::Grid ? view.gridCellPx : 0);
         r.setMoving(inter);       // skip.motion_lod: the clustered mesh while moving
         r.setCamera(in.camera);
@@ -147,8 +147,8 @@ void FrameDriver::paintViews(const ViewState& view) {
     } else if (!view.splitDifference) {
         names = {view.splitBuffer, "b." + view.splitBuffer};
     }
-    // Grid cells are painted at their own size (a full-size paint of every buffer cost the grid's
-    // still frame ~70 ms at 1172x616 on llvmpipe); an enlarged view at the buffer's.
+    // Grid cells are painted at their own size (a paint costs its output's pixels, and a cell has
+    // far fewer than its buffer); an enlarged view at the buffer's.
     // While moving, fitted ranges stay those of the last still frame (no read-back per frame).
     views_.update(r, view.style, names, view.mode == ViewMode::Grid ? view.gridCellPx : 0, renderedInteractive_);
     if (view.mode == ViewMode::Split && view.splitDifference && r.graph().find("b." + view.splitBuffer))

@@ -1,8 +1,8 @@
 // An image the explorer shows that no pass of its renderer made (a web engine's AO frame, Split B
 // of an engine point: front/engine_front.h): uploaded once per image as grey RGBA8, [0, 1].
 #pragma once
+#include "base/image.h"
 #include "gl/resources.h"
-#include "output/image.h"
 
 #include <memory>
 

@@ -1,6 +1,6 @@
 #include "view/inspector.h"
 
-#include "output/image.h"
+#include "base/image.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 #include "view/live_reference.h"
 #include "gl/readback.h"
 
-#include "output/image.h"
+#include "base/image.h"
 
 #include <algorithm>
 #include <thread>
@@ -65,6 +65,74 @@ double LiveReference::oracleFraction() const {
     return p.job == oracleJob_ ? std::min(p.fraction, 0.999) : 0.0;
 }
 
+// Starts the trace of the view just rendered.
+void LiveReference::startTrace(const Renderer& r, const std::shared_ptr<const Scene>& scene, int targetRays,
+                               int fullW, int fullH, const std::function<float()>& radiusWorld) {
+    // The frame just rendered is the full-size one: its radius at the centre is the one shown.
+    ReferenceWorker::Job job;
+    job.scene = scene;
+    job.camera = r.camera();
+    job.width = fullW;
+    job.height = fullH;
+    job.settings.radius = radiusWorld();
+    job.settings.samples = targetRays;
+    job.settings.variant = ReferenceVariant::Visibility;
+    // One core stays with the renderer (llvmpipe draws the frames on the CPU too).
+    job.settings.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
+    radius_ = job.settings.radius;
+    job_ = worker_.start(std::move(job));
+    started_ = true;
+}
+
+// Once the reference is done: the oracle of the same view (same R, a quarter of the rays - 128
+// of 512: its noise, about 0.02 RMS, only has to stay below the split's differences; it marches
+// the screen per ray and costs about twice the reference per ray on the CPU), visibility from
+// the depth layer alone; taken when it is done.
+void LiveReference::followOracle(const std::shared_ptr<const Scene>& scene) {
+    if (!oracleStarted_ && snapshot_ && snapshot_->samples >= key_->target) {
+        ReferenceWorker::Job job;
+        job.scene = scene;
+        job.camera = key_->camera;
+        job.width = key_->width;
+        job.height = key_->height;
+        job.settings.radius = radius_;
+        job.settings.samples = std::max(16, key_->target / 4);
+        job.settings.variant = ReferenceVariant::Visibility;
+        job.settings.visibility = ReferenceVisibility::Screen;
+        job.settings.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
+        oracleJob_ = oracleWorker_.start(std::move(job));
+        oracleStarted_ = true;
+    }
+    if (oracleStarted_ && !oracle_) {
+        ReferenceWorker::Snapshot o = oracleWorker_.latest();
+        const ReferenceWorker::Progress op = oracleWorker_.progress();
+        if (o.job == oracleJob_ && o.image && op.job == oracleJob_ && op.phase == ReferenceWorker::Phase::Done)
+            oracle_ = std::move(o.image);
+    }
+}
+
+// The error follows each new snapshot and ao.denoised (a parameter changed, the reference
+// stays); the evaluation runs on the evaluator's thread and is shown when it is done.
+void LiveReference::submitEvaluation(const Renderer& r) {
+    const Resource* ao = r.graph().find("ao.denoised");
+    // The split view's B, judged beside A when its AO is its own (AO on | off shares A's).
+    const Resource* aoB = r.graph().resolve("b.ao.denoised") != r.graph().resolve("ao.denoised")
+                              ? r.graph().find("b.ao.denoised")
+                              : nullptr;
+    const std::string bKey =
+        aoB ? std::to_string(aoB->version) + "/" + std::to_string(aoB->generation) : std::string();
+    if (snapshot_ && ao &&
+        (snapshot_ != submitted_ || oracle_ != submittedOracle_ || ao->version != submittedAo_ ||
+         ao->generation != submittedAoGeneration_ || bKey != submittedB_)) {
+        evaluator_.submit({readBack(ao->texture, 1), snapshot_, ++tag_, oracle_, aoB ? readBack(aoB->texture, 1) : Image{}});
+        submittedB_ = bKey;
+        submitted_ = snapshot_;
+        submittedOracle_ = oracle_;
+        submittedAo_ = ao->version;
+        submittedAoGeneration_ = ao->generation;
+    }
+}
+
 bool LiveReference::update(Renderer& r, const std::shared_ptr<const Scene>& scene, bool on, int targetRays,
                            int fullW, int fullH, bool interacting,
                            const std::function<float()>& radiusWorld) {
@@ -94,67 +162,11 @@ bool LiveReference::update(Renderer& r, const std::shared_ptr<const Scene>& scen
     // While input moves, the trace neither starts (dragging the camera would start and cancel one
     // per frame) nor shows its progress: the frames keep the CPU.
     if (interacting) return changed;
-    if (!started_) {
-        // The frame just rendered is the full-size one: its radius at the centre is the one shown.
-        ReferenceWorker::Job job;
-        job.scene = scene;
-        job.camera = r.camera();
-        job.width = fullW;
-        job.height = fullH;
-        job.settings.radius = radiusWorld();
-        job.settings.samples = targetRays;
-        job.settings.variant = ReferenceVariant::Visibility;
-        // One core stays with the renderer (llvmpipe draws the frames on the CPU too).
-        job.settings.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
-        radius_ = job.settings.radius;
-        job_ = worker_.start(std::move(job));
-        started_ = true;
-    }
+    if (!started_) startTrace(r, scene, targetRays, fullW, fullH, radiusWorld);
     ReferenceWorker::Snapshot s = worker_.latest();
     if (s.job == job_ && s.image) snapshot_ = std::move(s.image);
-    // The reference is done: trace the oracle of the same view (same R, a quarter of the rays - 128
-    // of 512: its noise, about 0.02 RMS, only has to stay below the split's differences; it marches
-    // the screen per ray and costs about twice the reference per ray on the CPU), visibility from
-    // the depth layer alone.
-    if (!oracleStarted_ && snapshot_ && snapshot_->samples >= key_->target) {
-        ReferenceWorker::Job job;
-        job.scene = scene;
-        job.camera = key_->camera;
-        job.width = key_->width;
-        job.height = key_->height;
-        job.settings.radius = radius_;
-        job.settings.samples = std::max(16, key_->target / 4);
-        job.settings.variant = ReferenceVariant::Visibility;
-        job.settings.visibility = ReferenceVisibility::Screen;
-        job.settings.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
-        oracleJob_ = oracleWorker_.start(std::move(job));
-        oracleStarted_ = true;
-    }
-    if (oracleStarted_ && !oracle_) {
-        ReferenceWorker::Snapshot o = oracleWorker_.latest();
-        const ReferenceWorker::Progress op = oracleWorker_.progress();
-        if (o.job == oracleJob_ && o.image && op.job == oracleJob_ && op.phase == ReferenceWorker::Phase::Done)
-            oracle_ = std::move(o.image);
-    }
-    // The error follows each new snapshot and ao.denoised (a parameter changed, the reference
-    // stays); the evaluation runs on the evaluator's thread and is shown when it is done.
-    const Resource* ao = r.graph().find("ao.denoised");
-    // The split view's B, judged beside A when its AO is its own (AO on | off shares A's).
-    const Resource* aoB = r.graph().resolve("b.ao.denoised") != r.graph().resolve("ao.denoised")
-                              ? r.graph().find("b.ao.denoised")
-                              : nullptr;
-    const std::string bKey =
-        aoB ? std::to_string(aoB->version) + "/" + std::to_string(aoB->generation) : std::string();
-    if (snapshot_ && ao &&
-        (snapshot_ != submitted_ || oracle_ != submittedOracle_ || ao->version != submittedAo_ ||
-         ao->generation != submittedAoGeneration_ || bKey != submittedB_)) {
-        evaluator_.submit({readBack(ao->texture, 1), snapshot_, ++tag_, oracle_, aoB ? readBack(aoB->texture, 1) : Image{}});
-        submittedB_ = bKey;
-        submitted_ = snapshot_;
-        submittedOracle_ = oracle_;
-        submittedAo_ = ao->version;
-        submittedAoGeneration_ = ao->generation;
-    }
+    followOracle(scene);
+    submitEvaluation(r);
     if (std::optional<ErrorEvaluator::Result> done = evaluator_.take(); done && done->tag >= validFrom_) {
         publish(*done);
         changed = true;

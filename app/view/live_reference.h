@@ -98,6 +98,10 @@ class LiveReference {
     void forget(); // the view changed: nothing traced or evaluated so far is of it
     void clear();  // no reference of the current view: the buffers read 0
     void publish(const ErrorEvaluator::Result& r);
+    void startTrace(const Renderer& r, const std::shared_ptr<const Scene>& scene, int targetRays, int fullW,
+                    int fullH, const std::function<float()>& radiusWorld);
+    void followOracle(const std::shared_ptr<const Scene>& scene); // starts it once the reference is done
+    void submitEvaluation(const Renderer& r); // of a new snapshot, oracle or ao.denoised
 
     ReferenceWorker worker_;
     ReferenceWorker oracleWorker_;

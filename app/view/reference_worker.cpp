@@ -13,11 +13,8 @@ namespace ssao {
 // gets the CPU time no normal thread wants, so on a few cores (llvmpipe renders with the same
 // CPUs) a frame keeps its time and the reference takes what is left. A thread's policy is its own
 // and the threads it starts inherit it, so the tracer's row threads run under it too.
-// Nice 10, before: the weight of a nice-10 thread (110 against 1 024) still let the tracer's two
-// threads take 3-20 ms of CPU during the 2CylinderEngine's grid still frame (per-thread CPU time,
-// /proc/self/task/N/schedstat, eight frames), and bench_explorer's still frame took 89.3-118.0 ms
-// (median 95.7) against 84.4-105.8 (median 89.8) with SCHED_IDLE, six alternating runs.
-// Where the policy is refused, nice 19 (weight 15) is the next best.
+// Not a nice value: even nice 10 keeps a weight (110 against 1 024), so the tracer's threads
+// would still take CPU from a frame. Where the policy is refused, nice 19 (weight 15) is next best.
 void lowerThisThreadsPriority() {
 #ifdef __linux__
     sched_param none{};

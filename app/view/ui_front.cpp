@@ -164,7 +164,7 @@ void answer(AppCore& app, const char* question, size_t i, const std::string& key
 }
 
 // Why the current point may look grainy: denoise.kind=auto leaves the marching techniques
-// unfiltered because a blur raised their error on the bench scenes (docs/benchmarks.md, denoisers).
+// unfiltered because a blur raises their error on the bench scenes (docs/bench/report.md).
 void grainNote(AppCore& app) {
     const Settings& s = app.settings();
     if (s.denoise.kind != DenoiseKind::Auto || effectiveDenoise(s).kind != DenoiseKind::None || s.temporal.enabled)

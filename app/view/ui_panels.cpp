@@ -49,11 +49,8 @@ bool inputText(const char* label, std::string& s, bool enter = false) {
     return hit;
 }
 
-void sceneSection(AppCore& app) {
-    // What replaces the scene (opening one, the transparent toggle) runs at the end: `sc` and what
-    // points into it must outlive every widget drawn from them.
-    std::function<void()> replaceScene;
-    const Scene& sc = app.scene();
+// The scene's name, size and materials, and the transparent surfaces' toggle.
+void sceneFacts(AppCore& app, const Scene& sc, std::function<void()>& replaceScene) {
     ImGui::TextWrapped("%s", sc.name.c_str());
     ImGui::TextDisabled("%zu triangles, bounding-box diagonal %.4g units", sc.triangleCount(),
                         2.0f * sc.bounds.radius());
@@ -76,6 +73,10 @@ void sceneSection(AppCore& app) {
                               "neither in the G-buffer nor an occluder of the reference. On: drawn and traced as solids\n"
                               "(ssaolab --transparent opaque).");
     }
+}
+
+// A path to open, and the built-in scenes.
+void sceneOpen(AppCore& app, std::function<void()>& replaceScene) {
     static std::string path;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.7f);
     const bool enter = inputText("##scenepath", path, true);
@@ -88,7 +89,10 @@ void sceneSection(AppCore& app) {
         ImGui::SameLine();
     }
     ImGui::NewLine();
-    ImGui::Separator();
+}
+
+// Orbit or fly, the reset, and the cameras the scene file brings.
+void cameraButtons(AppCore& app, const Scene& sc) {
     CameraController& cc = app.cameraController();
     int mode = cc.mode() == CameraController::Mode::Orbit ? 0 : 1;
     if (ImGui::RadioButton("Orbit", &mode, 0)) cc.setMode(CameraController::Mode::Orbit);
@@ -101,6 +105,11 @@ void sceneSection(AppCore& app) {
         ImGui::SameLine();
     }
     ImGui::NewLine();
+}
+
+// Clip planes, projection and depth, and the camera as rendered.
+void cameraChoices(AppCore& app, const Scene& sc) {
+    CameraController& cc = app.cameraController();
     // One row of two choices; returns the one clicked this frame (-1: none). The second button's
     // tooltip explains the non-default choice.
     auto choice = [&](const char* label, int current, const char* a, const char* keyA, const char* b,
@@ -137,6 +146,18 @@ void sceneSection(AppCore& app) {
                         c.target.y, c.target.z);
     ImGui::TextDisabled("fov %.0f  near %.4g  far %.4g (as rendered)%s", e.fovYDeg, e.nearZ, e.farZ,
                         e.orthographic() ? "; view height = 2 |target - eye| tan(fov/2)" : "");
+}
+
+void sceneSection(AppCore& app) {
+    // What replaces the scene (opening one, the transparent toggle) runs at the end: `sc` and what
+    // points into it must outlive every widget drawn from them.
+    std::function<void()> replaceScene;
+    const Scene& sc = app.scene();
+    sceneFacts(app, sc, replaceScene);
+    sceneOpen(app, replaceScene);
+    ImGui::Separator();
+    cameraButtons(app, sc);
+    cameraChoices(app, sc);
     if (replaceScene) replaceScene();
 }
 
@@ -243,8 +264,7 @@ int tabStrip(AppCore& app, const std::vector<const char*>& names) {
 void beginFixedWindow(const char* name, ImVec2 pos, ImVec2 size, ImGuiWindowFlags extra) {
     // The layout is computed from the window size each frame: nothing to move, resize or persist.
     // No background: each would be a blended quad over its whole window, the whole screen in all,
-    // drawn under the views' images again (llvmpipe, 1600x900: the UI's draw 13-16 -> 7-11 ms of
-    // every frame, idle ones included); the clear paints it instead.
+    // drawn under the views' images again, every frame; the clear paints it instead.
     ImGui::SetNextWindowPos(pos);
     ImGui::SetNextWindowSize(size);
     ImGui::Begin(name, nullptr,

@@ -1,7 +1,7 @@
 #include "view/window_app.h"
 
+#include "base/image.h"
 #include "gl/context.h"
-#include "output/image.h"
 #include "util/error.h"
 #include "util/files.h"
 

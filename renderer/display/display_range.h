@@ -4,8 +4,8 @@
 // get a range fitted over geometry pixels with robust percentiles (1st and 99th), so one far
 // pixel or the sky cannot wash the view out. Vectors get one range per channel.
 #pragma once
+#include "base/image.h"
 #include "graph/resource.h"
-#include "output/image.h"
 
 #include <glm/glm.hpp>
 

@@ -1,7 +1,7 @@
-// GPU → CPU: a texture read into an Image (output/image.h), rows flipped from GL's bottom-up order.
+// GPU → CPU: a texture read into an Image (base/image.h), rows flipped from GL's bottom-up order.
 #pragma once
+#include "base/image.h"
 #include "gl/resources.h"
-#include "output/image.h"
 
 namespace ssao {
 

@@ -1,6 +1,6 @@
 // Shader files loaded at run time from shaders/: `#include "file"` is inlined (once per file),
 // `#define`s are injected after #version, and `#line L F` keeps every line attributable, so a
-// compile error is reported as "shaders/passes/ssao.frag:42: ...". Programs are cached by
+// compile error is reported as "shaders/passes/denoise.frag:42: ...". Programs are cached by
 // (stages, define set); a variant is compiled only the first time it is asked for.
 #pragma once
 #include "gl/handle.h"

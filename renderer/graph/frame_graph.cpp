@@ -1,7 +1,6 @@
 #include "graph/frame_graph.h"
 
 #include "scene/camera.h"
-#include "settings/params.h"
 #include "util/error.h"
 
 #include <algorithm>

@@ -83,7 +83,7 @@ class FrameGraph {
     std::map<std::string, Resource> resources_;
     // Per resource, its texture of the size before the last change: the app's moving and still
     // frames take turns at two sizes, and a texture made anew is memory the CPU rasteriser touches
-    // for the first time (page faults: measured up to ~35 ms of CPU in 2CylinderEngine's still frame).
+    // for the first time (a page fault on every first touch).
     std::map<std::string, gl::Texture2D> spares_;
     std::map<std::string, RunKey> keys_;          // pass name → key of its last run
     std::map<std::string, std::set<std::string>> written_; // pass name → outputs its last run wrote

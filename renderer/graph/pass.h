@@ -6,7 +6,6 @@
 #include "graph/inspection.h"
 #include "graph/pass_config.h"
 #include "graph/resource.h"
-#include "settings/settings.h"
 
 #include "../../shaders/include/bindings.h"
 
@@ -27,6 +26,7 @@ class FullscreenTriangle;
 class GpuScene;
 class FrameGraph;
 struct Camera;
+struct Settings; // techniques/technique_settings.h: the graph passes it through, a pass reads it
 
 // Which AO chain a pass belongs to: A (the main one, unprefixed names) or B (the split view's
 // second chain, names prefixed "b."). Both share the G-buffer.

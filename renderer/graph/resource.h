@@ -12,7 +12,7 @@
 
 namespace ssao {
 
-// How a buffer maps to a displayable image (display/view_renderer.h).
+// How a buffer maps to a displayable image (display/display_range.h).
 enum class Display {
     Color,     // rgb shown as is (albedo, composite)
     Unit,      // one scalar with a physical range [0,1] (AO)

@@ -1,9 +1,9 @@
 // An AO frame judged against its ray-traced reference: the metrics (error_metrics.h), the signed
 // error image and its heat map, and the JSON block metrics.json, the bench and the app report.
 #pragma once
+#include "base/image.h"
 #include "metrics/error_metrics.h"
 #include "metrics/error_split.h"
-#include "output/image.h"
 #include "reference/reference_ao.h"
 
 #include <nlohmann/json.hpp>

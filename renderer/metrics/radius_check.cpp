@@ -1,7 +1,5 @@
 #include "metrics/radius_check.h"
 
-#include "output/frame_capture.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -38,13 +36,6 @@ ViewRadiusCheck checkViewRadius(const float* depth, size_t count, const Camera& 
     c.tooLarge = ao.radiusMode == RadiusMode::Scene && c.viewExtent > 0.0 &&
                  c.radius > kViewRadiusLimit * c.viewExtent;
     return c;
-}
-
-ViewRadiusCheck checkViewRadius(const FrameCapture& frame) {
-    const CapturedBuffer* depth = frame.find("gbuffer.depth");
-    if (!depth || depth->values.channels != 1 || frame.height <= 0) return {};
-    return checkViewRadius(depth->values.data.data(), depth->values.data.size(), frame.camera,
-                           double(frame.width) / double(frame.height), frame.settings.ao, frame.radius.sceneDiagonal);
 }
 
 std::string ViewRadiusCheck::message() const {

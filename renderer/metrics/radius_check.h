@@ -36,8 +36,4 @@ struct ViewRadiusCheck {
 ViewRadiusCheck checkViewRadius(const float* depth, size_t count, const Camera& camera, double aspect,
                                 const AoSettings& ao, double sceneDiagonal);
 
-struct FrameCapture;
-// The check of a rendered frame: its gbuffer.depth, camera, AO settings and scene diagonal.
-ViewRadiusCheck checkViewRadius(const FrameCapture& frame);
-
 } // namespace ssao

@@ -15,4 +15,11 @@ const CapturedBuffer& FrameCapture::get(const std::string& name) const {
     throw Error("no buffer named '" + name + "' in the frame");
 }
 
+ViewRadiusCheck checkViewRadius(const FrameCapture& frame) {
+    const CapturedBuffer* depth = frame.find("gbuffer.depth");
+    if (!depth || depth->values.channels != 1 || frame.height <= 0) return {};
+    return checkViewRadius(depth->values.data.data(), depth->values.data.size(), frame.camera,
+                           double(frame.width) / double(frame.height), frame.settings.ao, frame.radius.sceneDiagonal);
+}
+
 } // namespace ssao

@@ -3,8 +3,9 @@
 // EXR/PNG files, the reference's judgement, the skip counters) are written from this alone, so
 // output/ needs no GL and no renderer (display/capture.h fills it on the GL side).
 #pragma once
+#include "base/image.h"
 #include "graph/frame_report.h"
-#include "output/image.h"
+#include "metrics/radius_check.h"
 #include "scene/camera.h"
 #include "settings/settings.h"
 #include "techniques/ao_common.h"
@@ -42,5 +43,9 @@ struct FrameCapture {
     const CapturedBuffer* find(const std::string& name) const;
     const CapturedBuffer& get(const std::string& name) const; // throws ssao::Error naming it
 };
+
+// The view-radius check (metrics/radius_check.h) of a rendered frame: its gbuffer.depth, camera,
+// AO settings and scene diagonal.
+ViewRadiusCheck checkViewRadius(const FrameCapture& frame);
 
 } // namespace ssao

@@ -1,6 +1,6 @@
 #include "output/report.h"
 
-#include "output/image.h"
+#include "base/image.h"
 #include "output/skip_report.h"
 #include "settings/params.h"
 #include "settings/preset.h"

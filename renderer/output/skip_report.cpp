@@ -1,6 +1,6 @@
 #include "output/skip_report.h"
 
-#include "output/image.h"
+#include "base/image.h"
 #include "settings/params.h"
 #include "techniques/ao_common.h"
 #include "techniques/technique.h"

@@ -6,8 +6,10 @@
 // points toward the eye is discarded. 0 where no surface faces away. The bitmask reads it for the
 // sectors a tap hides (shaders/include/position_taps.glsl aoBackGap).
 #pragma once
+#include "graph/gbuffer_layers.h"
 #include "graph/pass.h"
 #include "scene/gpu_scene.h"
+#include "settings/settings.h"
 
 namespace ssao {
 
@@ -21,7 +23,7 @@ SSAO_CONFIG_END
 
 class BackFacePass final : public ConfiguredPass<BackFaceConfig> {
   public:
-    static constexpr const char* kOutput = "gbuffer.back_depth";
+    static constexpr const char* kOutput = gbuffer::kBackDepth;
     static bool on(const Settings& s) { return s.gbuffer.backFaces; }
     BackFacePass() : ConfiguredPass("back_faces", Chain::a()) {}
     void setup(PassBuilder& b, const Settings& s) const override;

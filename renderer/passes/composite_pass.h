@@ -1,6 +1,7 @@
 // Final image: ambient * albedo * AO + one point light (seed 004), display gamma, RGBA8.
 #pragma once
 #include "graph/pass.h"
+#include "settings/settings.h"
 
 namespace ssao {
 

@@ -90,8 +90,8 @@ void DenoisePass::run(PassContext& ctx, const DenoiseConfig& c) {
     } else if (c.copy) {
         // None at full resolution: the identity tap over ao.raw, whose sky is already 1 (the AO
         // passes write 1 there, AO_SKY_EARLY_OUT / AO_RESULT) and whose values are already <= 1
-        // (aoFinish): the same texels copied, without a fullscreen pass (that pass took 4.0-4.9 ms at
-        // 1172x616 on llvmpipe, the copy takes under 1 ms).
+        // (aoFinish): the same texels copied, without a fullscreen pass (a copy is a fraction of
+        // its cost on llvmpipe).
         const glm::ivec2 size = ctx.size(out);
         glCopyImageSubData(ctx.in(raw).id(), GL_TEXTURE_2D, 0, 0, 0, 0, ctx.in(out).id(), GL_TEXTURE_2D, 0, 0, 0, 0,
                            size.x, size.y, 1);

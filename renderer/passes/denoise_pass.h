@@ -7,6 +7,7 @@
 #pragma once
 #include "graph/pass.h"
 #include "passes/temporal_accumulator.h"
+#include "settings/settings.h"
 
 namespace ssao {
 

@@ -1,10 +1,11 @@
 // G-buffer in view space (seeds 000/003/004): position, normal, albedo, linear depth, and the
 // hardware depth buffer — the inputs every AO technique reads.
 #pragma once
-#include "graph/pass.h"
 #include "gl/shader_library.h"
+#include "graph/pass.h"
 #include "scene/gpu_scene.h"
 #include "scene/occlusion_culler.h"
+#include "settings/settings.h"
 
 namespace ssao {
 

@@ -6,8 +6,10 @@
 // frame-sized G-buffer. This draws the scene a second time with the frustum widened by the band:
 // a renderer that drew its G-buffer once at the larger size would pay only the band's pixels.
 #pragma once
+#include "graph/gbuffer_layers.h"
 #include "graph/pass.h"
 #include "scene/gpu_scene.h"
+#include "settings/settings.h"
 
 namespace ssao {
 
@@ -27,7 +29,7 @@ glm::mat4 widenedProjection(const glm::mat4& proj, int width, int height, int ba
 
 class GuardBandPass final : public ConfiguredPass<GuardBandConfig> {
   public:
-    static constexpr const char* kOutput = "gbuffer.guard_band";
+    static constexpr const char* kOutput = gbuffer::kGuardBand;
     // The band of these settings' G-buffer (0: no band, the pass is not in the graph).
     static int bandOf(const Settings& s) { return s.gbuffer.guardBandPx; }
     explicit GuardBandPass(int band) : ConfiguredPass("guard_band", Chain::a()), band_(band) {}

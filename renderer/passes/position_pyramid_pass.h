@@ -7,20 +7,18 @@
 // A pass of its own (timer, label, demand culling), shared by both chains: the renderer adds it
 // when a chain's technique asks for the pyramid (TechniqueInfo::pyramid).
 #pragma once
+#include "graph/gbuffer_layers.h"
 #include "graph/pass.h"
+#include "settings/settings.h"
 
 #include <vector>
 
 namespace ssao {
 
-// The offsets `log2(d) - offset` of the two families (shaders/include/position_taps.glsl).
-constexpr float kSaoMipOffset = 3.0f;    // SAO's LOG_MAX_OFFSET (SAO and HBAO)
-constexpr float kXeGtaoMipOffset = 3.3f; // XeGTAO's depthMIPSamplingOffset (GTAO, visibility bitmask)
-
 class PositionPyramidPass final : public ConfiguredPass<NoConfig> {
   public:
     static constexpr int kMaxLevels = 6; // levels 0..5, like XeGTAO's 5 MIPs below the full size
-    static constexpr const char* kOutput = "gbuffer.position_mips";
+    static constexpr const char* kOutput = gbuffer::kPositionMips;
     PositionPyramidPass() : ConfiguredPass("position_mips", Chain::a()) {}
     void setup(PassBuilder& b, const Settings& s) const override;
     NoConfig config(const Settings&, const FrameInfo&) const override { return {}; } // its input alone

@@ -1,6 +1,6 @@
 #include "passes/reference_pass.h"
 
-#include "output/image.h"
+#include "base/image.h"
 
 namespace ssao {
 

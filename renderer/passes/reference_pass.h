@@ -4,6 +4,7 @@
 // any other buffer. The pass re-runs when the images' version changes (Pass::externalVersion).
 #pragma once
 #include "graph/pass.h"
+#include "settings/settings.h"
 
 #include <cstdint>
 #include <memory>

@@ -5,6 +5,7 @@
 #pragma once
 #include "gl/resources.h"
 #include "graph/pass.h"
+#include "settings/settings.h"
 
 #include <glm/glm.hpp>
 

@@ -1,6 +1,6 @@
 #include "reference/reference_cache.h"
 
-#include "output/image.h"
+#include "base/image.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/json_file.h"

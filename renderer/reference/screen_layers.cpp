@@ -129,8 +129,8 @@ bool ScreenLayers::occluded(const glm::vec3& o, const glm::vec3& d, float R, siz
             const float g1 = gapBehind(back, q);
             if (g0 > 0.0f && (!(g1 > 0.0f) || !(gapBehind(surfaces_[px], before) > 0.0f))) return true;
             // (The mirror case, a step from beyond the back face to in front of the front plane, is
-            // not tested: with the planes extended past their pixels it fired on rays leaving
-            // neighbouring surfaces and over-occluded: CornellBox 0.014 -> 0.023.)
+            // not tested: with the planes extended past their pixels it fires on rays leaving
+            // neighbouring surfaces and over-occludes.)
             continue;
         }
         if (g0 > 0.0f && g0 <= thickness_) return true;

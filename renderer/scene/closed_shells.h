@@ -25,9 +25,9 @@ enum class ShellFacing : int8_t {
     Inward = -1,  // on a closed shell of negative volume: its GL front faces are hidden
 };
 
-// The largest triangle count one call analyses: ~130 bytes of scratch per triangle, and 0.3 s for
-// a million (a generated height field, 2-core llvmpipe machine; the saw's 198k: 25 ms). A range
-// beyond it is reported all Open (drawn as before, with no culling).
+// The largest triangle count one call analyses: ~130 bytes of scratch per triangle, and its time
+// grows with the count, so it bounds a load's memory and pause. A range beyond it is reported all
+// Open (drawn as before, with no culling).
 constexpr size_t kShellMaxTriangles = size_t(1) << 20;
 
 // The weld table's hash of a position's bits (-0 as +0): MurmurHash3's finaliser mixes every bit

@@ -41,7 +41,7 @@ bool readFileInFolder(std::vector<unsigned char>* out, std::string* err, const s
         return false;
     }
     // The budget counts every read, before it happens: two buffers naming one sparse 2 GiB file
-    // once took 4 GiB.
+    // would take 4 GiB.
     auto* f = static_cast<SceneFolder*>(user);
     const size_t left = f->budget - std::min(f->read, f->budget);
     try {

@@ -80,6 +80,80 @@ bool finite3(const glm::dvec3& p) {
     return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
 
+// Counts the primitive's triangles by material class; false when the class is skipped: BLEND and
+// transmissive surfaces by default, as engines draw them after the AO (scene.h Transparent).
+bool countMaterial(MaterialClass cls, size_t tris, Scene& s) {
+    if (cls == MaterialClass::Blend) {
+        s.materials.blend += tris;
+        if (transparentMode() == Transparent::Skip) {
+            s.materials.blendSkipped = true;
+            return false;
+        }
+    } else if (cls == MaterialClass::Mask) {
+        s.materials.mask += tris;
+    } else {
+        s.materials.opaque += tris;
+    }
+    return true;
+}
+
+void pushUv(Scene& s, const std::vector<glm::vec2>& uv, uint32_t i) {
+    if (!s.uvs.empty()) s.uvs.push_back(uv.empty() ? glm::vec2(0.0f) : uv[i]);
+}
+
+// The primitive's own normals: one vertex per glTF vertex, the triangles indexing them.
+void appendSmooth(const Vec3Reader& pos, const Vec3Reader& nrm, const std::vector<uint32_t>& idx,
+                  const glm::dmat4& world, const std::vector<glm::vec2>& uv, Scene& s,
+                  std::vector<glm::dvec3>& worldPos, const std::string& what) {
+    const glm::mat3 normalMat = glm::mat3(glm::transpose(glm::inverse(glm::dmat3(world))));
+    const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+    const uint32_t base = uint32_t(s.vertices.size());
+    for (size_t i = 0; i < pos.count; ++i) {
+        const glm::dvec3 wp = glm::dvec3(world * glm::dvec4(glm::dvec3(pos[i]), 1.0));
+        if (!finite3(wp) || !finite3(glm::dvec3(glm::vec3(wp))))
+            throw Error(what + ": POSITION " + std::to_string(i) + " is not finite");
+        glm::vec3 n = normalMat * nrm[i];
+        float len = glm::length(n);
+        n = (len > 1e-20f && std::isfinite(len)) ? n / len : glm::vec3(0, 1, 0);
+        s.vertices.push_back({glm::vec3(0.0f), n});
+        worldPos.push_back(wp);
+        pushUv(s, uv, uint32_t(i));
+    }
+    for (size_t t = 0; t + 2 < idx.size(); t += 3) {
+        uint32_t a = idx[t], b = idx[t + 1], c = idx[t + 2];
+        if (mirrored) std::swap(b, c); // keep counter-clockwise front faces
+        s.indices.insert(s.indices.end(), {base + a, base + b, base + c});
+    }
+}
+
+// No normals: flat normals per face (glTF spec: "client implementations MUST calculate flat
+// normals"), three vertices per triangle.
+void appendFlat(const Vec3Reader& pos, const std::vector<uint32_t>& idx, const glm::dmat4& world,
+                const std::vector<glm::vec2>& uv, Scene& s, std::vector<glm::dvec3>& worldPos,
+                const std::string& what) {
+    const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+    for (size_t t = 0; t + 2 < idx.size(); t += 3) {
+        auto at = [&](uint32_t i) { return glm::dvec3(world * glm::dvec4(glm::dvec3(pos[i]), 1.0)); };
+        glm::dvec3 p0 = at(idx[t]), p1 = at(idx[t + 1]), p2 = at(idx[t + 2]);
+        for (const glm::dvec3& q : {p0, p1, p2})
+            if (!finite3(q) || !finite3(glm::dvec3(glm::vec3(q))))
+                throw Error(what + ": a POSITION is not finite");
+        uint32_t corner[3] = {idx[t], idx[t + 1], idx[t + 2]};
+        if (mirrored) std::swap(p1, p2), std::swap(corner[1], corner[2]);
+        glm::dvec3 nd = glm::cross(p1 - p0, p2 - p0);
+        const double len = glm::length(nd);
+        const glm::vec3 n = len > 1e-30 && std::isfinite(len) ? glm::vec3(nd / len) : glm::vec3(0, 1, 0);
+        uint32_t v0 = uint32_t(s.vertices.size());
+        for (const glm::dvec3& q : {p0, p1, p2}) {
+            s.vertices.push_back({glm::vec3(0.0f), n});
+            worldPos.push_back(q);
+        }
+        for (uint32_t k : corner)
+            pushUv(s, uv, k);
+        s.indices.insert(s.indices.end(), {v0, v0 + 1, v0 + 2});
+    }
+}
+
 // Appends the primitive's triangles; positions go to `world` (file coordinates, double), one per
 // vertex, to be made relative to the scene's origin once every mesh is in.
 void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, const glm::dmat4& world, Scene& s,
@@ -96,25 +170,11 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
         throw Error(what + ": the scene expands past the budget of " + std::to_string(budget) +
                     " triangles (raise it with ssaolab --max-triangles N)");
 
-    // The material class: BLEND and transmissive surfaces are skipped by default, as engines draw
-    // them after the AO (scene.h Transparent); counted either way.
     const size_t tris = idx.size() / 3;
     const tinygltf::Material* mat =
         p.material >= 0 && p.material < int(m.materials.size()) ? &m.materials[size_t(p.material)] : nullptr;
     const MaterialClass cls = materialClass(mat);
-    if (cls == MaterialClass::Blend) {
-        s.materials.blend += tris;
-        if (transparentMode() == Transparent::Skip) {
-            s.materials.blendSkipped = true;
-            return;
-        }
-    } else if (cls == MaterialClass::Mask) {
-        s.materials.mask += tris;
-    } else {
-        s.materials.opaque += tris;
-    }
-    const glm::mat3 normalMat = glm::mat3(glm::transpose(glm::inverse(glm::dmat3(world))));
-    const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+    if (!countMaterial(cls, tris, s)) return;
     Draw d;
     d.firstIndex = uint32_t(s.indices.size());
     if (mat) {
@@ -129,53 +189,13 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, con
         if (d.alphaTexture < 0) d.mask = false;                          // solid everywhere
     }
     if (!uv.empty() || !s.uvs.empty()) s.uvs.resize(s.vertices.size());
-    auto pushUv = [&](uint32_t i) {
-        if (!s.uvs.empty()) s.uvs.push_back(uv.empty() ? glm::vec2(0.0f) : uv[i]);
-    };
     auto nrmIt = p.attributes.find("NORMAL");
-    const uint32_t base = uint32_t(s.vertices.size());
     if (nrmIt != p.attributes.end()) {
         Vec3Reader nrm = vec3Accessor(m, nrmIt->second, what + " NORMAL");
         if (nrm.count != pos.count) throw Error(what + ": NORMAL count differs from POSITION count");
-        for (size_t i = 0; i < pos.count; ++i) {
-            const glm::dvec3 wp = glm::dvec3(world * glm::dvec4(glm::dvec3(pos[i]), 1.0));
-            if (!finite3(wp) || !finite3(glm::dvec3(glm::vec3(wp))))
-                throw Error(what + ": POSITION " + std::to_string(i) + " is not finite");
-            glm::vec3 n = normalMat * nrm[i];
-            float len = glm::length(n);
-            n = (len > 1e-20f && std::isfinite(len)) ? n / len : glm::vec3(0, 1, 0);
-            s.vertices.push_back({glm::vec3(0.0f), n});
-            worldPos.push_back(wp);
-            pushUv(uint32_t(i));
-        }
-        for (size_t t = 0; t + 2 < idx.size(); t += 3) {
-            uint32_t a = idx[t], b = idx[t + 1], c = idx[t + 2];
-            if (mirrored) std::swap(b, c); // keep counter-clockwise front faces
-            s.indices.insert(s.indices.end(), {base + a, base + b, base + c});
-        }
+        appendSmooth(pos, nrm, idx, world, uv, s, worldPos, what);
     } else {
-        // No normals: flat normals per face (glTF spec: "client implementations MUST calculate flat
-        // normals").
-        for (size_t t = 0; t + 2 < idx.size(); t += 3) {
-            auto at = [&](uint32_t i) { return glm::dvec3(world * glm::dvec4(glm::dvec3(pos[i]), 1.0)); };
-            glm::dvec3 p0 = at(idx[t]), p1 = at(idx[t + 1]), p2 = at(idx[t + 2]);
-            for (const glm::dvec3& q : {p0, p1, p2})
-                if (!finite3(q) || !finite3(glm::dvec3(glm::vec3(q))))
-                    throw Error(what + ": a POSITION is not finite");
-            uint32_t corner[3] = {idx[t], idx[t + 1], idx[t + 2]};
-            if (mirrored) std::swap(p1, p2), std::swap(corner[1], corner[2]);
-            glm::dvec3 nd = glm::cross(p1 - p0, p2 - p0);
-            const double len = glm::length(nd);
-            const glm::vec3 n = len > 1e-30 && std::isfinite(len) ? glm::vec3(nd / len) : glm::vec3(0, 1, 0);
-            uint32_t v0 = uint32_t(s.vertices.size());
-            for (const glm::dvec3& q : {p0, p1, p2}) {
-                s.vertices.push_back({glm::vec3(0.0f), n});
-                worldPos.push_back(q);
-            }
-            for (uint32_t k : corner)
-                pushUv(k);
-            s.indices.insert(s.indices.end(), {v0, v0 + 1, v0 + 2});
-        }
+        appendFlat(pos, idx, world, uv, s, worldPos, what);
     }
     d.indexCount = uint32_t(s.indices.size()) - d.firstIndex;
     if (d.indexCount) s.draws.push_back(d);
@@ -277,14 +297,14 @@ std::vector<int> sceneRoots(const tinygltf::Model& model, const std::string& pat
 }
 
 // "glTF mesh 'name'" for messages, the name cut at 60 characters: building the label for every
-// primitive from an 8 MB name made loading time grow with name length x primitives.
+// primitive from an 8 MB name would make loading time grow with name length x primitives.
 std::string meshLabel(const tinygltf::Mesh& mesh, int index) {
     const std::string name = mesh.name.size() > 60 ? mesh.name.substr(0, 57) + "..." : mesh.name;
     return "glTF mesh " + std::to_string(index) + (name.empty() ? "" : " '" + name + "'");
 }
 
 // What the scene will hold once flattened, from the accessors' counts alone: the budget is checked
-// before anything is allocated (900 primitives sharing one accessor once took 5.4 GiB first).
+// before anything is allocated (900 primitives sharing one accessor would expand to 5.4 GiB).
 struct Expansion {
     double triangles = 0, vertices = 0;
     void add(const tinygltf::Model& m, const tinygltf::Primitive& p, double copies) {

@@ -1,10 +1,9 @@
 // The mesh the G-buffer draws while the camera moves (skip.motion_lod): the scene's triangles with
 // their vertices clustered on a grid of cells, so that triangles smaller than a cell disappear.
 //
-// Why: on llvmpipe a triangle costs ~0.2 us of setup and binning on one thread whatever the
-// resolution, so a CAD model's G-buffer does not shrink with the frame drawn while moving
-// (2CylinderEngine, 121 496 triangles: 27-30 ms at 410x216 and at 64x36; a quarter of its
-// triangles: 9-12 ms). Frames drawn while moving are at a reduced resolution; where one cell
+// Why: on llvmpipe a triangle's setup and binning run on one thread whatever the resolution, so
+// a CAD model's G-buffer does not shrink with the frame drawn while moving (the drag frames of
+// docs/bench/explorer.md). Frames drawn while moving are at a reduced resolution; where one cell
 // projects to at most a pixel of that frame (motionLodCellPx), the clustered mesh covers the same
 // pixels but for sub-pixel slivers, and the still frame that follows draws the full mesh again.
 //

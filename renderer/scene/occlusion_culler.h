@@ -13,7 +13,7 @@
 // margin is in scene units: where the depth buffer cannot tell two surfaces apart (z-fighting) a
 // test at the same depth may go either way.
 //
-// Why: on llvmpipe the G-buffer of a CAD assembly is bound by its triangles (~0.1 us each on one
+// Why: on llvmpipe the G-buffer of a CAD assembly is bound by its triangles (set up on one
 // thread before any pixel), and most of an assembly's parts are inside others: at their own
 // cameras 104 of 2CylinderEngine's 115 draws (71 475 of 121 496 triangles) and 66 of
 // ReciprocatingSaw's 113 (85 075 of 198 470) leave no pixel (counted with a query per draw).

@@ -1,6 +1,6 @@
 #include "settings/params.h"
 
-#include "settings/param_rows.h"
+#include "base/param_rows.h"
 #include "settings/preset.h"
 #include "util/closest_name.h"
 #include "util/error.h"
@@ -105,7 +105,7 @@ std::vector<Param> coreRows() {
         BOOL_ROW("ao.adaptive", "Adaptive samples", ao.adaptive,
                  "ASSAO/CACAO-style: pixels whose radius spans few pixels (far away, or a small radius) "
                  "take fewer samples - a march one step per 'pixels per sample' of radius, an area sampler "
-                 "one tap per its square of the disc. Time saved and error change: docs/benchmarks.md. "
+                 "one tap per its square of the disc. Time saved and error change: docs/bench/skips.md. "
                  "(The kernel's samples are a fixed set: it keeps them all.)")
             .onlyWhen("ao.technique", adaptiveTechniques()),
         FLOAT_ROW("ao.adaptive_px", "Pixels per sample", ao.adaptivePx, 1.0, 32.0, "pixels",
@@ -116,7 +116,7 @@ std::vector<Param> coreRows() {
                  "Cache-aware sampling (NVIDIA gl_ssao, HBAO+): the G-buffer split into 16 quarter-size layers, "
                  "the AO computed over each with one jitter for the whole layer, then interleaved back. Taps land "
                  "on a 4-pixel grid. Pays where neighbouring pixels sharing a texture cache line matters (gl_ssao: "
-                 "1.9x for HBAO on a Quadro M6000); measured on llvmpipe in docs/benchmarks.md. Full resolution "
+                 "1.9x for HBAO on a Quadro M6000); measured on llvmpipe in docs/bench/skips.md. Full resolution "
                  "only; not with the position pyramid, guard band, back-face layer or normals from depth.")
             .onlyWhen("ao.technique", deinterleaveTechniques()),
         // ---- Denoise --------------------------------------------------------------------------
@@ -208,8 +208,9 @@ std::vector<Param> coreRows() {
         BOOL_ROW("skip.motion_lod", "Simplify while moving", skip.motionLod,
                  "While the camera moves, the G-buffer of a scene of 40k triangles or more draws a copy with its "
                  "vertices clustered into cells (1/96 to 1/768 of the diagonal: the coarsest whose cell covers at "
-                 "most a pixel of the moving frame; none where no level is that fine): llvmpipe spends ~0.2 us per triangle whatever the resolution (2CylinderEngine's "
-                 "121k: ~27 ms of a drag frame). The still frame draws the full mesh; headless renders never move."),
+                 "most a pixel of the moving frame; none where no level is that fine): llvmpipe sets up "
+                 "every triangle on one thread whatever the resolution, so a CAD model's moving frame is "
+                 "bound by its triangles. The still frame draws the full mesh; headless renders never move."),
     };
     return rows;
 }

@@ -3,6 +3,7 @@
 // is the core rows (gbuffer, ao, denoise, composite) plus each registered technique's rows.
 // Defaults are not written here: each row reads its default from Settings{} (settings.h).
 #pragma once
+#include "base/param.h"
 #include "settings/settings.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -12,47 +13,6 @@
 #include <vector>
 
 namespace ssao {
-
-struct Param {
-    enum class Type { Float, Int, Bool, Enum };
-    // The row applies only while parameter `key` has one of `values` (e.g. denoise.sigma only
-    // for denoise.kind = gaussian); otherwise the UI greys it out and it has no effect.
-    struct Condition {
-        std::string key;
-        std::vector<std::string> values;
-    };
-
-    std::string key;   // "group.name"; the group is what a pass declares it reads
-    std::string label; // UI label
-    Type type = Type::Float;
-    double def = 0, min = 0, max = 1; // enum/bool: index; def is filled from Settings{}
-    std::string unit;
-    std::string help;                 // one line: what changing it does
-    std::vector<std::string> choices; // Enum only, in display order; values map by name
-    std::vector<Condition> when;      // all must hold for the row to apply
-    std::function<double(const Settings&)> get;
-    std::function<void(Settings&, double)> set;
-
-    std::string group() const { return key.substr(0, key.find('.')); }
-    std::string name() const { return key.substr(key.find('.') + 1); }
-    // Text form of a value ("0.5", "true", "hemisphere").
-    std::string format(double v) const;
-    // Whether `s` holds this parameter's default (compared at the field's own precision).
-    bool isDefault(const Settings& s) const;
-    bool applies(const Settings& s) const;
-    std::string whenText() const; // "ao.radius_mode = world", "" when always
-    Param& onlyWhen(const std::string& key, std::vector<std::string> values);
-};
-
-// What the settings need of the AO techniques, supplied by their registry
-// (techniques/registry.cpp): the settings include no technique code.
-struct TechniqueRows {
-    std::string id;          // the value of ao.technique
-    std::vector<Param> rows; // its rows ("id.*"); the table adds "applies while ao.technique = id"
-    bool adaptive = false;   // it takes ao.adaptive (a march or tap count the rule cuts)
-    bool deinterleave = false; // it takes ao.deinterleave (TechniqueInfo::deinterleave)
-};
-const std::vector<TechniqueRows>& registeredTechniques();
 
 const std::vector<Param>& paramTable();
 const Param* findParam(const std::string& key);

@@ -1,7 +1,7 @@
 // Settings → the AoCommon block every technique's constants start with (bindings.h), and the
 // radius arithmetic the UI and reports show. Pure functions, tested without a GPU.
 #pragma once
-#include "settings/settings.h"
+#include "techniques/technique_settings.h"
 
 #include "../../shaders/include/bindings.h"
 

@@ -1,9 +1,7 @@
 #include "techniques/ao_pass.h"
 
 #include "gl/shader_library.h"
-#include "passes/back_face_pass.h"
-#include "passes/guard_band_pass.h"
-#include "passes/position_pyramid_pass.h"
+#include "graph/gbuffer_layers.h"
 #include "scene/camera.h"
 #include "techniques/ao_common.h"
 #include "techniques/noise/blue_noise.h"
@@ -28,14 +26,15 @@ gpu::AoCommon aoCommonFor(const Settings& s, const FrameInfo& f, AoNoise noise, 
     packNoise(c, noise);
     c.estimator.w = pyramidOffset; // taps d px away read MIP log2(d) - this (0: no pyramid)
     // Taps off the frame read the band; taps' thickness from the back layer (bindings.h bits).
-    c.flags.w = float((GuardBandPass::bandOf(s) > 0 ? SSAO_AO_BAND : 0) | (BackFacePass::on(s) ? SSAO_AO_BACK_DEPTH : 0));
+    c.flags.w = float((s.gbuffer.guardBandPx > 0 ? SSAO_AO_BAND : 0) |
+                      (s.gbuffer.backFaces ? SSAO_AO_BACK_DEPTH : 0));
     return c;
 }
 
 AoBindings aoBindings(const Settings& s, AoNoise noise, bool pyramid, bool band) {
     AoBindings b;
-    b.guardBand = band && GuardBandPass::bandOf(s) > 0;
-    b.backDepth = band && BackFacePass::on(s);
+    b.guardBand = band && s.gbuffer.guardBandPx > 0;
+    b.backDepth = band && s.gbuffer.backFaces;
     b.gbufferNormals = s.ao.normals == NormalSource::GBuffer;
     b.blueNoise = noise == AoNoise::Blue;
     b.pyramid = pyramid;
@@ -47,9 +46,9 @@ void declareAoInputs(PassBuilder& b, const Chain& chain, const Settings& s, cons
                      const std::string& positions) {
     b.read(positions);
     if (bind.gbufferNormals) b.read("gbuffer.normal"); // else rebuilt from positions
-    if (bind.pyramid) b.read(PositionPyramidPass::kOutput);
-    if (bind.guardBand) b.read(GuardBandPass::kOutput);
-    if (bind.backDepth) b.read(BackFacePass::kOutput);
+    if (bind.pyramid) b.read(gbuffer::kPositionMips);
+    if (bind.guardBand) b.read(gbuffer::kGuardBand);
+    if (bind.backDepth) b.read(gbuffer::kBackDepth);
     b.write(aoRawOutput(chain, s));
 }
 
@@ -64,9 +63,9 @@ void AoShared::bind(PassContext& ctx, const AoBindings& bind, const std::string&
         }
         blueNoise_.bind(SSAO_TEX_BLUE_NOISE);
     }
-    if (bind.pyramid) ctx.in(PositionPyramidPass::kOutput).bind(SSAO_TEX_POSITION_MIPS);
-    if (bind.guardBand) ctx.in(GuardBandPass::kOutput).bind(SSAO_TEX_POSITION_BAND);
-    if (bind.backDepth) ctx.in(BackFacePass::kOutput).bind(SSAO_TEX_BACK_DEPTH);
+    if (bind.pyramid) ctx.in(gbuffer::kPositionMips).bind(SSAO_TEX_POSITION_MIPS);
+    if (bind.guardBand) ctx.in(gbuffer::kGuardBand).bind(SSAO_TEX_POSITION_BAND);
+    if (bind.backDepth) ctx.in(gbuffer::kBackDepth).bind(SSAO_TEX_BACK_DEPTH);
 }
 
 gl::Defines aoFeatureDefines(const gpu::AoCommon& c) {

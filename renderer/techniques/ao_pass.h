@@ -5,11 +5,12 @@
 // block and the shared textures it binds - all derived from the settings by config(), so run()
 // and the inspector use nothing else.
 #pragma once
-#include "graph/inspect_probe.h"
 #include "gl/shader_library.h"
+#include "graph/inspect_probe.h"
 #include "graph/pass.h"
 #include "techniques/deinterleave.h"
 #include "techniques/noise/noise.h"
+#include "techniques/technique_settings.h"
 
 #include "../../shaders/include/bindings.h"
 
@@ -17,6 +18,11 @@
 #include <string>
 
 namespace ssao {
+
+// The MIP a tap d pixels away reads from the position pyramid, log2(d) - offset, of the two families
+// (shaders/include/position_taps.glsl).
+constexpr float kSaoMipOffset = 3.0f;    // SAO's LOG_MAX_OFFSET (SAO and HBAO)
+constexpr float kXeGtaoMipOffset = 3.3f; // XeGTAO's depthMIPSamplingOffset (GTAO, visibility bitmask)
 
 SSAO_CONFIG_BEGIN
 // The CPU choices every AO pass makes, from the settings (never from packed GPU words).

@@ -7,7 +7,8 @@
 // same offsets; the 16 results are interleaved back into ao.raw.
 // What it changes: every tap lands on a 4-pixel grid of the full frame (its offset is whole layer
 // pixels), and the first step is at least 4 pixels away. gl_ssao measured 1.9x for HBAO on a
-// Quadro M6000; on llvmpipe neighbouring lanes gain little from sharing cache lines (docs).
+// Quadro M6000; on llvmpipe neighbouring lanes gain little from sharing cache lines
+// (docs/bench/skips.md).
 #pragma once
 #include "gl/resources.h"
 

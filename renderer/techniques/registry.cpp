@@ -5,6 +5,7 @@
 #include "techniques/kernel/technique.h"
 #include "techniques/sao/technique.h"
 #include "techniques/technique.h"
+#include "techniques/technique_settings.h"
 #include "techniques/vbao/technique.h"
 #include "util/error.h"
 
@@ -13,6 +14,8 @@
 #include <algorithm>
 
 namespace ssao {
+
+const char* const kDefaultTechnique = "kernel"; // what a new Settings{} runs (base/shared_settings.h)
 
 const std::vector<TechniqueInfo>& techniques() {
     static const std::vector<TechniqueInfo> list = {kernelTechnique(), saoTechnique(), hbaoTechnique(), gtaoTechnique(),
@@ -29,7 +32,7 @@ const TechniqueInfo& findTechnique(const std::string& id) {
     throw Error("unknown AO technique '" + id + "' (known: " + known + ")");
 }
 
-// What the settings need of the techniques (settings/params.h), from the modules.
+// What the settings need of the techniques (base/param.h), from the modules.
 const std::vector<TechniqueRows>& registeredTechniques() {
     static const std::vector<TechniqueRows> rows = [] {
         std::vector<TechniqueRows> out;

@@ -2,7 +2,7 @@
 // kind (techniques/noise/noise.h) and its position pyramid switch (passes/position_pyramid_pass.h).
 // `field` is the member path in Settings, e.g. gtao.noise.
 #pragma once
-#include "settings/param_rows.h"
+#include "base/param_rows.h"
 #include "techniques/noise/noise.h"
 
 #define NOISE_ROW(key, field) ENUM_ROW(key, "Noise", field, AoNoise, ::ssao::kAoNoiseHelp, (::ssao::aoNoiseChoices()))

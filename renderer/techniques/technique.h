@@ -3,7 +3,7 @@
 // and its shader under shaders/techniques/; the module declares what it can do (below). The
 // registry (registry.cpp) lists the modules; nothing else outside a technique's folders names it.
 #pragma once
-#include "settings/params.h"
+#include "base/param.h"
 
 #include <functional>
 #include <memory>
@@ -43,13 +43,34 @@ struct TechniqueInfo {
     // a corner darkening toward the wall (tests/gl/test_physics_limits.cpp, `ssaolab stress`).
     std::function<std::string(const Settings&)> unphysical;
     // What denoise.kind = auto runs for it: the denoiser that lowers (never raises) its raw AO's
-    // geometry RMSE, edges and interior, on every scene of the denoiser sweep (docs/benchmarks.md,
-    // "Denoisers"); none where every filter raises it.
+    // geometry RMSE, edges and interior, on every scene of the denoiser sweep (docs/bench/report.md,
+    // "Every configuration"); none where every filter raises it.
     DenoiseSettings denoiser = [] {
         DenoiseSettings d;
         d.kind = DenoiseKind::None;
         return d;
     }();
+    // What the tests hold it to: the largest RMSE of its AO along a floor beside a wall against the
+    // closed form of cosine-weighted visibility within R = 1 m (tests/gl/closed_form.h), at its
+    // defaults (tests/gl/test_techniques.cpp) and at each quality level, its shipped presets
+    // included (tests/gl/test_physics_limits.cpp). 0 = not stated, which both tests refuse.
+    double cornerBound = 0, levelsCornerBound = 0;
+    // `make presets` (.ci/tune-presets.sh, through `ssaolab techniques --levels`): the quality
+    // levels shipped as presets ID-LEVEL, each the rows that set it, and the free rows `ssaolab tune`
+    // fits at every level (its own float rows: never the radius or the power).
+    struct Level {
+        std::string name;
+        std::vector<std::string> set; // KEY=VALUE
+    };
+    std::vector<Level> levels;
+    std::vector<std::string> tuned;
+    // Presets that follow tuned ones (`ssaolab techniques --derived`): `name` takes this technique's
+    // rows from preset `from`, with `set` over them; its other keys, name and description stay.
+    struct Derived {
+        std::string name, from;
+        std::vector<std::string> set; // KEY=VALUE of this technique's rows
+    };
+    std::vector<Derived> derived;
 };
 
 // makePasses for a technique that is one pass of type P.

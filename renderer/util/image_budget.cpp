@@ -123,7 +123,7 @@ struct Inflater {
 };
 
 // Inflates every IDAT chunk in one pass into a 64 KiB scratch buffer, counting: stb_image inflates
-// until the stream ends, so a 1 x 1 header over 3 GiB of zeros (3 MB compressed) took 2 GiB.
+// until the stream ends, so a 1 x 1 header over 3 GiB of zeros (3 MB compressed) takes 2 GiB.
 void checkPngInflation(const unsigned char* d, size_t n, const ImageHeader& h, const std::string& label) {
     const uint64_t rows = pngRawBytes(h, d[24], d[25], d[28] == 1);
     if (rows == 0) return; // a colour type or depth no decoder accepts

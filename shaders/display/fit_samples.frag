@@ -1,9 +1,9 @@
 #version 450 core
 // Picks the texels a display-range fit reads (renderer/display/display_range.h fitSamples), so the
-// app reads back ~65k texels instead of a whole buffer (a 1172x616 RGBA32F position buffer cost
-// ~10 ms of a still frame's read-backs on llvmpipe). Output texel i (row-major, uWidth =
+// app reads back ~65k texels instead of a whole buffer (a read-back stalls the frame for every
+// byte it copies). Output texel i (row-major, uWidth =
 // FitSamplePicker::kWidth wide) holds pixel p = i * stride of the source in row-major order from
-// the top row, and in w the mask at that pixel (mapPixel of output/image.h, in integers as
+// the top row, and in w the mask at that pixel (mapPixel of renderer/base/image.h, in integers as
 // there); past the last sample, 0.
 #include "include/bindings.h"
 
@@ -15,7 +15,7 @@ layout(location = 2) uniform uint uWidth; // of this output
 
 layout(location = 0) out vec4 oSample;
 
-// output/image.h mapPixel: the pixel of a `to`-pixel axis whose span holds the centre of pixel p
+// renderer/base/image.h mapPixel: the pixel of a `to`-pixel axis whose span holds the centre of pixel p
 // of a `from`-pixel axis.
 uint mapPixel(uint p, uint from, uint to) { return min(((2u * p + 1u) * to) / (2u * from), to - 1u); }
 

@@ -10,10 +10,8 @@ float aoRadius(AoCommon_ c, float depth) {
 // aoLoops: the techniques' sample loops are do-whiles that test at their end, not fors that test
 // at their top. llvmpipe runs a shader's lanes together under a mask: a for loop's break clears the
 // mask, yet the body runs once more with every lane off before the loop ends (its taps, reads and
-// angles all computed, then discarded), so slices x steps took slices x (steps + 1) + 1 passes.
-// Measured (CornellBox 1172x616, two alternating runs each, the same AO to the last bit at every
-// preset tried): vbao-medium AO 98-102 -> 80-89 ms, vbao-low 74-77 -> 55-62, gtao-ultra 156-174 ->
-// 128-132. A loop whose count may be 0 is guarded by an if.
+// angles all computed, then discarded), so slices x steps would take slices x (steps + 1) + 1
+// passes; a do-while gives the same AO to the last bit. A loop whose count may be 0 is guarded by an if.
 
 // Seed 001's contrast: AO = visibility^power (its 1 - (1 - occ/N)^power is the occlusion).
 // AO_POWER_ONE (ao_pass.cpp aoFeatureDefines, where the packed power is 1): no pow, which on

@@ -20,7 +20,7 @@
 #define SSAO_TEX_BACK_DEPTH 12 // gbuffer.back_depth: linear depth of the nearest surface facing away
 #define SSAO_TEX_POSITION_BAND 13 // gbuffer.guard_band: positions of the frame and a margin beyond it
 #define SSAO_TEX_BLUE_NOISE 14  // 64x64 blue noise, two channels (techniques/noise/blue_noise.h)
-#define SSAO_TEX_POSITION_MIPS 15 // gbuffer.position with a MIP pyramid (techniques/position_pyramid.h)
+#define SSAO_TEX_POSITION_MIPS 15 // gbuffer.position with a MIP pyramid (passes/position_pyramid_pass.h)
 
 // ---- Uniform / storage buffer bindings -----------------------------------------------------
 #define SSAO_UBO_FRAME 0   // FrameConstants

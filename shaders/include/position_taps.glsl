@@ -1,5 +1,5 @@
 // Reading positions at a tap: from the position pyramid when the constants enable it (AoCommon
-// estimator.w = offset > 0; renderer/techniques/position_pyramid.h), else from the G-buffer itself.
+// estimator.w = offset > 0; renderer/passes/position_pyramid_pass.h), else from the G-buffer itself.
 // A tap d G-buffer pixels from the pixel reads level floor(log2(d) - offset) (SAO's
 // "log2(ssR) - LOG_MAX_OFFSET"; XeGTAO's offset is 3.3): nearby taps stay exact, far taps touch
 // few cache lines. Needs bindings.h.
@@ -7,9 +7,8 @@
 // The optional inputs (pyramid, guard band, back-face layer) are compiled in only where the
 // constants enable them: AO_PYRAMID, AO_BAND and AO_BACK_DEPTH are defined from the packed block
 // itself (renderer/techniques/ao_pass.cpp, aoFeatureDefines), so a variant never disagrees with
-// its constants. A branch on a uniform is not free on llvmpipe: with all of them compiled in and off,
-// the bitmask's AO took 105.5 / 114.9 ms against 78.6 / 77.3 ms without (one A/B run, CornellBox
-// 1172x616, vbao-medium's 32 taps a pixel; the same AO to the last bit).
+// its constants. A branch on a uniform is not free on llvmpipe: compiled in and off, each input
+// still costs every tap.
 
 layout(binding = SSAO_TEX_POSITION_MIPS) uniform sampler2D aoPositionMips;
 
@@ -54,9 +53,9 @@ bool aoTapHeld(AoCommon_ c, sampler2D positions, vec2 uv, float offsetPx, out ve
 // behind S along the view ray its solid reaches: where the layer holds a back face behind S, that
 // depth (the true thickness) but never less than `assumed` (the technique's thickness); else
 // `assumed`. Never less: with the true thickness of a thin wall every tap hides only a sliver of
-// sectors and the rays between the taps pass (measured: CornellBox 0.0544 -> 0.0546, ShaderBall
-// 0.1188 -> 0.1225, the tuned vbao-high 0.0584 -> 0.0627 and 0.1196 -> 0.1241); the assumed
-// thickness is what fills the gaps between sparse samples. Taps off the frame have no back layer.
+// sectors and the rays between the taps pass, so the error against the reference grows; the
+// assumed thickness is what fills the gaps between sparse samples. Taps off the frame have no back
+// layer.
 layout(binding = SSAO_TEX_BACK_DEPTH) uniform sampler2D aoBackDepth;
 
 float aoBackGap(AoCommon_ c, vec2 uv, vec3 S, float assumed) {

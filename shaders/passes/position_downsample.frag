@@ -1,5 +1,5 @@
 #version 450 core
-// One level of the position pyramid (renderer/techniques/position_pyramid.h): each texel keeps
+// One level of the position pyramid (renderer/passes/position_pyramid_pass.h): each texel keeps
 // one of the 2x2 texels below it on SAO's rotated grid (McGuire, Mara, Luebke 2012, §3.2), a real
 // surface point rather than an average across a silhouette. The sampler sees only the level below
 // (base = max level), so texelFetch's level 0 is that level.

@@ -1,7 +1,7 @@
 #include "ui_driver.h"
 #include "gl/readback.h"
 
-#include "output/image.h"
+#include "base/image.h"
 
 #include <backends/imgui_impl_opengl3.h>
 #include <gtest/gtest.h>

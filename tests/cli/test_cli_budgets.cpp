@@ -1,8 +1,8 @@
 // Whole program on input that would cost without bound: images given to --score and the screen-space
 // oracle's G-buffer are budgeted before anything is read, decoded or allocated; each refusal is one
 // line naming the budget and the option that changes it.
+#include "base/image.h"
 #include "cli_run.h"
-#include "output/image.h"
 
 #include <sys/stat.h>
 

@@ -1,6 +1,6 @@
 // What a new user hit in the CLI and the window, each fixed and kept fixed.
+#include "base/image.h"
 #include "cli_run.h"
-#include "output/image.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // Untrusted input, budgeted before anything is allocated or looped over: images (a JPEG's scans, a
 // PNG's inflated rows, every header's pixels), GPU instances, the screen-space oracle's G-buffer;
 // and user folders from the environment, where an empty variable means unset.
+#include "base/image.h"
 #include "lid_scene.h"
-#include "output/image.h"
 #include "reference/screen_layers.h"
 #include "scene/closed_shells.h"
 #include "scene/gltf_loader.h"

@@ -1,11 +1,14 @@
 // The structure, checked on the source tree: an AO technique is its folders plus one registration
 // (nothing else names it), and the layers include only what they may.
+#include "settings/params.h"
 #include "techniques/technique.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -63,6 +66,75 @@ TEST(Layering, ATechniqueIsNamedOnlyInItsFoldersTheRegistryAndTheSettingsAggrega
 }
 
 namespace {
+// The tests' and the scripts' sources (tests/, .ci/), relative to the source root: C++ or script.
+std::vector<std::pair<std::string, bool>> testAndScriptSources() {
+    std::vector<std::pair<std::string, bool>> out;
+    const fs::path root(SSAOLAB_SOURCE_DIR);
+    for (const char* top : {"tests", ".ci"})
+        for (const auto& e : fs::recursive_directory_iterator(root / top)) {
+            const std::string ext = e.path().extension().string(), name = e.path().filename().string();
+            const bool cpp = ext == ".cpp" || ext == ".h";
+            const bool script = ext == ".sh" || ext == ".py" || ext == ".js" || ext == ".mjs" || name == "CMakeLists.txt";
+            if (e.is_regular_file() && (cpp || script))
+                out.push_back({fs::relative(e.path(), root).generic_string(), script});
+        }
+    return out;
+}
+} // namespace
+
+TEST(Layering, NoTestOrScriptKeepsAListOfTheTechniques) {
+    // Adding a technique is its folders and the registrations, tests and scripts included: they take
+    // the techniques from techniques() (scripts from `ssaolab techniques`) and each one's bounds,
+    // levels and capabilities from its TechniqueInfo. A test may name one technique, or two it
+    // compares, where it is about them; three or more in one statement (C++: up to a ';', its
+    // #include lines aside; a script: a paragraph) is a hand-kept list a new technique would have to
+    // join. In C++ a technique is named as in the program; in a script also as a word (ID-LEVEL).
+    const std::vector<std::pair<std::string, bool>> files = testAndScriptSources();
+    ASSERT_GT(files.size(), 50u);
+    ASSERT_GE(techniques().size(), 3u);
+    std::vector<std::regex> cppName, scriptName;
+    for (const auto& t : techniques()) {
+        std::string type = t.id;
+        type[0] = char(std::toupper(type[0]));
+        const std::string cpp = "\"" + t.id + "\"|\"" + t.id + "\\.|techniques/" + t.id + "/|\\." + t.id + "\\.|\\b" +
+                                type + "(Settings|Constants|Quality|Noise|Module|Config)\\b";
+        cppName.emplace_back(cpp);
+        scriptName.emplace_back(cpp + "|[^\\w./-]" + t.id + "(-[a-z]+)?[^\\w/]");
+    }
+    const std::regex include("#include[^\\n]*"), paragraph("\\n[ \\t]*\\n");
+    int lists = 0;
+    for (const auto& [file, script] : files) {
+        std::string text = slurp(fs::path(SSAOLAB_SOURCE_DIR) / file);
+        if (!script) text = std::regex_replace(text, include, "");
+        std::vector<std::string> chunks;
+        if (script) {
+            for (std::sregex_token_iterator it(text.begin(), text.end(), paragraph, -1), end; it != end; ++it)
+                chunks.push_back(*it);
+        } else {
+            std::stringstream ss(text);
+            for (std::string c; std::getline(ss, c, ';');) chunks.push_back(c);
+        }
+        for (const std::string& chunk : chunks) {
+            const std::string padded = "\n" + chunk + "\n";
+            std::string named;
+            int n = 0;
+            size_t first = padded.size();
+            for (size_t i = 0; i < techniques().size(); ++i) {
+                std::smatch m;
+                if (!std::regex_search(padded, m, (script ? scriptName : cppName)[i])) continue;
+                named += (n++ ? ", " : "") + techniques()[i].id;
+                first = std::min(first, size_t(m.position(0)) + 1);
+            }
+            if (n < 3) continue;
+            ++lists;
+            const size_t from = padded.rfind('\n', first - 1) + 1, to = padded.find('\n', first);
+            ADD_FAILURE() << file << " keeps a list of techniques (" << named << "): " << padded.substr(from, to - from);
+        }
+    }
+    std::printf("%zu test and script files, %d lists of techniques\n", files.size(), lists);
+}
+
+namespace {
 // The project headers a file includes, directly and through them (resolved against renderer/, the
 // include root, and the including file's folder).
 std::set<std::string> includeClosure(const std::string& file) {
@@ -102,13 +174,13 @@ bool includesGl(const std::string& file, std::string& via) {
 } // namespace
 
 TEST(Layering, ImagesMetricsReferenceAndReportsIncludeNoGlAndNoRenderer) {
-    // The CPU image and its EXR/PNG writers, the error metrics, the ray-traced reference and the
-    // reports (written from a FrameCapture) are pure CPU code: nothing they include, directly or
-    // not, is GL (gl/, epoxy, EGL) or the renderer.
+    // The base types (the CPU image and its EXR/PNG writers, the settings blocks, a parameter row),
+    // the error metrics, the ray-traced reference and the reports (written from a FrameCapture) are
+    // pure CPU code: nothing they include, directly or not, is GL (gl/, epoxy, EGL) or the renderer.
     int checked = 0;
     for (const auto& f : programSources()) {
-        const bool pure = f.rfind("renderer/output/", 0) == 0 || f.rfind("renderer/metrics/", 0) == 0 ||
-                          f.rfind("renderer/reference/", 0) == 0;
+        const bool pure = f.rfind("renderer/base/", 0) == 0 || f.rfind("renderer/output/", 0) == 0 ||
+                          f.rfind("renderer/metrics/", 0) == 0 || f.rfind("renderer/reference/", 0) == 0;
         if (!pure) continue;
         std::string via;
         EXPECT_FALSE(includesGl(f, via)) << f << " includes GL or the renderer through " << via;
@@ -119,7 +191,7 @@ TEST(Layering, ImagesMetricsReferenceAndReportsIncludeNoGlAndNoRenderer) {
 
 TEST(Layering, SettingsIncludeNoTechniqueCode) {
     // The settings see the techniques only through their settings structs (the one aggregate,
-    // techniques/technique_settings.h) and what the registry supplies (settings/params.h).
+    // techniques/technique_settings.h) and what the registry supplies (base/param.h).
     for (const auto& f : programSources()) {
         if (f.rfind("renderer/settings/", 0) != 0) continue;
         for (const auto& h : includeClosure(f)) {
@@ -130,4 +202,101 @@ TEST(Layering, SettingsIncludeNoTechniqueCode) {
             EXPECT_FALSE(technique && !settingsOnly) << f << " includes " << h;
         }
     }
+}
+
+namespace {
+// renderer/'s floors, lowest first. A file includes its own folder and the floors below it; two
+// folders on one floor include neither each other nor anything above. "renderer" stands for the
+// files at renderer/'s top (renderer.h, renderer.cpp).
+const std::vector<std::vector<std::string>> kRendererFloors = {
+    {"util"},               // files, processes, errors, paths
+    {"base"},               // GL-free value types: the CPU image, the shared settings blocks, a parameter row
+    {"gl"},                 // the context, RAII handles, shaders, read-back
+    {"scene"},              // meshes, cameras, the GPU scene
+    {"graph", "reference"}, // the frame graph; the ray-traced reference (CPU)
+    {"techniques"},         // the AO modules and the whole Settings (one member per technique)
+    {"settings"},           // the parameter table and presets over Settings
+    {"passes", "metrics"},  // the frame's other passes; the error metrics
+    {"output", "renderer"}, // reports written from a FrameCapture; the Renderer that runs the frame
+    {"display"},            // a frame read back from the Renderer and mapped for the eye
+};
+
+// The renderer/ folder of a path relative to renderer/ ("renderer" for its top-level files).
+std::string rendererFolder(const std::string& rel) {
+    const size_t slash = rel.find('/');
+    return slash == std::string::npos ? "renderer" : rel.substr(0, slash);
+}
+
+// Each include arrow between two renderer/ folders, resolved as the compiler does: the including
+// file's folder first, then renderer/, the include root. Folder pair -> "file -> header" lines.
+std::map<std::pair<std::string, std::string>, std::vector<std::string>> rendererArrows() {
+    const fs::path root = fs::path(SSAOLAB_SOURCE_DIR) / "renderer";
+    const std::regex inc(R"re(#include\s+"([^"]+)")re");
+    std::map<std::pair<std::string, std::string>, std::vector<std::string>> arrows;
+    for (const auto& e : fs::recursive_directory_iterator(root)) {
+        const std::string ext = e.path().extension().string();
+        if (!e.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;
+        const std::string from = fs::relative(e.path(), root).generic_string();
+        const std::string text = slurp(e.path());
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), inc); it != std::sregex_iterator(); ++it) {
+            for (const fs::path& base : {e.path().parent_path(), root}) {
+                const fs::path cand = fs::weakly_canonical(base / std::string((*it)[1]));
+                if (!fs::exists(cand)) continue;
+                const std::string to = fs::relative(cand, root).generic_string();
+                if (to.rfind("..", 0) != 0 && rendererFolder(from) != rendererFolder(to))
+                    arrows[{rendererFolder(from), rendererFolder(to)}].push_back(from + " -> " + to);
+                break;
+            }
+        }
+    }
+    return arrows;
+}
+} // namespace
+
+TEST(Layering, RendererFloorsPointDown) {
+    std::map<std::string, size_t> floorOf;
+    for (size_t i = 0; i < kRendererFloors.size(); ++i)
+        for (const auto& folder : kRendererFloors[i])
+            floorOf[folder] = i;
+    const fs::path root = fs::path(SSAOLAB_SOURCE_DIR) / "renderer";
+    for (const auto& e : fs::directory_iterator(root))
+        if (e.is_directory())
+            EXPECT_TRUE(floorOf.count(e.path().filename().string()))
+                << "renderer/" << e.path().filename().string() << "/ has no floor in kRendererFloors";
+    int up = 0, arrows = 0;
+    for (const auto& [pair, lines] : rendererArrows()) {
+        const auto& [from, to] = pair;
+        if (!floorOf.count(from) || !floorOf.count(to)) continue; // reported above
+        ++arrows;
+        if (floorOf[to] < floorOf[from]) continue;
+        for (const auto& l : lines) {
+            ADD_FAILURE() << "renderer/" << l << ": " << from << " may not include " << to
+                          << (floorOf[to] == floorOf[from] ? " (the same floor)" : " (a floor above)");
+            ++up;
+        }
+    }
+    std::printf("%d pairs of renderer/ folders with includes between them; %d includes point up or sideways\n",
+                arrows, up);
+    EXPECT_GT(arrows, 20);
+}
+
+TEST(Layering, ATechniqueDeclaresThePyramidTheRendererAdds) {
+    // No technique includes passes/: one with a "<id>.pyramid" row declares the capability
+    // (TechniqueInfo::pyramid) and the renderer adds passes/position_pyramid_pass.h from it.
+    int withRow = 0;
+    for (const auto& t : techniques()) {
+        Settings s = defaultSettings();
+        setParam(s, "ao.technique", t.id);
+        if (!findParam(t.id + ".pyramid")) {
+            EXPECT_FALSE(usesPyramid(s)) << t.id;
+            continue;
+        }
+        ++withRow;
+        ASSERT_TRUE(t.pyramid) << t.id << " has a pyramid row but declares no pyramid capability";
+        setParam(s, t.id + ".pyramid", "true");
+        EXPECT_TRUE(usesPyramid(s)) << t.id;
+        setParam(s, t.id + ".pyramid", "false");
+        EXPECT_FALSE(usesPyramid(s)) << t.id;
+    }
+    EXPECT_GE(withRow, 1);
 }

@@ -8,8 +8,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 
 using namespace ssao;
@@ -260,15 +262,12 @@ TEST(Presets, SceneSizeAndKeysAreRead) {
 TEST(Params, AutoDenoiseIsEachTechniquesOwnChoiceAndAnExplicitKindStays) {
     Settings s = defaultSettings();
     ASSERT_EQ(s.denoise.kind, DenoiseKind::Auto);
-    // Measured on the denoiser sweep (techniques/*/technique.cpp): a bilateral pass lowers the
-    // kernel's and SAO's raw error on every scene, every filter raises the others'.
-    const std::pair<const char*, DenoiseKind> expected[] = {{"kernel", DenoiseKind::Bilateral}, {"sao", DenoiseKind::Bilateral},
-                                                            {"hbao", DenoiseKind::None}, {"gtao", DenoiseKind::None},
-                                                            {"vbao", DenoiseKind::None}};
-    for (const auto& [tech, kind] : expected) {
-        s.ao.technique = tech;
-        EXPECT_EQ(effectiveDenoise(s).kind, kind) << tech;
-        EXPECT_NE(effectiveDenoise(s).kind, DenoiseKind::Auto) << tech;
+    // Each technique's own choice, measured on the denoiser sweep (TechniqueInfo::denoiser in
+    // techniques/*/technique.cpp), and never auto again.
+    for (const auto& t : techniques()) {
+        s.ao.technique = t.id;
+        EXPECT_EQ(effectiveDenoise(s).kind, t.denoiser.kind) << t.id;
+        EXPECT_NE(effectiveDenoise(s).kind, DenoiseKind::Auto) << t.id;
     }
     s.ao.technique = "kernel";
     EXPECT_EQ(effectiveDenoise(s).passes, 1);
@@ -276,6 +275,44 @@ TEST(Params, AutoDenoiseIsEachTechniquesOwnChoiceAndAnExplicitKindStays) {
     EXPECT_EQ(effectiveDenoise(s).kind, DenoiseKind::Box4);
     setParam(s, "denoise.kind", "auto");
     EXPECT_EQ(effectiveDenoise(s).kind, DenoiseKind::Bilateral);
+}
+
+// The quality levels and derived presets a technique declares (TechniqueInfo: what `make presets`
+// tunes and rewrites, .ci/tune-presets.sh) are the shipped presets: each level's preset ID-LEVEL
+// sets its rows, and each derived preset holds its technique's rows of the one it follows with its
+// own rows over them.
+TEST(Presets, EachTechniquesLevelsAndDerivedPresetsAreTheShippedOnes) {
+    const std::string dir = std::string(SSAOLAB_ASSET_DIR) + "/presets/";
+    auto rowsOf = [](const Settings& s, const std::string& group) {
+        std::map<std::string, std::string> rows;
+        for (const Param& p : paramTable())
+            if (p.group() == group) rows[p.key] = p.format(p.get(s));
+        return rows;
+    };
+    int levels = 0, derived = 0;
+    for (const auto& t : techniques()) {
+        EXPECT_TRUE(t.levels.empty() || !t.tuned.empty()) << t.id << ": levels with no row to tune";
+        for (const auto& l : t.levels) {
+            const std::string name = t.id + "-" + l.name;
+            ASSERT_TRUE(std::filesystem::exists(dir + name + ".json")) << name << " (make presets)";
+            const Settings s = loadPreset(dir + name + ".json");
+            EXPECT_EQ(s.ao.technique, t.id) << name;
+            Settings want = s;
+            for (const auto& a : l.set)
+                applyAssignment(want, a);
+            EXPECT_EQ(rowsOf(s, t.id), rowsOf(want, t.id)) << name << " does not set its level's rows";
+            ++levels;
+        }
+        for (const auto& d : t.derived) {
+            Settings want = loadPreset(dir + d.from + ".json");
+            for (const auto& a : d.set)
+                applyAssignment(want, a);
+            EXPECT_EQ(rowsOf(loadPreset(dir + d.name + ".json"), t.id), rowsOf(want, t.id)) << d.name;
+            ++derived;
+        }
+    }
+    EXPECT_GT(levels, 0);
+    std::printf("%d quality levels and %d derived presets checked\n", levels, derived);
 }
 
 // The presets derived from the tuned ones (not tuned themselves) must follow them: `make presets`

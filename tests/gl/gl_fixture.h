@@ -1,8 +1,8 @@
 // GL test support: one headless context per test binary (llvmpipe in CI — never skipped), and
 // a helper that renders a scene and reads every buffer back.
 #pragma once
+#include "base/image.h"
 #include "gl/context.h"
-#include "output/image.h"
 #include "renderer.h"
 #include "settings/params.h"
 

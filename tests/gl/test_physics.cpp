@@ -1,7 +1,7 @@
 // Physical invariants of the SSAO output, not only pixels.
 #include "gl_fixture.h"
 
-#include "output/image.h"
+#include "base/image.h"
 
 #include <cmath>
 #include <map>

@@ -5,6 +5,7 @@
 
 #include "scene/gpu_scene.h"
 #include "scene/scene.h"
+#include "techniques/technique.h"
 
 #include <cmath>
 #include <functional>
@@ -20,7 +21,8 @@ class Skips : public GlTest {};
 
 TEST_F(Skips, SkyPixelsCostNothingAndSkippingThemChangesNoGeometryPixel) {
     const Scene scene = loadScene("builtin:showcase");
-    for (const std::string tech : {"kernel", "sao", "hbao", "gtao", "vbao"}) {
+    for (const auto& t : techniques()) {
+        const std::string& tech = t.id;
         Settings s = defaultSettings();
         s.ao.technique = tech;
         auto r = makeRenderer(scene, s, 160, 90);

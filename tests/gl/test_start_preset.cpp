@@ -5,7 +5,7 @@
 // printed; asserted only as "not several times slower", timings being no test).
 #include "gl_fixture.h"
 
-#include "output/image.h"
+#include "base/image.h"
 #include "reference/embree_scene.h"
 #include "reference/reference_ao.h"
 #include "settings/preset.h"

@@ -5,6 +5,7 @@
 
 #include "scene/scene.h"
 #include "settings/params.h"
+#include "techniques/technique.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,11 +44,12 @@ int row(int glY, int height) { return height - 1 - glY; }
 } // namespace
 
 TEST_F(Upsample, EveryDenoiserAtEveryReducedResolutionKeepsAPlaneOpenAndAoInRange) {
-    for (const char* technique : {"vbao", "kernel", "sao"})
+    for (const auto& t : techniques())
         for (const char* kind : {"auto", "none", "box4", "gaussian", "bilateral"})
             for (const char* res : {"half", "quarter"})
                 for (const char* up : {"joint", "filter"}) {
-                    const std::string what = std::string(technique) + " " + kind + " " + res + " " + up;
+                    const std::string& technique = t.id;
+                    const std::string what = technique + " " + kind + " " + res + " " + up;
                     const Rendered plane = render("builtin:plane", with(technique, kind, res, up), 160, 90);
                     EXPECT_TRUE(finiteInRange(plane.ao, 0.0f, 1.0f)) << what;
                     // A flat plane is unoccluded at any setting (the kernel's own floor aside: its

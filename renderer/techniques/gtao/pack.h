@@ -1,6 +1,6 @@
 // GTAO settings → its GPU constants (shaders/techniques/gtao/layout.h), pure and tested.
 #pragma once
-#include "settings/settings.h"
+#include "techniques/technique_settings.h"
 
 #include "../../../shaders/include/bindings.h"
 #include "../../../shaders/techniques/gtao/layout.h"

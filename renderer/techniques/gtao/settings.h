@@ -19,8 +19,8 @@ struct GtaoSettings {
     float distributionPower = 2.0f;  // steps at s^p of the radius: denser near the pixel (XeGTAO)
     float thinCompensation = 0.0f;   // thin-occluder heuristic: stretch depth deltas by (1 + t) (XeGTAO)
     GtaoNoise noise = GtaoNoise::Ign;
-    bool pyramid = false; // far taps read the position pyramid (techniques/position_pyramid.h): off,
-                          // it cost 9-13 % on llvmpipe for the same error (docs/benchmarks.md)
+    bool pyramid = false; // far taps read the position pyramid (passes/position_pyramid_pass.h): off,
+                          // on llvmpipe it costs time for the same error (docs/bench/report.md)
 };
 
 // Slices and steps per side of a quality level (XeGTAO vaGTAO.hlsl: Low 1x2, Medium 2x2, High 3x3,

@@ -1,7 +1,6 @@
 // GTAO as a module: its rows of the parameter table (group "gtao"; they apply while
 // ao.technique = gtao), what the one-block pass needs and its capabilities.
 // Defaults: GtaoSettings' initialisers (settings.h).
-#include "passes/position_pyramid_pass.h"
 #include "techniques/gtao/pack.h"
 #include "techniques/gtao/technique.h"
 #include "techniques/one_block.h"
@@ -67,6 +66,14 @@ TechniqueInfo gtaoTechnique() {
     };
     // denoise.kind = auto: none. Every filter of the denoiser sweep raised its raw error on some
     // scene (box4 by up to 0.063; an AO-range bilateral by 0.0006).
+
+    // Its stated bounds (technique.h): it integrates the quantity the closed form describes.
+    t.cornerBound = 0.10, t.levelsCornerBound = 0.12;
+    t.levels = {{"low", {"gtao.quality=low"}},
+                {"medium", {"gtao.quality=medium"}},
+                {"high", {"gtao.quality=high"}},
+                {"ultra", {"gtao.quality=ultra"}}};
+    t.tuned = {"gtao.radius_multiplier", "gtao.falloff_range", "gtao.distribution_power"};
     return t;
 }
 

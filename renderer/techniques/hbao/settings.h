@@ -15,8 +15,8 @@ struct HbaoSettings {
     float tangentBias = 0.1f;   // sin of the bias angle above the tangent plane (~6 degrees)
     float maxRadiusPx = 128.0f; // the projected radius is clamped to this many pixels (cache, cost)
     HbaoNoise noise = HbaoNoise::Ign;
-    bool pyramid = false; // far taps read the position pyramid (techniques/position_pyramid.h): off,
-                          // it cost 9-13 % on llvmpipe for the same error (docs/benchmarks.md)
+    bool pyramid = false; // far taps read the position pyramid (passes/position_pyramid_pass.h): off,
+                          // on llvmpipe it costs time for the same error (docs/bench/report.md)
 };
 
 } // namespace ssao

@@ -1,6 +1,5 @@
 // HBAO's rows of the parameter table (group "hbao"; they apply while ao.technique = hbao).
 // Defaults: HbaoSettings' initialisers (settings.h).
-#include "passes/position_pyramid_pass.h"
 #include "techniques/hbao/pack.h"
 #include "techniques/hbao/technique.h"
 #include "techniques/one_block.h"
@@ -46,6 +45,14 @@ TechniqueInfo hbaoTechnique() {
     // denoise.kind = auto: none. Every filter of the denoiser sweep raised its raw error on some
     // scene (box4 by up to 0.024; an AO-range bilateral by 0.002): its noise is finer than the detail a
     // filter erases.
+
+    // Its stated bounds (technique.h): its linear falloff weighs far occluders less than the closed form.
+    t.cornerBound = 0.15, t.levelsCornerBound = 0.15;
+    t.levels = {{"low", {"hbao.directions=4", "hbao.steps=3"}},
+                {"medium", {"hbao.directions=6", "hbao.steps=4"}},
+                {"high", {"hbao.directions=8", "hbao.steps=4"}},
+                {"ultra", {"hbao.directions=8", "hbao.steps=8"}}};
+    t.tuned = {"hbao.tangent_bias"};
     return t;
 }
 

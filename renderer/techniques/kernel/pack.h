@@ -1,7 +1,7 @@
 // Kernel SSAO settings → its GPU constants (shaders/techniques/kernel/layout.h): the one pure
 // function between what a person sets and what the shader reads (XeGTAO's GTAOUpdateConstants).
 #pragma once
-#include "settings/settings.h"
+#include "techniques/technique_settings.h"
 
 #include "../../../shaders/include/bindings.h"
 #include "../../../shaders/techniques/kernel/layout.h"

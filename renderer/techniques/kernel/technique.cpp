@@ -1,6 +1,6 @@
 // Kernel SSAO as a module: its rows of the parameter table (group "kernel"; they apply while
 // ao.technique = kernel). Defaults: KernelSettings' initialisers (settings.h).
-#include "settings/param_rows.h"
+#include "base/param_rows.h"
 #include "techniques/kernel/kernel_pass.h"
 #include "techniques/kernel/technique.h"
 
@@ -79,6 +79,11 @@ TechniqueInfo kernelTechnique() {
     t.denoiser.kind = DenoiseKind::Bilateral;
     t.denoiser.passes = 1;
     t.denoiser.halfWidth = 2;
+    // Its stated bounds (technique.h): the seeds' kernel counts depth hits, not cosine-weighted
+    // visibility, so it is held loosely.
+    t.cornerBound = 0.25, t.levelsCornerBound = 0.25;
+    t.levels = {{"low", {"kernel.samples=16"}}, {"medium", {"kernel.samples=32"}}, {"high", {"kernel.samples=64"}}};
+    t.tuned = {"kernel.bias"};
     return t;
 }
 

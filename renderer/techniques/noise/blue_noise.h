@@ -1,7 +1,7 @@
 // A tileable blue-noise texture made at start-up by Ulichney's void-and-cluster method (1993):
 // every value 0..n²-1 appears once (a uniform histogram), and neighbouring ranks lie far apart, so
 // the noise has little low-frequency energy and a small blur removes it (what the denoiser does).
-// Pure and deterministic (fixed seed); tested in tests/cpu/test_blue_noise.cpp.
+// Pure and deterministic (fixed seed); tested in tests/cpu/test_noise.cpp.
 #pragma once
 #include <cstdint>
 #include <vector>

@@ -18,7 +18,7 @@ std::vector<std::pair<std::string, AoNoise>> aoNoiseChoices();
 // One line for the rows' help.
 extern const char* const kAoNoiseHelp;
 
-// Help of the techniques' "pyramid" rows (techniques/position_pyramid.h).
+// Help of the techniques' "pyramid" rows (passes/position_pyramid_pass.h).
 extern const char* const kPyramidHelp;
 
 // Writes the noise kind into the shared constants (estimator.y).

@@ -15,8 +15,8 @@ struct SaoSettings {
     float intensity = 1.0f; // σ of Alchemy AO: scales the summed obscurance
     float bias = 0.012f;    // β: v·n must exceed this fraction of R (SAO's 0.012 at R = 1)
     SaoNoise noise = SaoNoise::Ign;
-    bool pyramid = false; // far taps read the position pyramid (techniques/position_pyramid.h): off,
-                          // it cost 9-13 % on llvmpipe for the same error (docs/benchmarks.md)
+    bool pyramid = false; // far taps read the position pyramid (passes/position_pyramid_pass.h): off,
+                          // on llvmpipe it costs time for the same error (docs/bench/report.md)
 };
 
 } // namespace ssao

@@ -1,6 +1,5 @@
 // SAO's rows of the parameter table (group "sao"; they apply while ao.technique = sao).
 // Defaults: SaoSettings' initialisers (settings.h).
-#include "passes/position_pyramid_pass.h"
 #include "techniques/sao/pack.h"
 #include "techniques/sao/technique.h"
 #include "techniques/one_block.h"
@@ -48,6 +47,13 @@ TechniqueInfo saoTechnique() {
     t.denoiser.kind = DenoiseKind::Bilateral;
     t.denoiser.passes = 1;
     t.denoiser.halfWidth = 2;
+    // Its stated bounds (technique.h): its estimator weighs far occluders less than the closed form.
+    t.cornerBound = 0.12, t.levelsCornerBound = 0.12;
+    t.levels = {{"low", {"sao.samples=8", "sao.turns=3"}},
+                {"medium", {"sao.samples=11", "sao.turns=7"}},
+                {"high", {"sao.samples=24", "sao.turns=7"}},
+                {"ultra", {"sao.samples=48", "sao.turns=11"}}};
+    t.tuned = {"sao.intensity", "sao.bias"};
     return t;
 }
 

@@ -15,8 +15,8 @@ struct VbaoSettings {
     float thickness = 1.0f;         // assumed depth of every surface, in units of the AO radius
     float distributionPower = 2.0f; // step k of n at (k/n)^p of the radius, denser near the pixel
     AoNoise noise = AoNoise::Ign;
-    bool pyramid = false; // far taps read the position pyramid (techniques/position_pyramid.h): off,
-                          // it cost 9-13 % on llvmpipe for the same error (docs/benchmarks.md)
+    bool pyramid = false; // far taps read the position pyramid (passes/position_pyramid_pass.h): off,
+                          // on llvmpipe it costs time for the same error (docs/bench/report.md)
 };
 
 } // namespace ssao

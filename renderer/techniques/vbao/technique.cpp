@@ -1,6 +1,5 @@
 // Visibility-bitmask rows of the parameter table (group "vbao"; they apply while
 // ao.technique = vbao). Defaults: VbaoSettings' initialisers (settings.h).
-#include "passes/position_pyramid_pass.h"
 #include "techniques/vbao/pack.h"
 #include "techniques/vbao/technique.h"
 #include "techniques/one_block.h"
@@ -47,6 +46,19 @@ TechniqueInfo vbaoTechnique() {
     // denoise.kind = auto: none. Every filter of the denoiser sweep raised its raw error on some
     // scene (box4 by up to 0.085; an AO-range bilateral by 0.0008): its noise is finer than the detail a
     // filter erases.
+
+    // Its stated bounds (technique.h): binary visibility within R, the reference's definition.
+    t.cornerBound = 0.05, t.levelsCornerBound = 0.06;
+    t.levels = {{"low", {"vbao.slices=2", "vbao.steps=4"}},
+                {"medium", {"vbao.slices=2", "vbao.steps=8"}},
+                {"high", {"vbao.slices=4", "vbao.steps=8"}},
+                {"ultra", {"vbao.slices=4", "vbao.steps=16"}}};
+    t.tuned = {"vbao.thickness", "vbao.distribution_power"};
+    // vbao-half-LEVEL: vbao-LEVEL at half resolution (its own file sets that); vbao-max: the ultra
+    // level's fitted rows at 8 slices x 24 steps.
+    for (const char* level : {"low", "medium", "high", "ultra"})
+        t.derived.push_back({std::string("vbao-half-") + level, std::string("vbao-") + level, {}});
+    t.derived.push_back({"vbao-max", "vbao-ultra", {"vbao.slices=8", "vbao.steps=24"}});
     return t;
 }
 

@@ -46,9 +46,8 @@ void main() {
     if (aoNoiseOn(ssao.aoCommon)) noise = aoNoise(ssao.aoCommon, gl_FragCoord.xy);
 
     // Each step's distance as a fraction of R, the same in every slice: computed once per pixel
-    // rather than once per slice and step (a pow is an exp2 and a log2 on llvmpipe). Measured:
-    // CornellBox 1172x616 gtao-medium AO, six alternating runs, min 37.7 -> 36.4 ms, median 40.2 ->
-    // 39.3 (vbao.frag does the same). The same AO to the last bit.
+    // rather than once per slice and step (a pow is an exp2 and a log2 on llvmpipe; vbao.frag does
+    // the same). The same AO to the last bit.
     float stepS[GTAO_MAX_STEPS]; // steps <= GTAO_MAX_STEPS (the parameter table's maximum)
     int k = 0;
     do { stepS[k] = pow((float(k) + noise.y) / float(steps), ssao.search.w) + minS; } while (++k < steps);
@@ -59,8 +58,7 @@ void main() {
         vec2 omega = sl.omega;
         float projNLen = sl.projNLen, cosNorm = sl.cosN, n = sl.n; // n: the normal's angle from V
         // With no occluder the horizons are the tangent plane: n ± π/2.
-        // cos(n ± π/2) = ∓sin n, and sin n = ±sqrt(1 - cos² n): no trigonometry (measured: CornellBox
-        // 1172x616 gtao-medium AO 29.9-34.4 -> 27.2-28.7 ms).
+        // cos(n ± π/2) = ∓sin n, and sin n = ±sqrt(1 - cos² n): no trigonometry.
         float sinN = sign(n) * sqrt(max(1.0 - cosNorm * cosNorm, 0.0));
         float lowCos0 = -sinN, lowCos1 = sinN;
         float hCos0 = lowCos0, hCos1 = lowCos1;

@@ -35,7 +35,7 @@ float edgeAngle(int e, float n) { return n - HALF_PI + float(e) * (PI / float(VB
 // cosine-weighted measure between V and angle h in a slice (GTAO's inner integral; the weight of
 // [a, b] is G(b) - G(a)). Taken only at sector edges e (h = n - π/2 + e·π/32), where
 // cos(2h - n) = cos(n - π + e·π/16) = -(cos n · C[e] - sin n · S[e]) with C, S the cos and sin of
-// e·π/16: no trigonometry per pixel (measured: CornellBox 1172x616 AO 63.7-66.2 -> 61.3-62.2 ms).
+// e·π/16: no trigonometry per pixel.
 const float EDGE_C[33] = float[33](1.0, 0.98078528, 0.92387953, 0.83146961, 0.70710678, 0.55557023,
     0.38268343, 0.19509032, 0.0, -0.19509032, -0.38268343, -0.55557023, -0.70710678, -0.83146961,
     -0.92387953, -0.98078528, -1.0, -0.98078528, -0.92387953, -0.83146961, -0.70710678, -0.55557023,
@@ -70,10 +70,8 @@ void main() {
     vec2 noise = aoNoiseOn(ssao.aoCommon) ? aoNoise(ssao.aoCommon, gl_FragCoord.xy) : vec2(0.5);
 
     // Each step's distance as a fraction of R, the same in every slice: computed once per pixel
-    // rather than once per slice and step (a pow is an exp2 and a log2 on llvmpipe). Measured:
-    // CornellBox 1172x616 vbao-medium AO, eight alternating runs, min 78.2 -> 68.5 ms, median 86.4 ->
-    // 81.2; FlightHelmet vbao-high min 44.5 -> 41.0 (four runs); Lantern vbao-low unchanged (four
-    // steps). The same AO to the last bit.
+    // rather than once per slice and step (a pow is an exp2 and a log2 on llvmpipe). The same AO
+    // to the last bit.
     float stepS[VBAO_MAX_STEPS]; // steps <= VBAO_MAX_STEPS (the parameter table's maximum)
     int k = 0;
     do { stepS[k] = pow((float(k) + noise.y) / float(steps), ssao.params.y) + minS; } while (++k < steps);
@@ -97,8 +95,8 @@ void main() {
                 float dist = length(front);
                 // Off the frame, on the sky, the pixel itself or beyond the radius: hides nothing.
                 // One select at the end rather than a branch per case: llvmpipe runs every side of a
-                // branch its lanes disagree on, so the branches only cost (measured: CornellBox
-                // 1172x616, one A/B run: the bitmask's AO 73.7 / 74.7 -> 61.9 / 62.5 ms; GTAO 40 -> 34-35, HBAO 25 -> 21-22, SAO 22-23 -> 20; the same AO to the last bit).
+                // branch its lanes disagree on, so the branches only cost; the same AO to the last
+                // bit.
                 bool counts = held && S.w != 0.0 && dist > 0.0 && dist <= R;
                 front = aoSliceDelta(sl, front); // the angles in the slice plane (slice.glsl)
                 // How far behind its front the sample's solid reaches: the assumed thickness, or
@@ -107,10 +105,7 @@ void main() {
                 // pixel's own view direction, as the paper does (Therrien et al. 2023, listing 1:
                 // deltaPosBackface = deltaPos - viewVec * thickness), not along the sample's own
                 // ray: its angle then needs no vector of its own, |front - gap V|^2 = ff - 2 gap fv
-                // + gap^2. Measured: CornellBox 1172x616 AO 104.2 -> 87.9 ms (vbao-medium, five
-                // alternating runs, medians); geometry RMSE over the tuning's 32 views moves by at
-                // most 1e-5 (vbao-medium held-out scenes 0.092627 -> 0.092654, vbao-high 0.082111
-                // -> 0.082111, vbao-low 0.105224 -> 0.105234).
+                // + gap^2.
                 float gap = aoBackGap(ssao.aoCommon, uv, S.xyz, thickness);
                 float ff = dot(front, front), fv = dot(front, V);
                 float sgn = side == 0 ? 1.0 : -1.0; // side 0 at positive angles from V

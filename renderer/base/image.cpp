@@ -1,4 +1,4 @@
-#include "output/image.h"
+#include "base/image.h"
 
 #include "util/atomic_file.h"
 #include "util/error.h"

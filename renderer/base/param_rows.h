@@ -2,7 +2,7 @@
 // Enum rows map each choice name to its enum value explicitly, so reordering either list can
 // never silently change what a preset means.
 #pragma once
-#include "settings/params.h"
+#include "base/param.h"
 
 #include <utility>
 
