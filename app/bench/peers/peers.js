@@ -32,7 +32,10 @@ window.setupPeers = async (config) => {
     renderer.setSize(cfg.width, cfg.height, false);
     pp = await import('postprocessing').catch(() => null); // only pp-ssao needs it
     const gltf = await new GLTFLoader().loadAsync(cfg.scene);
-    scene = gltf.scene;
+    // The glTF's root is a Group; three.js applies a pass's override material (SSAOPass's and
+    // postprocessing's normal pre-passes) only to a Scene, so the root goes inside one.
+    scene = new THREE.Scene();
+    scene.add(gltf.scene);
     scene.background = new THREE.Color(1, 1, 1);
     scene.add(new THREE.AmbientLight(0xffffff, 1.0));
     // ssaolab skips BLEND and transmissive surfaces by default (README, "Transparent surfaces"):
@@ -209,12 +212,8 @@ function makePpSsao(normalBuffer) {
 
 // postprocessing's composer: RenderPass, NormalPass (its normals drawn as viewFacingNormals()),
 // EffectPass with the effect, writing linear AO to the canvas (its encodeOutput would convert to
-// sRGB). The glTF's root is a Group, and three.js applies a pass's override material only to a
-// Scene, so these passes render a Scene that holds the glTF's root while they draw (three.js's
-// passes keep rendering the root itself). The composer turns the renderer's autoClear off, which
-// three.js's passes rely on: each call keeps the renderer's setting as it found it.
-const ppScene = new THREE.Scene();
-
+// sRGB). The composer turns the renderer's autoClear off, which three.js's passes rely on: each
+// call keeps the renderer's setting as it found it.
 function ppComposer(passes) {
     const autoClear = renderer.autoClear;
     const c = new pp.EffectComposer(renderer);
@@ -224,9 +223,7 @@ function ppComposer(passes) {
         render() {
             const a = renderer.autoClear;
             renderer.autoClear = false;
-            ppScene.add(scene);
             c.render();
-            ppScene.remove(scene);
             renderer.autoClear = a;
         },
         dispose() { c.dispose(); },
@@ -235,19 +232,19 @@ function ppComposer(passes) {
 
 function makePpPipeline(name, opts) {
     if (!pp) throw new Error(`${name}: the npm package postprocessing is not installed (make engine-modules)`);
-    const normalPass = new pp.NormalPass(ppScene, camera);
+    const normalPass = new pp.NormalPass(scene, camera);
     normalPass.renderPass.overrideMaterial = viewFacingNormals();
     const pass = makePass(name, { ...opts, normalBuffer: normalPass.texture });
     const effectPass = new pp.EffectPass(camera, pass);
     effectPass.fullscreenMaterial.encodeOutput = false;
-    return { pass, composer: ppComposer([new pp.RenderPass(ppScene, camera), normalPass, effectPass]) };
+    return { pass, composer: ppComposer([new pp.RenderPass(scene, camera), normalPass, effectPass]) };
 }
 
 const isPp = (name) => name.startsWith('pp-');
 
 // The composer without the peer, for its time: the peer's own kind of composer and RenderPass.
 function plainComposer(name) {
-    if (isPp(name)) return ppComposer([new pp.RenderPass(ppScene, camera)]);
+    if (isPp(name)) return ppComposer([new pp.RenderPass(scene, camera)]);
     const plain = newComposer();
     plain.addPass(new RenderPass(scene, camera));
     return plain;
