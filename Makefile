@@ -16,7 +16,7 @@ build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
 # The web engines' npm packages (three.js, N8AO, playwright-core) at the versions
-# app/bench/peers/package-lock.json pins, into $(BUILD)/peers by npm ci once per lock: `ssaolab tune
+# tools/peers/package-lock.json pins, into $(BUILD)/peers by npm ci once per lock: `ssaolab tune
 # --engine`, `make peers` and the tests run them in Debian's chromium.
 engine-modules: deps
 	@bash .ci/engine-modules.sh $(BUILD)
@@ -77,7 +77,7 @@ scaling: build
 	@bash .ci/scaling.sh $(BUILD) $(SCENES)
 
 # docs/benchmarks.md "The web peers": three.js SSAOPass, SAOPass, GTAOPass and N8AO (from npm, pinned
-# by app/bench/peers/package-lock.json) in Debian's Chromium on the same GL, against every shipped
+# by tools/peers/package-lock.json) in Debian's Chromium on the same GL, against every shipped
 # preset, in one run (~5 minutes on llvmpipe; needs Node.js with npm).
 peers: build
 	@bash .ci/peers.sh $(BUILD) $(SCENES)

@@ -41,7 +41,7 @@ for name in ${PEERS_SCENES:-CornellBox FlightHelmet Lantern ShaderBall}; do
   ours learnopengl
   R=$(/usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['error']['reference']['radius'])" \
     "$dir/ours/learnopengl.json")
-  node app/bench/peers/run_peers.mjs --modules "$MODS/node_modules" --scene "$scene" \
+  node tools/peers/run_peers.mjs --modules "$MODS/node_modules" --scene "$scene" \
     --metrics "$dir/ours/learnopengl.json" --radius "$R" --size "$SIZE" --frames "$FR" \
     --peers ssao,ssao:min=0.25,ssao:min=0.5,ssao:min=0.75,sao,gtao,n8ao --out "$dir/peers"
   scored=()

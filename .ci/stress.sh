@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `make stress`: docs/stability.md, every technique under the stress cases (app/stress/) on the
+# `make stress`: docs/stability.md, every technique under the stress cases (app/commands/stress/) on the
 # built-in showcase and two shared scenes at 320x180. Usage: .ci/stress.sh BUILD_DIR [SCENES_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,22 +1,23 @@
 // ssaolab command line: `view` (window), `render` (headless), `params` (the parameter table).
 // Without a subcommand: the window when there is a display, else a headless render into out/.
-#include "bench/bench_command.h"
-#include "bench/skips_command.h"
-#include "bench/tune_command.h"
-#include "render_command.h"
+#include "cli/cli_util.h"
+#include "cli/scene_options.h"
+#include "commands/bench/bench_command.h"
+#include "commands/docs/cli_reference.h"
+#include "commands/merge/merge_command.h"
+#include "commands/render/render_command.h"
+#include "commands/skips/skips_command.h"
+#include "commands/stress/stress_command.h"
+#include "commands/tune/tune_command.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene.h"
 #include "settings/params.h"
-#include "stress/stress_command.h"
 #include "settings/preset_store.h"
 #include "techniques/technique.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/paths.h"
 #include "view/window_app.h"
-
-#include "cli_reference.h"
-#include "cli_util.h"
 
 #include <CLI/CLI.hpp>
 

@@ -1,6 +1,6 @@
 #include "front/candidates.h"
 
-#include "bench/bench_run.h"
+#include "measure/bench_run.h"
 #include "settings/params.h"
 #include "settings/preset.h"
 #include "util/error.h"

@@ -1,8 +1,8 @@
 #include "front/engine_candidates.h"
 
-#include "bench/engine_settings_file.h"
+#include "engines/engine_settings_file.h"
 
-#include "bench/engine_snippet.h"
+#include "engines/engine_snippet.h"
 #include "util/error.h"
 #include "util/files.h"
 #include "util/json_file.h"

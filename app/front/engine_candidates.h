@@ -1,11 +1,11 @@
-// The web engines as Front tab candidates (bench/engine_table.h): each engine at its make-peers
+// The web engines as Front tab candidates (engines/engine_table.h): each engine at its make-peers
 // settings (its defaults with every length from R), and each `ssaolab tune --engine --out` result
 // found in the user's folder for them or added by path. A tuned result is its fit, as `tune`
 // applies it to its held-out views: a knob relative to the view's make-peers value is that factor
 // (the runner multiplies, as `bench --engine-settings` runs it), one per R is that multiple of this
 // view's R, every other setting (cost settings included) the engine's value.
 #pragma once
-#include "bench/engine_table.h"
+#include "engines/engine_table.h"
 
 #include <utility>
 
@@ -31,7 +31,7 @@ std::string engineShortTitle(const EngineTable& t);
 // Each named engine's make-peers candidate, in the order given.
 std::vector<EngineCandidate> engineDefaultCandidates(const std::vector<std::string>& engines);
 
-// A `tune --engine --out` JSON file as a candidate (bench/engine_settings_file.h reads it); throws
+// A `tune --engine --out` JSON file as a candidate (engines/engine_settings_file.h reads it); throws
 // ssao::Error (one line) naming the file.
 EngineCandidate tunedEngineCandidate(const std::string& file);
 

@@ -23,7 +23,7 @@ class EngineFront {
 
     bool enabled = true;              // the Front tab's "engines" checkbox
     std::string modules;              // the npm packages ("" = the build folder's peers/node_modules)
-    std::vector<std::string> engines; // which engines (empty = every table, bench/engine_table.h)
+    std::vector<std::string> engines; // which engines (empty = every table, engines/engine_table.h)
     std::vector<std::string> files;   // tune results added by path (besides the folder's)
     int frames = 5;                   // timed frames per candidate (median)
 

@@ -1,7 +1,7 @@
 #include "front/engine_worker.h"
 
 #include "../../shaders/include/view_colors.h"
-#include "bench/engine_snippet.h"
+#include "engines/engine_snippet.h"
 #include "metrics/evaluate.h"
 #include "util/error.h"
 

@@ -1,12 +1,12 @@
 // Runs the Front tab's engine candidates (front/engine_candidates.h) on a background thread: each
-// engine in Chromium through bench/engine_runner.h (Node.js and a browser: seconds per engine,
+// engine in Chromium through engines/engine_runner.h (Node.js and a browser: seconds per engine,
 // never on the UI thread) at the view's camera, size and R, its AO scored in-process against the
 // view's finished reference with metrics/evaluate.h, as `tune --engine` and `bench --engines`
 // score it: one browser session per engine (its defaults and its tuned fits). A new job cancels
 // the running one between sessions (a session is not interrupted).
 #pragma once
 #include "base/image.h"
-#include "bench/engine_runner.h"
+#include "engines/engine_runner.h"
 #include "front/engine_candidates.h"
 #include "metrics/error_metrics.h"
 #include "reference/reference_ao.h"

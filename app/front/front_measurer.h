@@ -2,10 +2,10 @@
 // screen, its error against the finished live reference and its GPU time at the view's size, run
 // in slices between the explorer's frames (one rendered frame per step, steps until a per-frame
 // time budget is spent) with its own renderer, so the view on screen is never disturbed. The
-// steps are bench's (bench/measurement.h): the panel and `bench` get the same numbers. Completed
+// steps are bench's (measure/measurement.h): the panel and `bench` get the same numbers. Completed
 // views are cached, so going back to a view shows its front at once.
 #pragma once
-#include "bench/measurement.h"
+#include "measure/measurement.h"
 #include "front/candidates.h"
 #include "metrics/motion_metrics.h"
 #include "scene/scene.h"

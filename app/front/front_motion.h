@@ -1,10 +1,10 @@
 // The Front tab's motion axis: every candidate (front/candidates.h) scored along the camera path
-// through the view on screen as `bench --motion` scores it (bench/motion_measure.h), at a reduced
+// through the view on screen as `bench --motion` scores it (measure/motion_measure.h), at a reduced
 // size (the path's references cost a frame's trace each). The path's references are traced in the
 // background (front/motion_truth_worker.h); then each candidate renders one path frame per step
 // on this object's own renderer, between the explorer's frames. Completed views are cached.
 #pragma once
-#include "bench/motion_measure.h"
+#include "measure/motion_measure.h"
 #include "front/candidates.h"
 #include "front/motion_truth_worker.h"
 

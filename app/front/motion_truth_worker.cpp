@@ -1,6 +1,6 @@
 #include "front/motion_truth_worker.h"
 
-#include "view/reference_worker.h"
+#include "measure/reference_worker.h"
 
 namespace ssao {
 

@@ -1,9 +1,9 @@
-// Traces the Front tab's motion truth (bench/motion_measure.h: a reference per frame of the camera
+// Traces the Front tab's motion truth (measure/motion_measure.h: a reference per frame of the camera
 // path through the view, and the pixels followed between frames) on a background thread: the
 // references and the reprojection need no GL. References come from and go to the disk cache, so a
 // view's path is traced once across sessions. A new job cancels the running one between frames.
 #pragma once
-#include "bench/motion_measure.h"
+#include "measure/motion_measure.h"
 
 #include <atomic>
 #include <condition_variable>

@@ -5,7 +5,7 @@
 #include "renderer.h"
 #include "settings/preset.h"
 #include "settings/preset_store.h"
-#include "front/front_panel.h"
+#include "view/front_panel.h"
 #include "view/camera_controller.h"
 #include "view/frame_driver.h"
 #include "view/image_texture.h"

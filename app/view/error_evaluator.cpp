@@ -1,6 +1,6 @@
 #include "view/error_evaluator.h"
 
-#include "view/reference_worker.h"
+#include "measure/reference_worker.h"
 
 namespace ssao {
 

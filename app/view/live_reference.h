@@ -8,7 +8,7 @@
 #include "passes/reference_pass.h"
 #include "renderer.h"
 #include "view/error_evaluator.h"
-#include "view/reference_worker.h"
+#include "measure/reference_worker.h"
 
 #include <functional>
 #include <memory>

@@ -1,4 +1,4 @@
-// The "Front" tab: the time-against-error front of the view on screen (front/front_panel.h).
+// The "Front" tab: the time-against-error front of the view on screen (view/front_panel.h).
 // A plot drawn with ImGui's draw list - GPU time on a log axis, RMSE against the finished live
 // reference or the motion score along the camera path through the view ("still | motion"; the axis
 // clipped above the bulk, outliers as triangles on its top edge), the front as

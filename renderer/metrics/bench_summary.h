@@ -2,7 +2,7 @@
 // averaged over views, errors as the RMS over views, PSNR of the mean MSE as XeGTAO reports it),
 // ratios to the baseline measured in the same run, and the time/error Pareto front.
 // Times are only comparable on one machine: every row keeps its ratio to the baseline measured on
-// the same view by the same run (a shard of a split benchmark, bench/shard.h), and configurations
+// the same view by the same run (a shard of a split benchmark, results/shard.h), and configurations
 // are ranked by those ratios, so rows measured on different machines can be merged.
 #pragma once
 #include "metrics/error_metrics.h"

@@ -38,7 +38,7 @@ class ScreenLayers {
     ScreenLayers(const Camera& camera, int width, int height, int layers, float thickness, int guard = 0);
 
     // Bytes the G-buffer of these dimensions takes: every layer's (width + 2 guard) x (height + 2
-    // guard) surfaces. Pure: callers check it before a render (app/render_command.cpp).
+    // guard) surfaces. Pure: callers check it before a render (app/commands/render/render_command.cpp).
     static uint64_t bytes(int width, int height, int layers, int guard);
     // Throws "screen oracle: its G-buffer would take X GiB (...), past the budget of 1 GiB: lower
     // --oracle-guard or --oracle-layers" when bytes() exceeds kScreenLayersBudget.

@@ -1,4 +1,4 @@
-// "Did you mean ...?": the valid name nearest a mistyped one - options and commands (app/cli_util.h),
+// "Did you mean ...?": the valid name nearest a mistyped one - options and commands (app/cli/cli_util.h),
 // parameter keys (--set, presets) and preset names alike.
 #pragma once
 #include <string>

@@ -8,7 +8,7 @@
 
 #include "scene/builtin_scenes.h"
 #include "scene/view_fit.h"
-#include "view/reference_worker.h"
+#include "measure/reference_worker.h"
 
 #include <chrono>
 #include <cmath>

@@ -1,8 +1,8 @@
 // The benchmark's pure parts: viewpoints orbit the scene's camera without changing what it looks
 // at or how far away it is; sweeps expand to the configurations they describe.
-#include "bench/sweep.h"
-#include "bench/tune_guard.h"
-#include "bench/viewpoints.h"
+#include "measure/sweep.h"
+#include "commands/tune/tune_guard.h"
+#include "measure/viewpoints.h"
 #include "settings/params.h"
 #include "techniques/technique.h"
 #include "util/error.h"

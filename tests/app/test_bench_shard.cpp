@@ -1,9 +1,9 @@
 // Splitting and answering a benchmark, pure: shards partition the work, results.json reads back
 // what it wrote, the answer to a budget is the right row, report.html embeds what it names.
-#include "bench/bench_answer.h"
-#include "bench/bench_results.h"
-#include "bench/report_html.h"
-#include "bench/shard.h"
+#include "results/bench_answer.h"
+#include "results/bench_results.h"
+#include "results/report_html.h"
+#include "results/shard.h"
 #include "settings/params.h"
 #include "util/atomic_file.h"
 #include "util/error.h"

@@ -7,11 +7,11 @@
 #include "gl_fixture.h"
 #include "ui_driver.h"
 
-#include "bench/bench_run.h"
-#include "bench/motion_measure.h"
-#include "front/front_panel.h"
+#include "measure/bench_run.h"
+#include "measure/motion_measure.h"
+#include "view/front_panel.h"
 #include "front/front_measurer.h"
-#include "headless_runner.h"
+#include "cli/headless_runner.h"
 #include "reference/reference_cache.h"
 #include "settings/params.h"
 

@@ -14,7 +14,7 @@
 
 namespace ssaotest {
 
-inline const std::string kPeers = std::string(SSAOLAB_SOURCE_DIR) + "/app/bench/peers";
+inline const std::string kPeers = std::string(SSAOLAB_SOURCE_DIR) + "/tools/peers";
 inline const std::string kModules = std::string(SSAOLAB_BUILD_DIR) + "/peers/node_modules";
 
 inline bool modulesInstalled() {
@@ -31,7 +31,7 @@ inline bool nodeRuns() {
 #define NEED_MODULES()                                                                                             \
     ASSERT_TRUE(nodeRuns() && modulesInstalled())                                                                  \
         << "Node.js or the pinned npm packages are not installed in " << kModules                                 \
-        << " (make engine-modules installs them from app/bench/peers/package-lock.json)"
+        << " (make engine-modules installs them from tools/peers/package-lock.json)"
 
 // A corner: floor, back wall and left wall, 2 units a side, with normals; buffer as a data URI.
 inline std::string writeCornerGltf(const std::string& name) {

@@ -19,7 +19,7 @@
 using namespace ssaotest;
 
 TEST(Cli, EveryHeadlessCommandFailsOnAGlError) {
-    // One headless runner under every command (app/headless_runner.h): a GL error raised during the
+    // One headless runner under every command (app/cli/headless_runner.h): a GL error raised during the
     // run (the runner's test hook) ends each with exit 1 and one `ssaolab: error:` line naming it.
     const std::string sweep = writeTemp("gl_error_sweep.json", R"({"groups": [{"name": "one", "set": {"ao.technique": "sao"}}]})");
     const std::string out = outDir("gl_error");

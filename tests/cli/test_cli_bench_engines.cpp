@@ -2,12 +2,12 @@
 // bench's camera, size and R and scored in-process against the same reference: their rows in
 // results.json, the CSV, report.md and report.html (with thumbnails), the same error the runner
 // gives for that view, the same rows from shards merged, and one-line refusals before any work.
-#include "bench/engine_runner.h"
-#include "bench/engine_table.h"
-#include "bench/viewpoints.h"
+#include "engines/engine_runner.h"
+#include "engines/engine_table.h"
+#include "measure/viewpoints.h"
 #include "cli_run.h"
 #include "engine_test_util.h"
-#include "headless_runner.h"
+#include "cli/headless_runner.h"
 #include "metrics/evaluate.h"
 #include "reference/reference_cache.h"
 #include "scene/view_fit.h"

@@ -2,13 +2,13 @@
 // each default inside its range, at the version the lock pins, and with the defaults the pinned
 // package itself sets; the snippet parses as JavaScript and sets exactly the tuned values; one
 // engine's AO round trip at a tiny size; the refusals when Node.js or the browser is missing.
-#include "bench/engine_runner.h"
-#include "bench/engine_settings_file.h"
-#include "bench/engine_snippet.h"
-#include "bench/engine_table.h"
+#include "engines/engine_runner.h"
+#include "engines/engine_settings_file.h"
+#include "engines/engine_snippet.h"
+#include "engines/engine_table.h"
 #include "cli_run.h"
 #include "engine_test_util.h"
-#include "headless_runner.h"
+#include "cli/headless_runner.h"
 #include "metrics/evaluate.h"
 #include "reference/reference_cache.h"
 #include "scene/view_fit.h"

@@ -40,7 +40,7 @@ std::vector<PathOption> pathOptions() {
         const std::string kind = type.substr(0, type.find(':'));
         EXPECT_TRUE(j["flag"].get<bool>() || type != "TEXT")
             << "ssaolab " << j["command"] << " " << j["option"] << " takes bare TEXT: give it a type name "
-            << "(a path kind of app/cli_util.h, or what the text is)";
+            << "(a path kind of app/cli/cli_util.h, or what the text is)";
         if (kPathTypes.count(kind)) out.push_back({j["command"], j["option"], kind});
     }
     return out;

@@ -1,6 +1,6 @@
 // Hostile input, round two (issue 16): files, caches and command lines that crashed, hung, misled
 // or overwrote. Each test is one example of a class, and failed before its fix.
-#include "bench/sweep.h"
+#include "measure/sweep.h"
 #include "gl/shader_library.h"
 #include "scene/camera.h"
 #include "scene/gltf_guard.h"

@@ -227,10 +227,12 @@ std::string rendererFolder(const std::string& rel) {
     return slash == std::string::npos ? "renderer" : rel.substr(0, slash);
 }
 
-// Each include arrow between two renderer/ folders, resolved as the compiler does: the including
-// file's folder first, then renderer/, the include root. Folder pair -> "file -> header" lines.
-std::map<std::pair<std::string, std::string>, std::vector<std::string>> rendererArrows() {
-    const fs::path root = fs::path(SSAOLAB_SOURCE_DIR) / "renderer";
+// Each include arrow between two folders under `top` (renderer or app), resolved as the compiler
+// does: the including file's folder first, then `top` and renderer/, the include roots. Folder
+// pair -> "file -> header" lines.
+std::map<std::pair<std::string, std::string>, std::vector<std::string>> arrowsIn(
+    const std::string& top, std::string (*folder)(const std::string&)) {
+    const fs::path src(SSAOLAB_SOURCE_DIR), root = src / top;
     const std::regex inc(R"re(#include\s+"([^"]+)")re");
     std::map<std::pair<std::string, std::string>, std::vector<std::string>> arrows;
     for (const auto& e : fs::recursive_directory_iterator(root)) {
@@ -239,45 +241,89 @@ std::map<std::pair<std::string, std::string>, std::vector<std::string>> renderer
         const std::string from = fs::relative(e.path(), root).generic_string();
         const std::string text = slurp(e.path());
         for (auto it = std::sregex_iterator(text.begin(), text.end(), inc); it != std::sregex_iterator(); ++it) {
-            for (const fs::path& base : {e.path().parent_path(), root}) {
+            for (const fs::path& base : {e.path().parent_path(), root, src / "renderer"}) {
                 const fs::path cand = fs::weakly_canonical(base / std::string((*it)[1]));
                 if (!fs::exists(cand)) continue;
                 const std::string to = fs::relative(cand, root).generic_string();
-                if (to.rfind("..", 0) != 0 && rendererFolder(from) != rendererFolder(to))
-                    arrows[{rendererFolder(from), rendererFolder(to)}].push_back(from + " -> " + to);
+                if (to.rfind("..", 0) != 0 && folder(from) != folder(to))
+                    arrows[{folder(from), folder(to)}].push_back(from + " -> " + to);
                 break;
             }
         }
     }
     return arrows;
 }
-} // namespace
 
-TEST(Layering, RendererFloorsPointDown) {
+// Fails on every arrow that points to the same floor or one above; returns the number of folder pairs.
+int checkFloors(const std::string& top, const std::vector<std::vector<std::string>>& floors,
+                std::string (*folder)(const std::string&), const std::vector<std::string>& folders) {
     std::map<std::string, size_t> floorOf;
-    for (size_t i = 0; i < kRendererFloors.size(); ++i)
-        for (const auto& folder : kRendererFloors[i])
-            floorOf[folder] = i;
-    const fs::path root = fs::path(SSAOLAB_SOURCE_DIR) / "renderer";
-    for (const auto& e : fs::directory_iterator(root))
-        if (e.is_directory())
-            EXPECT_TRUE(floorOf.count(e.path().filename().string()))
-                << "renderer/" << e.path().filename().string() << "/ has no floor in kRendererFloors";
+    for (size_t i = 0; i < floors.size(); ++i)
+        for (const auto& f : floors[i])
+            floorOf[f] = i;
+    for (const auto& f : folders)
+        EXPECT_TRUE(floorOf.count(f)) << top << "/" << f << "/ has no floor";
     int up = 0, arrows = 0;
-    for (const auto& [pair, lines] : rendererArrows()) {
+    for (const auto& [pair, lines] : arrowsIn(top, folder)) {
         const auto& [from, to] = pair;
         if (!floorOf.count(from) || !floorOf.count(to)) continue; // reported above
         ++arrows;
         if (floorOf[to] < floorOf[from]) continue;
         for (const auto& l : lines) {
-            ADD_FAILURE() << "renderer/" << l << ": " << from << " may not include " << to
+            ADD_FAILURE() << top << "/" << l << ": " << from << " may not include " << to
                           << (floorOf[to] == floorOf[from] ? " (the same floor)" : " (a floor above)");
             ++up;
         }
     }
-    std::printf("%d pairs of renderer/ folders with includes between them; %d includes point up or sideways\n",
-                arrows, up);
-    EXPECT_GT(arrows, 20);
+    std::printf("%d pairs of %s/ folders with includes between them; %d includes point up or sideways\n", arrows,
+                top.c_str(), up);
+    return arrows;
+}
+
+// The folders directly under `dir` (relative to the source root), each prefixed with `prefix`.
+std::vector<std::string> foldersUnder(const std::string& dir, const std::string& prefix = "") {
+    std::vector<std::string> out;
+    for (const auto& e : fs::directory_iterator(fs::path(SSAOLAB_SOURCE_DIR) / dir))
+        if (e.is_directory()) out.push_back(prefix + e.path().filename().string());
+    return out;
+}
+
+// app/'s floors, lowest first: the CLI layer every command shares; the measurement core and the
+// web engines, shared by the commands and the explorer's front; the results every report is
+// written from, and the front's measurers; one folder per command; the explorer; main.cpp.
+const std::vector<std::vector<std::string>> kAppFloors = {
+    {"cli"},
+    {"measure", "engines"},
+    {"results", "front"},
+    {"commands/render", "commands/bench", "commands/merge", "commands/tune", "commands/skips", "commands/stress",
+     "commands/docs"},
+    {"view"},
+    {"main"},
+};
+
+// An app/ file's floor folder: commands/NAME for a command, the first folder otherwise, "main" for main.cpp.
+std::string appFolder(const std::string& rel) {
+    const size_t slash = rel.find('/');
+    if (slash == std::string::npos) return "main";
+    const std::string first = rel.substr(0, slash);
+    if (first != "commands") return first;
+    const size_t second = rel.find('/', slash + 1);
+    return second == std::string::npos ? first : rel.substr(0, second);
+}
+} // namespace
+
+TEST(Layering, RendererFloorsPointDown) {
+    EXPECT_GT(checkFloors("renderer", kRendererFloors, rendererFolder, foldersUnder("renderer")), 20);
+}
+
+TEST(Layering, AppFloorsPointDown) {
+    // One folder per command over the shared CLI layer; no command includes another or the explorer.
+    std::vector<std::string> folders;
+    for (const auto& f : foldersUnder("app"))
+        if (f != "commands") folders.push_back(f);
+    for (const auto& f : foldersUnder("app/commands", "commands/"))
+        folders.push_back(f);
+    EXPECT_GT(checkFloors("app", kAppFloors, appFolder, folders), 20);
 }
 
 TEST(Layering, ATechniqueDeclaresThePyramidTheRendererAdds) {

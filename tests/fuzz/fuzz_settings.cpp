@@ -1,8 +1,8 @@
 // libFuzzer target: everything a user types or a JSON file says about settings: preset JSON,
 // sweep JSON, --set KEY=VALUE, --camera and --size. The first byte picks the parser. Any
 // ssao::Error is a correct answer; a crash, a sanitizer report or another exception type is not.
-#include "bench/sweep.h"
-#include "render_command.h"
+#include "measure/sweep.h"
+#include "cli/scene_options.h"
 #include "scene/camera.h"
 #include "settings/params.h"
 #include "settings/preset.h"

@@ -2,8 +2,8 @@
 // machines wrote. Checked by the same reader merge uses; a run it accepts is summarised and
 // written as results.json and report.md in memory, as merge does. Any ssao::Error is a correct
 // answer; a crash, a sanitizer report, a hang or another exception type is not.
-#include "bench/bench_report.h"
-#include "bench/results_check.h"
+#include "results/bench_report.h"
+#include "results/results_check.h"
 #include "util/error.h"
 
 #include <cstdint>

@@ -1,0 +1,341 @@
+#include "commands/tune/engine_tune.h"
+
+#include "measure/bench_run.h"
+#include "commands/tune/engine_compare.h"
+#include "engines/engine_runner.h"
+#include "commands/tune/engine_tune_page.h"
+#include "commands/tune/engine_tuner.h"
+#include "engines/engine_snippet.h"
+#include "engines/engine_table.h"
+#include "commands/tune/tune_guard.h"
+#include "measure/viewpoints.h"
+#include "cli/cli_util.h"
+#include "cli/headless_runner.h"
+#include "metrics/evaluate.h"
+#include "cli/progress_bar.h"
+#include "reference/reference_cache.h"
+#include "cli/scene_options.h"
+#include "scene/view_fit.h"
+#include "settings/preset.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+#include "util/json_file.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <memory>
+
+namespace ssao {
+
+void addEngineTuneOptions(CLI::App& cmd, EngineTuneOptions& o) {
+    cmd.add_option("--engine", o.engine,
+                   "tune a web engine's own AO settings instead of a technique (n8ao, three-ssao, three-sao, "
+                   "three-gtao, pp-ssao), run for real in Chromium on the --scene glTF files; writes --out (JSON) and --snippet")
+        ->type_name("NAME");
+    cmd.add_option("--engine-modules", o.modules,
+                   "the engines' npm packages (default: the build folder's peers/node_modules, from make engine-modules)")
+        ->type_name(kInDir);
+    cmd.add_option("--snippet", o.snippet, "with --engine: the settings as JavaScript for the engine's API (default: --out with .js)")
+        ->type_name(kOutFile);
+    cmd.add_option("--budget-ms", o.budgetMs,
+                   "with --engine: the AO time (ms, training views' mean) that chooses the sample counts: the largest "
+                   "that fits, after the shape is fitted (default: the engine's own counts)")
+        ->type_name("MS")
+        ->check(cliRange(0.0, 1e6));
+    cmd.add_option("--budget-ratio", o.budgetRatio,
+                   "with --engine: the budget as a multiple of the defaults' AO time, measured in the same run")
+        ->type_name("X")
+        ->check(cliRange(0.0, 1000.0));
+    cmd.add_option("--timing-frames", o.timingFrames, "with --engine: frames whose median times the defaults and the tuned settings")
+        ->capture_default_str()
+        ->check(cliRange(1, 1000));
+}
+
+namespace {
+
+// One scene's views of one role: [0] defaults, [1] tuned; MSE and AO ms means.
+struct SceneScore {
+    size_t scene;
+    TuneRole role;
+    int views = 0;
+    double mse[2] = {0, 0}, ms[2] = {0, 0};
+};
+
+struct Outcome {
+    double train[2], heldViews[2], heldScenes[2], ms[2]; // [0] defaults, [1] tuned; MSE means, AO ms
+    FitVerdict verdict;
+    std::vector<SceneScore> perScene; // by scene, then role
+};
+
+std::vector<SceneScore> perSceneScores(const EngineTuner& t, const std::vector<std::vector<Sample>>& s) {
+    std::map<std::pair<size_t, int>, SceneScore> by;
+    for (int side = 0; side < 2; ++side)
+        for (const Sample& x : s[side]) {
+            const TuneView& v = t.views()[x.view];
+            SceneScore& sc = by[{v.scene, int(v.role)}];
+            sc.scene = v.scene, sc.role = v.role;
+            sc.views += side == 0;
+            sc.mse[side] += x.mse, sc.ms[side] += x.ms;
+        }
+    std::vector<SceneScore> out;
+    for (auto& [key, sc] : by) {
+        for (int side = 0; side < 2; ++side)
+            sc.mse[side] /= sc.views, sc.ms[side] /= sc.views;
+        out.push_back(sc);
+    }
+    return out;
+}
+
+// Scores per role and the held-out verdict from the final, timed measurement.
+Outcome judge(const EngineTuner& t, const std::vector<std::vector<Sample>>& s) {
+    Outcome o{};
+    std::map<size_t, HeldOutScore> held; // by scene: MSE sums, then means
+    for (int side = 0; side < 2; ++side) {
+        std::vector<double> byRole[3], ms;
+        for (const Sample& x : s[side]) {
+            const TuneView& v = t.views()[x.view];
+            byRole[int(v.role)].push_back(x.mse);
+            ms.push_back(x.ms);
+            if (v.role == TuneRole::Train) continue;
+            HeldOutScore& h = held[v.scene];
+            h.scene = t.scenes()[v.scene].name + (v.role == TuneRole::HeldOutView ? " (held-out views)" : "");
+            (side == 0 ? h.before : h.after) += x.mse;
+            h.views += side == 0;
+        }
+        o.train[side] = meanOf(byRole[0]), o.heldViews[side] = meanOf(byRole[1]), o.heldScenes[side] = meanOf(byRole[2]);
+        o.ms[side] = meanOf(ms);
+    }
+    std::vector<HeldOutScore> list;
+    for (auto& [scene, h] : held) {
+        h.before /= h.views, h.after /= h.views;
+        list.push_back(h);
+    }
+    o.verdict = judgeFit(list);
+    o.perScene = perSceneScores(t, s);
+    return o;
+}
+
+nlohmann::json rmseJson(double mse) {
+    return std::isfinite(mse) ? nlohmann::json(std::sqrt(mse)) : nlohmann::json();
+}
+
+const char* roleName(TuneRole r) {
+    return r == TuneRole::Train ? "train" : r == TuneRole::HeldOutView ? "held-out views" : "held-out scene";
+}
+
+nlohmann::json perSceneJson(const EngineTuner& t, const Outcome& r) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const SceneScore& s : r.perScene)
+        rows.push_back({{"scene", t.scenes()[s.scene].name}, {"role", roleName(s.role)}, {"views", s.views},
+                        {"rmse", {{"defaults", rmseJson(s.mse[0])}, {"tuned", rmseJson(s.mse[1])}}},
+                        {"ao_ms", {{"defaults", std::isfinite(s.ms[0]) ? nlohmann::json(s.ms[0]) : nlohmann::json()},
+                                   {"tuned", std::isfinite(s.ms[1]) ? nlohmann::json(s.ms[1]) : nlohmann::json()}}}});
+    return rows;
+}
+
+nlohmann::json scoresJson(const TuneOptions& o, const Outcome& r) {
+    auto side = [&](int s) {
+        return nlohmann::json{{"train", rmseJson(r.train[s])}, {"held_out_views", rmseJson(r.heldViews[s])},
+                              {"held_out_scenes", rmseJson(r.heldScenes[s])}, {"ao_ms", std::isfinite(r.ms[s]) ? nlohmann::json(r.ms[s]) : nlohmann::json()}};
+    };
+    return {{"metric", "geometry RMSE against the ray-traced reference (visibility, R = " + std::to_string(o.radiusScene) +
+                           " x diagonal, " + std::to_string(o.referenceRays) + " rays), " + o.size +
+                           "; AO ms: median frame with the pass - frame without, of " + std::to_string(o.engine.timingFrames) +
+                           " frames, mean over every view"},
+            {"defaults", side(0)},
+            {"tuned", side(1)},
+            {"held_out", {{"defaults", r.verdict.before}, {"tuned", r.verdict.after}}},
+            {"held_out_rmse_ratio", r.verdict.before > 0 ? nlohmann::json(r.verdict.after / r.verdict.before) : nlohmann::json()},
+            {"time_ratio", r.ms[0] > 0 ? nlohmann::json(r.ms[1] / r.ms[0]) : nlohmann::json()},
+            {"overfit", r.verdict.overfit}};
+}
+
+void printOutcome(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& knobs, const Outcome& r, double seconds) {
+    if (o.quiet) return;
+    size_t n[3] = {0, 0, 0};
+    for (const TuneView& v : t.views())
+        ++n[int(v.role)];
+    std::printf("tuned %s on %zu views (held out: %zu views of the same scenes, %zu views of %zu other scenes):",
+                t.table().title.c_str(), n[0], n[1], n[2], o.heldOutScenes.size());
+    const auto values = t.valuesFor(knobs, t.firstTrainView());
+    for (const Knob& k : knobs)
+        std::printf(k.p->relative ? " %s=%.4g (x%.3g)" : k.p->perRadius == 1 ? " %s=%.4g (%.3g R)" : k.p->perRadius ? " %s=%.4g (%.3g / R)" : " %s=%.4g", k.p->name.c_str(),
+                    values.at(k.p->name), k.value);
+    std::printf("\ngeometry RMSE, defaults -> tuned: training %.4f -> %.4f, held-out views %.4f -> %.4f",
+                std::sqrt(r.train[0]), std::sqrt(r.train[1]), std::sqrt(r.heldViews[0]), std::sqrt(r.heldViews[1]));
+    if (n[2]) std::printf(", held-out scenes %.4f -> %.4f", std::sqrt(r.heldScenes[0]), std::sqrt(r.heldScenes[1]));
+    std::printf("\nheld-out RMSE x%.3f at x%.3f the AO time (%.1f -> %.1f ms); tuning took %.0f s in %d browser sessions\n",
+                r.verdict.after / r.verdict.before, r.ms[1] / r.ms[0], r.ms[0], r.ms[1], seconds, t.sessions());
+    std::fflush(stdout); // before any warning on stderr
+}
+
+std::string snippetPath(const TuneOptions& o) {
+    if (!o.engine.snippet.empty()) return o.engine.snippet;
+    return std::filesystem::path(o.out).replace_extension(".js").string();
+}
+
+std::string pagePath(const TuneOptions& o) {
+    return std::filesystem::path(o.out).replace_extension(".html").string();
+}
+
+std::vector<std::vector<std::string>> settingRows(const EngineTuner& t, const std::vector<Knob>& knobs) {
+    const TuneView& v = t.firstTrainView();
+    const auto tuned = t.valuesFor(knobs, v);
+    std::vector<std::vector<std::string>> rows;
+    for (const EngineParam& p : t.table().params) {
+        if (p.role == EngineParam::Role::Fixed || !v.base.count(p.name)) continue;
+        const auto it = tuned.find(p.name);
+        rows.push_back({p.name, engineValueJson(p, exportedValue(v.base.at(p.name))).dump(),
+                        it == tuned.end() ? "(defaults)" : engineValueJson(p, it->second).dump(),
+                        p.role == EngineParam::Role::Shape ? "shape (fitted)" : "cost (the budget's)", p.unit});
+    }
+    return rows;
+}
+
+// The page's rows: each scene's roles, its shown view's images, and ssaolab's shipped presets
+// measured there, the most accurate within the tuned engine's time chosen.
+std::vector<PageRow> pageRows(const TuneOptions& o, const EngineTuner& t, const Outcome& r, const std::vector<std::vector<Sample>>& s) {
+    std::unique_ptr<HeadlessRunner> runner;
+    std::vector<PageRow> rows;
+    for (const SceneScore& sc : r.perScene) {
+        PageRow row{t.scenes()[sc.scene].name, roleName(sc.role), sc.views,
+                    {"defaults", std::sqrt(sc.mse[0]), sc.ms[0], nullptr}, {"tuned", std::sqrt(sc.mse[1]), sc.ms[1], nullptr}};
+        for (size_t side = 0; side < 2; ++side)
+            for (const Sample& x : s[side]) {
+                const TuneView& v = t.views()[x.view];
+                if (v.scene != sc.scene || v.role != sc.role || !v.shown || !x.eval) continue;
+                row.shownView = v.viewpoint, row.ref = &v.ref;
+                (side == 0 ? row.defaults : row.tuned).eval = x.eval;
+                if (side == 0) continue;
+                if (!runner) runner = std::make_unique<HeadlessRunner>(HeadlessRunner::Options{o.shaderDir, false});
+                ProgressBar bar("  ssaolab's presets on " + row.scene + " " + v.viewpoint, !o.quiet);
+                const float radius = o.radiusScene * 2.0f * t.scenes()[sc.scene].bounds.radius();
+                const auto points = measureShippedPresets(*runner, t.scenes()[sc.scene], v.camera, v.ref, radius, 1,
+                                                          std::min(o.engine.timingFrames, 5));
+                bar.update(1);
+                if (const PresetPoint* best = mostAccurateWithin(points, x.ms))
+                    row.hasSsaolab = true, row.ssaolab = {best->preset, best->rmse, best->ms, best->eval};
+            }
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+void writePage(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& knobs, const Outcome& r,
+               const std::vector<std::vector<Sample>>& s, double seconds) {
+    const EngineTable& tab = t.table();
+    EnginePage p{tab.title, tab.package, tab.version, o.size, scoresJson(o, r)["metric"].get<std::string>(),
+                 runFacts("Chromium (WebGL 2) for the engine; EGL for ssaolab"), settingRows(t, knobs),
+                 r.verdict.before, r.verdict.after, r.ms[1] / r.ms[0], seconds, pageRows(o, t, r, s)};
+    writeFileAtomically(pagePath(o), engineTunePageHtml(p));
+    if (!o.quiet) std::printf("saved %s\n", pagePath(o).c_str());
+}
+
+nlohmann::json costJson(const EngineTable& tab, const TuneView& v, const std::vector<Knob>& knobs, const std::vector<BudgetRung>& rungs) {
+    nlohmann::json values = nlohmann::json::object(), ladder = nlohmann::json::array();
+    for (const EngineParam& p : tab.params)
+        if (p.role == EngineParam::Role::Cost && v.base.count(p.name)) values[p.name] = engineValueJson(p, v.base.at(p.name));
+    for (const Knob& k : knobs)
+        if (k.p->role == EngineParam::Role::Cost) values[k.p->name] = engineValueJson(*k.p, k.value);
+    if (rungs.empty()) return {{"values", values}, {"note", "no budget given: the engine's defaults"}};
+    for (const BudgetRung& r : rungs)
+        ladder.push_back({{"factor", r.factor}, {"ao_ms", r.ms}, {"chosen", r.chosen}});
+    return {{"values", values}, {"budget_ms", rungs.front().budget}, {"rungs", ladder},
+            {"note", "the sample counts x factor whose training views' mean AO time fits the budget (the largest; the smallest when none fits)"}};
+}
+
+void save(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& knobs, const std::vector<BudgetRung>& rungs,
+          const Outcome& r, double seconds, int w, int h) {
+    const EngineTable& tab = t.table();
+    const TuneView& v = t.firstTrainView();
+    const auto values = t.valuesFor(knobs, v);
+    std::vector<std::pair<std::string, double>> ordered;
+    nlohmann::json settings = nlohmann::json::object(), defaults = nlohmann::json::object(), search = nlohmann::json::object();
+    for (const Knob& k : knobs) {
+        ordered.emplace_back(k.p->name, values.at(k.p->name));
+        settings[k.p->name] = engineValueJson(*k.p, values.at(k.p->name));
+        defaults[k.p->name] = engineValueJson(*k.p, exportedValue(v.base.at(k.p->name)));
+        if (k.p->role == EngineParam::Role::Shape)
+            search[k.p->name] = k.p->relative    ? nlohmann::json{{"x_make_peers_value", exportedValue(k.value)}}
+                                : k.p->perRadius ? nlohmann::json{{k.p->perRadius == 1 ? "x_R" : "x_1_over_R", exportedValue(k.value)}}
+                                                 : nlohmann::json{{"value", exportedValue(k.value)}};
+    }
+    const Scene& sc = t.scenes()[v.scene];
+    char head[400];
+    std::snprintf(head, sizeof head, "fitted to the ray-traced reference on %s (view '%s', %dx%d, R = %.4g scene units); held-out RMSE %.4f -> %.4f",
+                  sc.name.c_str(), v.viewpoint.c_str(), w, h, o.radiusScene * 2.0 * sc.bounds.radius(), r.verdict.before, r.verdict.after);
+    const std::string snippet = engineSnippet(tab, ordered, {"ssaolab tune --engine " + tab.engine + ": " + tab.title + " (" + tab.package + " " + tab.version + ")", head});
+    const std::string js = snippetPath(o);
+    std::error_code ec;
+    const nlohmann::json out = {
+        {"engine", tab.engine}, {"title", tab.title}, {"package", tab.package}, {"version", tab.version},
+        {"settings", settings}, {"make_peers_settings", defaults}, {"search", search},
+        {"cost_settings", costJson(tab, v, knobs, rungs)},
+        {"view", {{"scene", std::filesystem::absolute(t.sceneSpec(v.scene), ec).string()}, {"viewpoint", v.viewpoint},
+                  {"camera", cameraToJson(cameraToFile(v.camera, sc))}, {"size", {w, h}}, {"radius", o.radiusScene * 2.0 * sc.bounds.radius()}}},
+        {"scores", scoresJson(o, r)}, {"per_scene", perSceneJson(t, r)}, {"tuning_seconds", seconds}, {"browser_sessions", t.sessions()},
+        {"snippet", std::filesystem::path(js).filename().string()}};
+    writeFileAtomically(o.out, dumpJson(out) + "\n");
+    writeFileAtomically(js, snippet);
+    if (!o.quiet) std::printf("saved %s and %s\n", o.out.c_str(), js.c_str());
+}
+
+// Before the browser is looked for: what no engine run could do.
+void refuseTechniqueOptions(const TuneOptions& o, const EngineTable& t) {
+    if (o.scenes.empty()) throw Error("--engine needs --scene FILE.gltf (the engine loads the scene in the browser)");
+    std::vector<std::string> specs = o.scenes;
+    specs.insert(specs.end(), o.heldOutScenes.begin(), o.heldOutScenes.end());
+    for (size_t i = 0; i < specs.size(); ++i) {
+        if (specs[i].rfind("builtin:", 0) == 0)
+            throw Error("--engine runs " + t.title + " on glTF files (three.js loads the scene): " + specs[i] + " is built into ssaolab");
+        if (std::find(specs.begin(), specs.begin() + long(i), specs[i]) != specs.begin() + long(i))
+            throw Error("--scene " + specs[i] + " is named twice: a scene trains or is held out, once");
+    }
+    if (!o.preset.empty()) throw Error("--preset starts a technique's tune; --engine starts from the engine's own defaults");
+    if (!o.sets.empty()) throw Error("--set KEY=VALUE sets ssaolab's parameters; --engine tunes the engine's own");
+    if (o.objective != "still") throw Error("--objective motion is not measured for --engine (a still frame per view)");
+    if (o.engine.budgetMs > 0 && o.engine.budgetRatio > 0) throw Error("--budget-ms and --budget-ratio: give one budget");
+    const bool scales = std::any_of(t.params.begin(), t.params.end(), [](const EngineParam& p) { return p.scalesWithBudget; });
+    if ((o.engine.budgetMs > 0 || o.engine.budgetRatio > 0) && !scales)
+        throw Error(t.title + " has no sample count a budget could scale (its cost parameters change the denoiser only): drop --budget-ms/--budget-ratio");
+}
+
+} // namespace
+
+int runEngineTune(const TuneOptions& o) {
+    const auto start = std::chrono::steady_clock::now();
+    int w = 0, h = 0;
+    parseSizeOption(o.size, w, h);
+    EngineTable table = findEngine(o.engine.engine);
+    refuseTechniqueOptions(o, table);
+    checkOutputPath(o.out); // before minutes of tuning
+    checkOutputPath(snippetPath(o));
+    checkOutputPath(pagePath(o));
+    EngineTuner t(o, std::move(table), w, h);
+    t.prepare();
+    t.measureDefaults();
+    std::vector<Knob> knobs = t.chooseKnobs();
+    t.search(knobs, t.trainScore());
+    const std::vector<BudgetRung> rungs = t.chooseCost(knobs);
+    const std::vector<std::vector<Sample>> final = t.finalMeasure(knobs);
+    const Outcome r = judge(t, final);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    printOutcome(o, t, knobs, r, seconds);
+    if (r.verdict.overfit && !o.saveOverfit) throw Error(refusalText(r.verdict, o.out)); // nothing written
+    save(o, t, knobs, rungs, r, seconds, w, h);
+    writePage(o, t, knobs, r, final, seconds);
+    if (r.verdict.overfit)
+        printWarnings({overfitSavedText(r.verdict, o.out)});
+    else if (!r.verdict.worse.empty())
+        printWarnings({worseScenesText(r.verdict)});
+    return 0;
+}
+
+} // namespace ssao

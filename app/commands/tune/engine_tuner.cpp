@@ -1,0 +1,251 @@
+#include "commands/tune/engine_tuner.h"
+
+#include "engines/engine_snippet.h"
+#include "measure/viewpoints.h"
+#include "cli/headless_runner.h"
+#include "cli/progress_bar.h"
+#include "reference/reference_cache.h"
+#include "cli/scene_options.h"
+#include "scene/view_fit.h"
+#include "settings/preset.h"
+#include "util/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ssao {
+
+double meanOf(const std::vector<double>& v) {
+    double s = 0;
+    for (double x : v)
+        s += x;
+    return v.empty() ? std::numeric_limits<double>::quiet_NaN() : s / double(v.size());
+}
+
+namespace {
+
+bool sameValues(const KnobSet& a, const KnobSet& b) {
+    if (a.size() != b.size()) return false;
+    for (size_t i = 0; i < a.size(); ++i)
+        if (a[i].p != b[i].p || a[i].value != b[i].value) return false;
+    return true;
+}
+
+double meanMs(const std::vector<Sample>& v) {
+    std::vector<double> ms;
+    for (const Sample& x : v)
+        ms.push_back(x.ms);
+    return meanOf(ms);
+}
+
+bool trainOnly(TuneRole r) {
+    return r == TuneRole::Train;
+}
+
+bool every(TuneRole) {
+    return true;
+}
+
+} // namespace
+
+EngineTuner::EngineTuner(const TuneOptions& o, EngineTable table, int w, int h)
+    : o_(o), table_(std::move(table)), tools_(locateEngineTools(o.engine.modules, table_)), w_(w), h_(h) {}
+
+EngineTuner::~EngineTuner() = default;
+
+void EngineTuner::prepare() {
+    std::vector<std::string> specs = o_.scenes;
+    specs.insert(specs.end(), o_.heldOutScenes.begin(), o_.heldOutScenes.end());
+    for (size_t si = 0; si < specs.size(); ++si) {
+        scenes_.push_back(loadNamedScene(specs[si]));
+        addViews(si, specs[si], si >= o_.scenes.size());
+    }
+}
+
+void EngineTuner::measureDefaults() {
+    const auto samples = measure({KnobSet{}}, every, 0, true);
+    for (const Sample& s : samples[0])
+        defaults_[s.view] = s.mse;
+}
+
+std::vector<Knob> EngineTuner::chooseKnobs() const {
+    std::vector<Knob> knobs;
+    for (const EngineParam& p : table_.params) {
+        const bool named = std::find(o_.knobs.begin(), o_.knobs.end(), p.name) != o_.knobs.end();
+        if (p.role == EngineParam::Role::Shape && (o_.knobs.empty() || named)) {
+            const TuneView& v = views_[firstTrain()];
+            knobs.push_back({&p, p.searchLo, p.searchHi, p.relative ? 1.0 : p.perRadius ? v.base.at(p.name) / std::pow(v.radius, p.perRadius)
+                                                                                     : v.base.at(p.name)});
+        }
+    }
+    for (const std::string& k : o_.knobs) {
+        const EngineParam* p = table_.find(k);
+        if (!p || p->role != EngineParam::Role::Shape)
+            throw Error("--knob " + k + " is not a shape parameter of " + table_.engine + " (" + shapeNames() +
+                        "; cost parameters are chosen by a budget, not fitted)");
+    }
+    return knobs;
+}
+
+double EngineTuner::trainScore() const {
+    std::vector<double> v;
+    for (const TuneView& view : views_)
+        if (view.role == TuneRole::Train) v.push_back(defaults_.at(size_t(&view - views_.data())));
+    return meanOf(v);
+}
+
+void EngineTuner::search(std::vector<Knob>& knobs, double best) {
+    ProgressBar bar("  search " + std::to_string(knobs.size()) + " parameters of " + table_.title, !o_.quiet);
+    const int total = o_.rounds * int(knobs.size());
+    int done = 0;
+    for (int round = 0; round < o_.rounds; ++round)
+        for (Knob& k : knobs) {
+            const size_t ki = size_t(&k - knobs.data());
+            std::vector<KnobSet> cands;
+            for (int i = 0; i < o_.grid; ++i) {
+                cands.push_back(knobs);
+                cands.back()[ki].value = gridValue(k, i);
+            }
+            const auto samples = measure(cands, trainOnly, 0, false);
+            for (size_t c = 0; c < cands.size(); ++c) {
+                std::vector<double> mse;
+                for (const Sample& s : samples[c])
+                    mse.push_back(s.mse);
+                if (const double m = meanOf(mse); m < best) best = m, k.value = cands[c][ki].value;
+            }
+            shrink(k);
+            bar.update(double(++done) / total);
+        }
+}
+
+std::vector<BudgetRung> EngineTuner::chooseCost(std::vector<Knob>& knobs) {
+    const EngineTuneOptions& e = o_.engine;
+    if (e.budgetMs <= 0 && e.budgetRatio <= 0) return {};
+    std::vector<KnobSet> cands = {KnobSet{}};
+    std::vector<double> factors;
+    for (double f : {0.25, 0.5, 1.0, 2.0, 4.0}) {
+        KnobSet c = knobs;
+        for (const EngineParam& p : table_.params)
+            if (p.scalesWithBudget) c.push_back({&p, 0, 0, scaledCost(p, f)});
+        if (std::any_of(cands.begin() + 1, cands.end(), [&](const KnobSet& x) { return sameValues(x, c); })) continue;
+        cands.push_back(c), factors.push_back(f);
+    }
+    ProgressBar bar("  time " + std::to_string(factors.size()) + " sample counts of " + table_.title, !o_.quiet);
+    const auto samples = measure(cands, trainOnly, e.timingFrames, false);
+    bar.update(1);
+    const double budget = e.budgetMs > 0 ? e.budgetMs : e.budgetRatio * meanMs(samples[0]);
+    std::vector<BudgetRung> rungs;
+    size_t chosen = 1; // the cheapest when none fits
+    for (size_t c = 1; c < cands.size(); ++c) {
+        rungs.push_back({factors[c - 1], meanMs(samples[c]), budget, false});
+        if (rungs.back().ms <= budget) chosen = c;
+    }
+    rungs[chosen - 1].chosen = true;
+    knobs = cands[chosen];
+    return rungs;
+}
+
+std::vector<std::vector<Sample>> EngineTuner::finalMeasure(const std::vector<Knob>& tuned) {
+    return measure({KnobSet{}, tuned}, every, o_.engine.timingFrames, false, true);
+}
+
+std::map<std::string, double> EngineTuner::valuesFor(const KnobSet& c, const TuneView& v) const {
+    std::map<std::string, double> out;
+    for (const Knob& k : c) {
+        const double x = k.p->relative ? v.base.at(k.p->name) * k.value : k.p->perRadius ? std::pow(v.radius, k.p->perRadius) * k.value : k.value;
+        out[k.p->name] = exportedValue(k.p->type == EngineParam::Type::Integer ? std::round(x) : x);
+    }
+    return out;
+}
+
+int EngineTuner::sessions() const {
+    int n = 0;
+    for (const auto& r : runners_)
+        n += r->sessions();
+    return n;
+}
+
+void EngineTuner::addViews(size_t si, const std::string& spec, bool heldOutScene) {
+    const Scene& sc = scenes_.back();
+    const float radius = o_.radiusScene * 2.0f * sc.bounds.radius();
+    ReferenceProvider provider(sc);
+    std::vector<EngineView> engineViews;
+    int k = 0;
+    for (const auto& [name, cam] : viewpoints(defaultCamera(sc), o_.views)) {
+        const Camera c = effectiveCamera(cam, sc.bounds); // the clip planes ssaolab's renderer fits
+        ProgressBar bar("  reference " + sc.name + " " + name, !o_.quiet);
+        ReferenceImage ref = provider.get(c, w_, h_, {radius, o_.referenceRays}, [&](double f) { bar.update(f); });
+        const TuneRole role = heldOutScene ? TuneRole::HeldOutScene : k % 2 == 0 ? TuneRole::Train : TuneRole::HeldOutView;
+        views_.push_back({si, k, name, role, c, std::move(ref), {}, radius, k == (heldOutScene ? 0 : 1)});
+        engineViews.push_back({cameraToJson(cameraToFile(c, sc)), radius});
+        ++k;
+    }
+    specs_.push_back(spec);
+    runners_.push_back(std::make_unique<EngineRunner>(tools_, table_, spec, w_, h_, std::move(engineViews)));
+}
+
+std::vector<std::vector<Sample>> EngineTuner::measure(const std::vector<KnobSet>& cands, const std::function<bool(TuneRole)>& want,
+                                                      int frames, bool recordBase, bool keepImages) {
+    std::vector<std::vector<Sample>> out(cands.size());
+    for (size_t si = 0; si < runners_.size(); ++si) {
+        std::vector<EngineJob> jobs;
+        std::vector<std::pair<size_t, size_t>> of; // (candidate, view) of each job
+        for (size_t c = 0; c < cands.size(); ++c)
+            for (size_t v = 0; v < views_.size(); ++v)
+                if (views_[v].scene == si && want(views_[v].role)) {
+                    jobs.push_back({views_[v].index, valuesFor(cands[c], views_[v]), frames});
+                    of.emplace_back(c, v);
+                }
+        if (jobs.empty()) continue;
+        const std::vector<EngineResult> res = runners_[si]->run(jobs);
+        for (size_t j = 0; j < jobs.size(); ++j) {
+            TuneView& view = views_[of[j].second];
+            auto e = std::make_shared<Evaluation>(evaluate(res[j].ao, view.ref));
+            if (e->metrics.nonFinite > 0) throw Error(table_.title + " returned non-finite AO on " + scenes_[si].name);
+            if (recordBase) view.base = res[j].values;
+            const double rmse = e->metrics.rmse;
+            if (!(keepImages && view.shown)) e.reset();
+            out[of[j].first].push_back({of[j].second, rmse * rmse, res[j].aoMs, std::move(e)});
+        }
+    }
+    return out;
+}
+
+double EngineTuner::scaledCost(const EngineParam& p, double f) const {
+    double v = p.defaultValue * f;
+    if (p.type == EngineParam::Type::Integer) v = std::max(1.0, std::round(v));
+    return p.range ? std::clamp(v, p.range->first, p.range->second) : v;
+}
+
+double EngineTuner::gridValue(const Knob& k, int i) const {
+    const double t = i / double(o_.grid - 1);
+    return k.p->log ? std::exp(std::log(k.lo) + (std::log(k.hi) - std::log(k.lo)) * t) : k.lo + (k.hi - k.lo) * t;
+}
+
+void EngineTuner::shrink(Knob& k) const {
+    if (k.p->log) {
+        const double half = (std::log(k.hi) - std::log(k.lo)) / 4.0, c = std::log(k.value);
+        k.lo = std::max(k.p->searchLo, std::exp(c - half));
+        k.hi = std::min(k.p->searchHi, std::exp(c + half));
+    } else {
+        const double half = (k.hi - k.lo) / 4.0;
+        k.lo = std::max(k.p->searchLo, k.value - half);
+        k.hi = std::min(k.p->searchHi, k.value + half);
+    }
+}
+
+size_t EngineTuner::firstTrain() const {
+    for (size_t i = 0; i < views_.size(); ++i)
+        if (views_[i].role == TuneRole::Train) return i;
+    throw Error("no training view");
+}
+
+std::string EngineTuner::shapeNames() const {
+    std::string s;
+    for (const EngineParam& p : table_.params)
+        if (p.role == EngineParam::Role::Shape) s += (s.empty() ? "shape parameters: " : ", ") + p.name;
+    return s;
+}
+
+} // namespace ssao

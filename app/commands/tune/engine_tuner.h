@@ -1,0 +1,109 @@
+// `tune --engine`'s search (commands/tune/engine_tune.h): the scenes' views and references, one engine
+// runner per scene, and the measurements of candidate settings on them. Coordinate search over the
+// engine's shape parameters only (each over a grid inside a bracket that halves every round, as
+// `tune` searches); a time budget picks the sample counts afterwards (chooseCost), never the error.
+#pragma once
+#include "engines/engine_runner.h"
+#include "engines/engine_table.h"
+#include "commands/tune/tune_command.h"
+#include "reference/reference_ao.h"
+#include "metrics/evaluate.h"
+#include "scene/scene.h"
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ssao {
+
+// Which score a view counts in: fitted on; held out of a training scene; of a held-out scene.
+enum class TuneRole { Train, HeldOutView, HeldOutScene };
+
+struct TuneView {
+    size_t scene;
+    int index; // in its scene's runner
+    std::string viewpoint;
+    TuneRole role;
+    Camera camera; // fitted clip planes, scene frame
+    ReferenceImage ref;
+    std::map<std::string, double> base; // what the engine ran with at its make-peers settings here
+    float radius = 0;                   // R, scene units
+    bool shown = false; // the scene's first held-out view: its images are kept for the report page
+};
+
+struct Knob {
+    const EngineParam* p;
+    // value: x the view's make-peers value when p->relative, x the view's R when p->perRadius, else the value itself
+    double lo, hi, value;
+};
+using KnobSet = std::vector<Knob>; // empty: the make-peers settings
+
+struct BudgetRung {
+    double factor, ms, budget; // x the engine's default counts; training views' mean AO ms
+    bool chosen;
+};
+
+struct Sample {
+    size_t view;
+    double mse, ms;
+    std::shared_ptr<const Evaluation> eval; // the AO judged, on shown views when kept
+};
+
+double meanOf(const std::vector<double>& v);
+
+class EngineTuner {
+  public:
+    EngineTuner(const TuneOptions& o, EngineTable table, int w, int h);
+    ~EngineTuner();
+
+    // Scenes (glTF files: the browser loads them), their viewpoints and references, one runner each.
+    void prepare();
+    // The make-peers settings on every view: what each ran with becomes its base.
+    void measureDefaults();
+    std::vector<Knob> chooseKnobs() const;
+    double trainScore() const;
+    // Coordinate search: each knob over a grid inside its bracket, which halves every round.
+    void search(std::vector<Knob>& knobs, double best);
+    // The time budget's choice of the cost rows that scale with it: each rung multiplies them all by
+    // one factor; the training views' mean AO time of each rung (timed, with the fitted shape) picks
+    // the largest that fits. Returns the rungs measured, the chosen one marked; none without a budget.
+    std::vector<BudgetRung> chooseCost(std::vector<Knob>& knobs);
+    // Defaults and tuned on every view, timed: [0] the defaults' samples, [1] the tuned ones' (the
+    // shown views' images kept).
+    std::vector<std::vector<Sample>> finalMeasure(const std::vector<Knob>& tuned);
+    // The engine's value of each knob on a view.
+    std::map<std::string, double> valuesFor(const KnobSet& c, const TuneView& v) const;
+
+    const std::vector<TuneView>& views() const { return views_; }
+    const TuneView& firstTrainView() const { return views_[firstTrain()]; }
+    const std::vector<Scene>& scenes() const { return scenes_; }
+    const EngineTable& table() const { return table_; }
+    int sessions() const;
+    std::string sceneSpec(size_t i) const { return specs_[i]; }
+
+  private:
+    void addViews(size_t si, const std::string& spec, bool heldOutScene);
+    // Every candidate on every view `want` keeps, one browser session per scene; recordBase: each
+    // view's base becomes what the engine ran with.
+    std::vector<std::vector<Sample>> measure(const std::vector<KnobSet>& cands, const std::function<bool(TuneRole)>& want,
+                                             int frames, bool recordBase, bool keepImages = false);
+    double scaledCost(const EngineParam& p, double f) const;
+    double gridValue(const Knob& k, int i) const;
+    void shrink(Knob& k) const;
+    size_t firstTrain() const;
+    std::string shapeNames() const;
+
+    const TuneOptions& o_;
+    EngineTable table_;
+    EngineTools tools_;
+    int w_, h_;
+    std::vector<Scene> scenes_;
+    std::vector<std::string> specs_;
+    std::vector<TuneView> views_;
+    std::vector<std::unique_ptr<EngineRunner>> runners_;
+    std::map<size_t, double> defaults_; // view -> MSE at the make-peers settings
+};
+
+} // namespace ssao

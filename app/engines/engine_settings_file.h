@@ -1,0 +1,31 @@
+// A `tune --engine --out` result read back as the fit it is, for `bench --engine-settings` and the
+// explorer's Front tab alike: a knob fitted relative to the view's make-peers value is that factor
+// (the runner multiplies, EngineJob::scale), one fitted per R is that multiple of R^exponent of the
+// view it runs on, and every other setting (cost settings included) is the engine's own value - so
+// a view of another scene gets what `tune` gave its held-out views.
+#pragma once
+#include "engines/engine_table.h"
+
+#include <map>
+#include <string>
+#include <utility>
+
+namespace ssao {
+
+struct TunedEngine {
+    EngineTable table;
+    std::string file;
+    std::map<std::string, double> scale;                       // x the view's make-peers value
+    std::map<std::string, std::pair<double, int>> perRadius;   // factor x R^exponent
+    std::map<std::string, double> values;                      // the engine's value
+};
+
+// Throws ssao::Error (one line naming the file and the field): not a tune result, another package
+// version than the installed table's, a parameter the engine lacks or fixes, a non-finite value.
+TunedEngine readTunedEngine(const std::string& file);
+
+// The values a job sets on a view of world radius R: `values` and `perRadius` resolved (integers
+// rounded, 6 significant digits); `scale` goes to the runner as it is.
+std::map<std::string, double> tunedJobValues(const TunedEngine& t, double radius);
+
+} // namespace ssao

@@ -1,0 +1,28 @@
+// Writes a benchmark's results: results.csv (per view), summary.csv (per configuration),
+// results.json (both, with the run's facts), report.md (the Pareto front and every row against
+// the baseline), report.html (results/report_html.h) and the plot through plot_pareto.py.
+#pragma once
+#include "results/bench_answer.h"
+#include "results/bench_results.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace ssao {
+
+// `answer`: the answer to the user's question (bench --budget-ms ...), which opens both reports.
+void writeBenchFiles(const BenchRun& run, const std::string& dir, const Answer* answer = nullptr);
+
+// Markdown: the answer (if asked), the run's facts, the front, the headline sentences and the full table.
+std::string benchMarkdown(const BenchRun& run, const std::string& plotFile, const Answer* answer = nullptr);
+// Runs plot_pareto.py; returns false (after printing one line) when Python/matplotlib is missing.
+bool plotBench(const std::string& dir, const std::string& title, bool quiet);
+
+// The rows quoted in the closing line: the best configuration whose error is at most the
+// baseline's (fastest such), and the lowest-error configuration. npos when none.
+size_t fastestAtMostBaselineError(const BenchRun& run);
+size_t mostAccurate(const BenchRun& run);
+
+} // namespace ssao
