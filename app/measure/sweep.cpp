@@ -155,7 +155,15 @@ class SweepBuilder {
         if (!g.contains("vary")) return out;
         if (!g["vary"].is_object()) throw Error(where + ".vary: expected {\"key\": [values]}");
         for (auto& [k, v] : g["vary"].items()) {
-            if (!v.is_array() || v.empty()) throw Error(where + ".vary: '" + k + "' needs a non-empty list");
+            if (v == "all") { // every choice of a choice row: ao.technique needs no list to keep
+                const Param* p = findParam(k);
+                if (!p || p->type != Param::Type::Enum)
+                    throw Error(where + ".vary: '" + k + "': \"all\" needs a parameter with choices");
+                out.emplace_back(k, nlohmann::json(p->choices));
+                continue;
+            }
+            if (!v.is_array() || v.empty())
+                throw Error(where + ".vary: '" + k + "' needs a non-empty list, or \"all\" for every choice");
             out.emplace_back(k, v);
         }
         return out;

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <set>
 
 using namespace ssao;
@@ -55,6 +56,29 @@ TEST(BenchSweep, GroupsExpandToProductsDeduplicatedWithTheBaselineFirst) {
     EXPECT_EQ(s.configs[1].label, "denoise.kind=none kernel.noise=none kernel.samples=4");
     EXPECT_EQ(s.configs[4].settings.kernel.samples, 8);
     EXPECT_EQ(s.configs[5].group, "technique defaults");
+}
+
+TEST(BenchSweep, AllVariesEveryChoiceSoNoSweepListsTheTechniques) {
+    const Sweep s = parseSweep(nlohmann::json::parse(R"({"groups": [{"name": "every", "vary": {"ao.technique": "all"}}]})"),
+                               "test");
+    std::vector<std::string> swept;
+    for (const BenchConfig& c : s.configs)
+        if (c.group == "every") swept.push_back(c.keys["ao.technique"].get<std::string>());
+    std::vector<std::string> ids;
+    for (const auto& t : techniques())
+        ids.push_back(t.id);
+    EXPECT_EQ(swept, ids);
+    // The shipped sweep lists no group of every technique: a new one joins "all" by registering.
+    std::ifstream in(std::string(SSAOLAB_SOURCE_DIR) + "/assets/bench/sweep_builtin.json");
+    const nlohmann::json builtin = nlohmann::json::parse(in);
+    int alls = 0;
+    for (const auto& g : builtin["groups"]) {
+        if (!g.contains("vary") || !g["vary"].contains("ao.technique")) continue;
+        const nlohmann::json& v = g["vary"]["ao.technique"];
+        alls += v == "all";
+        if (v.is_array()) EXPECT_LT(v.size(), 3u) << g.dump() << ": \"all\" instead of a list of the techniques";
+    }
+    EXPECT_GE(alls, 1);
 }
 
 TEST(BenchSweep, AnyPresetCanBeTheBaseline) {
@@ -119,6 +143,9 @@ TEST(BenchSweep, BadSweepsAreRefusedNamingTheProblem) {
         ADD_FAILURE() << "accepted: " << text;
     };
     fails(R"({"groups": [{"vary": {"kernel.samples": []}}]})", "non-empty");
+    fails(R"({"groups": [{"vary": {"kernel.samples": "all"}}]})", "needs a parameter with choices");
+    fails(R"({"groups": [{"vary": {"no.such_key": "all"}}]})", "needs a parameter with choices");
+    fails(R"({"groups": [{"vary": {"ao.technique": "every"}}]})", "non-empty list");
     fails(R"({"groups": [{"vary": {"kernel.samples": [0]}}]})", "kernel.samples");
     fails(R"({"groups": [{"set": {"ao.radius_scene": 0.1}}]})", "radius");
     fails(R"({"groups": [{"sett": {}}]})", "sett");
