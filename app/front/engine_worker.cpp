@@ -52,70 +52,15 @@ std::string engineToolsReason(const std::string& message) {
     return oneLine(at == std::string::npos ? message : message.substr(at + cut.size()));
 }
 
-EngineWorker::EngineWorker(std::function<void()> wake) : wake_(std::move(wake)), thread_([this] { run(); }) {}
-
-EngineWorker::~EngineWorker() {
-    {
-        std::lock_guard<std::mutex> lock(m_);
-        quit_ = true;
-        pending_.reset();
-    }
-    cancel_ = true;
-    cv_.notify_all();
-    thread_.join();
-}
+// Normal priority, unlike the reference's tracers: the browser's frames are timed, and under the
+// idle policy any other process would stretch them. It starts once ssaolab's candidates are done.
+EngineWorker::EngineWorker(std::function<void()> wake)
+    : jobs_([this](const Job& job) { measure(job); }, std::move(wake)) {}
 
 void EngineWorker::start(Job job) {
-    std::lock_guard<std::mutex> lock(m_);
-    if (job.key == state_.key) return;
-    cancel_ = true; // the running job, if any, stops after its session
-    state_ = State{};
-    state_.key = job.key;
-    state_.total = job.candidates.size();
-    state_.version = ++publications_;
-    pending_ = std::move(job);
-    cv_.notify_all();
-}
-
-void EngineWorker::cancel() {
-    std::lock_guard<std::mutex> lock(m_);
-    cancel_ = true;
-    pending_.reset();
-    state_ = State{};
-    state_.version = ++publications_;
-}
-
-EngineWorker::State EngineWorker::state() const {
-    std::lock_guard<std::mutex> lock(m_);
-    return state_;
-}
-
-void EngineWorker::run() {
-    // Normal priority, unlike the reference's tracers: the browser's frames are timed, and under the
-    // idle policy any other process would stretch them. It starts once ssaolab's candidates are done.
-    for (;;) {
-        Job job;
-        {
-            std::unique_lock<std::mutex> lock(m_);
-            cv_.wait(lock, [&] { return quit_ || pending_.has_value(); });
-            if (quit_) return;
-            job = std::move(*pending_);
-            pending_.reset();
-            cancel_ = false;
-        }
-        measure(job);
-    }
-}
-
-bool EngineWorker::publish(const Job& job, const std::function<void(State&)>& change) {
-    {
-        std::lock_guard<std::mutex> lock(m_);
-        if (state_.key != job.key || cancel_) return false;
-        change(state_);
-        state_.version = ++publications_;
-    }
-    if (wake_) wake_();
-    return true;
+    State fresh;
+    fresh.total = job.candidates.size();
+    jobs_.start(std::move(job), std::move(fresh)); // the running job, if any, stops after its session
 }
 
 void EngineWorker::measure(const Job& job) {

@@ -8,21 +8,17 @@
 #include "base/image.h"
 #include "engines/engine_runner.h"
 #include "front/engine_candidates.h"
+#include "measure/latest_job.h"
 #include "metrics/error_metrics.h"
 #include "reference/reference_ao.h"
 
 #include <nlohmann/json.hpp>
 
-#include <atomic>
-#include <condition_variable>
 #include <functional>
 #include <limits>
 #include <map>
 #include <memory>
-#include <mutex>
-#include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace ssao {
@@ -65,31 +61,22 @@ class EngineWorker {
 
     // `wake` (may be empty) is called from the worker thread whenever the state changes.
     explicit EngineWorker(std::function<void()> wake = {});
-    ~EngineWorker(); // cancels the job; waits for a browser session under way to end
     EngineWorker(const EngineWorker&) = delete;
     EngineWorker& operator=(const EngineWorker&) = delete;
 
     void start(Job job);
-    void cancel(); // forgets the job (its session under way ends, its results are dropped)
-    State state() const;
+    void cancel() { jobs_.cancel(); } // forgets the job (its session under way ends, its results are dropped)
+    State state() const { return jobs_.state(); }
 
   private:
-    void run();
     void measure(const Job& job);
-    bool publish(const Job& job, const std::function<void(State&)>& change); // false: cancelled
+    bool publish(const Job& job, const std::function<void(State&)>& change) { return jobs_.publish(job, change); }
     // One engine's candidates of the job (all of one table), in one browser session.
     void measureEngine(const Job& job, const std::vector<const EngineCandidate*>& cands, const EngineTable& t,
                        const EngineTools& tools);
 
-    std::function<void()> wake_;
-    mutable std::mutex m_;
-    std::condition_variable cv_;
-    std::optional<Job> pending_;
-    State state_;
-    unsigned publications_ = 0;
-    bool quit_ = false;
-    std::atomic<bool> cancel_{false};
-    std::thread thread_; // last: started once everything above exists
+    // Last: destroyed first, so its thread ends (waiting for a session under way) before the rest.
+    LatestJob<Job, State> jobs_;
 };
 
 // The line locateEngineTools throws, without the command it names ("tune --engine n8ao runs N8AO

@@ -3,16 +3,12 @@
 // references and the reprojection need no GL. References come from and go to the disk cache, so a
 // view's path is traced once across sessions. A new job cancels the running one between frames.
 #pragma once
+#include "measure/latest_job.h"
 #include "measure/motion_measure.h"
 
-#include <atomic>
-#include <condition_variable>
 #include <functional>
 #include <memory>
-#include <mutex>
-#include <optional>
 #include <string>
-#include <thread>
 
 namespace ssao {
 
@@ -32,34 +28,26 @@ class MotionTruthWorker {
         double fraction = 0;                      // of the path traced
         std::shared_ptr<const MotionTruth> truth; // once done
         std::string error;                        // when the trace failed
+        unsigned version = 0;                     // changes with every publication
     };
 
     // `wake` (may be empty) is called from the worker thread on progress and when done.
     explicit MotionTruthWorker(std::function<void()> wake = {});
-    ~MotionTruthWorker(); // cancels the job and joins the thread
     MotionTruthWorker(const MotionTruthWorker&) = delete;
     MotionTruthWorker& operator=(const MotionTruthWorker&) = delete;
 
-    void start(Job job);
-    void cancel(); // forgets the job (the thread stops at the next path frame)
-    State state() const;
+    void start(Job job) { jobs_.start(std::move(job)); } // the running job stops at its next path frame
+    void cancel() { jobs_.cancel(); }                    // forgets the job
+    State state() const { return jobs_.state(); }
 
   private:
-    void run();
     void trace(const Job& job);
 
-    std::function<void()> wake_;
-    mutable std::mutex m_;
-    std::condition_variable cv_;
-    std::optional<Job> pending_;
-    State state_;
-    bool quit_ = false;
-    std::atomic<bool> cancel_{false};
     // Worker thread only: the provider (its BVH) of the last scene traced, and that scene.
     std::shared_ptr<const Scene> providerScene_;
     std::string providerDir_;
     std::unique_ptr<ReferenceProvider> provider_;
-    std::thread thread_; // last: started once everything above exists
+    LatestJob<Job, State> jobs_; // last: its thread uses the members above
 };
 
 } // namespace ssao
