@@ -64,16 +64,18 @@ TunedEngine readTunedEngine(const std::string& file) {
     return t;
 }
 
-std::map<std::string, double> tunedJobValues(const TunedEngine& t, double radius) {
+std::map<std::string, double> jobValues(const EngineTable& table,
+                                        const std::map<std::string, std::pair<double, int>>& perRadius,
+                                        const std::map<std::string, double>& values, double radius) {
     std::map<std::string, double> out;
     auto put = [&](const std::string& name, double x) {
-        const EngineParam* p = t.table.find(name);
-        if (!p) throw Error(t.table.engine + " has no parameter " + name);
+        const EngineParam* p = table.find(name);
+        if (!p) throw Error(table.engine + " has no parameter " + name);
         out[name] = exportedValue(p->type == EngineParam::Type::Integer ? std::round(x) : x);
     };
-    for (const auto& [name, f] : t.perRadius)
+    for (const auto& [name, f] : perRadius)
         put(name, f.first * std::pow(radius, f.second));
-    for (const auto& [name, v] : t.values)
+    for (const auto& [name, v] : values)
         put(name, v);
     return out;
 }

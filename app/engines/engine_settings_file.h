@@ -26,6 +26,11 @@ TunedEngine readTunedEngine(const std::string& file);
 
 // The values a job sets on a view of world radius R: `values` and `perRadius` resolved (integers
 // rounded, 6 significant digits); `scale` goes to the runner as it is.
-std::map<std::string, double> tunedJobValues(const TunedEngine& t, double radius);
+std::map<std::string, double> jobValues(const EngineTable& table,
+                                        const std::map<std::string, std::pair<double, int>>& perRadius,
+                                        const std::map<std::string, double>& values, double radius);
+inline std::map<std::string, double> tunedJobValues(const TunedEngine& t, double radius) {
+    return jobValues(t.table, t.perRadius, t.values, radius);
+}
 
 } // namespace ssao

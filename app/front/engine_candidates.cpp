@@ -61,17 +61,7 @@ std::vector<EngineCandidate> tunedEnginesIn(const std::string& dir, const std::v
 }
 
 std::map<std::string, double> engineJobValues(const EngineCandidate& c, const EngineTable& t, double radius) {
-    std::map<std::string, double> out;
-    auto put = [&](const std::string& name, double x) {
-        const EngineParam* p = t.find(name);
-        if (!p) throw Error(t.engine + " has no parameter " + name);
-        out[name] = exportedValue(p->type == EngineParam::Type::Integer ? std::round(x) : x);
-    };
-    for (const auto& [name, f] : c.perRadius)
-        put(name, f.first * std::pow(radius, f.second));
-    for (const auto& [name, v] : c.values)
-        put(name, v);
-    return out;
+    return jobValues(t, c.perRadius, c.values, radius);
 }
 
 } // namespace ssao
