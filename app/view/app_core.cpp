@@ -297,24 +297,6 @@ std::optional<Settings> AppCore::settingsB() {
     return cachedSplitSettings_;
 }
 
-void AppCore::drawUi() {
-    const ImGuiIO& io = ImGui::GetIO();
-    const float panelWidth = std::min(420.0f * io.FontGlobalScale, io.DisplaySize.x * 0.4f);
-    const float infoHeight = std::min(230.0f * io.FontGlobalScale, io.DisplaySize.y * 0.35f);
-    drawControlPanel(*this, ImVec2(0, 0), ImVec2(panelWidth, io.DisplaySize.y));
-    drawMainView(*this, ImVec2(panelWidth, 0),
-                 ImVec2(io.DisplaySize.x - panelWidth, io.DisplaySize.y - infoHeight));
-    drawInfoStrip(frames_, inspector_, view_, ImVec2(panelWidth, io.DisplaySize.y - infoHeight),
-                  ImVec2(io.DisplaySize.x - panelWidth, infoHeight));
-    try { // after the frame on screen: the front's slice of work for this frame
-        front_.update(settings_, store_, frames_, scene_, sceneSpec_);
-    } catch (const std::exception& e) {
-        front_.paused = true;
-        setStatus(std::string("front panel: ") + e.what(), true);
-    }
-    frames_.endUiFrame();
-}
-
 void AppCore::renderIfNeeded(int viewW, int viewH) {
     // A technique's first use compiles its shaders: about a second on llvmpipe, one stalled frame.
     // The frame the choice is made shows a notice instead (the render waits one frame), the frame

@@ -10,6 +10,8 @@
 #include "view/frame_driver.h"
 #include "view/image_texture.h"
 #include "view/inspector.h"
+#include "view/ui_actions.h"
+#include "view/ui_panels.h"
 #include "view/view_state.h"
 
 #include <imgui.h>
@@ -81,9 +83,10 @@ class AppCore {
     void pollShaderReload();
 
     // ---- The parts ----
+    // The panels (ui_*.cpp) never call these: AppCore gives each what it draws (ui_panels.h) and
+    // applies the actions it returns. The window and the tests read and drive the parts through them.
     ViewState& view() { return view_; }
     FrameDriver& frames() { return frames_; }
-    Inspector& inspector() { return inspector_; }
     FrontPanel& front() { return front_; }
     Renderer& renderer() { return frames_.renderer(); }
 
@@ -100,7 +103,7 @@ class AppCore {
     // caller prints it on stderr and exits non-zero, so a script learns of it too.
     const std::string& startupError() const { return startupError_; }
     bool statusIsError() const { return statusError_; }
-    PresetStore& presets() { return store_; }
+    const PresetStore& presets() const { return store_; }
     CameraController& cameraController() { return camera_; }
     std::optional<Settings> settingsB(); // chain B of the split view, or nullopt
     // The GPU taps at the hovered pixel (Inspector::inspection on this app's renderer and view).
@@ -111,7 +114,15 @@ class AppCore {
     glm::ivec2 hoverPixel() const { return Inspector::hoverPixel(frames_.renderer(), view_); }
     void setStatus(const std::string& s, bool error);
 
+    // Carries out what a panel asked for (app_actions.cpp), and takes its widgets' rectangles.
+    void apply(const UiAction& a);
+    void apply(const UiActions& actions);
+
   private:
+    // The panels, each given what it draws, their actions applied after each (app_actions.cpp).
+    void drawControlPanel(ImVec2 pos, ImVec2 size);
+    void drawMainView(ImVec2 pos, ImVec2 size);
+    struct Applier; // one overload per action (app_actions.cpp)
     void resetCameraKeepingLens(Camera c);
     // Runs an action that returns its success message; on an exception shows the error instead.
     bool attempt(const char* what, const std::function<std::string()>& action);
@@ -143,29 +154,5 @@ class AppCore {
     std::map<std::string, std::string> descriptions_; // preset path -> its description
     FrontPanel front_;
 };
-
-// UI pieces (ui_panels.cpp, ui_params.cpp, ui_views.cpp, ui_info.cpp).
-void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size);
-void drawParameters(AppCore& app);
-void drawFrontTab(AppCore& app); // ui_front.cpp: the time-against-error front of this view
-void drawEngineSection(AppCore& app); // ui_engines.cpp: the Front tab's web engines
-void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size);
-// Each panel gets the parts it draws: the strip under the image reads the frames and the inspector.
-void drawInfoStrip(FrameDriver& frames, Inspector& inspector, ViewState& view, ImVec2 pos,
-                   ImVec2 size);                             // timing and inspector, always visible
-void drawReferenceSection(FrameDriver& frames, ViewState& view); // the "vs reference" block of the strip
-std::string referenceTag(const FrameDriver& frames); // rays per pixel so far, for the labels of its views
-// Why a reference.* buffer has nothing of this view to show yet (it reads 0 then); "" when it has,
-// or for any other buffer. Views cover such a buffer with this text, the readout prints "-".
-std::string referenceEmptyReason(const FrameDriver& frames, const std::string& buffer);
-void rememberRect(ViewState& view, const std::string& key); // the last item's rectangle, for tests
-// Text in the current colour wrapped at spaces only (ImGui's wrap splits "0.8617" after "0."), as
-// one item (a group); hovering it shows the whole text when a word alone overruns the width.
-void wrappedText(const std::string& text, bool disabled = false);
-// A window of the fixed layout (the three tile the screen): drawn without a background of its own,
-// the clear beneath it (clearUiBackground) is its background.
-void beginFixedWindow(const char* name, ImVec2 pos, ImVec2 size, ImGuiWindowFlags extra = 0);
-// Clears the bound framebuffer to the style's window colour, opaque: the fixed windows' background.
-void clearUiBackground();
 
 } // namespace ssao

@@ -39,6 +39,7 @@ class FrameDriver {
     Renderer& renderer() { return *renderer_; }
     const Renderer& renderer() const { return *renderer_; }
     BufferViews& views() { return views_; }
+    const BufferViews& views() const { return views_; }
     const LiveReference& reference() const { return reference_; }
     const FrameReport& lastReport() const { return lastReport_; }
     int framesRendered() const { return framesRendered_; } // frames in which any pass ran

@@ -2,7 +2,7 @@
 // are, or why they are off), a row per engine point - its AO time and error against the current
 // setting's, "A|B" (its AO frame in Split B) and "copy snippet" (its settings for this view as
 // JavaScript for the engine's API) - and where tuned settings come from.
-#include "view/app_core.h"
+#include "view/ui_panels.h"
 #include "view/ui_layout.h"
 
 #include <cstdio>
@@ -32,7 +32,7 @@ Candidate engineCandidate(const std::string& label) {
 }
 
 // One engine point: its numbers against the current setting's, and its two actions.
-void engineRow(AppCore& app, const EngineSample& s, const FrontPoint* cur) {
+void engineRow(const EngineSample& s, const FrontPoint* cur, UiActions& out) {
     const std::string& label = s.candidate.label;
     char ms[32] = "time under the browser's timer";
     if (s.aoMs > 0) std::snprintf(ms, sizeof ms, "%.2f ms", s.aoMs);
@@ -45,73 +45,72 @@ void engineRow(AppCore& app, const EngineSample& s, const FrontPoint* cur) {
     }
     ImGui::PushID(label.c_str());
     wrappedText(text);
-    if (ImGui::SmallButton("A|B")) app.compareCandidate(engineCandidate(label));
-    rememberRect(app.view(), "front#engine_compare:" + label);
+    if (ImGui::SmallButton("A|B")) out.push(act::CompareCandidate{engineCandidate(label)});
+    rememberRect(out, "front#engine_compare:" + label);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Split A|B: the current setting's AO against this engine's AO frame");
     ImGui::SameLine();
     if (ImGui::SmallButton("copy snippet")) {
         ImGui::SetClipboardText(s.snippet.c_str());
-        app.setStatus("copied the settings of " + label + " for this view as JavaScript (" + s.title + ")", false);
+        out.push(act::SetStatus{"copied the settings of " + label + " for this view as JavaScript (" + s.title + ")", false});
     }
-    rememberRect(app.view(), "front#engine_snippet:" + label);
+    rememberRect(out, "front#engine_snippet:" + label);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.snippet.c_str());
     ImGui::PopID();
 }
 
 // Tuned settings by path: a `tune --engine --out` file joins the engines' candidates.
-void addTunedFile(AppCore& app, EngineFront& e) {
+// The field is ViewState::engineFile (`file`); "add" asks for AddEngineFile.
+void addTunedFile(const std::string& file, UiActions& out) {
     char buf[512];
-    std::snprintf(buf, sizeof buf, "%s", app.view().engineFile.c_str());
+    std::snprintf(buf, sizeof buf, "%s", file.c_str());
     ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - 60.0f, 80.0f));
     const bool enter = ImGui::InputText("##engine_file", buf, sizeof buf, ImGuiInputTextFlags_EnterReturnsTrue);
-    app.view().engineFile = buf;
-    rememberRect(app.view(), "front#engine_file");
+    const std::string typed = buf;
+    if (typed != file) out.push(act::SetEngineFile{typed});
+    rememberRect(out, "front#engine_file");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("a tuned settings file (ssaolab tune --engine NAME --out FILE.json)");
     ImGui::SameLine();
-    if ((ImGui::SmallButton("add") || enter) && !app.view().engineFile.empty()) {
-        const std::string error = e.addFile(app.view().engineFile);
-        app.setStatus(error.empty() ? "engines: added " + app.view().engineFile : error, !error.empty());
-        if (error.empty()) app.view().engineFile.clear();
-    }
-    rememberRect(app.view(), "front#engine_add");
+    if ((ImGui::SmallButton("add") || enter) && !typed.empty()) out.push(act::AddEngineFile{typed});
+    rememberRect(out, "front#engine_add");
 }
 
 } // namespace
 
-void drawEngineSection(AppCore& app) {
-    FrontPanel& f = app.front();
-    EngineFront& e = f.engines();
+void drawEngineSection(const FrontTabView& in, FrontPanel::Axis axis, UiActions& out) {
+    const FrontPanel& f = in.front;
+    const EngineFront& e = f.engines();
     ImGui::Separator();
-    if (ImGui::Checkbox("engines", &e.enabled)) app.frames().keepAwake();
-    rememberRect(app.view(), "front#engines_on");
+    bool enabled = e.enabled;
+    if (ImGui::Checkbox("engines", &enabled)) out.push(act::SetEnginesOn{enabled}), out.push(act::KeepAwake{});
+    rememberRect(out, "front#engines_on");
     ImGui::SameLine();
     ImGui::TextDisabled("(?)");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kEnginesHelp);
     std::string line = e.status();
-    if (line.empty() && e.enabled && f.waiting().empty() && f.measurer().busy())
+    if (line.empty() && enabled && f.waiting().empty() && f.measurer().busy())
         line = "engines: after ssaolab's candidates";
-    if (line.empty() && e.enabled && f.axis == FrontPanel::Axis::Motion)
+    if (line.empty() && enabled && axis == FrontPanel::Axis::Motion)
         line = "engines: on the still axis (a frame each, no motion score)";
     if (!line.empty()) {
         wrappedText(line, !e.off());
-        rememberRect(app.view(), "front#engines");
+        rememberRect(out, "front#engines");
     }
-    if (e.off() || !e.enabled) return;
+    if (e.off() || !enabled) return;
     const size_t ci = f.currentIndex();
     const FrontPoint* cur = ci == std::string::npos ? nullptr : &f.points()[ci];
     for (const auto& s : e.samples())
-        engineRow(app, *s, cur);
+        engineRow(*s, cur, out);
     for (const std::string& err : e.errors())
         wrappedText(err);
     for (const std::string& err : e.tunedErrors())
         wrappedText(err, true);
-    wrappedText("tuned settings: the tune --engine --out files in " + FrontPanel::tunedDir(app.presets()) +
+    wrappedText("tuned settings: the tune --engine --out files in " + FrontPanel::tunedDir(in.store) +
                     ", and files added here:",
                 true);
-    if (ImGui::SmallButton("rescan")) e.rescan(), app.frames().keepAwake();
-    rememberRect(app.view(), "front#engine_rescan");
+    if (ImGui::SmallButton("rescan")) out.push(act::RescanEngines{}), out.push(act::KeepAwake{});
+    rememberRect(out, "front#engine_rescan");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("read the tuned settings folder again (a tune run since the view was measured)");
-    addTunedFile(app, e);
+    addTunedFile(in.engineFile, out);
 }
 
 } // namespace ssao

@@ -6,7 +6,7 @@
 // grey band - where hovering names a point, a click applies it and a shift+click compares it with
 // the current setting in Split A|B. Under it the two one-click answers and the budget box.
 #include "techniques/technique.h"
-#include "view/app_core.h"
+#include "view/ui_panels.h"
 #include "view/ui_layout.h"
 
 #include <algorithm>
@@ -63,12 +63,12 @@ void dot(ImDrawList* dl, ImVec2 c, const FrontPoint& p, bool baseline, bool offT
 }
 
 // The plot; returns the index of the point under the cursor (npos when none).
-size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, size_t baseline, double noise,
+size_t plot(UiActions& out, const std::vector<FrontPoint>& pts, size_t current, size_t baseline, double noise,
             const std::string& axisName) {
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const float w = std::max(ImGui::GetContentRegionAvail().x, 200.0f), h = 260.0f;
     ImGui::InvisibleButton("front#plot", ImVec2(w, h));
-    rememberRect(app.view(), "front#plot");
+    rememberRect(out, "front#plot");
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const float L = 44, R = 8, T = 8, B = 30;
     dl->AddRectFilled(origin, ImVec2(origin.x + w, origin.y + h), IM_COL32(250, 250, 250, 255));
@@ -112,7 +112,7 @@ size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, si
     const std::string yName =
         axisName + (above > 0 ? " (" + std::to_string(above) + " above the axis: triangles)" : "");
     dl->AddText(ImVec2(origin.x + L + 4, origin.y + T), ink, yName.c_str());
-    app.view().widgetRects["front#y:" + axisName] = ImVec4(origin.x + L, origin.y + T, origin.x + w - R, origin.y + T + 14);
+    out.rects["front#y:" + axisName] = ImVec4(origin.x + L, origin.y + T, origin.x + w - R, origin.y + T + 14);
     // The front as a step line, fastest first.
     std::vector<const FrontPoint*> front;
     for (const auto& p : pts)
@@ -133,7 +133,7 @@ size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, si
         const ImVec2 c(X(p.result.gpuMs), Y(p.score));
         dot(dl, c, p, i == baseline, p.score > ehi);
         if (i == current) dl->AddCircle(c, 8.0f, IM_COL32(30, 110, 255, 255), 16, 2.0f);
-        app.view().widgetRects["front#point:" + p.candidate.label] = ImVec4(c.x - 2, c.y - 2, c.x + 2, c.y + 2);
+        out.rects["front#point:" + p.candidate.label] = ImVec4(c.x - 2, c.y - 2, c.x + 2, c.y + 2);
         const float d2 = (c.x - mouse.x) * (c.x - mouse.x) + (c.y - mouse.y) * (c.y - mouse.y);
         if (ImGui::IsItemHovered() && d2 < best) best = d2, hover = i;
     }
@@ -145,8 +145,7 @@ size_t plot(AppCore& app, const std::vector<FrontPoint>& pts, size_t current, si
 }
 
 // "label: t ms (x), RMSE e (x)" (or the motion score) relative to the current point, and a button that applies it.
-void answer(AppCore& app, const char* question, size_t i, const std::string& key) {
-    const FrontPanel& f = app.front();
+void answer(const FrontPanel& f, const char* question, size_t i, const std::string& key, UiActions& out) {
     ImGui::TextWrapped("%s", question);
     if (i == std::string::npos) {
         ImGui::TextDisabled("  none measured so far");
@@ -157,16 +156,15 @@ void answer(AppCore& app, const char* question, size_t i, const std::string& key
     ImGui::TextWrapped("  %s: %.3f ms (%.2fx current), %s %.4f (%.2fx current)", p.candidate.label.c_str(),
                        p.result.gpuMs, p.result.gpuMs / c.result.gpuMs, p.motion ? "motion score" : "RMSE", p.score,
                        p.score / c.score);
-    if (ImGui::SmallButton(("apply##" + key).c_str())) app.applyCandidate(p.candidate);
-    rememberRect(app.view(), "front#apply_" + key);
+    if (ImGui::SmallButton(("apply##" + key).c_str())) out.push(act::ApplyCandidate{p.candidate});
+    rememberRect(out, "front#apply_" + key);
     ImGui::SameLine();
-    if (ImGui::SmallButton(("compare in A|B##" + key).c_str())) app.compareCandidate(p.candidate);
+    if (ImGui::SmallButton(("compare in A|B##" + key).c_str())) out.push(act::CompareCandidate{p.candidate});
 }
 
 // Why the current point may look grainy: denoise.kind=auto leaves the marching techniques
 // unfiltered because a blur raises their error on the bench scenes (docs/bench/report.md).
-void grainNote(AppCore& app) {
-    const Settings& s = app.settings();
+void grainNote(const Settings& s, UiActions& out) {
     if (s.denoise.kind != DenoiseKind::Auto || effectiveDenoise(s).kind != DenoiseKind::None || s.temporal.enabled)
         return;
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
@@ -176,20 +174,22 @@ void grainNote(AppCore& app) {
                        "are scored on a still frame unless the axis is 'motion'.",
                        s.ao.technique.c_str());
     ImGui::PopStyleColor();
-    rememberRect(app.view(), "front#grain");
+    rememberRect(out, "front#grain");
 }
 
-// The y axis's choice, and on the motion axis what its numbers are of and how far they are.
-void motionAxis(AppCore& app) {
-    FrontPanel& f = app.front();
+// The y axis's choice (`axis`, asked for as SetFrontAxis), and on the motion axis what its numbers
+// are of and how far they are.
+void motionAxis(const FrontPanel& f, FrontPanel::Axis& axis, UiActions& out) {
     ImGui::TextUnformatted("y axis:");
     ImGui::SameLine();
-    if (ImGui::RadioButton("still", f.axis == FrontPanel::Axis::Still)) f.axis = FrontPanel::Axis::Still;
-    rememberRect(app.view(), "front#axis_still");
+    const FrontPanel::Axis before = axis;
+    if (ImGui::RadioButton("still", axis == FrontPanel::Axis::Still)) axis = FrontPanel::Axis::Still;
+    rememberRect(out, "front#axis_still");
     ImGui::SameLine();
-    if (ImGui::RadioButton("motion", f.axis == FrontPanel::Axis::Motion)) f.axis = FrontPanel::Axis::Motion;
-    rememberRect(app.view(), "front#axis_motion");
-    if (f.axis != FrontPanel::Axis::Motion || !f.waiting().empty()) return;
+    if (ImGui::RadioButton("motion", axis == FrontPanel::Axis::Motion)) axis = FrontPanel::Axis::Motion;
+    rememberRect(out, "front#axis_motion");
+    if (axis != before) out.push(act::SetFrontAxis{axis == FrontPanel::Axis::Motion});
+    if (axis != FrontPanel::Axis::Motion || !f.waiting().empty()) return;
     const FrontMotion& m = f.motion();
     if (!m.hasView()) return;
     const MotionView& v = m.view();
@@ -209,7 +209,7 @@ void motionAxis(AppCore& app) {
     } else {
         ImGui::TextDisabled("motion: %s", what);
     }
-    rememberRect(app.view(), "front#motion_progress");
+    rememberRect(out, "front#motion_progress");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Each candidate along the camera path through this view, as `ssaolab bench --motion`\n"
                           "scores it, at a reduced size (the path needs a reference per frame): every\n"
@@ -219,9 +219,8 @@ void motionAxis(AppCore& app) {
 
 } // namespace
 
-void drawFrontTab(AppCore& app) {
-    FrontPanel& f = app.front();
-    f.active = true; // measured in the background from now on
+void drawFrontTab(const FrontTabView& in, UiActions& out) {
+    const FrontPanel& f = in.front;
     const FrontMeasurer& m = f.measurer();
     const FrontMeasurer::Progress pr = m.progress();
     if (!f.waiting().empty()) {
@@ -233,9 +232,11 @@ void drawFrontTab(AppCore& app) {
     } else if (m.hasView()) {
         ImGui::Text("%zu candidates measured on this view (%.1f s)", pr.total, pr.seconds);
     }
-    rememberRect(app.view(), "front#progress");
-    motionAxis(app);
-    ImGui::Checkbox("pause", &f.paused);
+    rememberRect(out, "front#progress");
+    FrontPanel::Axis axis = f.axis;
+    motionAxis(f, axis, out);
+    bool paused = f.paused;
+    if (ImGui::Checkbox("pause", &paused)) out.push(act::SetFrontPaused{paused});
     ImGui::SameLine();
     ImGui::TextDisabled("(?)");
     if (ImGui::IsItemHovered())
@@ -248,43 +249,46 @@ void drawFrontTab(AppCore& app) {
                           "one's AO frame in Split B. The answers pick among ssaolab's settings.");
     const auto& pts = f.points();
     const size_t base = f.baselineIndex(), cur = f.currentIndex();
-    const size_t hover = plot(app, pts, cur, base, f.referenceNoise(), f.axisName());
+    const size_t hover = plot(out, pts, cur, base, f.referenceNoise(), f.axisName());
     if (hover != std::string::npos) {
         ImGui::SetTooltip("%s", pointText(pts[hover], base == std::string::npos ? nullptr : &pts[base]).c_str());
         if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
             if (ImGui::GetIO().KeyShift || pts[hover].candidate.isEngine()) // an engine's: B is its frame
-                app.compareCandidate(pts[hover].candidate);
+                out.push(act::CompareCandidate{pts[hover].candidate});
             else
-                app.applyCandidate(pts[hover].candidate);
+                out.push(act::ApplyCandidate{pts[hover].candidate});
         }
     }
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("blue ring: current   black: baseline (learnopengl)   red: the front   diamonds: web "
                        "engines   grey band: the reference's own noise");
     ImGui::PopStyleColor();
-    grainNote(app);
+    grainNote(in.settings, out);
     if (cur != std::string::npos) {
-        answer(app, "Cheapest at <= the current error:", f.cheapestAtMostCurrentError(), "cheapest");
-        answer(app, "Most accurate at <= the current time:", f.mostAccurateWithinCurrentTime(), "accurate");
+        answer(f, "Cheapest at <= the current error:", f.cheapestAtMostCurrentError(), "cheapest", out);
+        answer(f, "Most accurate at <= the current time:", f.mostAccurateWithinCurrentTime(), "accurate", out);
     }
     ImGui::Separator();
     ImGui::SetNextItemWidth(110);
-    ImGui::InputDouble("budget ms", &f.budgetMs, 0, 0, "%.3f");
-    rememberRect(app.view(), "front#budget_ms");
+    double budgetMs = f.budgetMs, maxError = f.maxError;
+    bool edited = ImGui::InputDouble("budget ms", &budgetMs, 0, 0, "%.3f");
+    rememberRect(out, "front#budget_ms");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(110);
-    ImGui::InputDouble(f.axis == FrontPanel::Axis::Motion ? "max score###max" : "max RMSE###max", &f.maxError, 0,
-                       0, "%.4f");
-    rememberRect(app.view(), "front#max_error");
+    edited |= ImGui::InputDouble(axis == FrontPanel::Axis::Motion ? "max score###max" : "max RMSE###max", &maxError,
+                                 0, 0, "%.4f");
+    rememberRect(out, "front#max_error");
+    if (edited) out.push(act::SetFrontBudget{budgetMs, maxError});
     if (f.budgetMs > 0 || f.maxError > 0) {
         const size_t b = f.bestForBudget();
         if (b == std::string::npos) {
             ImGui::TextDisabled("no candidate meets it (so far)");
         } else if (cur != std::string::npos) {
-            answer(app, f.budgetMs > 0 ? "Most accurate within the budget:" : "Fastest at most that error:", b, "budget");
+            answer(f, f.budgetMs > 0 ? "Most accurate within the budget:" : "Fastest at most that error:", b, "budget",
+                   out);
         }
     }
-    drawEngineSection(app);
+    drawEngineSection(in, axis, out);
 }
 
 } // namespace ssao

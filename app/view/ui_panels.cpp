@@ -1,7 +1,7 @@
 // The left panel: status, then tabs for the parameters (generated from the table), the scene and
 // camera, presets and the front. Timing and the inspector live in the info strip under the image.
 #include "scene/builtin_scenes.h"
-#include "view/app_core.h"
+#include "view/ui_panels.h"
 #include "view/ui_layout.h"
 
 #include <algorithm>
@@ -14,6 +14,11 @@ namespace ssao {
 void rememberRect(ViewState& view, const std::string& key) {
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
     view.widgetRects[key] = ImVec4(a.x, a.y, b.x, b.y);
+}
+
+void rememberRect(UiActions& out, const std::string& key) {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    out.rects[key] = ImVec4(a.x, a.y, b.x, b.y);
 }
 
 void wrappedText(const std::string& text, bool disabled) {
@@ -50,7 +55,7 @@ bool inputText(const char* label, std::string& s, bool enter = false) {
 }
 
 // The scene's name, size and materials, and the transparent surfaces' toggle.
-void sceneFacts(AppCore& app, const Scene& sc, std::function<void()>& replaceScene) {
+void sceneFacts(const Scene& sc, UiActions& out) {
     ImGui::TextWrapped("%s", sc.name.c_str());
     ImGui::TextDisabled("%zu triangles, bounding-box diagonal %.4g units", sc.triangleCount(),
                         2.0f * sc.bounds.radius());
@@ -66,8 +71,8 @@ void sceneFacts(AppCore& app, const Scene& sc, std::function<void()>& replaceSce
     if (mc.blend > 0) {
         bool opaque = !mc.blendSkipped;
         if (ImGui::Checkbox("draw BLEND surfaces as opaque", &opaque))
-            replaceScene = [&app, opaque] { app.setTransparent(opaque ? Transparent::Opaque : Transparent::Skip); };
-        rememberRect(app.view(), "scene#transparent");
+            out.push(act::SetTransparent{opaque ? Transparent::Opaque : Transparent::Skip});
+        rememberRect(out, "scene#transparent");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("off (default): BLEND and transmissive surfaces are skipped, as engines draw them after the AO -\n"
                               "neither in the G-buffer nor an occluder of the reference. On: drawn and traced as solids\n"
@@ -76,40 +81,38 @@ void sceneFacts(AppCore& app, const Scene& sc, std::function<void()>& replaceSce
 }
 
 // A path to open, and the built-in scenes.
-void sceneOpen(AppCore& app, std::function<void()>& replaceScene) {
+void sceneOpen(UiActions& out) {
     static std::string path;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.7f);
     const bool enter = inputText("##scenepath", path, true);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("a .gltf/.glb path; Enter or Open loads it");
     ImGui::SameLine();
-    if (ImGui::Button("Open") || enter) replaceScene = [&app] { app.openScene(path); };
-    rememberRect(app.view(), "scene#open");
+    if (ImGui::Button("Open") || enter) out.push(act::OpenScene{path});
+    rememberRect(out, "scene#open");
     for (const auto& name : builtinSceneNames()) {
-        if (ImGui::SmallButton(name.c_str())) replaceScene = [&app, name] { app.openScene("builtin:" + name); };
+        if (ImGui::SmallButton(name.c_str())) out.push(act::OpenScene{"builtin:" + name});
         ImGui::SameLine();
     }
     ImGui::NewLine();
 }
 
 // Orbit or fly, the reset, and the cameras the scene file brings.
-void cameraButtons(AppCore& app, const Scene& sc) {
-    CameraController& cc = app.cameraController();
+void cameraButtons(const CameraController& cc, const Scene& sc, UiActions& out) {
     int mode = cc.mode() == CameraController::Mode::Orbit ? 0 : 1;
-    if (ImGui::RadioButton("Orbit", &mode, 0)) cc.setMode(CameraController::Mode::Orbit);
+    if (ImGui::RadioButton("Orbit", &mode, 0)) out.push(act::SetCameraMode{CameraController::Mode::Orbit});
     ImGui::SameLine();
-    if (ImGui::RadioButton("Fly (WASD/QE)", &mode, 1)) cc.setMode(CameraController::Mode::Fly);
+    if (ImGui::RadioButton("Fly (WASD/QE)", &mode, 1)) out.push(act::SetCameraMode{CameraController::Mode::Fly});
     ImGui::SameLine();
-    if (ImGui::Button("Reset view")) app.resetCamera();
+    if (ImGui::Button("Reset view")) out.push(act::ResetCamera{});
     for (size_t i = 0; i < sc.cameras.size(); ++i) {
-        if (ImGui::SmallButton(("cam: " + sc.cameras[i].first).c_str())) app.selectSceneCamera(int(i));
+        if (ImGui::SmallButton(("cam: " + sc.cameras[i].first).c_str())) out.push(act::SelectSceneCamera{int(i)});
         ImGui::SameLine();
     }
     ImGui::NewLine();
 }
 
 // Clip planes, projection and depth, and the camera as rendered.
-void cameraChoices(AppCore& app, const Scene& sc) {
-    CameraController& cc = app.cameraController();
+void cameraChoices(const CameraController& cc, const Scene& sc, const Camera& e, UiActions& out) {
     // One row of two choices; returns the one clicked this frame (-1: none). The second button's
     // tooltip explains the non-default choice.
     auto choice = [&](const char* label, int current, const char* a, const char* keyA, const char* b,
@@ -118,65 +121,65 @@ void cameraChoices(AppCore& app, const Scene& sc) {
         ImGui::TextUnformatted(label);
         ImGui::SameLine();
         if (ImGui::RadioButton(a, &v, 0)) clicked = 0;
-        rememberRect(app.view(), keyA);
+        rememberRect(out, keyA);
         ImGui::SameLine();
         if (ImGui::RadioButton(b, &v, 1)) clicked = 1;
-        rememberRect(app.view(), keyB);
+        rememberRect(out, keyB);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
-        if (clicked >= 0) app.frames().keepAwake();
+        if (clicked >= 0) out.push(act::KeepAwake{});
         return clicked;
     };
     const int clip = choice("Clip planes", cc.camera().clip == ClipMode::Fit ? 0 : 1, "fit to scene",
                             "camera#clip_fit", "camera's own", "camera#clip_fixed",
                             "The planes the camera came with (a glTF file's znear/zfar); with standard depth a\n"
                             "far/near ratio of 1e7 makes the depth test z-fight into false AO.");
-    if (clip >= 0) cc.setClip(clip == 0 ? ClipMode::Fit : ClipMode::Fixed);
+    if (clip >= 0) out.push(act::SetClip{clip == 0 ? ClipMode::Fit : ClipMode::Fixed});
     const int proj = choice("Projection ", cc.camera().orthographic() ? 1 : 0, "perspective", "camera#perspective",
                             "orthographic", "camera#orthographic",
                             "Parallel rays; the view spans what the field of view sees at the target's distance.");
-    if (proj >= 0) cc.setProjection(proj == 0 ? Projection::Perspective : Projection::Orthographic);
+    if (proj >= 0) out.push(act::SetProjection{proj == 0 ? Projection::Perspective : Projection::Orthographic});
     const int depth = choice("Depth      ", cc.camera().depth == DepthMode::Reversed ? 1 : 0, "standard",
                              "camera#depth_standard", "reversed-Z", "camera#depth_reversed",
                              "Float depth stored as 1 at near, 0 at far: even precision over any far/near\n"
                              "ratio, so a file's own 0.05 .. 1e6 planes no longer z-fight.");
-    if (depth >= 0) cc.setDepth(depth == 0 ? DepthMode::Standard : DepthMode::Reversed);
+    if (depth >= 0) out.push(act::SetDepth{depth == 0 ? DepthMode::Standard : DepthMode::Reversed});
     const Camera c = cameraToFile(cc.camera(), sc); // what --camera and presets take
-    const Camera& e = app.renderer().camera();
     ImGui::TextDisabled("eye %.4g %.4g %.4g  target %.4g %.4g %.4g", c.eye.x, c.eye.y, c.eye.z, c.target.x,
                         c.target.y, c.target.z);
     ImGui::TextDisabled("fov %.0f  near %.4g  far %.4g (as rendered)%s", e.fovYDeg, e.nearZ, e.farZ,
                         e.orthographic() ? "; view height = 2 |target - eye| tan(fov/2)" : "");
 }
 
-void sceneSection(AppCore& app) {
-    // What replaces the scene (opening one, the transparent toggle) runs at the end: `sc` and what
-    // points into it must outlive every widget drawn from them.
-    std::function<void()> replaceScene;
-    const Scene& sc = app.scene();
-    sceneFacts(app, sc, replaceScene);
-    sceneOpen(app, replaceScene);
+} // namespace
+
+// What replaces the scene (opening one, the transparent toggle) is an action applied after the tab:
+// `in.scene` and what points into it outlive every widget drawn from them.
+void drawSceneTab(const SceneView& in, UiActions& out) {
+    sceneFacts(in.scene, out);
+    sceneOpen(out);
     ImGui::Separator();
-    cameraButtons(app, sc);
-    cameraChoices(app, sc);
-    if (replaceScene) replaceScene();
+    cameraButtons(in.camera, in.scene, out);
+    cameraChoices(in.camera, in.scene, in.rendered, out);
 }
+
+namespace {
 
 // One row of the preset list, two lines tall: the name, and under it the description cut at a word
 // (the whole of it on hover). Double-click loads it.
-void presetRow(AppCore& app, const PresetEntry& e, std::string& selected) {
+void presetRow(const PresetsView& in, const PresetEntry& e, const std::string& description, std::string& selected,
+               UiActions& out) {
     const float line = ImGui::GetTextLineHeightWithSpacing();
     std::string name = (e.builtin ? "[shipped] " : "") + e.name;
-    if (e.name == app.loadedPreset().name) name += app.unsavedChanges() ? "  (loaded, changed)" : "  (loaded)";
+    if (e.name == in.loaded.name) name += in.unsaved ? "  (loaded, changed)" : "  (loaded)";
     ImGui::PushID(e.path.c_str());
     if (ImGui::Selectable("##preset", selected == e.name, ImGuiSelectableFlags_AllowDoubleClick,
                           ImVec2(0, 2.0f * line - ImGui::GetStyle().ItemSpacing.y)))
         selected = e.name;
     ImGui::PopID();
-    rememberRect(app.view(), "preset#" + e.name);
+    rememberRect(out, "preset#" + e.name);
     const bool hovered = ImGui::IsItemHovered();
-    if (hovered && ImGui::IsMouseDoubleClicked(0)) app.openPreset(e.name);
+    if (hovered && ImGui::IsMouseDoubleClicked(0)) out.push(act::OpenPreset{e.name});
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    const std::string& description = app.presetDescription(e);
     const MeasureText measure = [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; };
     bool cut = false;
     const std::string shown = fitLine(description.empty() ? "(no description)" : description, b.x - a.x, measure, &cut);
@@ -184,7 +187,7 @@ void presetRow(AppCore& app, const PresetEntry& e, std::string& selected) {
     dl->AddText(a, ImGui::GetColorU32(ImGuiCol_Text), name.c_str());
     const ImVec2 d(a.x, a.y + line);
     dl->AddText(d, ImGui::GetColorU32(ImGuiCol_TextDisabled), shown.c_str());
-    app.view().widgetRects["preset#" + e.name + "#description"] =
+    out.rects["preset#" + e.name + "#description"] =
         ImVec4(d.x, d.y, d.x + ImGui::CalcTextSize(shown.c_str()).x, d.y + ImGui::GetTextLineHeight());
     if (hovered && !description.empty()) {
         ImGui::BeginTooltip();
@@ -196,30 +199,34 @@ void presetRow(AppCore& app, const PresetEntry& e, std::string& selected) {
     }
 }
 
-void presetSection(AppCore& app) {
-    PresetStore& store = app.presets();
-    const std::string current = app.loadedPreset().name + (app.unsavedChanges() ? " (unsaved changes)" : "");
+} // namespace
+
+void drawPresetsTab(const PresetsView& in, UiActions& out) {
+    const PresetStore& store = in.store;
+    const std::string current = in.loaded.name + (in.unsaved ? " (unsaved changes)" : "");
     ImGui::Text("current: %s", current.c_str());
     static std::string selected;
     const PresetEntry* sel = store.find(selected);
     ImGui::BeginDisabled(!sel);
-    if (ImGui::Button("Load")) app.openPreset(selected);
-    rememberRect(app.view(), "preset#load");
+    if (ImGui::Button("Load")) out.push(act::OpenPreset{selected});
+    rememberRect(out, "preset#load");
     ImGui::SameLine();
     ImGui::BeginDisabled(!sel || sel->builtin);
-    if (ImGui::Button("Rename to name")) app.renamePreset(selected, app.view().newPresetName);
-    rememberRect(app.view(), "preset#rename");
+    if (ImGui::Button("Rename to name")) out.push(act::RenamePreset{selected, in.newName});
+    rememberRect(out, "preset#rename");
     ImGui::SameLine();
-    if (ImGui::Button("Delete")) app.deletePreset(selected);
-    rememberRect(app.view(), "preset#delete");
+    if (ImGui::Button("Delete")) out.push(act::DeletePreset{selected});
+    rememberRect(out, "preset#delete");
     ImGui::EndDisabled();
     ImGui::EndDisabled();
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
-    inputText("name##newpreset", app.view().newPresetName);
-    rememberRect(app.view(), "preset#name");
+    std::string newName = in.newName;
+    inputText("name##newpreset", newName);
+    if (newName != in.newName) out.push(act::SetNewPresetName{newName});
+    rememberRect(out, "preset#name");
     ImGui::SameLine();
-    if (ImGui::Button("Save")) app.savePreset(app.view().newPresetName);
-    rememberRect(app.view(), "preset#save");
+    if (ImGui::Button("Save")) out.push(act::SavePreset{newName});
+    rememberRect(out, "preset#save");
     ImGui::SameLine();
     ImGui::TextDisabled("(?)");
     if (ImGui::IsItemHovered())
@@ -231,17 +238,19 @@ void presetSection(AppCore& app) {
     const float height = std::max(ImGui::GetContentRegionAvail().y, 6.0f * ImGui::GetTextLineHeightWithSpacing());
     if (ImGui::BeginChild("##presets", ImVec2(0, height), true)) {
         for (bool builtin : {false, true})
-            for (const auto& e : store.entries())
-                if (e.builtin == builtin) presetRow(app, e, selected);
+            for (size_t i = 0; i < store.entries().size(); ++i)
+                if (store.entries()[i].builtin == builtin)
+                    presetRow(in, store.entries()[i], in.descriptions[i], selected, out);
     }
     ImGui::EndChild();
-    rememberRect(app.view(), "preset#list");
+    rememberRect(out, "preset#list");
 }
+
+namespace {
 
 // The panel's tabs as a row of buttons: ImGui's tab bar draws a tab only from the frame after it
 // first appears, so the first frame had none; buttons are laid out on the frame they are submitted.
-int tabStrip(AppCore& app, const std::vector<const char*>& names) {
-    int& current = app.view().panelTab;
+void tabStrip(int current, const std::vector<const char*>& names, UiActions& out) {
     const ImGuiStyle& st = ImGui::GetStyle();
     for (size_t i = 0; i < names.size(); ++i) {
         if (i > 0) ImGui::SameLine(0.0f, st.ItemInnerSpacing.x);
@@ -249,14 +258,13 @@ int tabStrip(AppCore& app, const std::vector<const char*>& names) {
         ImGui::PushStyleColor(ImGuiCol_Button, st.Colors[on ? ImGuiCol_TabActive : ImGuiCol_Tab]);
         ImGui::PushStyleColor(ImGuiCol_ButtonHovered, st.Colors[ImGuiCol_TabHovered]);
         ImGui::PushStyleColor(ImGuiCol_ButtonActive, st.Colors[ImGuiCol_TabActive]);
-        if (ImGui::Button(names[i])) current = int(i);
+        if (ImGui::Button(names[i])) out.push(act::SelectTab{int(i)});
         ImGui::PopStyleColor(3);
-        rememberRect(app.view(), std::string("tab#") + names[i]);
+        rememberRect(out, std::string("tab#") + names[i]);
     }
     ImGui::PushStyleColor(ImGuiCol_Separator, st.Colors[ImGuiCol_TabActive]);
     ImGui::Separator();
     ImGui::PopStyleColor();
-    return current;
 }
 
 } // namespace
@@ -278,38 +286,32 @@ void clearUiBackground() {
     glClear(GL_COLOR_BUFFER_BIT);
 }
 
-void drawControlPanel(AppCore& app, ImVec2 pos, ImVec2 size) {
+void beginControlPanel(const PanelHeader& in, ImVec2 pos, ImVec2 size, UiActions& out) {
     // The scrollbar always: ImGui adds it on the frame after it learns the content is taller, and the
     // first frame's widgets were wider than every later frame's.
     beginFixedWindow("ssaolab", pos, size, ImGuiWindowFlags_AlwaysVerticalScrollbar);
-    app.view().widgetRects["panel"] = ImVec4(pos.x, pos.y, pos.x + size.x, pos.y + size.y);
+    out.rects["panel"] = ImVec4(pos.x, pos.y, pos.x + size.x, pos.y + size.y);
     // The status has a fixed height (three lines, scrolled if longer): the widgets below never move.
     ImGui::BeginChild("status", ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * 3.0f), false);
     ImGui::PushStyleColor(ImGuiCol_Text,
-                          app.statusIsError() ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1));
-    wrappedText(app.status());
-    rememberRect(app.view(), "status");
+                          in.statusIsError ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1));
+    wrappedText(in.status);
+    rememberRect(out, "status");
     ImGui::PopStyleColor();
     ImGui::EndChild();
     if (ImGui::IsItemHovered()) { // the whole status, also when it runs past its three lines
         ImGui::BeginTooltip();
         ImGui::PushTextWrapPos(ImGui::GetFontSize() * 36.0f);
-        ImGui::TextUnformatted(app.status().c_str());
+        ImGui::TextUnformatted(in.status.c_str());
         ImGui::PopTextWrapPos();
         ImGui::EndTooltip();
     }
-    if (!app.frames().shaderError().empty()) {
+    if (!in.shaderError.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.4f, 0.4f, 1));
-        ImGui::TextWrapped("shader error (last good shaders still running):\n%s", app.frames().shaderError().c_str());
+        ImGui::TextWrapped("shader error (last good shaders still running):\n%s", in.shaderError.c_str());
         ImGui::PopStyleColor();
     }
-    switch (tabStrip(app, {"Parameters", "Scene & camera", "Presets", "Front"})) {
-    case 0: drawParameters(app); break;
-    case 1: sceneSection(app); break;
-    case 2: presetSection(app); break;
-    default: drawFrontTab(app); break;
-    }
-    ImGui::End();
+    tabStrip(in.tab, {"Parameters", "Scene & camera", "Presets", "Front"}, out);
 }
 
 } // namespace ssao

@@ -3,11 +3,12 @@
 // to a technique other than the chosen one, with the radius shown in world units and pixels under
 // the AO group.
 #include "settings/params.h"
-#include "view/app_core.h"
+#include "view/ui_panels.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace ssao {
 
@@ -26,12 +27,12 @@ std::string rangeText(const Param& p) {
 
 // What '*' and R compare with: the preset loaded last (its values, not the table's defaults, are
 // where a user starts from), or the table's defaults when none was.
-std::string baselineName(const AppCore& app) {
-    const std::string& n = app.loadedPreset().name;
+std::string baselineName(const Preset& loaded) {
+    const std::string& n = loaded.name;
     return n == "defaults" ? "the table's defaults" : "preset " + n;
 }
 
-void tooltip(const Param& p, bool applies, const AppCore& app, bool changed) {
+void tooltip(const Param& p, bool applies, const Preset& loaded, bool changed) {
     if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
@@ -42,16 +43,17 @@ void tooltip(const Param& p, bool applies, const AppCore& app, bool changed) {
         ImGui::TextColored(applies ? ImVec4(0.6f, 0.6f, 0.6f, 1) : ImVec4(1, 0.75f, 0.3f, 1),
                            "applies when %s", p.whenText().c_str());
     ImGui::TextDisabled("%s %s, where it is %s (R resets to it)", changed ? "* : changed from" : "as in",
-                        baselineName(app).c_str(), p.format(p.get(app.loadedPreset().settings)).c_str());
+                        baselineName(loaded).c_str(), p.format(p.get(loaded.settings)).c_str());
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
 }
 
-// One widget for one parameter; returns true when the value changed.
-bool paramWidget(AppCore& app, const Param& p, Settings& s) {
+// One widget for one parameter, on the panel's copy `s` of the settings (the rows after it see the
+// change this frame); a change is asked for as SetParam.
+void paramWidget(const Preset& loaded, const Param& p, Settings& s, UiActions& out) {
     ImGui::PushID(p.key.c_str());
     const double before = p.get(s);
-    const double base = p.get(app.loadedPreset().settings);
+    const double base = p.get(loaded.settings);
     const bool changed = before != base;
     const bool applies = p.applies(s);
     const float resetWidth = ImGui::GetFrameHeight() * 1.6f;
@@ -61,6 +63,7 @@ bool paramWidget(AppCore& app, const Param& p, Settings& s) {
     // the * appears, or the first change of a drag would end the drag.
     const std::string label = p.label + (changed ? " *" : "") + "###" + p.key;
     bool slider = false;
+    std::optional<double> to; // the value set this frame
     switch (p.type) {
     case Param::Type::Float: {
         float v = float(before);
@@ -69,7 +72,7 @@ bool paramWidget(AppCore& app, const Param& p, Settings& s) {
         if (p.max > 100.0 * std::max(p.min, 1e-3)) flags |= ImGuiSliderFlags_Logarithmic;
         std::string fmt = "%.4g" + (p.unit.empty() ? std::string() : " " + p.unit);
         if (ImGui::SliderFloat(label.c_str(), &v, float(p.min), float(p.max), fmt.c_str(), flags))
-            p.set(s, v);
+            to = v;
         slider = true;
         break;
     }
@@ -77,20 +80,20 @@ bool paramWidget(AppCore& app, const Param& p, Settings& s) {
         int v = int(before);
         ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
         if (p.max > 1000) flags |= ImGuiSliderFlags_Logarithmic;
-        if (ImGui::SliderInt(label.c_str(), &v, int(p.min), int(p.max), "%d", flags)) p.set(s, v);
+        if (ImGui::SliderInt(label.c_str(), &v, int(p.min), int(p.max), "%d", flags)) to = v;
         slider = true;
         break;
     }
     case Param::Type::Bool: {
         bool v = before != 0.0;
-        if (ImGui::Checkbox(label.c_str(), &v)) p.set(s, v ? 1 : 0);
+        if (ImGui::Checkbox(label.c_str(), &v)) to = v ? 1 : 0;
         break;
     }
     case Param::Type::Enum: {
         if (ImGui::BeginCombo(label.c_str(), p.choices[size_t(before)].c_str())) {
             for (size_t i = 0; i < p.choices.size(); ++i) {
-                if (ImGui::Selectable(p.choices[i].c_str(), size_t(before) == i)) p.set(s, double(i));
-                rememberRect(app.view(), p.key + "#" + p.choices[i]);
+                if (ImGui::Selectable(p.choices[i].c_str(), size_t(before) == i)) to = double(i);
+                rememberRect(out, p.key + "#" + p.choices[i]);
             }
             ImGui::EndCombo();
         }
@@ -98,31 +101,33 @@ bool paramWidget(AppCore& app, const Param& p, Settings& s) {
     }
     }
     // Dragging a slider renders at the interactive scale until it is released (N8AO does this).
-    if (slider && ImGui::IsItemActive()) app.frames().noteInteraction();
-    rememberRect(app.view(), p.key);
-    if (changed) rememberRect(app.view(), "changed#" + p.key);
+    if (slider && ImGui::IsItemActive()) out.push(act::NoteInteraction{});
+    rememberRect(out, p.key);
+    if (changed) rememberRect(out, "changed#" + p.key);
     ImGui::EndDisabled();
-    tooltip(p, applies, app, changed);
+    tooltip(p, applies, loaded, changed);
     ImGui::SameLine();
     ImGui::BeginDisabled(!changed || !applies);
-    if (ImGui::Button("R", ImVec2(resetWidth, 0))) p.set(s, base);
+    if (ImGui::Button("R", ImVec2(resetWidth, 0))) to = base;
     ImGui::EndDisabled();
-    rememberRect(app.view(), p.key + "#reset");
+    rememberRect(out, p.key + "#reset");
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("reset to %s, the value of %s (what * compares with)", p.format(base).c_str(),
-                          baselineName(app).c_str());
+                          baselineName(loaded).c_str());
     ImGui::PopID();
-    return p.get(s) != before;
+    if (!to) return;
+    p.set(s, *to);
+    out.push(act::SetParam{p.key, *to});
+    if (p.get(s) != before) out.push(act::KeepAwake{});
 }
 
 // One line that never wraps, so the rows below keep their place whatever it says.
-void radiusLine(AppCore& app) {
-    const Renderer& r = app.renderer();
-    if (r.width() <= 0) {
+void radiusLine(const ParamsView& in, UiActions& out) {
+    if (!in.radius || !in.viewRadius) {
         ImGui::TextDisabled("radius: shown after the first frame");
     } else {
-        const RadiusInfo& ri = app.frames().radiusInfo();
-        const ViewRadiusCheck& vr = app.frames().viewRadius();
+        const RadiusInfo& ri = *in.radius;
+        const ViewRadiusCheck& vr = *in.viewRadius;
         const bool tiny = ri.pixels<2.0f, huge = ri.world> 0.25f * ri.sceneDiagonal;
         const ImVec4 colour = tiny || huge || vr.tooLarge ? ImVec4(1, 0.7f, 0.3f, 1)
                                                           : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
@@ -136,15 +141,15 @@ void radiusLine(AppCore& app) {
             ImGui::SetTooltip(
                 "The AO radius in scene units and in pixels at the centre of the view; the scene's\n"
                 "bounding-box diagonal. Under 2 pixels the kernel sees nothing: AO goes flat grey.");
-        rememberRect(app.view(), "radius#info");
+        rememberRect(out, "radius#info");
         if (vr.tooLarge) { // a line of its own only then: the hint of the status, applied in one click
             char label[96];
             std::snprintf(label, sizeof label, "use the view's radius: %.3g world units", vr.suggested);
             if (ImGui::SmallButton(label)) {
-                app.useViewRadius();
-                app.frames().keepAwake();
+                out.push(act::UseViewRadius{});
+                out.push(act::KeepAwake{});
             }
-            rememberRect(app.view(), "radius#use_view");
+            rememberRect(out, "radius#use_view");
             if (ImGui::IsItemHovered()) {
                 ImGui::BeginTooltip();
                 ImGui::PushTextWrapPos(ImGui::GetFontSize() * 36.0f);
@@ -155,7 +160,7 @@ void radiusLine(AppCore& app) {
         }
         return;
     }
-    rememberRect(app.view(), "radius#info");
+    rememberRect(out, "radius#info");
 }
 
 } // namespace
@@ -168,19 +173,19 @@ static bool otherTechnique(const Param& p, const Settings& s) {
     return std::find(ids.begin(), ids.end(), s.ao.technique) == ids.end();
 }
 
-void drawParameters(AppCore& app) {
+void drawParameters(const ParamsView& in, UiActions& out) {
     std::string group;
-    Settings& s = app.settings();
+    Settings s = in.settings; // the rows' working copy: what the app's settings become once applied
     for (const Param& p : paramTable()) {
         if (otherTechnique(p, s)) continue;
         if (p.group() != group) {
-            if (group == "ao") radiusLine(app);
+            if (group == "ao") radiusLine(in, out);
             group = p.group();
             ImGui::Spacing();
             ImGui::TextDisabled("%s", group.c_str());
             ImGui::Separator();
         }
-        if (paramWidget(app, p, s)) app.frames().keepAwake();
+        paramWidget(in.loaded, p, s, out);
     }
 }
 

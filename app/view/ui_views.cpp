@@ -2,7 +2,7 @@
 // buffer with the sample inspector drawn over it, and a split A | B comparison (drag the divider)
 // or their signed difference. Dragging orbits (left) or pans (right/middle); the wheel zooms;
 // WASD/QE fly in fly mode.
-#include "view/app_core.h"
+#include "view/ui_panels.h"
 #include "view/ui_layout.h"
 
 #include <epoxy/gl.h>
@@ -25,59 +25,67 @@ void fit(ImVec2 avail, float aspect, ImVec2& outPos, ImVec2& outSize) {
     outSize = s;
 }
 
+// Where the cursor is and the divider, as the input phase leaves them (ViewState's fields).
+struct Pointer {
+    bool dragging;
+    float position;
+    bool onImage = false;
+    glm::vec2 uv;
+    int chain;
+};
+
 // Camera interaction and hover over an image rectangle; returns true on a click (no drag).
-bool interact(AppCore& app, const char* id, ImVec2 pos, ImVec2 size) {
+bool interact(const ViewState& v, CameraController::Mode cameraMode, Pointer& pt, const char* id, ImVec2 pos,
+              ImVec2 size, UiActions& out) {
     ImGui::SetCursorScreenPos(pos);
     ImGui::InvisibleButton(id, size,
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                ImGuiButtonFlags_MouseButtonMiddle);
     const ImGuiIO& io = ImGui::GetIO();
-    CameraController& cc = app.cameraController();
-    const bool split = app.view().mode == ViewMode::Split && !app.view().splitDifference;
-    const float divider = pos.x + size.x * app.view().splitPosition;
+    const bool split = v.mode == ViewMode::Split && !v.splitDifference;
+    const float divider = pos.x + size.x * pt.position;
     bool moved = false;
     if (ImGui::IsItemActivated()) // a press near the divider drags it until released
-        app.view().draggingDivider = split && ImGui::IsMouseClicked(ImGuiMouseButton_Left) &&
-                              std::abs(io.MousePos.x - divider) <= 8.0f;
-    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) app.view().draggingDivider = false;
+        pt.dragging = split && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && std::abs(io.MousePos.x - divider) <= 8.0f;
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) pt.dragging = false;
     if (ImGui::IsItemActive()) {
-        if (app.view().draggingDivider) { // drag the divider, not the camera
-            app.view().splitPosition = std::clamp((io.MousePos.x - pos.x) / size.x, 0.0f, 1.0f);
-            app.frames().keepAwake();
+        if (pt.dragging) { // drag the divider, not the camera
+            pt.position = std::clamp((io.MousePos.x - pos.x) / size.x, 0.0f, 1.0f);
+            out.push(act::KeepAwake{});
         } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f) &&
                    (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
-            cc.rotate(io.MouseDelta.x, io.MouseDelta.y, app.view().viewWidth);
+            out.push(act::Orbit{io.MouseDelta.x, io.MouseDelta.y, v.viewWidth});
             moved = true;
         }
         if ((ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle)) &&
             (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
-            cc.pan(io.MouseDelta.x, io.MouseDelta.y, size.y);
+            out.push(act::Pan{io.MouseDelta.x, io.MouseDelta.y, size.y});
             moved = true;
         }
     }
     if (ImGui::IsItemHovered()) {
         if (io.MouseWheel != 0) {
-            cc.zoom(io.MouseWheel);
+            out.push(act::Zoom{io.MouseWheel});
             moved = true;
         }
-        if (cc.mode() == CameraController::Mode::Fly) {
+        if (cameraMode == CameraController::Mode::Fly) {
             glm::vec3 m(0.0f);
             m.z += float(ImGui::IsKeyDown('W') - ImGui::IsKeyDown('S'));
             m.x += float(ImGui::IsKeyDown('D') - ImGui::IsKeyDown('A'));
             m.y += float(ImGui::IsKeyDown('E') - ImGui::IsKeyDown('Q'));
             if (m != glm::vec3(0.0f)) {
-                cc.move(m, 0.6f * io.DeltaTime);
+                out.push(act::Fly{m, 0.6f * io.DeltaTime});
                 moved = true;
             }
         }
-        app.view().cursorOnImage = true;
-        if (!app.view().pinPixel) {
+        pt.onImage = true;
+        if (!v.pinPixel) {
             const ImVec2 rel((io.MousePos.x - pos.x) / size.x, (io.MousePos.y - pos.y) / size.y);
-            app.view().hoverUv = glm::vec2(std::clamp(rel.x, 0.0f, 0.99999f), std::clamp(rel.y, 0.0f, 0.99999f));
-            app.view().hoverChain = split && io.MousePos.x > divider ? 1 : 0;
+            pt.uv = glm::vec2(std::clamp(rel.x, 0.0f, 0.99999f), std::clamp(rel.y, 0.0f, 0.99999f));
+            pt.chain = split && io.MousePos.x > divider ? 1 : 0;
         }
     }
-    if (moved) app.frames().noteInteraction();
+    if (moved) out.push(act::NoteInteraction{});
     const bool click = ImGui::IsItemDeactivated() &&
                        ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).x == 0.0f &&
                        ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 2.0f).y == 0.0f;
@@ -120,8 +128,8 @@ ImVec4 labelLines(ImDrawList* dl, ImVec2 pos, const std::string& name, const std
 }
 
 // The reference's buffers say how far the trace is (or why it waits) on their label.
-std::string tag(AppCore& app, const std::string& buffer) {
-    return buffer.rfind("reference.", 0) == 0 ? referenceTag(app.frames()) : std::string();
+std::string tag(const FrameDriver& frames, const std::string& buffer) {
+    return buffer.rfind("reference.", 0) == 0 ? referenceTag(frames) : std::string();
 }
 
 // A buffer with nothing to show yet (its zeros would read as "fully occluded" or "no error"):
@@ -137,12 +145,11 @@ void cover(ImDrawList* dl, ImVec2 p, ImVec2 q, const std::string& why) {
     dl->PopClipRect();
 }
 
-void drawSamples(AppCore& app, ImDrawList* dl, ImVec2 pos, ImVec2 size) {
-    const glm::ivec2 px = app.hoverPixel();
-    if (!app.view().showSamples || px.x < 0) return;
-    const auto& pi = app.inspection();
+void drawSamples(const ViewImages& in, const Renderer& r, ImDrawList* dl, ImVec2 pos, ImVec2 size) {
+    const glm::ivec2 px = in.hoverPixel;
+    if (!in.inspection || px.x < 0) return;
+    const auto& pi = *in.inspection;
     if (!pi || !pi->geometry) return;
-    const Renderer& r = app.renderer();
     const ImVec2 c(pos.x + (float(px.x) + 0.5f) / float(r.width()) * size.x,
                    pos.y + (float(px.y) + 0.5f) / float(r.height()) * size.y);
     dl->AddCircle(c, 6.0f, IM_COL32(255, 255, 0, 255), 12, 2.0f);
@@ -158,105 +165,6 @@ void drawSamples(AppCore& app, ImDrawList* dl, ImVec2 pos, ImVec2 size) {
     }
 }
 
-// The second row of the toolbar in Split mode: what B is, what A | B compares.
-void splitControls(AppCore& app) {
-    ViewState& v = app.view();
-    FrameDriver& f = app.frames();
-    int kind = int(v.splitKind);
-    ImGui::RadioButton("AO on | off", &kind, int(SplitKind::AoOnOff));
-    ImGui::SameLine();
-    ImGui::RadioButton("current | preset", &kind, int(SplitKind::Preset));
-    if (!v.splitCandidateB.empty()) { // a point picked on the front (shift+click in the Front tab)
-        ImGui::SameLine();
-        ImGui::RadioButton(("current | " + v.splitCandidateB).c_str(), &kind, int(SplitKind::Candidate));
-    }
-    if (kind != int(v.splitKind)) v.splitKind = SplitKind(kind), f.keepAwake();
-    if (v.splitKind == SplitKind::Preset) {
-        ImGui::SameLine();
-        ImGui::SetNextItemWidth(150);
-        if (ImGui::BeginCombo("B", v.splitPresetB.c_str())) {
-            for (const auto& e : app.presets().entries())
-                if (ImGui::Selectable(e.name.c_str(), e.name == v.splitPresetB)) v.splitPresetB = e.name, f.keepAwake();
-            ImGui::EndCombo();
-        }
-    }
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(130);
-    if (ImGui::BeginCombo(v.imageB() ? "A shows" : "compare", v.splitBuffer.c_str())) {
-        // Every buffer chain B has too (its own or shared with A), from the graph; against an
-        // engine's frame (an image, no chain B) every buffer of A.
-        for (const Resource* r : app.renderer().buffers()) {
-            const std::string& b = r->desc.name;
-            if ((v.imageB() || app.renderer().graph().find("b." + b)) && ImGui::Selectable(b.c_str(), v.splitBuffer == b))
-                v.splitBuffer = b, f.keepAwake();
-        }
-        ImGui::EndCombo();
-    }
-    ImGui::SameLine();
-    ImGui::BeginDisabled(v.imageB()); // A - B is drawn from two chains of the renderer
-    if (ImGui::Checkbox("A - B", &v.splitDifference)) f.keepAwake();
-    ImGui::EndDisabled();
-    rememberRect(v, "split#difference");
-    if (v.imageB() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("B is the engine's AO frame from Chromium, an image: A - B needs two of ssaolab's chains");
-    if (v.splitDifference) {
-        ImGui::SameLine();
-        ImGui::SetNextItemWidth(90);
-        if (ImGui::SliderFloat("x", &v.diffScale, 1.0f, 100.0f, "%.0f", ImGuiSliderFlags_Logarithmic)) f.keepAwake();
-    }
-}
-
-// The first row: view mode, render scales and the display style.
-void modeAndScales(ViewState& v, FrameDriver& f) {
-    int mode = int(v.mode);
-    ImGui::RadioButton("Grid", &mode, int(ViewMode::Grid));
-    ImGui::SameLine();
-    ImGui::RadioButton("Single", &mode, int(ViewMode::Single));
-    ImGui::SameLine();
-    ImGui::RadioButton("Split A|B", &mode, int(ViewMode::Split));
-    rememberRect(v, "mode#split");
-    if (mode != int(v.mode)) v.mode = ViewMode(mode), f.keepAwake();
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(90);
-    if (ImGui::SliderFloat("resolution", &f.renderScale, 0.25f, 1.0f, "%.2fx", ImGuiSliderFlags_AlwaysClamp))
-        f.keepAwake();
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Render resolution relative to the view when input is still");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(90);
-    if (ImGui::SliderFloat("moving", &f.interactiveScale, 0.1f, 1.0f, "%.2fx", ImGuiSliderFlags_AlwaysClamp))
-        f.keepAwake();
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Resolution while the camera moves or a slider is dragged; refined to full when input stops");
-    ImGui::SameLine();
-    if (ImGui::Checkbox("fit range", &v.style.fit)) f.keepAwake();
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Stretch every buffer over its 1st..99th percentile on geometry (depth and position always are)");
-    ImGui::SameLine();
-    if (ImGui::Checkbox("false colour", &v.style.falseColor)) f.keepAwake();
-}
-
-void toolbar(AppCore& app) {
-    modeAndScales(app.view(), app.frames());
-    // The second row always exists (with frame height), so switching modes never resizes the image
-    // and never re-renders everything.
-    ViewState& v = app.view();
-    if (v.mode == ViewMode::Grid) {
-        ImGui::AlignTextToFramePadding();
-        ImGui::TextDisabled("click a buffer to enlarge it; drag: orbit, right-drag: pan, wheel: zoom; "
-                            "ranges are printed on each view");
-    }
-    if (v.mode == ViewMode::Single) {
-        ImGui::SetNextItemWidth(170);
-        if (ImGui::BeginCombo("buffer", v.enlarged.c_str())) {
-            for (const Resource* r : app.renderer().buffers())
-                if (ImGui::Selectable(r->desc.name.c_str(), r->desc.name == v.enlarged))
-                    v.enlarged = r->desc.name, app.frames().keepAwake();
-            ImGui::EndCombo();
-        }
-    }
-    if (v.mode == ViewMode::Split) splitControls(app);
-}
-
 // A painted buffer is opaque (view.frag writes alpha 1), so it is drawn without the UI's blending:
 // llvmpipe then writes its pixels instead of reading and mixing them, and drops what lay under
 // a tile it covers. The backend's state returns after it.
@@ -268,126 +176,141 @@ void image(ImDrawList* dl, const BufferViews::View* v, ImVec2 p, ImVec2 q, ImVec
     dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
 }
 
+
 // Split A | B where B is an engine's AO frame (an image of the view, ViewState::imageB): A is the
 // buffer chosen, B the frame whatever A shows.
-void drawImageSplit(AppCore& app, ImDrawList* dl, ImVec2 p, ImVec2 q) {
-    ViewState& v = app.view();
+void drawImageSplit(const ViewState& v, const ViewImages& in, ImDrawList* dl, ImVec2 p, ImVec2 q, UiActions& out) {
     const float s = v.splitPosition, x = p.x + (q.x - p.x) * s;
-    image(dl, app.frames().views().find(v.splitBuffer), p, ImVec2(x, q.y), ImVec2(0, 1), ImVec2(s, 0));
-    std::string why;
-    if (const gl::Texture2D* t = app.splitImageB(why)) {
+    image(dl, in.frames.views().find(v.splitBuffer), p, ImVec2(x, q.y), ImVec2(0, 1), ImVec2(s, 0));
+    if (const gl::Texture2D* t = in.imageB) {
         dl->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisable(GL_BLEND); }, nullptr);
         dl->AddImage(texId(*t), ImVec2(x, p.y), q, ImVec2(s, 0), ImVec2(1, 1)); // its top row first
         dl->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
     } else {
-        cover(dl, ImVec2(x, p.y), q, why);
+        cover(dl, ImVec2(x, p.y), q, in.whyNoImageB);
     }
-    v.widgetRects["split#image_b"] = ImVec4(x, p.y, q.x, q.y);
+    out.rects["split#image_b"] = ImVec4(x, p.y, q.x, q.y);
     dl->AddLine(ImVec2(x, p.y), ImVec2(x, q.y), IM_COL32(255, 255, 0, 255), 3.0f);
     dl->AddCircleFilled(ImVec2(x, (p.y + q.y) * 0.5f), 6.0f, IM_COL32(255, 255, 0, 255));
-    v.widgetRects["split#divider"] = ImVec4(x - 4, p.y, x + 4, q.y);
+    out.rects["split#divider"] = ImVec4(x - 4, p.y, x + 4, q.y);
     label(dl, p, "A: current  " + v.splitBuffer);
     const std::string bl = "B: " + v.splitCandidateB + "  AO 0..1 (Chromium)" +
                            (v.splitBuffer.rfind("ao.", 0) == 0 ? "" : ", whatever A shows");
     label(dl, ImVec2(q.x - ImGui::CalcTextSize(bl.c_str()).x - 10, p.y), bl);
 }
 
-// Every buffer, each under its label, laid out to fill `avail` (ui_layout.h); a click enlarges one.
-void drawGrid(AppCore& app, ImVec2 origin, ImVec2 avail, float aspect) {
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    BufferViews& views = app.frames().views();
-    const auto buffers = app.renderer().buffers();
-    // Each image under two lines of its own for its name and range: the label never covers it.
+// Split A | B of two chains: each half its chain's buffer, the divider between them.
+void drawChainSplit(const ViewState& v, const ViewImages& in, ImDrawList* dl, ImVec2 p, ImVec2 sz, UiActions& out) {
+    const ImVec2 q(p.x + sz.x, p.y + sz.y);
+    const BufferViews& views = in.frames.views();
+    const float s = v.splitPosition, x = p.x + sz.x * s;
+    image(dl, views.find(v.splitBuffer), p, ImVec2(x, q.y), ImVec2(0, 1), ImVec2(s, 0));
+    image(dl, views.find("b." + v.splitBuffer), ImVec2(x, p.y), q, ImVec2(s, 1), ImVec2(1, 0));
+    dl->AddLine(ImVec2(x, p.y), ImVec2(x, q.y), IM_COL32(255, 255, 0, 255), 3.0f);
+    dl->AddCircleFilled(ImVec2(x, (p.y + q.y) * 0.5f), 6.0f, IM_COL32(255, 255, 0, 255));
+    out.rects["split#divider"] = ImVec4(x - 4, p.y, x + 4, q.y);
+    label(dl, p, "A: current  " + v.splitBuffer);
+    const std::string bl = v.splitKind == SplitKind::AoOnOff     ? "B: AO off"
+                           : v.splitKind == SplitKind::Candidate ? "B: " + v.splitCandidateB
+                                                                 : "B: " + v.splitPresetB;
+    label(dl, ImVec2(q.x - ImGui::CalcTextSize(bl.c_str()).x - 10, p.y), bl);
+    drawSamples(in, in.frames.renderer(), dl, p, sz);
+}
+
+// Every buffer, each under two lines of its own for its name and range (the label never covers
+// it), laid out to fill the view (ui_layout.h).
+GridLayout grid(const ViewArea& a, size_t buffers) {
+    const float aspect = float(a.renderer.width()) / float(a.renderer.height());
     const float labelHeight = 2.0f * ImGui::GetTextLineHeight() + 4.0f;
-    const GridLayout grid = gridLayout(int(buffers.size()), avail.x, avail.y, aspect, labelHeight, 4.0f);
-    app.view().widgetRects["view#grid"] = ImVec4(origin.x, origin.y, origin.x + avail.x, origin.y + avail.y);
+    return gridLayout(int(buffers), a.avail.x, a.avail.y, aspect, labelHeight, 4.0f);
+}
+
+// The image's rectangle in Single and Split mode: the render's aspect, centred.
+void imageRect(const ViewArea& a, ImVec2& p, ImVec2& sz) {
+    ImVec2 off;
+    fit(a.avail, float(a.renderer.width()) / float(a.renderer.height()), off, sz);
+    p = ImVec2(a.origin.x + off.x, a.origin.y + off.y);
+}
+
+// Every buffer under its label; a click (drawViewInput) enlarges one.
+void drawGrid(const ViewArea& a, const ViewImages& in, UiActions& out) {
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const auto buffers = a.renderer.buffers();
+    const GridLayout g = grid(a, buffers.size());
+    out.rects["view#grid"] = ImVec4(a.origin.x, a.origin.y, a.origin.x + a.avail.x, a.origin.y + a.avail.y);
     float widest = 1.0f;
-    for (size_t i = 0; i < buffers.size() && i < grid.slots.size(); ++i) {
+    for (size_t i = 0; i < buffers.size() && i < g.slots.size(); ++i) {
         const std::string& name = buffers[i]->desc.name;
-        const GridSlot& g = grid.slots[i];
-        const ImVec2 p(origin.x + g.x, origin.y + g.y), q(p.x + g.w, p.y + g.h);
-        ImGui::PushID(int(i));
-        const bool clicked = interact(app, "cell", p, ImVec2(g.w, g.h));
-        ImGui::PopID();
-        const BufferViews::View* v = views.find(name);
+        const GridSlot& s = g.slots[i];
+        const ImVec2 p(a.origin.x + s.x, a.origin.y + s.y), q(p.x + s.w, p.y + s.h);
+        const BufferViews::View* v = in.frames.views().find(name);
         image(dl, v, p, q);
-        cover(dl, p, q, referenceEmptyReason(app.frames(), name));
+        cover(dl, p, q, referenceEmptyReason(in.frames, name));
         // The view's label is "name  range": the range goes on the second line.
-        std::string range = (v ? v->label.substr(std::min(name.size(), v->label.size())) : "") + tag(app, name);
+        std::string range = (v ? v->label.substr(std::min(name.size(), v->label.size())) : "") + tag(in.frames, name);
         range.erase(0, std::min(range.find_first_not_of(' '), range.size()));
-        app.view().widgetRects["label#" + name] = labelLines(dl, ImVec2(p.x, origin.y + g.labelY), name, range, g.w);
-        app.view().widgetRects["view#" + name] = ImVec4(p.x, p.y, q.x, q.y);
-        widest = std::max(widest, g.w);
-        if (clicked) {
-            app.view().enlarged = name;
-            app.view().mode = ViewMode::Single;
-            app.frames().keepAwake();
-        }
+        out.rects["label#" + name] = labelLines(dl, ImVec2(p.x, a.origin.y + s.labelY), name, range, s.w);
+        out.rects["view#" + name] = ImVec4(p.x, p.y, q.x, q.y);
+        widest = std::max(widest, s.w);
     }
     // Painted at the largest cell's size next frame (rows of fewer images have larger ones).
-    app.view().gridCellPx = std::max(1, int(std::ceil(widest * ImGui::GetIO().DisplayFramebufferScale.x)));
+    out.push(act::SetGridCellPx{std::max(1, int(std::ceil(widest * ImGui::GetIO().DisplayFramebufferScale.x)))});
 }
 
 } // namespace
 
-void drawMainView(AppCore& app, ImVec2 pos, ImVec2 size) {
-    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
-    beginFixedWindow("view", pos, size,
-                     ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
-                         ImGuiWindowFlags_NoScrollWithMouse);
-    toolbar(app);
-    const ImVec2 origin = ImGui::GetCursorScreenPos();
-    const ImVec2 avail = ImGui::GetContentRegionAvail();
-    app.view().viewWidth = avail.x; // a drag across the whole view turns half a turn, in a grid cell too
-    // Render at the size the enlarged view shows (1:1 pixels, framebuffer scale included).
-    const ImVec2 fbScale = ImGui::GetIO().DisplayFramebufferScale;
-    app.renderIfNeeded(int(avail.x * fbScale.x), int(avail.y * fbScale.y));
-    app.view().cursorOnImage = false; // set again below by the image the cursor is over
-    Renderer& r = app.renderer();
-    const float aspect = float(r.width()) / float(r.height());
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    BufferViews& views = app.frames().views();
-
-    if (app.view().mode == ViewMode::Grid) {
-        drawGrid(app, origin, avail, aspect);
-    } else {
-        ImVec2 off, sz;
-        fit(avail, aspect, off, sz);
-        const ImVec2 p(origin.x + off.x, origin.y + off.y), q(p.x + sz.x, p.y + sz.y);
-        if (interact(app, "image", p, sz) && app.view().mode == ViewMode::Single) app.view().pinPixel = !app.view().pinPixel;
-        app.view().widgetRects["view#main"] = ImVec4(p.x, p.y, q.x, q.y);
-        if (app.view().mode == ViewMode::Single) {
-            const BufferViews::View* v = views.find(app.view().enlarged);
-            image(dl, v, p, q);
-            cover(dl, p, q, referenceEmptyReason(app.frames(), app.view().enlarged));
-            label(dl, p, (v ? v->label : app.view().enlarged) + tag(app, app.view().enlarged));
-            drawSamples(app, dl, p, sz);
-        } else if (app.view().imageB()) {
-            drawImageSplit(app, dl, p, q);
-        } else if (app.view().splitDifference) {
-            if (r.graph().find("b." + app.view().splitBuffer)) {
-                const BufferViews::View& d =
-                    views.difference(r, app.view().splitBuffer, "b." + app.view().splitBuffer, app.view().diffScale);
-                image(dl, &d, p, q);
-                label(dl, p, d.label);
-            }
-        } else {
-            const float s = app.view().splitPosition, x = p.x + sz.x * s;
-            image(dl, views.find(app.view().splitBuffer), p, ImVec2(x, q.y), ImVec2(0, 1), ImVec2(s, 0));
-            image(dl, views.find("b." + app.view().splitBuffer), ImVec2(x, p.y), q, ImVec2(s, 1), ImVec2(1, 0));
-            dl->AddLine(ImVec2(x, p.y), ImVec2(x, q.y), IM_COL32(255, 255, 0, 255), 3.0f);
-            dl->AddCircleFilled(ImVec2(x, (p.y + q.y) * 0.5f), 6.0f, IM_COL32(255, 255, 0, 255));
-            app.view().widgetRects["split#divider"] = ImVec4(x - 4, p.y, x + 4, q.y);
-            label(dl, p, "A: current  " + app.view().splitBuffer);
-            const std::string bl = app.view().splitKind == SplitKind::AoOnOff     ? "B: AO off"
-                                   : app.view().splitKind == SplitKind::Candidate ? "B: " + app.view().splitCandidateB
-                                                                                  : "B: " + app.view().splitPresetB;
-            label(dl, ImVec2(q.x - ImGui::CalcTextSize(bl.c_str()).x - 10, p.y), bl);
-            drawSamples(app, dl, p, sz);
+void drawViewInput(const ViewArea& a, CameraController::Mode cameraMode, UiActions& out) {
+    const ViewState& v = a.view;
+    Pointer pt{v.draggingDivider, v.splitPosition, false, v.hoverUv, v.hoverChain};
+    if (v.mode == ViewMode::Grid) {
+        const auto buffers = a.renderer.buffers();
+        const GridLayout g = grid(a, buffers.size());
+        for (size_t i = 0; i < buffers.size() && i < g.slots.size(); ++i) {
+            const GridSlot& s = g.slots[i];
+            ImGui::PushID(int(i));
+            const bool clicked =
+                interact(v, cameraMode, pt, "cell", ImVec2(a.origin.x + s.x, a.origin.y + s.y), ImVec2(s.w, s.h), out);
+            ImGui::PopID();
+            if (clicked) out.push(act::SelectView{ViewMode::Single, buffers[i]->desc.name});
         }
+    } else {
+        ImVec2 p, sz;
+        imageRect(a, p, sz);
+        if (interact(v, cameraMode, pt, "image", p, sz, out) && v.mode == ViewMode::Single) out.push(act::TogglePin{});
     }
-    ImGui::End();
-    ImGui::PopStyleVar();
+    if (pt.dragging != v.draggingDivider || pt.position != v.splitPosition)
+        out.push(act::SetDivider{pt.dragging, pt.position});
+    if (pt.onImage) out.push(act::CursorOnImage{});
+    if (pt.uv != v.hoverUv || pt.chain != v.hoverChain) out.push(act::SetHover{pt.uv, pt.chain});
+}
+
+void drawViewImages(const ViewArea& a, const ViewImages& in, UiActions& out) {
+    const ViewState& v = a.view;
+    if (in.mode == ViewMode::Grid) {
+        drawGrid(a, in, out);
+        return;
+    }
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    ImVec2 p, sz;
+    imageRect(a, p, sz);
+    const ImVec2 q(p.x + sz.x, p.y + sz.y);
+    out.rects["view#main"] = ImVec4(p.x, p.y, q.x, q.y);
+    if (v.mode == ViewMode::Single) {
+        const BufferViews::View* b = in.frames.views().find(v.enlarged);
+        image(dl, b, p, q);
+        cover(dl, p, q, referenceEmptyReason(in.frames, v.enlarged));
+        label(dl, p, (b ? b->label : v.enlarged) + tag(in.frames, v.enlarged));
+        drawSamples(in, a.renderer, dl, p, sz);
+    } else if (v.imageB()) {
+        drawImageSplit(v, in, dl, p, q, out);
+    } else if (v.splitDifference) {
+        if (in.difference) {
+            image(dl, in.difference, p, q);
+            label(dl, p, in.difference->label);
+        }
+    } else {
+        drawChainSplit(v, in, dl, p, sz, out);
+    }
 }
 
 } // namespace ssao

@@ -346,3 +346,38 @@ TEST(Layering, ATechniqueDeclaresThePyramidTheRendererAdds) {
     }
     EXPECT_GE(withRow, 1);
 }
+
+TEST(Layering, PanelsTakeWhatTheyDrawAndReturnActions) {
+    // The explorer's panels (app/view/ui_*.cpp) are given the state they draw and return actions
+    // (view/ui_actions.h) that AppCore applies: none reaches into AppCore for a mutable part.
+    const fs::path view = fs::path(SSAOLAB_SOURCE_DIR) / "app/view";
+    const std::regex core("\\bAppCore\\b|\"view/app_core\\.h\"");
+    const std::regex accessor(
+        "\\bapp(_|\\(\\))?(\\.|->)(view|settings|presets|front|frames|inspector|cameraController|renderer)\\(\\)");
+    int panels = 0;
+    for (const auto& e : fs::directory_iterator(view)) {
+        const std::string name = e.path().filename().string();
+        if (name.rfind("ui_", 0) != 0 || e.path().extension() != ".cpp") continue;
+        ++panels;
+        const std::string text = slurp(e.path());
+        EXPECT_FALSE(std::regex_search(text, core)) << name << " names AppCore: give the panel what it draws";
+        std::smatch m;
+        EXPECT_FALSE(std::regex_search(text, m, accessor)) << name << " calls " << m.str() << " of the app";
+    }
+    EXPECT_GE(panels, 5);
+    // Each panel's entry point takes its state const; the one mutable reference is where its actions
+    // go. The strip under the image keeps the parts it reads (its checkboxes, the inspector's cache).
+    const std::string decls = slurp(view / "ui_panels.h");
+    const std::regex entry("\\bvoid ((?:begin|draw)\\w+)\\(([^)]*)\\)");
+    const std::regex mutableRef("(^|,)\\s*(?!const\\b)[\\w:<>]+&");
+    const std::set<std::string> strip = {"drawInfoStrip", "drawReferenceSection"};
+    int entries = 0;
+    for (auto it = std::sregex_iterator(decls.begin(), decls.end(), entry); it != std::sregex_iterator(); ++it) {
+        const std::string fn = (*it)[1], params = (*it)[2];
+        if (strip.count(fn)) continue;
+        ++entries;
+        const std::string rest = std::regex_replace(params, std::regex("UiActions& out"), "");
+        EXPECT_FALSE(std::regex_search(rest, mutableRef)) << fn << "(" << params << ") takes a mutable reference";
+    }
+    EXPECT_GE(entries, 7);
+}
