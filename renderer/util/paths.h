@@ -1,5 +1,5 @@
 // Where ssaolab's run-time files are. An installed binary (cmake --install) finds them next to
-// itself — PREFIX/bin/ssaolab reads PREFIX/share/ssaolab/{shaders,assets} — so the install can be
+// itself — PREFIX/bin/ssaolab reads PREFIX/share/ssaolab/{shaders,assets,tools} — so the install can be
 // moved anywhere; a binary in the build tree falls back to the source tree (development, where
 // shader hot reload edits the real files). SSAOLAB_DATA_DIR overrides both.
 #pragma once
