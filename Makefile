@@ -38,7 +38,7 @@ screenshot: build
 	  $(BUILD)/app/ssaolab view --size 1600x900 --frames 8 --screenshot assets/screenshots/explorer.png
 
 # Every test, then a short libFuzzer run (60 s a target, ASan+UBSan, build-fuzz/) of the glTF
-# loader, the settings parsers and bench merge's shard reader.
+# loader, the settings parsers, bench merge's shard reader and the user technique header.
 test: build engine-modules
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 	@bash .ci/fuzz.sh build-fuzz $(SCENES)
@@ -108,7 +108,8 @@ test-sanitize: deps
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/.ci/lsan.supp:print_suppressions=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS)
 
-# libFuzzer + ASan/UBSan on the glTF loader, the settings parsers and the shard reader (build-fuzz/, clang);
+# libFuzzer + ASan/UBSan on the glTF loader, the settings parsers, the shard reader and the user
+# technique header (build-fuzz/, clang);
 # FUZZ_SECONDS per target (60 by default; `FUZZ_SECONDS=3600 make fuzz` for a long run).
 fuzz: configure
 	@bash .ci/fuzz.sh build-fuzz $(SCENES)
