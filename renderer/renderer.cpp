@@ -119,10 +119,17 @@ Pass& Renderer::passFor(const std::string& key, const std::function<std::unique_
     return *slot;
 }
 
+void Renderer::setTechniquePasses(TechniquePassMaker make) {
+    techniqueOverride_ = std::move(make);
+    for (auto it = techniquePasses_.begin(); it != techniquePasses_.end();) // the previous stand-ins
+        it = it->first.find('|') != std::string::npos ? techniquePasses_.erase(it) : std::next(it);
+    graphStale_ = true;
+}
+
 std::vector<Pass*> Renderer::techniquePasses(const Chain& b, const Settings& s) {
     const TechniqueInfo& t = findTechnique(s.ao.technique);
-    auto& owned = techniquePasses_[b.prefix + t.id];
-    if (owned.empty()) owned = t.makePasses(b);
+    auto& owned = techniquePasses_[b.prefix + (techniqueOverride_ ? "|override" : t.id)];
+    if (owned.empty()) owned = techniqueOverride_ ? techniqueOverride_(b) : t.makePasses(b);
     std::vector<Pass*> out;
     for (auto& p : owned)
         out.push_back(p.get());

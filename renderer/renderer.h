@@ -66,6 +66,10 @@ class Renderer {
     // that feed none of them are culled, and the G-buffer leaves out targets nothing reads
     // (skip.unused_targets). gbuffer.depth is always kept (radiusAtCentre reads it).
     void setWanted(std::optional<std::set<std::string>> buffers);
+    // Passes that stand in for the settings' technique in both chains (a user technique's
+    // UserAoPass, techniques/user/user_pass.h); null gives the registry's passes back.
+    using TechniquePassMaker = std::function<std::vector<std::unique_ptr<Pass>>(const Chain&)>;
+    void setTechniquePasses(TechniquePassMaker make);
     // Forces every pass to run on the next frame (e.g. for timing all passes).
     void invalidate() { graph_.invalidate(); }
 
@@ -144,6 +148,7 @@ class Renderer {
     bool referenceOn_ = false;
     std::vector<bool> sharedB_; // sharedWithChainA() when the graph was built
     std::map<std::string, std::vector<std::unique_ptr<Pass>>> techniquePasses_; // by chain + technique
+    TechniquePassMaker techniqueOverride_; // setTechniquePasses
 };
 
 } // namespace ssao

@@ -31,11 +31,12 @@ std::string includeTarget(const std::string& line, const std::string& where) {
 }
 
 void expand(const std::string& dir, const std::string& file, std::vector<std::string>& files,
-            std::set<std::string>& included, std::ostringstream& out, int depth) {
+            std::set<std::string>& included, std::ostringstream& out, int depth, const Sources* sources) {
     if (depth > 16) throw Error("shader include depth exceeded at " + file);
     const int fileId = int(files.size());
     files.push_back(file);
-    std::istringstream in(readFile(dir + "/" + file));
+    const auto source = sources ? sources->find(file) : Sources::const_iterator{};
+    std::istringstream in(sources && source != sources->end() ? source->second : readFile(dir + "/" + file));
     std::string line;
     int lineNo = 0;
     while (std::getline(in, line)) {
@@ -45,7 +46,7 @@ void expand(const std::string& dir, const std::string& file, std::vector<std::st
             // Includes are relative to the shader root (like a -I path), e.g. "include/onb.glsl".
             if (included.insert(inc).second) {
                 out << "#line 1 " << files.size() << "\n";
-                expand(dir, inc, files, included, out, depth + 1);
+                expand(dir, inc, files, included, out, depth + 1, sources);
             }
             out << "#line " << lineNo + 1 << " " << fileId << "\n";
             continue;
@@ -57,18 +58,19 @@ void expand(const std::string& dir, const std::string& file, std::vector<std::st
 } // namespace
 
 std::string preprocessShader(const std::string& shaderDir, const std::string& file, const Defines& defines,
-                             std::vector<std::string>& files) {
+                             std::vector<std::string>& files, const Sources* sources) {
     files.clear();
     std::ostringstream body;
     std::set<std::string> included;
-    expand(shaderDir, file, files, included, body, 0);
+    expand(shaderDir, file, files, included, body, 0, sources);
     const std::string text = body.str();
     // The #version line must come first: pull it out, then inject defines and resync lines.
     const size_t start = text.find_first_not_of(" \t\r\n");
     const size_t hash = start == std::string::npos || text[start] != '#' ? std::string::npos : start;
     const size_t kw = hash == std::string::npos ? hash : text.find_first_not_of(" \t", hash + 1);
     if (kw == std::string::npos || text.compare(kw, 7, "version") != 0)
-        throw Error(shaderDir + "/" + file + ":1: shader must start with #version");
+        throw Error((sources && sources->count(file) ? file : shaderDir + "/" + file) +
+                    ":1: shader must start with #version");
     const size_t eol = text.find('\n', kw);
     const std::string version = text.substr(0, eol == std::string::npos ? text.size() : eol + 1);
     std::ostringstream out;
@@ -107,17 +109,41 @@ bool logLocation(const std::string& s, size_t& id, size_t& line, size_t& at, siz
 }
 } // namespace
 
-std::string mapLogToFiles(const std::string& log, const std::vector<std::string>& files) {
+namespace {
+// mapLogToFiles with each file's name as given (a virtual source's) or under "shaders/".
+std::string mapLog(const std::string& log, const std::vector<std::string>& files, const Sources* sources) {
     std::istringstream in(log);
     std::ostringstream out;
     std::string line;
     while (std::getline(in, line)) {
         size_t id = 0, no = 0, at = 0, end = 0;
-        if (logLocation(line, id, no, at, end) && id < files.size())
-            line = line.substr(0, at) + "shaders/" + files[id] + ":" + std::to_string(no) + line.substr(end);
+        if (logLocation(line, id, no, at, end) && id < files.size()) {
+            const bool virtualName = sources && sources->count(files[id]);
+            line = line.substr(0, at) + (virtualName ? "" : "shaders/") + files[id] + ":" + std::to_string(no) +
+                   line.substr(end);
+        }
         out << line << "\n";
     }
     return out.str();
+}
+
+// The first line of a mapped log that names an error (else its first non-blank line), trimmed.
+std::string firstError(const std::string& log) {
+    std::istringstream in(log);
+    std::string line, first;
+    while (std::getline(in, line)) {
+        const size_t from = line.find_first_not_of(" \t\r"), to = line.find_last_not_of(" \t\r");
+        if (from == std::string::npos) continue;
+        line = line.substr(from, to - from + 1);
+        if (line.find("error") != std::string::npos) return line;
+        if (first.empty()) first = line;
+    }
+    return first.empty() ? "shader compile failed" : first;
+}
+} // namespace
+
+std::string mapLogToFiles(const std::string& log, const std::vector<std::string>& files) {
+    return mapLog(log, files, nullptr);
 }
 
 namespace {
@@ -131,27 +157,46 @@ std::string infoLog(GLuint id, bool program) {
     return log.c_str();
 }
 
-ShaderHandle compile(GLenum stage, const std::string& dir, const std::string& file, const Defines& defines) {
+ShaderHandle compile(GLenum stage, const std::string& dir, const std::string& file, const Defines& defines,
+                     const Sources& sources) {
     std::vector<std::string> files;
-    std::string src = preprocessShader(dir, file, defines, files);
+    std::string src = preprocessShader(dir, file, defines, files, &sources);
     ShaderHandle sh(glCreateShader(stage));
     const char* p = src.c_str();
     glShaderSource(sh.id(), 1, &p, nullptr);
     glCompileShader(sh.id());
     GLint ok = 0;
     glGetShaderiv(sh.id(), GL_COMPILE_STATUS, &ok);
-    if (!ok) throw Error("shader compile failed: " + mapLogToFiles(infoLog(sh.id(), false), files));
-    return sh;
+    if (ok) return sh;
+    const std::string log = mapLog(infoLog(sh.id(), false), files, &sources);
+    // A source given as text (a user's file) fails with one line naming its file and line.
+    if (sources.count(file)) throw Error(firstError(log));
+    throw Error("shader compile failed: " + log);
+}
+
+// FNV-1a 64 of a virtual source's text: part of its programs' cache keys.
+std::string textKey(const std::string& text) {
+    unsigned long long h = 0xcbf29ce484222325ull;
+    for (unsigned char c : text)
+        h = (h ^ c) * 0x100000001b3ull;
+    return std::to_string(h);
 }
 
 } // namespace
 
 ShaderLibrary::ShaderLibrary(std::string shaderDir) : dir_(std::move(shaderDir)) {}
 
-ProgramHandle ShaderLibrary::build(const std::string& dir, const std::string& vert, const std::string& frag,
-                                   const Defines& defines) {
-    ShaderHandle vs = compile(GL_VERTEX_SHADER, dir, vert, defines);
-    ShaderHandle fs = compile(GL_FRAGMENT_SHADER, dir, frag, defines);
+void ShaderLibrary::setSource(const std::string& name, const std::string& text) {
+    auto it = sources_.find(name);
+    if (it != sources_.end() && it->second == text) return;
+    for (auto e = cache_.begin(); e != cache_.end();) // programs of the old text
+        e = e->second.vert == name || e->second.frag == name ? cache_.erase(e) : std::next(e);
+    sources_[name] = text;
+}
+
+ProgramHandle ShaderLibrary::build(const std::string& vert, const std::string& frag, const Defines& defines) const {
+    ShaderHandle vs = compile(GL_VERTEX_SHADER, dir_, vert, defines, sources_);
+    ShaderHandle fs = compile(GL_FRAGMENT_SHADER, dir_, frag, defines, sources_);
     ProgramHandle prog(glCreateProgram());
     glAttachShader(prog.id(), vs.id());
     glAttachShader(prog.id(), fs.id());
@@ -167,9 +212,13 @@ GLuint ShaderLibrary::program(const std::string& vert, const std::string& frag, 
     std::string key = vert + "|" + frag;
     for (auto& [k, v] : defines)
         key += "|" + k + "=" + v;
+    for (const std::string* stage : {&vert, &frag}) {
+        auto src = sources_.find(*stage);
+        if (src != sources_.end()) key += "#" + textKey(src->second);
+    }
     auto it = cache_.find(key);
     if (it != cache_.end()) return it->second.program.id();
-    Entry e{build(dir_, vert, frag, defines), vert, frag, defines};
+    Entry e{build(vert, frag, defines), vert, frag, defines};
     GLuint id = e.program.id();
     cache_.emplace(key, std::move(e));
     return id;
@@ -178,14 +227,14 @@ GLuint ShaderLibrary::program(const std::string& vert, const std::string& frag, 
 std::vector<ShaderLibrary::Variant> ShaderLibrary::variants() const {
     std::vector<Variant> out;
     for (const auto& [key, e] : cache_)
-        out.push_back({e.vert, e.frag, e.defines});
+        if (!sources_.count(e.vert) && !sources_.count(e.frag)) out.push_back({e.vert, e.frag, e.defines});
     return out;
 }
 
 void ShaderLibrary::reload() {
     std::map<std::string, Entry> fresh;
     for (auto& [key, e] : cache_)
-        fresh.emplace(key, Entry{build(dir_, e.vert, e.frag, e.defines), e.vert, e.frag, e.defines});
+        fresh.emplace(key, Entry{build(e.vert, e.frag, e.defines), e.vert, e.frag, e.defines});
     cache_.swap(fresh); // only reached when every program compiled and linked
 }
 

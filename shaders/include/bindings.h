@@ -26,6 +26,7 @@
 #define SSAO_UBO_FRAME 0   // FrameConstants
 #define SSAO_UBO_AO 1      // the AO technique's constants (first member: AoCommon)
 #define SSAO_UBO_DENOISE 2 // DenoiseConstants
+#define SSAO_UBO_USER 3    // a user technique's parameters (SsaoUserParams; renderer/techniques/user)
 #define SSAO_SSBO_INSPECT 0 // sample inspector record (INSPECT builds only)
 #define SSAO_LOC_AO_LAYER_CELL 30 // deinterleaved AO: the layer's cell of the 4x4 tile (noise.glsl, techniques/deinterleave.h)
 

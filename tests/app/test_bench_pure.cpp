@@ -76,7 +76,9 @@ TEST(BenchSweep, AllVariesEveryChoiceSoNoSweepListsTheTechniques) {
         if (!g.contains("vary") || !g["vary"].contains("ao.technique")) continue;
         const nlohmann::json& v = g["vary"]["ao.technique"];
         alls += v == "all";
-        if (v.is_array()) EXPECT_LT(v.size(), 3u) << g.dump() << ": \"all\" instead of a list of the techniques";
+        if (v.is_array()) {
+            EXPECT_LT(v.size(), 3u) << g.dump() << ": \"all\" instead of a list of the techniques";
+        }
     }
     EXPECT_GE(alls, 1);
 }

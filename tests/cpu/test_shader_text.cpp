@@ -50,3 +50,22 @@ TEST(ShaderText, DriverLogsAreMappedToFileAndLine) {
     EXPECT_EQ(gl::mapLogToFiles("0(7) : error C0000: x", files),
               "shaders/techniques/kernel/kernel.frag:7 : error C0000: x\n");
 }
+
+TEST(ShaderText, ASourceGivenAsTextIsReadUnderItsNameWithIncludesFromTheFolder) {
+    std::string dir = makeDir();
+    const gl::Sources sources{{"mine/x.ao.glsl", "#version 450 core\n#include \"include/a.glsl\"\nvoid main() {}\n"},
+                              {"main.frag", "#version 450 core\n// text wins over the file\n"}};
+    std::vector<std::string> files;
+    const std::string out = gl::preprocessShader(dir, "mine/x.ao.glsl", {}, files, &sources);
+    ASSERT_EQ(files.size(), 2u);
+    EXPECT_EQ(files[0], "mine/x.ao.glsl");
+    EXPECT_NE(out.find("float a()"), std::string::npos) << out;
+    EXPECT_NE(gl::preprocessShader(dir, "main.frag", {}, files, &sources).find("text wins"), std::string::npos);
+    const gl::Sources bad{{"mine/y.ao.glsl", "void main() {}\n"}};
+    try {
+        gl::preprocessShader(dir, "mine/y.ao.glsl", {}, files, &bad);
+        FAIL() << "no #version accepted";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("mine/y.ao.glsl:1: ", 0), 0u) << e.what(); // its name, not the folder's
+    }
+}

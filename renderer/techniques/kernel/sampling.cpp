@@ -43,7 +43,10 @@ std::vector<glm::vec3> makeNoise(uint32_t seed) {
     Rng rng(uint64_t(seed) * 4 + 7);
     std::vector<glm::vec3> out;
     while (out.size() < 16) {
-        glm::vec3 v(rng.uniform(-1.0f, 1.0f), rng.uniform(-1.0f, 1.0f), 0.0f);
+        // Named draws: a constructor's arguments are evaluated in no fixed order, and the tile
+        // (and the learnopengl example that rebuilds it) must not change with the compiler.
+        const float y = rng.uniform(-1.0f, 1.0f), x = rng.uniform(-1.0f, 1.0f);
+        const glm::vec3 v(x, y, 0.0f);
         if (glm::dot(v, v) > 1e-4f) out.push_back(v);
     }
     return out;
