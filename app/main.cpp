@@ -1,6 +1,7 @@
 // ssaolab command line: `view` (window), `render` (headless), `params` (the parameter table).
 // Without a subcommand: the window when there is a display, else a headless render into out/.
 #include "cli/cli_util.h"
+#include "cli/headless_runner.h"
 #include "cli/scene_options.h"
 #include "commands/bench/bench_command.h"
 #include "commands/docs/cli_reference.h"
@@ -83,6 +84,7 @@ struct Commands {
     double maxSceneMib = double(ssao::SceneBudget{}.bytes >> 20);
     double maxMaskMpix = double(ssao::SceneBudget{}.maskPixels >> 20);
     std::string transparent = "skip";
+    double frameTimeLimit = ssao::HeadlessRunner::kDefaultFrameTimeLimit;
     ssao::RenderOptions render;
     ssao::BenchOptions bench;
     ssao::BenchMergeOptions benchMerge;
@@ -117,6 +119,11 @@ struct Commands {
                        "alpha cut-outs) hold more pixels in total (millions of 2^20), checked from each image's header")
             ->capture_default_str()
             ->check(ssao::cliRange(1.0, 1 << 14));
+        app.add_option("--frame-time-limit", frameTimeLimit,
+                       "render, bench, tune, skips, stress: a frame whose GPU work takes longer (seconds) ends the "
+                       "run with one error - a shader that never ends cannot hang it")
+            ->capture_default_str()
+            ->check(ssao::cliRange(0.01, 3600.0));
         ssao::addRenderOptions(*sub("render", "render a scene headless (EGL) into EXR/PNG buffers and metrics.json"),
                                render);
         benchCmd = sub("bench", "run time against error: every configuration of a sweep against the ray-traced reference");
@@ -191,6 +198,7 @@ struct Commands {
     int run() {
         ssao::setSceneBudget({size_t(maxTriangles), size_t(maxSceneMib) << 20, size_t(maxMaskMpix) << 20});
         ssao::setTransparentMode(ssao::parseTransparent(transparent));
+        ssao::HeadlessRunner::setFrameTimeLimit(frameTimeLimit);
         if (app.got_subcommand("params")) {
             printParams();
             return 0;

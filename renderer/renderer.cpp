@@ -102,6 +102,12 @@ void Renderer::setDisplayWidth(int px) {
     graphStale_ = true; // the composite's size
 }
 
+void Renderer::setFrameTimeLimit(double seconds) {
+    if (!(seconds >= 0.0) || !std::isfinite(seconds)) throw Error("frame time limit must be 0 (none) or positive");
+    if (watchdog_ && watchdog_->seconds() == seconds) return;
+    watchdog_ = seconds > 0.0 ? std::make_unique<gl::FrameWatchdog>(seconds) : nullptr;
+}
+
 void Renderer::setDisplayScale(float scale) {
     if (!(scale > 0.0f) || !std::isfinite(scale)) throw Error("display scale must be positive");
     displayScale_ = scale;
@@ -119,8 +125,9 @@ Pass& Renderer::passFor(const std::string& key, const std::function<std::unique_
     return *slot;
 }
 
-void Renderer::setTechniquePasses(TechniquePassMaker make) {
+void Renderer::setTechniquePasses(TechniquePassMaker make, std::string label) {
     techniqueOverride_ = std::move(make);
+    techniqueLabel_ = techniqueOverride_ ? std::move(label) : std::string();
     for (auto it = techniquePasses_.begin(); it != techniquePasses_.end();) // the previous stand-ins
         it = it->first.find('|') != std::string::npos ? techniquePasses_.erase(it) : std::next(it);
     graphStale_ = true;
@@ -209,6 +216,9 @@ void Renderer::buildGraph() {
 FrameReport Renderer::render() {
     if (!scene_) throw Error("renderer: no scene set");
     if (width_ <= 0) throw Error("renderer: no size set");
+    // Watched from here (the passes' compiles count too) until the frame's GL work is done.
+    gl::FrameWatchdog::Frame watch(watchdog_.get(), !techniqueLabel_.empty() ? techniqueLabel_
+                                                    : "technique " + settings_.ao.technique);
     effective_ = effectiveCamera(camera_, bounds_);
     // Temporal accumulation: a settings/size/scene change drops the history, a camera change only
     // restarts the count (the history is reprojected); while counting, the frame index advances and
@@ -242,7 +252,7 @@ FrameReport Renderer::render() {
     // Only when settings, chain B, the size or the reference changed - or this frame tells apart
     // chain-B passes that were shared (or shares ones that were not).
     if (graphStale_ || (settingsB_ && sharedWithChainA(nullptr) != sharedB_)) buildGraph();
-    return graph_.execute(frame_, shaders_, triangle_);
+    return graph_.execute(frame_, shaders_, triangle_, [&watch] { watch.waitForGpu(); });
 }
 
 bool Renderer::accumulating() const {

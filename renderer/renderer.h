@@ -2,6 +2,7 @@
 // stage and the composite — plus, for the split view, a second AO chain "b." with its own settings
 // that shares the G-buffer (and any pass whose settings and inputs equal the first chain's).
 #pragma once
+#include "gl/frame_watchdog.h"
 #include "gl/shader_library.h"
 #include "graph/frame_graph.h"
 #include "passes/reference_pass.h"
@@ -68,8 +69,12 @@ class Renderer {
     void setWanted(std::optional<std::set<std::string>> buffers);
     // Passes that stand in for the settings' technique in both chains (a user technique's
     // UserAoPass, techniques/user/user_pass.h); null gives the registry's passes back.
+    // `label` names them in errors (the user's file); "" names the settings' technique.
     using TechniquePassMaker = std::function<std::vector<std::unique_ptr<Pass>>(const Chain&)>;
-    void setTechniquePasses(TechniquePassMaker make);
+    void setTechniquePasses(TechniquePassMaker make, std::string label = {});
+    // Headless runs only: a render() whose GL work has not finished `seconds` after it began ends
+    // the process with one error line (gl/frame_watchdog.h). 0, the default (the explorer): no limit.
+    void setFrameTimeLimit(double seconds);
     // Forces every pass to run on the next frame (e.g. for timing all passes).
     void invalidate() { graph_.invalidate(); }
 
@@ -149,6 +154,8 @@ class Renderer {
     std::vector<bool> sharedB_; // sharedWithChainA() when the graph was built
     std::map<std::string, std::vector<std::unique_ptr<Pass>>> techniquePasses_; // by chain + technique
     TechniquePassMaker techniqueOverride_; // setTechniquePasses
+    std::string techniqueLabel_;           // setTechniquePasses' label
+    std::unique_ptr<gl::FrameWatchdog> watchdog_; // setFrameTimeLimit; null: no limit
 };
 
 } // namespace ssao

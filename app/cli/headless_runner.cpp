@@ -23,9 +23,18 @@ HeadlessRunner::HeadlessRunner(const Options& o)
         glEnable(GL_TEXTURE_2D); // not a capability in a core profile: GL_INVALID_ENUM
 }
 
+namespace {
+double frameTimeLimit = HeadlessRunner::kDefaultFrameTimeLimit; // seconds; set once, before any run
+} // namespace
+
+void HeadlessRunner::setFrameTimeLimit(double seconds) {
+    frameTimeLimit = seconds;
+}
+
 std::unique_ptr<Renderer> HeadlessRunner::makeRenderer(int w, int h) const {
     auto r = std::make_unique<Renderer>(shaderDir_);
     r->setSize(w, h);
+    r->setFrameTimeLimit(frameTimeLimit);
     return r;
 }
 

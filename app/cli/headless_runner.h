@@ -35,6 +35,11 @@ class HeadlessRunner {
     // NaN or infinite.
     Image readFinite(const Renderer& r, const std::string& buffer, const std::string& during) const;
 
+    // Every renderer made from now on stops the process with one error line when a frame's GL
+    // work takes longer than `seconds` (Renderer::setFrameTimeLimit; the global --frame-time-limit).
+    static constexpr double kDefaultFrameTimeLimit = 60.0;
+    static void setFrameTimeLimit(double seconds);
+
     // Test hook: SSAOLAB_TEST_GL_ERROR=1 in the environment makes the runner raise one GL error
     // right after it starts, so tests can check that every command fails on it.
     static constexpr const char* kForceGlErrorEnv = "SSAOLAB_TEST_GL_ERROR";

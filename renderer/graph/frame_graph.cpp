@@ -197,7 +197,7 @@ struct PassScope {
 } // namespace
 
 FrameReport FrameGraph::execute(const FrameInfo& frame, gl::ShaderLibrary& shaders,
-                                const gl::FullscreenTriangle& tri) {
+                                const gl::FullscreenTriangle& tri, const std::function<void()>& submitted) {
     FrameReport report;
     std::vector<gl::GpuTimer*> timers;
     // Demand: walk back from what is wanted; a pass is live when something needed is its output.
@@ -265,6 +265,7 @@ FrameReport FrameGraph::execute(const FrameInfo& frame, gl::ShaderLibrary& shade
         }
         report.passes.push_back(pr);
     }
+    if (submitted) submitted();
     for (size_t i = 0; i < timers.size(); ++i)
         if (timers[i]) report.passes[i].gpuMs = timers[i]->resultMs();
     return report;

@@ -9,6 +9,7 @@
 #include "graph/frame_report.h"
 #include "graph/pass.h"
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -30,8 +31,10 @@ class FrameGraph {
     // The settings must stay alive and unchanged until the next compile().
     void compile(const std::vector<Node>& nodes, const std::map<std::string, std::string>& aliases, int w,
                  int h);
-    FrameReport execute(const FrameInfo& frame, gl::ShaderLibrary& shaders,
-                        const gl::FullscreenTriangle& tri);
+    // `submitted`, when given, runs once every pass's GL work is issued and before the timers are
+    // read (the renderer's frame time limit waits there).
+    FrameReport execute(const FrameInfo& frame, gl::ShaderLibrary& shaders, const gl::FullscreenTriangle& tri,
+                        const std::function<void()>& submitted = {});
     // Forgets every pass key: the next execute() runs every pass.
     void invalidate() { keys_.clear(); }
     // The resources read from outside the graph (shown, written to disk, judged); nullopt = every

@@ -92,6 +92,16 @@ TEST(CliHostile, OutputsNeverOverwriteWhatTheyMustNot) {
     EXPECT_TRUE(std::filesystem::exists(shared + "/metrics.json"));
 }
 
+TEST(CliHostile, AFrameTimeLimitMustBeFiniteAndPositive) {
+    // --frame-time-limit ends a headless run whose frame never finishes (gl/frame_watchdog.h):
+    // nan would never trigger, 0 or less would stop every frame.
+    expectCleanFailure(ssaolab("--frame-time-limit nan render --scene builtin:corner"), "not a finite number");
+    expectCleanFailure(ssaolab("render --frame-time-limit 0 --scene builtin:corner"), "outside");
+    expectCleanFailure(ssaolab("render --frame-time-limit -1 --scene builtin:corner"), "outside");
+    expectCleanFailure(ssaolab("render --frame-time-limit inf --scene builtin:corner"), "not a finite number");
+    expectCleanFailure(ssaolab("render --frame-time-limit 3601 --scene builtin:corner"), "outside");
+}
+
 TEST(CliHostile, NanOptionsAndNonUtf8NamesGiveOneLineOrAReport) {
     // `nan` passed CLI11's range checks: --tolerance nan switched the invariance check off.
     expectCleanFailure(ssaolab("stress --scene builtin:corner --tolerance nan"), "not a finite number");
