@@ -1,7 +1,7 @@
 // The per-frame time limit of headless runs (gl/frame_watchdog.h): a user technique whose shader
 // never ends stops the process with one error line soon after the limit, instead of hanging it;
-// a frame that ends renders as without the limit. The hanging frame runs in a child process (this
-// binary, one disabled test) with its own EGL context: the stuck context cannot be torn down.
+// a frame that ends renders as without the limit. The hanging frame runs in a child process
+// (tests/gl/hang_child.cpp) with its own EGL context: the stuck context cannot be torn down.
 #include "gl/readback.h"
 #include "gl_fixture.h"
 
@@ -27,35 +27,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 class FrameTimeLimit : public GlTest {};
 
-constexpr const char* kLimitEnv = "SSAOLAB_TEST_HANG_LIMIT"; // the child's limit in seconds (0: none)
 constexpr const char* kMarker = "rendering the endless frame";
-
-// A body the compiler cannot prove finite (i wraps only after 2^31 steps) whose every step is
-// costly: llvmpipe ends any outermost loop, with the loops inside it, after 65535 iterations, so
-// only the cost of a step keeps it running there (minutes; on a GPU it never ends). One loop:
-// many would keep LLVM's loop analysis busy in the compile instead of the frame.
-std::shared_ptr<const UserTechnique> endless() {
-    std::vector<std::string> ids;
-    for (const auto& t : techniques()) ids.push_back(t.id);
-    std::string text = "/*ssaolab\ninterface = 1;\n*/\n"
-                       "float ssaoUserAo() {\n"
-                       "    float x = 0.0;\n"
-                       "    for (int i = 0; i >= 0; i += int(ssaoRadius() > -1.0)) {\n";
-    for (int step = 0; step < 64; ++step)
-        text += "        x = sin(x * 1.3 + float(i));\n";
-    text += "    }\n    return x;\n}\n";
-    return std::make_shared<UserTechnique>(loadUserTechnique(text, "mine/endless.ao.glsl", ids));
-}
-
-void useUser(Renderer& r, std::shared_ptr<const UserTechnique> t) {
-    r.setTechniquePasses(
-        [t](const Chain& c) {
-            std::vector<std::unique_ptr<Pass>> passes;
-            passes.push_back(std::make_unique<UserAoPass>(c, t, std::vector<double>{}, AoNoise::None));
-            return passes;
-        },
-        t->path);
-}
 
 struct Child {
     int exitCode = -1;                       // -1: killed or signalled
@@ -64,7 +36,7 @@ struct Child {
     std::string out, err;
 };
 
-// Runs this binary's disabled child test with the limit, killing it `killAfter` seconds after it
+// Runs tests/gl/hang_child.cpp with the limit, killing it `killAfter` seconds after it
 // prints the marker (or 120 s after the start when it never does).
 Child runChild(double limit, double killAfter) {
     int outPipe[2], errPipe[2];
@@ -75,9 +47,8 @@ Child runChild(double limit, double killAfter) {
         dup2(outPipe[1], 1);
         dup2(errPipe[1], 2);
         close(outPipe[0]), close(errPipe[0]), close(outPipe[1]), close(errPipe[1]);
-        setenv(kLimitEnv, std::to_string(limit).c_str(), 1);
-        execl("/proc/self/exe", "test_gl", "--gtest_also_run_disabled_tests",
-              "--gtest_filter=FrameTimeLimit.DISABLED_ChildRendersAnEndlessShader", (char*)nullptr);
+        const std::string arg = std::to_string(limit);
+        execl(SSAOLAB_HANG_CHILD, "hang_child", arg.c_str(), (char*)nullptr);
         _exit(127);
     }
     close(outPipe[1]), close(errPipe[1]);
@@ -124,20 +95,6 @@ Child runChild(double limit, double killAfter) {
 }
 
 } // namespace
-
-// Run only as the child of the tests below (SSAOLAB_TEST_HANG_LIMIT set).
-TEST_F(FrameTimeLimit, DISABLED_ChildRendersAnEndlessShader) {
-    const char* limit = std::getenv(kLimitEnv);
-    ASSERT_NE(limit, nullptr);
-    auto r = makeRenderer(loadScene("builtin:showcase"), defaultSettings(), 320, 180);
-    r->setFrameTimeLimit(std::atof(limit));
-    useUser(*r, endless());
-    std::printf("%s\n", kMarker);
-    std::fflush(stdout);
-    r->render();
-    readBack(r->texture("ao.raw"), 1);
-    std::printf("the endless frame ended\n");
-}
 
 TEST_F(FrameTimeLimit, WithoutALimitTheEndlessShaderHangs) {
     // The shader really does not end: without the limit the child is still rendering 4 s on.
