@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build engine-modules run test docs screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column
+.PHONY: deps configure build engine-modules run test docs screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column user-twins
 
 deps:
 	@bash .ci/install-deps.sh
@@ -91,6 +91,11 @@ explorer: build
 # (GPU_RUN=DIR; GPU_NOTE: the machine line, e.g. the GPU, driver and host). Needs no GPU here.
 gpu-column: build
 	@bash .ci/gpu-column.sh $(BUILD) $(GPU_RUN) "$(GPU_NOTE)" $(SCENES)
+
+# docs/bench/user-twins.md: the example user techniques (examples/techniques/) against their
+# built-in twins on the same frames, the AO pass's time and its ratio (~5 minutes on llvmpipe).
+user-twins: build
+	@bash .ci/user-twins.sh $(BUILD) $(SCENES)
 
 # docs/stability.md: every technique under extreme projections, scales, placements, precisions and
 # parameter limits (`ssaolab stress`).

@@ -3,9 +3,11 @@
 #include "cli/cli_util.h"
 #include "cli/headless_runner.h"
 #include "cli/scene_options.h"
+#include "cli/user_techniques.h"
 #include "commands/bench/bench_command.h"
 #include "commands/docs/cli_reference.h"
 #include "commands/merge/merge_command.h"
+#include "commands/probe/probe_command.h"
 #include "commands/render/render_command.h"
 #include "commands/skips/skips_command.h"
 #include "commands/stress/stress_command.h"
@@ -85,6 +87,7 @@ struct Commands {
     double maxMaskMpix = double(ssao::SceneBudget{}.maskPixels >> 20);
     std::string transparent = "skip";
     double frameTimeLimit = ssao::HeadlessRunner::kDefaultFrameTimeLimit;
+    std::string techniqueDir;
     ssao::RenderOptions render;
     ssao::BenchOptions bench;
     ssao::BenchMergeOptions benchMerge;
@@ -94,7 +97,7 @@ struct Commands {
     ssao::StressOptions stress;
     ssao::WindowOptions window;
     std::string windowSize = "1600x900", viewProjection, viewDepth;
-    std::string docsPage;
+    std::string docsPage, probeFile;
     bool techniqueLevels = false, techniqueDerived = false;
 
     Commands() {
@@ -124,6 +127,10 @@ struct Commands {
                        "run with one error - a shader that never ends cannot hang it")
             ->capture_default_str()
             ->check(ssao::cliRange(0.01, 3600.0));
+        app.add_option("--technique-dir", techniqueDir,
+                       "the folder of your own techniques, NAME.ao.glsl each (docs/own-technique.md; default "
+                       "$SSAOLAB_TECHNIQUE_DIR, else $XDG_CONFIG_HOME/ssaolab/techniques)")
+            ->type_name(ssao::kInDir);
         ssao::addRenderOptions(*sub("render", "render a scene headless (EGL) into EXR/PNG buffers and metrics.json"),
                                render);
         benchCmd = sub("bench", "run time against error: every configuration of a sweep against the ray-traced reference");
@@ -154,6 +161,11 @@ struct Commands {
                               ->group(""); // hidden
         techs->add_flag("--levels", techniqueLevels, "the quality levels make presets tunes: ID LEVEL ROWS TUNED");
         techs->add_flag("--derived", techniqueDerived, "the presets that follow tuned ones: ID NAME FROM ROWS");
+        app.add_subcommand("probe-technique", "render a user technique's file in two small frames (the explorer's test)")
+            ->group("") // hidden: app/view/technique_watch.h runs it
+            ->add_option("file", probeFile, "NAME.ao.glsl")
+            ->required()
+            ->type_name(ssao::kInFile);
         addView(*sub("view", "open the interactive explorer window (GLFW + Dear ImGui)"));
     }
 
@@ -199,6 +211,10 @@ struct Commands {
         ssao::setSceneBudget({size_t(maxTriangles), size_t(maxSceneMib) << 20, size_t(maxMaskMpix) << 20});
         ssao::setTransparentMode(ssao::parseTransparent(transparent));
         ssao::HeadlessRunner::setFrameTimeLimit(frameTimeLimit);
+        // The generated pages and the option list describe the program, not this user's folder.
+        if (app.got_subcommand("probe-technique")) return ssao::runProbeTechnique(probeFile);
+        if (!app.got_subcommand("docs") && !app.got_subcommand("options"))
+            window.app.techniqueDir = ssao::loadUserTechniques(techniqueDir);
         if (app.got_subcommand("params")) {
             printParams();
             return 0;
@@ -217,10 +233,11 @@ struct Commands {
             return 0;
         }
         if (app.got_subcommand("paths")) {
-            std::printf("binary   %s\ndata     %s (%s)\nshaders  %s\npresets  %s/presets, then %s\n",
+            std::printf("binary     %s\ndata       %s (%s)\nshaders    %s\npresets    %s/presets, then %s\n"
+                        "techniques %s\n",
                         ssao::executablePath().c_str(), ssao::dataRoot().c_str(), ssao::dataRootSource().c_str(),
                         ssao::shaderRoot().c_str(), ssao::assetRoot().c_str(),
-                        ssao::PresetStore::defaultUserDir().c_str());
+                        ssao::PresetStore::defaultUserDir().c_str(), window.app.techniqueDir.c_str());
             return 0;
         }
         if (app.got_subcommand("bench"))

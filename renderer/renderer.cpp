@@ -125,18 +125,14 @@ Pass& Renderer::passFor(const std::string& key, const std::function<std::unique_
     return *slot;
 }
 
-void Renderer::setTechniquePasses(TechniquePassMaker make, std::string label) {
-    techniqueOverride_ = std::move(make);
-    techniqueLabel_ = techniqueOverride_ ? std::move(label) : std::string();
-    for (auto it = techniquePasses_.begin(); it != techniquePasses_.end();) // the previous stand-ins
-        it = it->first.find('|') != std::string::npos ? techniquePasses_.erase(it) : std::next(it);
-    graphStale_ = true;
-}
-
 std::vector<Pass*> Renderer::techniquePasses(const Chain& b, const Settings& s) {
     const TechniqueInfo& t = findTechnique(s.ao.technique);
-    auto& owned = techniquePasses_[b.prefix + (techniqueOverride_ ? "|override" : t.id)];
-    if (owned.empty()) owned = techniqueOverride_ ? techniqueOverride_(b) : t.makePasses(b);
+    // A user technique's new version (its file's hash) gets new passes; the old version's go.
+    const std::string key = b.prefix + t.id, versioned = key + "#" + t.version;
+    for (auto it = techniquePasses_.lower_bound(key + "#"); it != techniquePasses_.end() && it->first.rfind(key + "#", 0) == 0;)
+        it = it->first != versioned ? techniquePasses_.erase(it) : std::next(it);
+    auto& owned = techniquePasses_[versioned];
+    if (owned.empty()) owned = t.makePasses(b);
     std::vector<Pass*> out;
     for (auto& p : owned)
         out.push_back(p.get());
@@ -211,14 +207,15 @@ void Renderer::buildGraph() {
     }
     graph_.compile(nodes, aliases, width_, height_);
     graphStale_ = false;
+    techniquesGeneration_ = techniquesGeneration();
 }
 
 FrameReport Renderer::render() {
     if (!scene_) throw Error("renderer: no scene set");
     if (width_ <= 0) throw Error("renderer: no size set");
     // Watched from here (the passes' compiles count too) until the frame's GL work is done.
-    gl::FrameWatchdog::Frame watch(watchdog_.get(), !techniqueLabel_.empty() ? techniqueLabel_
-                                                    : "technique " + settings_.ao.technique);
+    const TechniqueInfo& technique = findTechnique(settings_.ao.technique);
+    gl::FrameWatchdog::Frame watch(watchdog_.get(), technique.file.empty() ? "technique " + technique.id : technique.file);
     effective_ = effectiveCamera(camera_, bounds_);
     // Temporal accumulation: a settings/size/scene change drops the history, a camera change only
     // restarts the count (the history is reprojected); while counting, the frame index advances and
@@ -251,6 +248,7 @@ FrameReport Renderer::render() {
     frameUbo_.bind(SSAO_UBO_FRAME);
     // Only when settings, chain B, the size or the reference changed - or this frame tells apart
     // chain-B passes that were shared (or shares ones that were not).
+    if (techniquesGeneration_ != techniquesGeneration()) graphStale_ = true; // a user technique changed
     if (graphStale_ || (settingsB_ && sharedWithChainA(nullptr) != sharedB_)) buildGraph();
     return graph_.execute(frame_, shaders_, triangle_, [&watch] { watch.waitForGpu(); });
 }

@@ -67,11 +67,6 @@ class Renderer {
     // that feed none of them are culled, and the G-buffer leaves out targets nothing reads
     // (skip.unused_targets). gbuffer.depth is always kept (radiusAtCentre reads it).
     void setWanted(std::optional<std::set<std::string>> buffers);
-    // Passes that stand in for the settings' technique in both chains (a user technique's
-    // UserAoPass, techniques/user/user_pass.h); null gives the registry's passes back.
-    // `label` names them in errors (the user's file); "" names the settings' technique.
-    using TechniquePassMaker = std::function<std::vector<std::unique_ptr<Pass>>(const Chain&)>;
-    void setTechniquePasses(TechniquePassMaker make, std::string label = {});
     // Headless runs only: a render() whose GL work has not finished `seconds` after it began ends
     // the process with one error line (gl/frame_watchdog.h). 0, the default (the explorer): no limit.
     void setFrameTimeLimit(double seconds);
@@ -153,8 +148,7 @@ class Renderer {
     bool referenceOn_ = false;
     std::vector<bool> sharedB_; // sharedWithChainA() when the graph was built
     std::map<std::string, std::vector<std::unique_ptr<Pass>>> techniquePasses_; // by chain + technique
-    TechniquePassMaker techniqueOverride_; // setTechniquePasses
-    std::string techniqueLabel_;           // setTechniquePasses' label
+    unsigned techniquesGeneration_ = 0; // of the registry (techniques/technique.h) the graph was built with
     std::unique_ptr<gl::FrameWatchdog> watchdog_; // setFrameTimeLimit; null: no limit
 };
 

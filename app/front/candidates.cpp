@@ -3,6 +3,7 @@
 #include "measure/bench_run.h"
 #include "settings/params.h"
 #include "settings/preset.h"
+#include "techniques/technique.h"
 #include "util/error.h"
 
 #include <set>
@@ -48,6 +49,14 @@ std::vector<Candidate> frontCandidates(const Settings& current, const PresetStor
     neighbours(current.ao.technique + ".quality");
     for (const auto& e : store.entries())
         if (e.builtin) add(e.name, "preset", store.load(e.name).settings, false, false);
+    // Each user technique at its header's defaults, on the current settings' other choices.
+    for (const std::string& id : userTechniqueIds()) {
+        Settings s = current;
+        setParam(s, "ao.technique", id);
+        for (const Param& p : paramTable())
+            if (p.group() == id) p.set(s, p.def);
+        add(id, "user technique", s, false, false);
+    }
     return out;
 }
 

@@ -1,6 +1,7 @@
 // What the explorer's front panel measures for the view on screen: every shipped preset of every
-// technique, the user's current settings, and the current settings' neighbours (AO resolution
-// full/half/quarter, each denoiser, the technique's quality ladder). Every candidate runs with the
+// technique, the user's current settings, the current settings' neighbours (AO resolution
+// full/half/quarter, each denoiser, the technique's quality ladder) and each user technique
+// (techniques/user/) at its defaults. Every candidate runs with the
 // world radius R the live reference traced, as `bench` gives every configuration the reference's R.
 #pragma once
 #include "settings/preset_store.h"
@@ -13,7 +14,7 @@ namespace ssao {
 
 struct Candidate {
     std::string label;  // "gtao-high", "current", "current + ao.resolution=half"
-    std::string origin; // "preset", "current", "neighbour" or "engine" (front/engine_front.h)
+    std::string origin; // "preset", "current", "neighbour", "user technique" or "engine" (front/engine_front.h)
     Settings settings;  // with the reference's world radius (withRadius); unused for an engine
     bool baseline = false;
     bool current = false;

@@ -37,7 +37,8 @@ AppCore::AppCore(const AppOptions& o)
       front_(o.shaderDir.empty() ? shaderRoot() : o.shaderDir, o.wake, [this] {
           frames_.postNews(); // an engine's result: the sleeping loop draws a frame
           if (opts_.wake) opts_.wake();
-      }) {
+      }),
+      techniques_(o.techniqueDir, o.probeProgram.empty() ? executablePath() : o.probeProgram, o.wake) {
     front_.engines().modules = o.engineModules;
     loaded_.name = "defaults";
     // A bad --preset or --scene opens the window anyway, on the defaults and the built-in scene, with
@@ -343,6 +344,20 @@ void AppCore::useViewRadius() {
 void AppCore::pollShaderReload() {
     frames_.pollShaderReload();
     if (frames_.reloadedShaders()) setStatus("shaders reloaded", false);
+    const TechniqueWatch::News news = techniques_.poll();
+    for (const std::string& e : news.errors) {
+        setStatus(e, true);
+        frames_.setShaderError(e);
+    }
+    if (!news.adopted.empty()) {
+        // Values the new header no longer has, or holds in another range, are fitted to it.
+        fitUserValues(settings_);
+        fitUserValues(loaded_.settings);
+        if (splitCandidate_) fitUserValues(*splitCandidate_);
+        setStatus("new version running: " + news.adopted.back(), false);
+        frames_.setShaderError("");
+    }
+    if (!news.adopted.empty() || !news.errors.empty()) frames_.keepAwake();
 }
 
 const std::optional<PixelInspection>& AppCore::inspection() {

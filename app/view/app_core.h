@@ -5,11 +5,12 @@
 #include "renderer.h"
 #include "settings/preset.h"
 #include "settings/preset_store.h"
-#include "view/front_panel.h"
 #include "view/camera_controller.h"
 #include "view/frame_driver.h"
+#include "view/front_panel.h"
 #include "view/image_texture.h"
 #include "view/inspector.h"
+#include "view/technique_watch.h"
 #include "view/ui_actions.h"
 #include "view/ui_panels.h"
 #include "view/view_state.h"
@@ -31,6 +32,10 @@ struct AppOptions {
     std::string preset;    // name or path; empty = defaults
     std::string shaderDir; // empty = the installation's (or source tree's) shaders/
     std::string userPresetDir;
+    // The folder of the user techniques registered at start (app/cli/user_techniques.h): the
+    // explorer watches its NAME.ao.glsl files and adopts each new version that passes a probe.
+    std::string techniqueDir;
+    std::string probeProgram; // the ssaolab binary the watch probes with ("" = this program)
     float renderScale = 1.0f;       // render resolution relative to the view's pixels (0.25..1)
     float interactiveScale = 0.35f; // while the camera moves or a slider is dragged
     bool reference = true;          // trace the ray-traced reference of the view in the background
@@ -79,7 +84,8 @@ class AppCore {
     void drawUi();
     // Renders what changed at `viewW x viewH` view pixels (the main view calls it).
     void renderIfNeeded(int viewW, int viewH);
-    // Recompiles shaders if a file in shaders/ changed; keeps the last good programs on error.
+    // Recompiles shaders if a file in shaders/ changed; keeps the last good programs on error. And
+    // adopts each new version of a user technique that passed its probe (technique_watch.h).
     void pollShaderReload();
 
     // ---- The parts ----
@@ -153,6 +159,7 @@ class AppCore {
     bool radiusHinted_ = false; // the status says the radius is too large for the view
     std::map<std::string, std::string> descriptions_; // preset path -> its description
     FrontPanel front_;
+    TechniqueWatch techniques_;
 };
 
 } // namespace ssao

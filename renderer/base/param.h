@@ -19,7 +19,7 @@ struct Param {
         std::vector<std::string> values;
     };
 
-    std::string key;   // "group.name"; the group is what a pass declares it reads
+    std::string key;   // "group.name"; a user technique's "user.NAME.name" has the group "user.NAME"
     std::string label; // UI label
     Type type = Type::Float;
     double def = 0, min = 0, max = 1; // enum/bool: index; def is filled from Settings{}
@@ -30,8 +30,8 @@ struct Param {
     std::function<double(const Settings&)> get;
     std::function<void(Settings&, double)> set;
 
-    std::string group() const { return key.substr(0, key.find('.')); }
-    std::string name() const { return key.substr(key.find('.') + 1); }
+    std::string group() const { return key.substr(0, key.rfind('.')); }
+    std::string name() const { return key.substr(key.rfind('.') + 1); }
     // Text form of a value ("0.5", "true", "hemisphere").
     std::string format(double v) const;
     // Whether `s` holds this parameter's default (compared at the field's own precision).
@@ -48,7 +48,11 @@ struct TechniqueRows {
     std::vector<Param> rows; // its rows ("id.*"); the table adds "applies while ao.technique = id"
     bool adaptive = false;   // it takes ao.adaptive (a march or tap count the rule cuts)
     bool deinterleave = false; // it takes ao.deinterleave (TechniqueInfo::deinterleave)
+    std::string file, version; // a user technique's file and its hash; "" for a built-in
 };
 const std::vector<TechniqueRows>& registeredTechniques();
+// Which set of techniques registeredTechniques() holds: it changes when the user techniques do
+// (techniques/technique.h setUserTechniques), and the parameter table is rebuilt from it.
+unsigned techniquesGeneration();
 
 } // namespace ssao

@@ -7,9 +7,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <memory>
+#include <mutex>
 
 namespace ssao {
 
@@ -264,15 +268,40 @@ std::string choiceList(const Param& p) {
     return out;
 }
 
-// Every key, for "did you mean" on a mistyped one.
+// The table of the registry's current generation of techniques (techniques/technique.h), with its
+// index by key and its keys (for "did you mean" on a mistyped one). Tables of earlier generations
+// are kept, so a row a caller holds stays valid when a user technique changes.
+struct Table {
+    unsigned generation = 0;
+    std::vector<Param> rows;
+    std::map<std::string, const Param*> index;
+    std::vector<std::string> keys;
+};
+
+const Table& currentTable() {
+    static std::mutex mutex;
+    static std::vector<std::unique_ptr<Table>> kept;
+    static std::atomic<const Table*> current{nullptr};
+    const unsigned generation = techniquesGeneration();
+    const Table* t = current.load(std::memory_order_acquire);
+    if (t && t->generation == generation) return *t;
+    std::lock_guard<std::mutex> lock(mutex);
+    t = current.load(std::memory_order_acquire);
+    if (t && t->generation == generation) return *t;
+    auto n = std::make_unique<Table>();
+    n->generation = generation;
+    n->rows = buildTable();
+    for (const auto& p : n->rows) {
+        n->index.emplace(p.key, &p);
+        n->keys.push_back(p.key);
+    }
+    kept.push_back(std::move(n));
+    current.store(kept.back().get(), std::memory_order_release);
+    return *kept.back();
+}
+
 const std::vector<std::string>& allKeys() {
-    static const std::vector<std::string> keys = [] {
-        std::vector<std::string> k;
-        for (const Param& p : paramTable())
-            k.push_back(p.key);
-        return k;
-    }();
-    return keys;
+    return currentTable().keys;
 }
 
 // Shortest decimal text that reads back as the same float (presets stay human-readable).
@@ -338,17 +367,11 @@ Param& Param::onlyWhen(const std::string& k, std::vector<std::string> values) {
 }
 
 const std::vector<Param>& paramTable() {
-    static const std::vector<Param> table = buildTable();
-    return table;
+    return currentTable().rows;
 }
 
 const Param* findParam(const std::string& key) {
-    static const std::map<std::string, const Param*> index = [] {
-        std::map<std::string, const Param*> m;
-        for (const auto& p : paramTable())
-            m.emplace(p.key, &p);
-        return m;
-    }();
+    const auto& index = currentTable().index;
     auto it = index.find(key);
     return it == index.end() ? nullptr : it->second;
 }
@@ -379,6 +402,20 @@ void validateSettings(const Settings& s) {
         if (!p.applies(s)) continue;
         const double v = p.get(s);
         if (p.type == T::Float || p.type == T::Int) checkValue(p, v, p.format(v));
+    }
+}
+
+void fitUserValues(Settings& s) {
+    for (auto it = s.user.values.begin(); it != s.user.values.end();) {
+        const Param* p = findParam(it->first);
+        if (!p) {
+            it = s.user.values.erase(it);
+            continue;
+        }
+        double v = std::isfinite(it->second) ? it->second : p->def;
+        if (p->type != T::Float) v = std::round(v);
+        it->second = std::clamp(v, p->min, p->max);
+        ++it;
     }
 }
 
@@ -425,6 +462,14 @@ nlohmann::json toEffectiveJson(const Settings& s) {
     return serialise(s, true);
 }
 
+namespace {
+bool isTechnique(const std::string& id) {
+    for (const auto& t : registeredTechniques())
+        if (t.id == id) return true;
+    return false;
+}
+} // namespace
+
 void applyJson(Settings& s, const nlohmann::json& patch, const std::string& origin) {
     if (!patch.is_object()) throw Error(origin + ": a preset must be a JSON object");
     for (auto& [group, members] : patch.items()) {
@@ -433,6 +478,9 @@ void applyJson(Settings& s, const nlohmann::json& patch, const std::string& orig
         for (auto& [name, value] : members.items()) {
             const std::string key = group + "." + name;
             const Param* p = findParam(key);
+            if (!p && group.rfind("user.", 0) == 0 && !isTechnique(group))
+                throw Error(origin + ": unknown key '" + key + "': the user technique " + group +
+                            " is not loaded (its file is not in the technique folder)");
             if (!p) throw Error(origin + ": unknown key '" + key + "'" + didYouMean(key, allKeys()));
             try {
                 switch (p->type) {

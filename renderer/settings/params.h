@@ -30,6 +30,10 @@ void applyAssignment(Settings& s, const std::string& assignment);
 // Throws ssao::Error naming the first key that does not. Renderer::setSettings calls it.
 void validateSettings(const Settings& s);
 
+// After the user techniques changed (a new version adopted): drops the user values whose rows are
+// gone and brings the others into their rows' new ranges (the nearest valid value).
+void fitUserValues(Settings& s);
+
 // JSON: {"ao": {"radius": 0.5, ...}, ...}. Presets are patches over defaults; toJson writes
 // every key, so write → read round-trips exactly.
 nlohmann::json toJson(const Settings& s);

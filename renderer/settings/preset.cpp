@@ -33,7 +33,7 @@ float numberFrom(const nlohmann::json& j, const char* key, float def, const std:
 
 bool isPresetMetadataKey(const std::string& key) {
     return key == "name" || key == "description" || key == "camera" || key == "scene" || key == "size" ||
-           key == "reference_radius_scene" || key == "scores";
+           key == "reference_radius_scene" || key == "scores" || key == "technique_file";
 }
 
 const std::vector<std::string>& radiusKeys() {
@@ -126,11 +126,43 @@ nlohmann::json presetToJson(const Preset& p) {
     if (p.referenceRadiusScene) j["reference_radius_scene"] = *p.referenceRadiusScene;
     if (!p.scores.is_null()) j["scores"] = p.scores;
     j.update(toJson(p.settings));
+    // A user technique's preset names its file and the file's hash; the other user techniques'
+    // rows are left out, so the preset opens where only its own technique is installed.
+    for (const TechniqueRows& t : registeredTechniques()) {
+        if (t.file.empty()) continue;
+        if (t.id != p.settings.ao.technique)
+            j.erase(t.id);
+        else
+            j["technique_file"] = {{"id", t.id}, {"file", fs::path(t.file).filename().string()}, {"hash", t.version}};
+    }
     return j;
 }
 
+namespace {
+// A preset saved with a user technique: that technique must be loaded, and a file that has changed
+// since is said to have (its parameters may now mean something else).
+void checkTechniqueFile(const nlohmann::json& j, const std::string& origin, std::vector<std::string>& warnings) {
+    if (!j.contains("technique_file")) return;
+    const auto& f = j["technique_file"];
+    if (!f.is_object() || !f.contains("id") || !f["id"].is_string() || !f.contains("hash") || !f["hash"].is_string())
+        throw Error(origin + ": technique_file must be {\"id\": ..., \"file\": ..., \"hash\": ...}");
+    const std::string id = f["id"].get<std::string>(), hash = f["hash"].get<std::string>();
+    const std::string file = f.contains("file") && f["file"].is_string() ? f["file"].get<std::string>() : id;
+    for (const TechniqueRows& t : registeredTechniques())
+        if (t.id == id) {
+            if (t.version != hash)
+                warnings.push_back("preset " + origin + ": " + file + " has changed since the preset was saved (hash " +
+                                   hash.substr(0, 16) + " then, " + t.version + " now): its values may mean something else");
+            return;
+        }
+    throw Error(origin + ": it uses the user technique " + id + " (" + file +
+                "), which is not loaded: put the file in the technique folder or name its folder with --technique-dir");
+}
+} // namespace
+
 Preset presetFromJson(const nlohmann::json& j, const std::string& origin, const std::string& baseDir) {
     Preset p;
+    if (j.is_object()) checkTechniqueFile(j, origin, p.warnings);
     applyJson(p.settings, j, origin); // skips metadata, rejects anything unknown
     for (auto& [group, members] : j.items())
         if (!isPresetMetadataKey(group))

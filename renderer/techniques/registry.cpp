@@ -1,46 +1,124 @@
-// The list of AO techniques. Adding one: its folder, one member in technique_settings.h and
-// one entry here.
+// The list of AO techniques: the built-ins, then the user's (techniques/user/). Adding a built-in:
+// its folder, one member in technique_settings.h and one entry in builtins().
 #include "techniques/gtao/technique.h"
 #include "techniques/hbao/technique.h"
 #include "techniques/kernel/technique.h"
 #include "techniques/sao/technique.h"
 #include "techniques/technique.h"
 #include "techniques/technique_settings.h"
+#include "techniques/user/user_technique.h"
 #include "techniques/vbao/technique.h"
 #include "util/error.h"
 
 #include "../../shaders/include/adaptive.h"
 
 #include <algorithm>
+#include <atomic>
+#include <mutex>
 
 namespace ssao {
 
 const char* const kDefaultTechnique = "kernel"; // what a new Settings{} runs (base/shared_settings.h)
 
+namespace {
+
+// One set of techniques and what the parameter table needs of them. Generations are kept for the
+// program's life (a handful: one per user edit adopted), so a list or row handed out stays valid.
+struct Generation {
+    unsigned number = 0;
+    std::vector<TechniqueInfo> list;
+    std::vector<TechniqueRows> rows;
+    std::vector<std::pair<std::string, std::string>> refused;
+};
+
+std::vector<TechniqueInfo> builtins() {
+    return {kernelTechnique(), saoTechnique(), hbaoTechnique(), gtaoTechnique(), vbaoTechnique()};
+}
+
+std::unique_ptr<Generation> makeGeneration(unsigned number, std::vector<TechniqueInfo> list,
+                                           std::vector<std::pair<std::string, std::string>> refused) {
+    auto g = std::make_unique<Generation>();
+    g->number = number;
+    g->list = std::move(list);
+    g->refused = std::move(refused);
+    for (const auto& t : g->list)
+        g->rows.push_back({t.id, t.params(), bool(t.adaptive), t.deinterleave, t.file, t.version});
+    return g;
+}
+
+std::mutex generationsMutex;
+std::vector<std::unique_ptr<Generation>>& kept() {
+    static std::vector<std::unique_ptr<Generation>> all;
+    return all;
+}
+
+std::atomic<const Generation*>& currentSlot() {
+    static std::atomic<const Generation*> slot{[] {
+        std::lock_guard<std::mutex> lock(generationsMutex);
+        kept().push_back(makeGeneration(0, builtins(), {}));
+        return kept().back().get();
+    }()};
+    return slot;
+}
+
+const Generation& current() {
+    return *currentSlot().load(std::memory_order_acquire);
+}
+
+} // namespace
+
 const std::vector<TechniqueInfo>& techniques() {
-    static const std::vector<TechniqueInfo> list = {kernelTechnique(), saoTechnique(), hbaoTechnique(), gtaoTechnique(),
-                                                   vbaoTechnique()};
-    return list;
+    return current().list;
+}
+
+std::vector<std::string> builtinTechniqueIds() {
+    std::vector<std::string> ids;
+    for (const auto& t : techniques())
+        if (t.file.empty()) ids.push_back(t.id);
+    return ids;
+}
+
+std::vector<std::string> userTechniqueIds() {
+    std::vector<std::string> ids;
+    for (const auto& t : techniques())
+        if (!t.file.empty()) ids.push_back(t.id);
+    return ids;
 }
 
 const TechniqueInfo& findTechnique(const std::string& id) {
+    const Generation& g = current();
     std::string known;
-    for (const auto& t : techniques()) {
+    for (const auto& t : g.list) {
         if (t.id == id) return t;
         known += (known.empty() ? "" : "|") + t.id;
     }
+    for (const auto& [refusedId, why] : g.refused)
+        if (refusedId == id) throw Error("technique " + id + " was not loaded: " + why);
     throw Error("unknown AO technique '" + id + "' (known: " + known + ")");
+}
+
+void setUserTechniques(const std::vector<std::shared_ptr<const UserTechnique>>& loaded,
+                       const std::vector<std::pair<std::string, std::string>>& refused) {
+    std::vector<TechniqueInfo> list = builtins();
+    for (const auto& t : loaded)
+        list.push_back(userTechniqueInfo(t));
+    auto& slot = currentSlot();
+    std::lock_guard<std::mutex> lock(generationsMutex);
+    kept().push_back(makeGeneration(slot.load()->number + 1, std::move(list), refused));
+    slot.store(kept().back().get(), std::memory_order_release);
+}
+
+unsigned techniquesGeneration() {
+    return current().number;
+}
+
+const std::vector<std::pair<std::string, std::string>>& refusedUserTechniques() {
+    return current().refused;
 }
 
 // What the settings need of the techniques (base/param.h), from the modules.
 const std::vector<TechniqueRows>& registeredTechniques() {
-    static const std::vector<TechniqueRows> rows = [] {
-        std::vector<TechniqueRows> out;
-        for (const auto& t : techniques())
-            out.push_back({t.id, t.params(), bool(t.adaptive), t.deinterleave});
-        return out;
-    }();
-    return rows;
+    return current().rows;
 }
 
 std::string unphysicalReason(const Settings& s) {

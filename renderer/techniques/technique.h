@@ -22,10 +22,16 @@ struct AdaptiveCount {
     bool march = true;
 };
 
+struct UserTechnique;
+
 struct TechniqueInfo {
     std::string id;      // value of ao.technique, and the group of the technique's rows
     std::string label;   // for the UI
     std::string summary; // one line: what it estimates and where it comes from
+    // A user technique (techniques/user/user_technique.h): its file as errors name it, and the
+    // hash of the text its passes were made from (a new version gets new passes); "" for a built-in.
+    std::string file, version;
+    std::shared_ptr<const UserTechnique> user; // the technique itself (null for a built-in)
     std::function<std::vector<Param>()> params; // rows "id.*"
     // Its passes for one chain: together they read gbuffer.* and write the chain's ao.raw.
     std::function<std::vector<std::unique_ptr<Pass>>(const Chain&)> makePasses;
@@ -82,9 +88,21 @@ template <class P> std::function<std::vector<std::unique_ptr<Pass>>(const Chain&
     };
 }
 
+// The built-ins, then the user techniques of the last setUserTechniques. A list stays valid (and
+// unchanged) after the set changes: callers may hold it across a change and read the new one next.
 const std::vector<TechniqueInfo>& techniques();
-// Throws ssao::Error listing the known ids.
+// Throws ssao::Error listing the known ids; for a user technique whose file was refused, the reason.
 const TechniqueInfo& findTechnique(const std::string& id);
+std::vector<std::string> builtinTechniqueIds();
+std::vector<std::string> userTechniqueIds(); // "user.NAME", in the order they were set
+
+// Makes `loaded` the user techniques (ids "user.NAME"), in place of the previous set; `refused`
+// holds "user.NAME" -> the one-line reason its file was not loaded (FILE:LINE: ...). Each call
+// starts a new generation: techniques(), the parameter table and the renderer's passes follow it.
+void setUserTechniques(const std::vector<std::shared_ptr<const UserTechnique>>& loaded,
+                       const std::vector<std::pair<std::string, std::string>>& refused = {});
+// techniquesGeneration() (base/param.h) is 0 until the first call.
+const std::vector<std::pair<std::string, std::string>>& refusedUserTechniques();
 
 // The capabilities of `s`'s technique.
 std::string unphysicalReason(const Settings& s); // "" when it has none

@@ -8,6 +8,7 @@
 #include "techniques/hbao/settings.h"
 #include "techniques/kernel/settings.h"
 #include "techniques/sao/settings.h"
+#include "techniques/user/settings.h"
 #include "techniques/vbao/settings.h"
 
 namespace ssao {
@@ -18,6 +19,7 @@ struct TechniqueSettings {
     HbaoSettings hbao;
     SaoSettings sao;
     VbaoSettings vbao;
+    UserSettings user; // every user technique's values (techniques/user/user_technique.h)
 };
 
 struct Settings : TechniqueSettings {

@@ -2,8 +2,13 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <optional>
+#include <thread>
 
 #include <fcntl.h>
+#include <poll.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -25,9 +30,34 @@ void redirect(posix_spawn_file_actions_t& fa, ChildStream how, int target, const
     }
 }
 
+using Clock = std::chrono::steady_clock;
+
+// Milliseconds left until `deadline` (-1: none, as poll takes it).
+int msLeft(const std::optional<Clock::time_point>& deadline) {
+    if (!deadline) return -1;
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(*deadline - Clock::now()).count();
+    return int(std::max<long long>(0, std::min<long long>(left, 1 << 30)));
+}
+
+// Waits for `pid`, killing it at the deadline; returns its wait status.
+int reap(pid_t pid, const std::optional<Clock::time_point>& deadline, bool& timedOut) {
+    int status = 0;
+    for (;;) {
+        const pid_t r = ::waitpid(pid, &status, deadline && !timedOut ? WNOHANG : 0);
+        if (r == pid) return status;
+        if (r < 0 && errno != EINTR) return status;
+        if (r == 0 && msLeft(deadline) == 0) {
+            ::kill(pid, SIGKILL);
+            timedOut = true;
+        } else if (r == 0) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+    }
+}
+
 } // namespace
 
-ProgramRun runProgram(const std::vector<std::string>& argv, ChildStream out, ChildStream err) {
+ProgramRun runProgram(const std::vector<std::string>& argv, ChildStream out, ChildStream err, double timeoutSeconds) {
     ProgramRun run;
     if (argv.empty()) return run;
     int fds[2] = {-1, -1};
@@ -49,16 +79,26 @@ ProgramRun runProgram(const std::vector<std::string>& argv, ChildStream out, Chi
     if (capture) ::close(fds[1]);
     if (rc == 0) {
         run.started = true;
+        std::optional<Clock::time_point> deadline;
+        if (timeoutSeconds > 0)
+            deadline = Clock::now() + std::chrono::microseconds(static_cast<long long>(timeoutSeconds * 1e6));
         char buf[4096];
-        for (ssize_t n; capture && (n = ::read(fds[0], buf, sizeof buf)) != 0;) {
+        while (capture) {
+            pollfd p{fds[0], POLLIN, 0};
+            const int ready = ::poll(&p, 1, msLeft(deadline));
+            if (ready < 0 && errno == EINTR) continue;
+            if (ready == 0) { // the time limit, with the stream still open
+                ::kill(pid, SIGKILL);
+                run.timedOut = true;
+                break;
+            }
+            const ssize_t n = ready < 0 ? -1 : ::read(fds[0], buf, sizeof buf);
             if (n < 0 && errno == EINTR) continue;
-            if (n < 0) break;
+            if (n <= 0) break;
             run.out.append(buf, std::min(size_t(n), kMaxCaptured - std::min(kMaxCaptured, run.out.size())));
         }
-        int status = 0;
-        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-        }
-        run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        const int status = reap(pid, deadline, run.timedOut);
+        run.exitCode = !run.timedOut && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     }
     if (capture) ::close(fds[0]);
     return run;

@@ -15,11 +15,13 @@ struct ProgramRun {
     bool started = false; // false: the program was not found or could not be started
     int exitCode = -1;    // -1 when it did not exit normally (a signal)
     std::string out;      // what it wrote to a captured stream, at most 1 MiB
+    bool timedOut = false; // it was still running at the time limit and was killed
 };
 
 // Runs argv[0] (looked up on PATH when it holds no '/') with argv and this process's environment
-// and waits for it. A captured stream is read until the child closes it.
+// and waits for it. A captured stream is read until the child closes it. With `timeoutSeconds` > 0
+// a child still running that long after its start is killed (SIGKILL) and reported as timed out.
 ProgramRun runProgram(const std::vector<std::string>& argv, ChildStream out = ChildStream::Inherit,
-                      ChildStream err = ChildStream::Inherit);
+                      ChildStream err = ChildStream::Inherit, double timeoutSeconds = 0);
 
 } // namespace ssao

@@ -145,3 +145,18 @@ TEST(FileGate, AProgramGetsItsArgumentsVerbatimAndNoShellRunsThem) {
     EXPECT_FALSE(runProgram({"ssaolab-no-such-program"}).started);
     EXPECT_EQ(runProgram({"false"}, ChildStream::Discard, ChildStream::Discard).exitCode, 1);
 }
+
+TEST(Process, AChildPastItsTimeLimitIsKilledAndSaidToHaveTimedOut) {
+    // Captured (the pipe stays open while it runs) and not: both end at the limit, not with the child.
+    const ProgramRun captured = runProgram({"tail", "-f", "/dev/null"}, ChildStream::Capture, ChildStream::Discard, 0.2);
+    EXPECT_TRUE(captured.started);
+    EXPECT_TRUE(captured.timedOut);
+    EXPECT_EQ(captured.exitCode, -1);
+    const ProgramRun quiet = runProgram({"sleep", "600"}, ChildStream::Discard, ChildStream::Discard, 0.2);
+    EXPECT_TRUE(quiet.timedOut);
+    // One that ends in time is not.
+    const ProgramRun fast = runProgram({"printf", "done"}, ChildStream::Capture, ChildStream::Discard, 30);
+    EXPECT_FALSE(fast.timedOut);
+    EXPECT_EQ(fast.exitCode, 0);
+    EXPECT_EQ(fast.out, "done");
+}

@@ -296,7 +296,7 @@ const std::vector<std::vector<std::string>> kAppFloors = {
     {"measure", "engines"},
     {"results", "front"},
     {"commands/render", "commands/bench", "commands/merge", "commands/tune", "commands/skips", "commands/stress",
-     "commands/docs"},
+     "commands/docs", "commands/probe"},
     {"view"},
     {"main"},
 };

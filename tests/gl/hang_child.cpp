@@ -7,7 +7,6 @@
 #include "scene/scene.h"
 #include "settings/params.h"
 #include "techniques/technique.h"
-#include "techniques/user/user_pass.h"
 #include "techniques/user/user_source.h"
 
 #include <cstdio>
@@ -21,8 +20,6 @@ namespace {
 // only the cost of a step keeps it running there (on a GPU it never ends). One loop: many would
 // keep LLVM's loop analysis busy in the compile instead of the frame.
 std::shared_ptr<const ssao::UserTechnique> endless() {
-    std::vector<std::string> ids;
-    for (const auto& t : ssao::techniques()) ids.push_back(t.id);
     std::string text = "/*ssaolab\ninterface = 1;\n*/\n"
                        "float ssaoUserAo() {\n"
                        "    float x = 0.0;\n"
@@ -30,7 +27,7 @@ std::shared_ptr<const ssao::UserTechnique> endless() {
     for (int step = 0; step < 64; ++step)
         text += "        x = sin(x * 1.3 + float(i));\n";
     text += "    }\n    return x;\n}\n";
-    return std::make_shared<ssao::UserTechnique>(ssao::loadUserTechnique(text, "mine/endless.ao.glsl", ids));
+    return std::make_shared<ssao::UserTechnique>(ssao::loadUserTechnique(text, "mine/endless.ao.glsl", ssao::builtinTechniqueIds()));
 }
 } // namespace
 
@@ -46,16 +43,11 @@ int main(int argc, char** argv) {
         r.setSize(320, 180);
         r.setScene(scene);
         r.setCamera(scene.camera.value_or(ssao::frameBounds(scene.bounds)));
-        r.setSettings(ssao::defaultSettings());
+        ssao::setUserTechniques({endless()});
+        ssao::Settings s = ssao::defaultSettings();
+        s.ao.technique = "user.endless";
+        r.setSettings(s);
         r.setFrameTimeLimit(std::atof(argv[1]));
-        const auto t = endless();
-        r.setTechniquePasses(
-            [t](const ssao::Chain& c) {
-                std::vector<std::unique_ptr<ssao::Pass>> passes;
-                passes.push_back(std::make_unique<ssao::UserAoPass>(c, t, std::vector<double>{}, ssao::AoNoise::None));
-                return passes;
-            },
-            t->path);
         std::printf("rendering the endless frame\n");
         std::fflush(stdout);
         r.render();

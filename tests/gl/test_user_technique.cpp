@@ -1,12 +1,14 @@
 // User techniques (NAME.ao.glsl, renderer/techniques/user/): the examples give their built-in
 // twins' ao.raw, a compile error names the user's file and line, and a parameter's value reaches
 // the shader.
+#include "closed_form.h"
 #include "gl/readback.h"
 #include "gl_fixture.h"
 
 #include "scene/scene.h"
 #include "techniques/technique.h"
-#include "techniques/user/user_pass.h"
+#include "settings/params.h"
+#include "techniques/user/user_technique.h"
 #include "util/error.h"
 #include "util/atomic_file.h"
 #include "util/files.h"
@@ -22,9 +24,7 @@ namespace {
 class UserTechniques : public GlTest {};
 
 std::vector<std::string> builtinIds() {
-    std::vector<std::string> ids;
-    for (const auto& t : techniques()) ids.push_back(t.id);
-    return ids;
+    return builtinTechniqueIds();
 }
 
 std::shared_ptr<const UserTechnique> example(const std::string& file) {
@@ -33,18 +33,14 @@ std::shared_ptr<const UserTechnique> example(const std::string& file) {
     return std::make_shared<UserTechnique>(loadUserTechnique(text, path, builtinIds()));
 }
 
-std::vector<double> defaults(const UserTechnique& t) {
-    std::vector<double> v;
-    for (const auto& p : t.header.params) v.push_back(p.def);
-    return v;
-}
-
-void useUser(Renderer& r, std::shared_ptr<const UserTechnique> t, std::vector<double> values, AoNoise noise) {
-    r.setTechniquePasses([t, values, noise](const Chain& c) {
-        std::vector<std::unique_ptr<Pass>> passes;
-        passes.push_back(std::make_unique<UserAoPass>(c, t, values, noise));
-        return passes;
-    });
+// `s` with `t` registered and chosen in place of its technique, at the header's defaults.
+Settings useUser(Settings s, std::shared_ptr<const UserTechnique> t, AoNoise noise) {
+    setUserTechniques({t});
+    s.ao.technique = userTechniqueId(t->name);
+    for (size_t i = 0; i < aoNoiseChoices().size(); ++i)
+        if (aoNoiseChoices()[i].second == noise)
+            setParam(s, s.ao.technique + "." + kUserNoiseRow, aoNoiseChoices()[i].first);
+    return s;
 }
 
 Image aoRaw(Renderer& r) {
@@ -58,7 +54,7 @@ void compare(const std::string& sceneSpec, const Settings& s, std::shared_ptr<co
     const Scene scene = loadScene(sceneSpec);
     auto r = makeRenderer(scene, s, 96, 72);
     builtin = aoRaw(*r);
-    useUser(*r, t, defaults(*t), noise);
+    r->setSettings(useUser(s, t, noise));
     user = aoRaw(*r);
 }
 
@@ -106,7 +102,7 @@ TEST_F(UserTechniques, ACompileErrorIsOneLineNamingTheUsersFileAndLine) {
                              "}\n";
     auto t = std::make_shared<UserTechnique>(loadUserTechnique(text, "mine/broken.ao.glsl", builtinIds()));
     auto r = makeRenderer(loadScene("builtin:plane"), defaultSettings(), 64, 36);
-    useUser(*r, t, defaults(*t), AoNoise::Ign);
+    r->setSettings(useUser(defaultSettings(), t, AoNoise::Ign));
     try {
         r->render();
         FAIL() << "a body that does not compile rendered";
@@ -123,13 +119,12 @@ TEST_F(UserTechniques, AParametersValueReachesTheShaderAndReRunsThePass) {
     auto t = example("xegtao.ao.glsl");
     Settings s = defaultSettings();
     s.ao.technique = "gtao";
+    s = useUser(s, t, AoNoise::Ign);
     auto r = makeRenderer(loadScene("builtin:showcase"), s, 96, 72);
-    std::vector<double> values = defaults(*t);
-    useUser(*r, t, values, AoNoise::Ign);
     const Image wide = aoRaw(*r);
     ASSERT_EQ(t->header.params[2].name, "radius_multiplier");
-    values[2] = 0.3; // a shorter search: less occlusion
-    useUser(*r, t, values, AoNoise::Ign);
+    setParam(s, "user.xegtao.radius_multiplier", "0.3"); // a shorter search: less occlusion
+    r->setSettings(s);
     const Image narrow = aoRaw(*r);
     std::printf("xegtao radius_multiplier 1.457: mean AO %.4f; 0.3: %.4f\n", stats(wide).mean, stats(narrow).mean);
     EXPECT_GT(stats(narrow).mean, stats(wide).mean + 0.01);
@@ -159,7 +154,7 @@ TEST_F(UserTechniques, TheInspectorShowsTheUsersTapsAndSums) {
     auto r = makeRenderer(loadScene("builtin:showcase"), s, 96, 72);
     r->render();
     const auto builtin = r->inspect(0, {48, 50});
-    useUser(*r, t, defaults(*t), AoNoise::None);
+    r->setSettings(useUser(s, t, AoNoise::None));
     r->render();
     const auto user = r->inspect(0, {48, 50});
     ASSERT_TRUE(builtin && user);
@@ -189,4 +184,33 @@ TEST_F(UserTechniques, TheExamplesAssembledCompileWithGlslang) {
             const std::string cmd = "glslangValidator -S frag '" + path + "' > '" + path + ".log' 2>&1";
             EXPECT_EQ(std::system(cmd.c_str()), 0) << readRegularFile(path + ".log", "glslang log");
         }
+}
+
+TEST_F(UserTechniques, TheOwnTechniquePagesExampleHoldsThePhysics) {
+    // docs/own-technique.md's first glsl block, as a reader saves it: it loads, compiles (both
+    // variants, the inspector's too), keeps an open plane open and darkens toward a wall.
+    const std::string page = readRegularFile(std::string(SSAOLAB_SOURCE_DIR) + "/docs/own-technique.md", "page");
+    const size_t from = page.find("```glsl\n");
+    ASSERT_NE(from, std::string::npos);
+    const size_t to = page.find("\n```", from + 8);
+    const std::string text = page.substr(from + 8, to - from - 8) + "\n";
+    auto t = std::make_shared<UserTechnique>(loadUserTechnique(text, "mine.ao.glsl", builtinIds()));
+    Settings s = useUser(defaultSettings(), t, AoNoise::Ign);
+    s.ao.radiusMode = RadiusMode::World;
+    s.ao.radius = 1.0f;
+    Rendered plane = render("builtin:plane", s, 160, 120);
+    ASSERT_TRUE(finiteInRange(plane.aoRaw, 0.0f, 1.0f));
+    const double planeMean = geometryMean(plane, plane.ao);
+    const CornerProfile corner = cornerProfile(s);
+    std::printf("the page's example: plane AO %.4f; corner RMSE %.4f, at the wall %.3f, beyond R %.3f\n", planeMean,
+                corner.rmse, corner.atWall, corner.far);
+    EXPECT_GE(planeMean, 0.99);
+    EXPECT_LT(corner.atWall, corner.far - 0.2);
+    EXPECT_GE(corner.far, 0.95);
+    EXPECT_LT(corner.rmse, 0.1);
+    auto r = makeRenderer(loadScene("builtin:showcase"), s, 96, 72);
+    r->render();
+    const auto in = r->inspect(0, {48, 40});
+    ASSERT_TRUE(in && in->geometry);
+    EXPECT_FALSE(in->taps.empty()); // its ssaoRecordTap calls reach the inspector
 }

@@ -37,7 +37,11 @@ std::vector<unsigned char> packUserParams(const UserHeader& h, const std::vector
         const double v = values[i];
         const std::string what = "user parameter " + user::quoted(p.name) + ": value " + user::formatNumber(v);
         if (!std::isfinite(v)) throw Error(what + " is not finite");
-        if (v < p.min || v > p.max || std::fabs(v) > 2147483647.0)
+        // A float parameter holds a float: compared at its precision (0.01 stored is 0.0099999998).
+        const bool isFloat = p.type == UserParam::Type::Float;
+        const bool below = isFloat ? float(v) < float(p.min) : v < p.min;
+        const bool above = isFloat ? float(v) > float(p.max) : v > p.max;
+        if (below || above || std::fabs(v) > 2147483647.0)
             throw Error(what + " is outside [" + user::formatNumber(p.min) + ", " + user::formatNumber(p.max) + "]");
         if (p.type == UserParam::Type::Float) {
             const float f = float(v);

@@ -27,10 +27,8 @@ SSAO_CONFIG_END
 
 class UserAoPass final : public AoPass<UserAoConfig> {
   public:
-    // `values`: one per header parameter, in order (checked by packUserParams); `noise`: the kind
-    // ssaoNoise() returns (noise.glsl).
-    UserAoPass(const Chain& c, std::shared_ptr<const UserTechnique> technique, const std::vector<double>& values,
-               AoNoise noise = AoNoise::Ign);
+    // Its parameter values and noise kind come from the settings (user_technique.h).
+    UserAoPass(const Chain& c, std::shared_ptr<const UserTechnique> technique);
     void setup(PassBuilder& b, const Settings& s) const override;
     UserAoConfig config(const Settings& s, const FrameInfo& f) const override;
 
@@ -38,8 +36,6 @@ class UserAoPass final : public AoPass<UserAoConfig> {
     std::string prepare(PassContext& ctx, const UserAoConfig& c) override;
     std::shared_ptr<const UserTechnique> technique_;
     std::string source_; // userShaderSource(*technique_)
-    std::vector<unsigned char> packed_;
-    AoNoise noise_;
     gl::UniformBuffer ubo_, paramsUbo_;
 };
 
