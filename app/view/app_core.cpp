@@ -345,6 +345,7 @@ void AppCore::pollShaderReload() {
     frames_.pollShaderReload();
     if (frames_.reloadedShaders()) setStatus("shaders reloaded", false);
     const TechniqueWatch::News news = techniques_.poll();
+    techniqueVerdicts_ += unsigned(news.errors.size() + news.adopted.size());
     for (const std::string& e : news.errors) {
         setStatus(e, true);
         frames_.setShaderError(e);

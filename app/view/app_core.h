@@ -109,6 +109,8 @@ class AppCore {
     // caller prints it on stderr and exits non-zero, so a script learns of it too.
     const std::string& startupError() const { return startupError_; }
     bool statusIsError() const { return statusError_; }
+    // How many versions of user techniques the watch has adopted or refused so far (tests wait on it).
+    unsigned techniqueVerdicts() const { return techniqueVerdicts_; }
     const PresetStore& presets() const { return store_; }
     CameraController& cameraController() { return camera_; }
     std::optional<Settings> settingsB(); // chain B of the split view, or nullopt
@@ -160,6 +162,7 @@ class AppCore {
     std::map<std::string, std::string> descriptions_; // preset path -> its description
     FrontPanel front_;
     TechniqueWatch techniques_;
+    unsigned techniqueVerdicts_ = 0;
 };
 
 } // namespace ssao

@@ -62,8 +62,8 @@ class AppUserTechnique : public GlTest {
     }
     // Polls as the window does until the watch has adopted or refused the new version.
     void awaitVerdict() {
-        const std::string before = ui_->app().status();
-        for (int i = 0; i < 1200 && ui_->app().status() == before; ++i) {
+        const unsigned before = ui_->app().techniqueVerdicts();
+        for (int i = 0; i < 1200 && ui_->app().techniqueVerdicts() == before; ++i) {
             ui_->app().pollShaderReload();
             std::this_thread::sleep_for(std::chrono::milliseconds(50));
         }

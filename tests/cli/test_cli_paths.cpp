@@ -113,6 +113,9 @@ class PathOptions : public ::testing::Test {
             return {{{"--scene", "builtin:corner"}, {"--out", "run_out"}}, "--technique sao --size 64x36"};
         if (command == "view")
             return {{{"--scene", "builtin:corner"}, {"--screenshot", "run_out.png"}}, "--size 320x240 --frames 1"};
+        if (command == "probe-technique") return {{}, ""}; // its one argument, the file
+        if (command.empty()) // the global options (--technique-dir), given to a render
+            return {{}, "render --scene builtin:corner --out run_out " + common("render")};
         ADD_FAILURE() << "no recipe for `ssaolab " << command << "`: add one so its path options are tried";
         return {};
     }

@@ -110,7 +110,7 @@ TEST(CliInstall, TheInstalledTreeRunsFromAnywhereWithoutTheSources) {
     ASSERT_EQ(run("cd / && '" + exe + "' paths", &log), 0) << log;
     EXPECT_NE(log.find("(installed)"), std::string::npos) << log;
     const std::string data = fs::weakly_canonical(base + "/moved/share/ssaolab").string();
-    EXPECT_NE(log.find("shaders  " + data + "/shaders"), std::string::npos)
+    EXPECT_NE(log.find("shaders    " + data + "/shaders"), std::string::npos)
         << "not the source tree's: " << log;
     const std::string out = base + "/out";
     ASSERT_EQ(run("cd / && '" + exe + "' render --preset seed003 --size 64x36 --timing-frames 1 --out " + out,
