@@ -54,5 +54,7 @@ const std::vector<TechniqueRows>& registeredTechniques();
 // Which set of techniques registeredTechniques() holds: it changes when the user techniques do
 // (techniques/technique.h setUserTechniques), and the parameter table is rebuilt from it.
 unsigned techniquesGeneration();
+// Why the user technique `id` is not registered (its file was refused: "FILE:LINE: ..."), or "".
+std::string refusedTechniqueReason(const std::string& id);
 
 } // namespace ssao

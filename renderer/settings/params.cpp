@@ -391,6 +391,9 @@ void setParam(Settings& s, const std::string& key, const std::string& text) {
     case T::Enum:
         for (size_t i = 0; i < p->choices.size(); ++i)
             if (p->choices[i] == text) return p->set(s, double(i));
+        if (key == "ao.technique")
+            if (const std::string why = refusedTechniqueReason(text); !why.empty())
+                throw Error("technique " + text + " was not loaded: " + why);
         throw Error(key + ": '" + text + "' is not one of " + choiceList(*p));
     default:
         checkAndSet(*p, s, parseNumber(*p, text), text);

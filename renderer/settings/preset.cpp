@@ -151,7 +151,7 @@ void checkTechniqueFile(const nlohmann::json& j, const std::string& origin, std:
     for (const TechniqueRows& t : registeredTechniques())
         if (t.id == id) {
             if (t.version != hash)
-                warnings.push_back("preset " + origin + ": " + file + " has changed since the preset was saved (hash " +
+                warnings.push_back(origin + ": " + file + " has changed since the preset was saved (hash " +
                                    hash.substr(0, 16) + " then, " + t.version + " now): its values may mean something else");
             return;
         }

@@ -112,6 +112,12 @@ unsigned techniquesGeneration() {
     return current().number;
 }
 
+std::string refusedTechniqueReason(const std::string& id) {
+    for (const auto& [refusedId, why] : current().refused)
+        if (refusedId == id) return why;
+    return "";
+}
+
 const std::vector<std::pair<std::string, std::string>>& refusedUserTechniques() {
     return current().refused;
 }

@@ -14,6 +14,8 @@
 #include "cli/headless_runner.h"
 #include "reference/reference_cache.h"
 #include "settings/params.h"
+#include "techniques/technique.h"
+#include "techniques/user/user_folder.h"
 
 #include <nlohmann/json.hpp>
 
@@ -330,4 +332,23 @@ TEST_F(FrontPanelApp, TheMotionAxisScoresEveryCandidateAsBenchMotionDoes) {
     EXPECT_FALSE(f.motion().hasView());
     EXPECT_TRUE(f.points().empty());
     EXPECT_NE(f.waiting().find("waiting for the reference"), std::string::npos) << f.waiting();
+}
+
+TEST(FrontCandidates, EachUserTechniqueIsAPointAtItsHeadersDefaults) {
+    const std::string path = std::string(SSAOLAB_SOURCE_DIR) + "/examples/techniques/xegtao.ao.glsl";
+    setUserTechniques({readUserTechnique(path)});
+    const PresetStore store = PresetStore::standard(std::string(SSAOLAB_TEST_TMP) + "/front_presets");
+    Settings current = defaultSettings();
+    setParam(current, "ao.resolution", "half"); // the current settings' other choices carry over
+    bool found = false;
+    for (const Candidate& c : frontCandidates(current, store, 0.5f)) {
+        if (c.label != "user.xegtao") continue;
+        found = true;
+        EXPECT_EQ(c.origin, "user technique");
+        EXPECT_EQ(c.settings.ao.technique, "user.xegtao");
+        EXPECT_EQ(c.settings.ao.resolution, AoResolution::Half);
+        EXPECT_EQ(findParam("user.xegtao.slices")->get(c.settings), 3.0); // the header's default
+    }
+    EXPECT_TRUE(found);
+    setUserTechniques({});
 }

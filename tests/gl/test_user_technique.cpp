@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <sstream>
 
 using namespace ssao;
 using namespace ssaotest;
@@ -213,4 +214,32 @@ TEST_F(UserTechniques, TheOwnTechniquePagesExampleHoldsThePhysics) {
     const auto in = r->inspect(0, {48, 40});
     ASSERT_TRUE(in && in->geometry);
     EXPECT_FALSE(in->taps.empty()); // its ssaoRecordTap calls reach the inspector
+}
+
+TEST_F(UserTechniques, EveryDenoiserResolutionAndTheTemporalFilterApplyAsToItsTwin) {
+    // The stages after the AO pass are the pipeline's: with the twin's AO, the user technique's
+    // denoised frame is the twin's under each of them.
+    const auto t = example("xegtao.ao.glsl");
+    const Scene scene = loadScene("builtin:showcase");
+    for (const std::string& stage : {"ao.resolution=half denoise.kind=bilateral", "ao.resolution=quarter denoise.kind=gaussian",
+                                     "denoise.kind=box4 temporal.enabled=true temporal.frames=4"}) {
+        Settings s = defaultSettings();
+        s.ao.technique = "gtao";
+        s.gtao.quality = GtaoQuality::High;
+        s.gtao.pyramid = false;
+        std::istringstream sets(stage);
+        for (std::string a; sets >> a;) applyAssignment(s, a);
+        auto r = makeRenderer(scene, s, 96, 72);
+        for (int f = 0; f < 4; ++f) r->render();
+        const Image builtin = readBack(r->texture("ao.denoised"), 1);
+        r->setSettings(useUser(s, t, AoNoise::Ign));
+        for (int f = 0; f < 4; ++f) r->render();
+        const Image user = readBack(r->texture("ao.denoised"), 1);
+        const double d = maxAbsDiff(builtin, user);
+        std::printf("xegtao.ao.glsl vs gtao high, %s: max |diff| of ao.denoised %.3g, mean %.4f\n", stage.c_str(), d,
+                    stats(user).mean);
+        EXPECT_LE(d, 1e-5) << stage;
+        EXPECT_TRUE(finiteInRange(user, 0.0f, 1.0f)) << stage;
+        EXPECT_LT(stats(user).mean, 0.99) << stage;
+    }
 }
