@@ -8,6 +8,7 @@
 #include "passes/gbuffer_pass.h"
 #include "passes/guard_band_pass.h"
 #include "passes/position_pyramid_pass.h"
+#include "passes/second_layer_pass.h"
 #include "scene/view_fit.h"
 #include "settings/params.h"
 #include "techniques/ao_common.h"
@@ -191,6 +192,8 @@ void Renderer::buildGraph() {
     // The back-face layer, shared likewise.
     if (BackFacePass::on(settings_) || (settingsB_ && BackFacePass::on(*settingsB_)))
         nodes.push_back({&passFor("back_faces", [] { return std::make_unique<BackFacePass>(); }), &settings_});
+    if (SecondLayerPass::on(settings_) || (settingsB_ && SecondLayerPass::on(*settingsB_)))
+        nodes.push_back({&passFor("second_layer", [] { return std::make_unique<SecondLayerPass>(); }), &settings_});
     // The position pyramid, shared by both chains, when a chain's technique reads it.
     if (usesPyramid(settings_) || (settingsB_ && usesPyramid(*settingsB_)))
         nodes.push_back({&passFor("position_mips", [] { return std::make_unique<PositionPyramidPass>(); }),

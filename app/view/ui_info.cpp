@@ -131,6 +131,10 @@ void inspectorSection(FrameDriver& frames, Inspector& inspector, ViewState& view
     for (const auto& t : pi->taps)
         back += t.backLayer;
     if (back > 0) ImGui::Text("%d of them took their solid's far side from the back-face layer (ringed)", back);
+    int second = 0;
+    for (const auto& t : pi->taps)
+        second += t.secondLayer;
+    if (second > 0) ImGui::Text("%d of them hid sectors with what the depth buffer hides, the second layer (squared)", second);
     ImGui::Text("occlusion %.3f / %.0f, radius %.4g units -> AO %.4f", pi->occlusion, pi->normaliser,
                 pi->radius, pi->ao);
 }

@@ -162,6 +162,8 @@ void drawSamples(const ViewImages& in, const Renderer& r, ImDrawList* dl, ImVec2
                                                   : IM_COL32(150, 150, 150, 255);
         dl->AddCircleFilled(p, 2.5f, col);
         if (t.backLayer) dl->AddCircle(p, 4.5f, IM_COL32(255, 255, 255, 200), 10, 1.0f); // read the back layer
+        if (t.secondLayer) // the surface behind it hid sectors
+            dl->AddRect(ImVec2(p.x - 4.5f, p.y - 4.5f), ImVec2(p.x + 4.5f, p.y + 4.5f), IM_COL32(255, 220, 80, 220));
     }
 }
 

@@ -30,6 +30,11 @@ struct GBufferSettings {
     TargetFormat normalFormat = TargetFormat::RGBA16F;
     int guardBandPx = 0; // positions also rendered this many pixels beyond each edge (0 = none)
     bool backFaces = false; // the nearest surface facing away, as a linear depth (true thickness)
+    // A second depth layer (Mara et al. 2016's deep G-buffer, by depth peeling): per pixel the
+    // nearest surface facing the camera at least secondLayerSeparation x the scene's diagonal
+    // behind the first, so taps see what the first layer hides.
+    bool secondLayer = false;
+    float secondLayerSeparation = 0.005f;
 };
 
 // What every AO technique shares: which one runs, its radius (in one of three unit systems),

@@ -7,5 +7,6 @@ namespace ssao::gbuffer {
 constexpr const char* kPositionMips = "gbuffer.position_mips"; // passes/position_pyramid_pass.h
 constexpr const char* kGuardBand = "gbuffer.guard_band";       // passes/guard_band_pass.h
 constexpr const char* kBackDepth = "gbuffer.back_depth";       // passes/back_face_pass.h
+constexpr const char* kSecondLayer = "gbuffer.second_layer";   // passes/second_layer_pass.h
 
 } // namespace ssao::gbuffer

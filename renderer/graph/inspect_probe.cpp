@@ -67,6 +67,7 @@ void InspectProbe::run(glm::ivec2 pixel, glm::ivec2 size, const std::function<vo
         const int state = int(taps[i].uvStateSet.z);
         t.state = TapState(state & (SSAO_TAP_BACK_LAYER - 1));
         t.backLayer = (state & SSAO_TAP_BACK_LAYER) != 0;
+        t.secondLayer = (state & SSAO_TAP_SECOND_LAYER) != 0;
         t.set = int(taps[i].uvStateSet.w);
         out.taps.push_back(t);
     }

@@ -17,6 +17,7 @@ struct InspectTap {
     TapState state = TapState::Open;
     int set = 0; // technique-defined group (separable kernel: 0 = x-plane set, 1 = y-plane set)
     bool backLayer = false; // its solid's far side came from the back-face layer (gbuffer.back_faces)
+    bool secondLayer = false; // the surface behind it (gbuffer.second_layer) closed sectors
 };
 
 // A tap that left the frame and still found a surface: it read the guard band

@@ -7,7 +7,7 @@
 namespace ssao {
 
 int passCategory(const std::string& n) {
-    if (n == "guard_band" || n == "back_faces") return 1;
+    if (n == "guard_band" || n == "back_faces" || n == "second_layer") return 1;
     if (n.rfind("gbuffer", 0) == 0) return 0;
     if (n.rfind("denoise", 0) == 0 || n.rfind("temporal", 0) == 0 || n.rfind("upsample", 0) == 0) return 3;
     if (n.rfind("composite", 0) == 0) return 4;

@@ -116,6 +116,21 @@ Scene corner() {
     return s;
 }
 
+// The corner with its wall hidden from the designed camera: a 0.1-thick plate near the camera whose
+// lower edge lies on the eye's ray through the crease, so the image shows the floor up to the crease
+// and the plate above it, never the wall. The plate is over 1.5 units from every floor point within
+// 2 units of the wall: at R <= 1.5 it occludes none of them, and their AO is the corner's closed form,
+// which only what the depth buffer hides can give (the second layer, gbuffer.second_layer).
+Scene hidden() {
+    Scene s = corner();
+    Builder b(s);
+    b.begin(kWall);
+    // The eye (0, 2.5, 4) to the crease (x, 0, -2) crosses z = 1 at y = 1.25 for every x.
+    b.box({-10.0f, 1.26f, 0.95f}, {10.0f, 6.0f, 1.05f});
+    b.flush();
+    return s;
+}
+
 // Three 0.1-thick slabs that pass through each other as CornellBox's walls do: each ends at the
 // mid-plane of the others, so the visible floor/wall crease lies inside the other slab's volume
 // to within rounding. Floor y in [-0.05, 0.05] over x, z in [0, 4]; back wall z in [-0.05, 0.05];
@@ -141,7 +156,7 @@ Scene slabs() {
 } // namespace
 
 std::vector<std::string> builtinSceneNames() {
-    return {"showcase", "plane", "corner", "slabs"};
+    return {"showcase", "plane", "corner", "slabs", "hidden"};
 }
 
 Scene makeBuiltinScene(const std::string& name) {
@@ -154,6 +169,8 @@ Scene makeBuiltinScene(const std::string& name) {
         s = corner();
     else if (name == "slabs")
         s = slabs();
+    else if (name == "hidden")
+        s = hidden();
     else {
         std::string list;
         for (auto& n : builtinSceneNames())

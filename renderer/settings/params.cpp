@@ -74,6 +74,15 @@ std::vector<Param> coreRows() {
                  "A second geometry pass keeps the nearest surface facing away from the camera (by its normal): "
                  "where it lies behind a tap, the bitmask hides the sectors down to it - the surface's true "
                  "thickness - instead of the assumed vbao.thickness."),
+        BOOL_ROW("gbuffer.second_layer", "Second layer", gbuffer.secondLayer,
+                 "A second geometry pass keeps, per pixel, the nearest surface facing the camera behind the one "
+                 "seen (depth peeling, as Mara et al.'s deep G-buffer): the bitmask then also hides the sectors of "
+                 "what the depth buffer hides - a wall behind a thin object, a part behind a part."),
+        FLOAT_ROW("gbuffer.second_layer_separation", "Layer separation", gbuffer.secondLayerSeparation, 0.0, 0.1,
+                  "x diagonal",
+                  "How far behind the first surface the second must lie (a fraction of the scene's diagonal), so a "
+                  "surface is not found again as its own second layer (Mara et al.'s minimum separation).")
+            .onlyWhen("gbuffer.second_layer", {"true"}),
         // ---- AO (every technique) -------------------------------------------------------------
         techniqueRow(),
         ENUM_ROW(

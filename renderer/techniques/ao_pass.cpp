@@ -27,7 +27,8 @@ gpu::AoCommon aoCommonFor(const Settings& s, const FrameInfo& f, AoNoise noise, 
     c.estimator.w = pyramidOffset; // taps d px away read MIP log2(d) - this (0: no pyramid)
     // Taps off the frame read the band; taps' thickness from the back layer (bindings.h bits).
     c.flags.w = float((s.gbuffer.guardBandPx > 0 ? SSAO_AO_BAND : 0) |
-                      (s.gbuffer.backFaces ? SSAO_AO_BACK_DEPTH : 0));
+                      (s.gbuffer.backFaces ? SSAO_AO_BACK_DEPTH : 0) |
+                      (s.gbuffer.secondLayer ? SSAO_AO_SECOND_LAYER : 0));
     return c;
 }
 
@@ -35,6 +36,7 @@ AoBindings aoBindings(const Settings& s, AoNoise noise, bool pyramid, bool band)
     AoBindings b;
     b.guardBand = band && s.gbuffer.guardBandPx > 0;
     b.backDepth = band && s.gbuffer.backFaces;
+    b.secondLayer = band && s.gbuffer.secondLayer;
     b.gbufferNormals = s.ao.normals == NormalSource::GBuffer;
     b.blueNoise = noise == AoNoise::Blue;
     b.pyramid = pyramid;
@@ -49,6 +51,7 @@ void declareAoInputs(PassBuilder& b, const Chain& chain, const Settings& s, cons
     if (bind.pyramid) b.read(gbuffer::kPositionMips);
     if (bind.guardBand) b.read(gbuffer::kGuardBand);
     if (bind.backDepth) b.read(gbuffer::kBackDepth);
+    if (bind.secondLayer) b.read(gbuffer::kSecondLayer);
     b.write(aoRawOutput(chain, s));
 }
 
@@ -66,6 +69,7 @@ void AoShared::bind(PassContext& ctx, const AoBindings& bind, const std::string&
     if (bind.pyramid) ctx.in(gbuffer::kPositionMips).bind(SSAO_TEX_POSITION_MIPS);
     if (bind.guardBand) ctx.in(gbuffer::kGuardBand).bind(SSAO_TEX_POSITION_BAND);
     if (bind.backDepth) ctx.in(gbuffer::kBackDepth).bind(SSAO_TEX_BACK_DEPTH);
+    if (bind.secondLayer) ctx.in(gbuffer::kSecondLayer).bind(SSAO_TEX_SECOND_LAYER);
 }
 
 gl::Defines aoFeatureDefines(const gpu::AoCommon& c) {
@@ -74,6 +78,7 @@ gl::Defines aoFeatureDefines(const gpu::AoCommon& c) {
     if (c.estimator.w > 0.0f) defs.push_back({"AO_PYRAMID", "1"});
     if (inputs & SSAO_AO_BAND) defs.push_back({"AO_BAND", "1"});
     if (inputs & SSAO_AO_BACK_DEPTH) defs.push_back({"AO_BACK_DEPTH", "1"});
+    if (inputs & SSAO_AO_SECOND_LAYER) defs.push_back({"AO_SECOND_LAYER", "1"});
     if (int(c.estimator.z) == SSAO_NORMALS_DEPTH) defs.push_back({"AO_NORMALS_DEPTH", "1"});
     defs.push_back({"AO_NOISE", std::to_string(int(c.estimator.y))}); // the kind as a constant (noise.glsl)
     if (c.estimator.x == 1.0f) defs.push_back({"AO_POWER_ONE", "1"});

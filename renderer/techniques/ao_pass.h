@@ -32,6 +32,7 @@ struct AoBindings {
     int32_t pyramid = 0;        // reads and binds gbuffer.position_mips (passes/position_pyramid_pass.h)
     int32_t guardBand = 0;      // reads and binds gbuffer.guard_band (passes/guard_band_pass.h)
     int32_t backDepth = 0;      // reads and binds gbuffer.back_depth (passes/back_face_pass.h)
+    int32_t secondLayer = 0;    // reads and binds gbuffer.second_layer (passes/second_layer_pass.h)
     int32_t deinterleave = 0;   // ao.deinterleave in effect: drawn over 16 layers (techniques/deinterleave.h)
 };
 

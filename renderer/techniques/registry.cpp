@@ -139,7 +139,7 @@ bool usesPyramid(const Settings& s) {
 
 bool deinterleaves(const Settings& s) {
     return s.ao.deinterleave && findTechnique(s.ao.technique).deinterleave && s.ao.resolution == AoResolution::Full &&
-           !usesPyramid(s) && s.gbuffer.guardBandPx == 0 && !s.gbuffer.backFaces && s.ao.normals == NormalSource::GBuffer;
+           !usesPyramid(s) && s.gbuffer.guardBandPx == 0 && !s.gbuffer.backFaces && !s.gbuffer.secondLayer && s.ao.normals == NormalSource::GBuffer;
 }
 
 DenoiseSettings effectiveDenoise(const Settings& s) {

@@ -21,6 +21,7 @@
 #define SSAO_TEX_POSITION_BAND 13 // gbuffer.guard_band: positions of the frame and a margin beyond it
 #define SSAO_TEX_BLUE_NOISE 14  // 64x64 blue noise, two channels (techniques/noise/blue_noise.h)
 #define SSAO_TEX_POSITION_MIPS 15 // gbuffer.position with a MIP pyramid (passes/position_pyramid_pass.h)
+#define SSAO_TEX_SECOND_LAYER 16 // gbuffer.second_layer: the nearest front surface behind the first (passes/second_layer_pass.h)
 
 // ---- Uniform / storage buffer bindings -----------------------------------------------------
 #define SSAO_UBO_FRAME 0   // FrameConstants
@@ -29,6 +30,7 @@
 #define SSAO_UBO_USER 3    // a user technique's parameters (SsaoUserParams; renderer/techniques/user)
 #define SSAO_SSBO_INSPECT 0 // sample inspector record (INSPECT builds only)
 #define SSAO_LOC_AO_LAYER_CELL 30 // deinterleaved AO: the layer's cell of the 4x4 tile (noise.glsl, techniques/deinterleave.h)
+#define SSAO_LOC_SECOND_LAYER_SEPARATION 31 // the second layer's minimum separation, scene units (passes/second_layer.frag)
 
 #define SSAO_MAX_DENOISE_TAPS 65 // 2*32+1 taps of a 1-D kernel
 #define SSAO_BILATERAL_MAX_HALF_WIDTH 8 // the bilateral's 2-D window: at most 17x17
@@ -39,6 +41,7 @@
 // AoCommon.flags.w bits.
 #define SSAO_AO_BAND 1
 #define SSAO_AO_BACK_DEPTH 2
+#define SSAO_AO_SECOND_LAYER 4
 
 // Radius modes as the shaders see them (scene mode is resolved to world units on the CPU).
 #define SSAO_RADIUS_WORLD 0
@@ -64,6 +67,8 @@
 // OR-ed into a tap's state: the layer it read beyond the G-buffer's front surface (the inspector
 // shows which). BACK_LAYER: the back-face layer gave its solid's far side (gbuffer.back_faces).
 #define SSAO_TAP_BACK_LAYER 16
+// SECOND_LAYER: the surface the depth buffer hides behind the tap (gbuffer.second_layer) closed sectors.
+#define SSAO_TAP_SECOND_LAYER 32
 
 // View modes (display/view.frag), one per Display kind plus the difference of two buffers.
 #define SSAO_VIEW_COLOR 0

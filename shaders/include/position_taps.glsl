@@ -58,6 +58,21 @@ bool aoTapHeld(AoCommon_ c, sampler2D positions, vec2 uv, float offsetPx, out ve
 // layer.
 layout(binding = SSAO_TEX_BACK_DEPTH) uniform sampler2D aoBackDepth;
 
+// The second depth layer at uv (gbuffer.second_layer, passes/second_layer_pass.h): the nearest
+// surface facing the camera behind the one the G-buffer shows there, w = 1, or w = 0 where there is
+// none, the layer is off or uv is off the frame (the layer covers the frame only).
+#ifdef AO_SECOND_LAYER
+layout(binding = SSAO_TEX_SECOND_LAYER) uniform sampler2D aoSecondLayer;
+#endif
+vec4 aoSecondLayerAt(vec2 uv) {
+#ifndef AO_SECOND_LAYER
+    return vec4(0.0);
+#else
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);
+    return textureLod(aoSecondLayer, uv, 0.0);
+#endif
+}
+
 float aoBackGap(AoCommon_ c, vec2 uv, vec3 S, float assumed) {
 #ifndef AO_BACK_DEPTH
     return assumed;

@@ -12,9 +12,9 @@ double wallClosedForm(double d, double R) {
     return 1.0 - (std::acos(a) - a * std::sqrt(1.0 - a * a)) / M_PI;
 }
 
-CornerProfile cornerProfile(const Settings& s) {
+CornerProfile cornerProfile(const Settings& s, const std::string& scene) {
     const int w = 320, h = 240;
-    Rendered r = render("builtin:corner", s, w, h);
+    Rendered r = render(scene, s, w, h);
     const float R = s.ao.radius; // the tests give the corner a world radius
     const glm::mat4 invView = glm::inverse(r.camera.view());
     const glm::vec3 up = glm::normalize(glm::mat3(r.camera.view()) * glm::vec3(0, 1, 0));

@@ -19,7 +19,8 @@ struct CornerProfile {
     double far = 0;     // mean AO of the bins between 1.5 R and 2 R (the closed form is 1 there)
     size_t bins = 0;
 };
-CornerProfile cornerProfile(const ssao::Settings& s);
+// `scene`: builtin:corner, or builtin:hidden (the same floor and wall, the wall hidden by a plate).
+CornerProfile cornerProfile(const ssao::Settings& s, const std::string& scene = "builtin:corner");
 inline double cornerRmse(const ssao::Settings& s) { return cornerProfile(s).rmse; }
 
 } // namespace ssaotest

@@ -69,9 +69,10 @@ TEST_F(Modes, EveryValueOfEveryParameterIsFiniteAndChangesTheImage) {
         makeApply(base, p);
         // The position pyramid only serves taps >= 16 px away: give those rows a radius that reaches.
         if (p.key.size() > 8 && p.key.substr(p.key.size() - 8) == ".pyramid") base.ao.radiusScene = 0.3f;
-        // The guard band (taps off the frame) and the back layer (the bitmask's thickness) act on the
-        // horizon techniques' taps, not on the kernel.
-        const bool band = p.key == "gbuffer.guard_band_px" || p.key == "gbuffer.back_faces";
+        // The guard band (taps off the frame), the back layer (the bitmask's thickness) and the second
+        // layer (what the depth buffer hides) act on the horizon techniques' taps, not on the kernel.
+        const bool band = p.key == "gbuffer.guard_band_px" || p.key == "gbuffer.back_faces" ||
+                          p.key.rfind("gbuffer.second_layer", 0) == 0;
         if (band) base.ao.technique = "vbao";
         const Images ref = renderImages(*r, base);
         int changedLimit = 0;

@@ -52,6 +52,16 @@ float arcGEdge(int e, float n, float cosN, float sinN) { // G at sector edge e
     return h < 0.0 ? -a : a;
 }
 
+// The sectors a solid hides on one side of the slice: from its front point (`front`, already in the
+// slice plane: aoSliceDelta) to its back point, the front pushed `gap` along -V.
+uint intervalBits(vec3 front, float gap, vec3 V, float sgn, float n) {
+    float ff = dot(front, front), fv = dot(front, V);
+    float hFront = sgn * safeAcos(fv * inversesqrt(ff));
+    float hBack = sgn * safeAcos((fv - gap) * inversesqrt(ff - 2.0 * gap * fv + gap * gap));
+    int a = sectorEdge(min(hFront, hBack), n), b = sectorEdge(max(hFront, hBack), n);
+    return b - a >= 32 ? 0xFFFFFFFFu : ((1u << uint(b - a)) - 1u) << uint(a);
+}
+
 void main() {
     vec2 uv0 = aoPixelUv(vUv); // the G-buffer texel this AO pixel stands for
     vec4 P4 = texture(gPosition, uv0);
@@ -107,22 +117,29 @@ void main() {
                 // ray: its angle then needs no vector of its own, |front - gap V|^2 = ff - 2 gap fv
                 // + gap^2.
                 float gap = aoBackGap(ssao.aoCommon, uv, S.xyz, thickness);
-                float ff = dot(front, front), fv = dot(front, V);
                 float sgn = side == 0 ? 1.0 : -1.0; // side 0 at positive angles from V
-                float hFront = sgn * safeAcos(fv * inversesqrt(ff));
-                float hBack = sgn * safeAcos((fv - gap) * inversesqrt(ff - 2.0 * gap * fv + gap * gap));
-                int a = sectorEdge(min(hFront, hBack), n), b = sectorEdge(max(hFront, hBack), n);
-                uint bits = b - a >= 32 ? 0xFFFFFFFFu : ((1u << uint(b - a)) - 1u) << uint(a);
+                uint bits = intervalBits(front, gap, V, sgn, n);
                 bits = counts ? bits : 0u; // a tap that does not count (NaN angles included) hides nothing
                 bool hides = (bits & ~mask) != 0u; // the inspector's: it closes sectors still open
                 mask |= bits;
-                INSPECT_TAP(held && S.w != 0.0 ? S.xyz : P, uv,
+                // What the depth buffer hides behind the tap (gbuffer.second_layer): its own interval,
+                // its thickness bounded by the back-face layer where that lies behind it.
+                vec4 S2 = aoSecondLayerAt(uv);
+                vec3 front2 = S2.xyz - P;
+                float dist2 = length(front2);
+                bool counts2 = S2.w != 0.0 && dist2 > 0.0 && dist2 <= R;
+                uint bits2 = intervalBits(aoSliceDelta(sl, front2), aoBackGap(ssao.aoCommon, uv, S2.xyz, thickness), V, sgn, n);
+                bits2 = counts2 ? bits2 : 0u;
+                bool hides2 = (bits2 & ~mask) != 0u;
+                mask |= bits2;
+                INSPECT_TAP(hides2 && !hides ? S2.xyz : held && S.w != 0.0 ? S.xyz : P, uv,
                             !held           ? SSAO_TAP_OFFSCREEN
                             : S.w == 0.0    ? SSAO_TAP_SKY
-                            : !counts       ? SSAO_TAP_OPEN
-                                            : (hides ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN) |
-                                                  (gap > thickness ? SSAO_TAP_BACK_LAYER : 0),
-                            float(bitCount(bits)) / 32.0, slice);
+                            : !counts && !hides2 ? SSAO_TAP_OPEN
+                                            : (hides || hides2 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN) |
+                                                  (gap > thickness ? SSAO_TAP_BACK_LAYER : 0) |
+                                                  (hides2 ? SSAO_TAP_SECOND_LAYER : 0),
+                            float(bitCount(bits | bits2)) / 32.0, slice);
             }
         } while (++step < steps);
         // Open measure of the whole hemisphere minus that of each run of hidden sectors.

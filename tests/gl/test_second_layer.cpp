@@ -1,0 +1,122 @@
+// The second depth layer (gbuffer.second_layer, passes/second_layer_pass.h) and the bitmask that
+// reads it: a wall the depth buffer hides behind a plate (builtin:hidden) is found again, against
+// the corner's closed form; the layer never brightens the AO; a scene of nested parts (a part
+// inside a part) is never worse against the reference with it; the inspector shows its taps.
+#include "closed_form.h"
+#include "gl_fixture.h"
+
+#include "gl/readback.h"
+#include "metrics/evaluate.h"
+#include "passes/second_layer_pass.h"
+#include "output/reference_report.h"
+#include "scene/scene.h"
+
+#include <cmath>
+
+using namespace ssao;
+using namespace ssaotest;
+
+namespace {
+class SecondLayer : public GlTest {};
+
+Settings bitmask(bool second) {
+    Settings s = defaultSettings();
+    s.ao.technique = "vbao";
+    s.ao.radiusMode = RadiusMode::World;
+    s.ao.radius = 1.0f;
+    s.vbao.slices = 8;
+    s.vbao.steps = 16;
+    s.denoise.kind = DenoiseKind::None;
+    s.gbuffer.secondLayer = second;
+    return s;
+}
+} // namespace
+
+TEST_F(SecondLayer, AWallTheDepthBufferHidesIsFoundBehindThePlate) {
+    // builtin:hidden is builtin:corner with a plate between the eye and the wall, over 1.5 R from
+    // every floor point measured: the floor's AO is still the wall's closed form.
+    const CornerProfile open = cornerProfile(bitmask(false), "builtin:corner");
+    const CornerProfile one = cornerProfile(bitmask(false), "builtin:hidden");
+    const CornerProfile two = cornerProfile(bitmask(true), "builtin:hidden");
+    std::printf("floor beside a wall, RMSE against the closed form: wall seen %.4f; wall hidden: one layer %.4f "
+                "(at the wall %.3f), two layers %.4f (at the wall %.3f)\n",
+                open.rmse, one.rmse, one.atWall, two.rmse, two.atWall);
+    ASSERT_GT(one.bins, 20u);
+    EXPECT_GT(one.rmse, 0.1);          // one layer sees only the plate, out of reach: the wall is lost
+    EXPECT_GT(one.atWall, 0.9);
+    EXPECT_LE(two.rmse, 0.02);          // two layers find it
+    EXPECT_LE(std::abs(two.rmse - open.rmse), 0.01); // as well as when the wall is in sight
+    EXPECT_LT(two.atWall, 0.6);
+}
+
+TEST_F(SecondLayer, HoldsTheSurfaceBehindAndNeverBrightensTheBitmask) {
+    Settings s = bitmask(true);
+    auto r = makeRenderer(loadScene("builtin:hidden"), s, 160, 120);
+    r->render();
+    const Image first = readBack(r->texture("gbuffer.position"), 4);
+    const Image second = readBack(r->texture(SecondLayerPass::kOutput), 4);
+    const glm::mat4 toWorld = glm::inverse(r->camera().view());
+    long onPlate = 0, wallBehind = 0;
+    for (size_t i = 0; i < first.data.size() / 4; ++i) {
+        if (first.data[4 * i + 3] == 0.0f) continue;
+        const glm::vec3 p1 = glm::vec3(toWorld * glm::vec4(first.data[4 * i], first.data[4 * i + 1], first.data[4 * i + 2], 1));
+        if (std::abs(p1.z - 1.05f) > 1e-3f) continue; // a pixel on the plate's face
+        ++onPlate;
+        if (second.data[4 * i + 3] == 0.0f) continue;
+        const glm::vec3 p2 =
+            glm::vec3(toWorld * glm::vec4(second.data[4 * i], second.data[4 * i + 1], second.data[4 * i + 2], 1));
+        wallBehind += std::abs(p2.z + 2.0f) < 1e-3f; // the wall's face, z = -2
+    }
+    ASSERT_GT(onPlate, 1000);
+    EXPECT_GT(double(wallBehind), 0.95 * double(onPlate)) << wallBehind << " of " << onPlate;
+    for (const char* name : {"builtin:showcase", "builtin:hidden", "builtin:slabs"}) {
+        const Rendered a = render(name, bitmask(false), 160, 90), b = render(name, bitmask(true), 160, 90);
+        float brighter = 0;
+        for (size_t i = 0; i < a.aoRaw.data.size(); ++i)
+            brighter = std::max(brighter, b.aoRaw.data[i] - a.aoRaw.data[i]);
+        EXPECT_LT(brighter, 1e-5f) << name; // it only adds what hides sectors
+        EXPECT_TRUE(finiteInRange(b.ao, 0.0f, 1.0f)) << name;
+    }
+}
+
+TEST_F(SecondLayer, NestedPartsAreNeverWorseAgainstTheReference) {
+    // 2CylinderEngine: parts inside parts, where a layer behind a thin shell is another part, not air.
+    const Scene scene = loadScene(std::string(SSAOLAB_SCENES_DIR) + "/2CylinderEngine/2CylinderEngine.gltf");
+    EmbreeScene rt(scene);
+    for (const bool backFaces : {false, true}) {
+        double rmse[2] = {0, 0};
+        for (const bool second : {false, true}) {
+            Settings s = preset("vbao-high");
+            s.gbuffer.secondLayer = second;
+            s.gbuffer.backFaces = backFaces;
+            auto r = makeRenderer(scene, s, 160, 90);
+            r->render();
+            const ReferenceImage ref = traceReference(rt, r->camera(), 160, 90,
+                                                      referenceSettingsFor(r->radiusAtCentre(), 32, ReferenceVariant::Visibility));
+            const Evaluation e = evaluate(readBack(r->texture("ao.denoised"), 1), ref);
+            ASSERT_EQ(e.metrics.nonFinite, 0);
+            rmse[second] = e.metrics.rmse;
+        }
+        std::printf("2CylinderEngine, back faces %s: RMSE one layer %.4f, two layers %.4f\n", backFaces ? "on" : "off",
+                    rmse[0], rmse[1]);
+        EXPECT_LE(rmse[1], rmse[0] + 0.002) << "back faces " << backFaces;
+    }
+}
+
+TEST_F(SecondLayer, TheInspectorShowsWhichTapsTheSecondLayerClosed) {
+    auto r = makeRenderer(loadScene("builtin:hidden"), bitmask(true), 160, 120);
+    r->render();
+    long second = 0, taps = 0;
+    for (int y = 4; y < 120; y += 8)
+        for (int x = 40; x < 120; x += 16)
+            if (const auto pi = r->inspect(0, {x, y}))
+                for (const InspectTap& t : pi->taps) second += t.secondLayer, ++taps;
+    std::printf("%ld of %ld taps closed sectors through the second layer\n", second, taps);
+    EXPECT_GT(second, 0);
+    r->setSettings(bitmask(false)); // none without it
+    r->render();
+    for (int y = 4; y < 120; y += 8)
+        for (int x = 40; x < 120; x += 16)
+            if (const auto pi = r->inspect(0, {x, y}))
+                for (const InspectTap& t : pi->taps) EXPECT_FALSE(t.secondLayer);
+}
