@@ -128,8 +128,9 @@ void main() {
                 vec3 front2 = S2.xyz - P;
                 float dist2 = length(front2);
                 bool counts2 = S2.w != 0.0 && dist2 > 0.0 && dist2 <= R;
-                uint bits2 = intervalBits(aoSliceDelta(sl, front2), aoBackGap(ssao.aoCommon, uv, S2.xyz, thickness), V, sgn, n);
-                bits2 = counts2 ? bits2 : 0u;
+                uint bits2 = 0u;
+                if (counts2) // most taps have nothing within R behind them: no angles to compute
+                    bits2 = intervalBits(aoSliceDelta(sl, front2), aoBackGap(ssao.aoCommon, uv, S2.xyz, thickness), V, sgn, n);
                 bool hides2 = (bits2 & ~mask) != 0u;
                 mask |= bits2;
                 INSPECT_TAP(hides2 && !hides ? S2.xyz : held && S.w != 0.0 ? S.xyz : P, uv,
