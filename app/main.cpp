@@ -97,7 +97,7 @@ struct Commands {
     ssao::StressOptions stress;
     ssao::WindowOptions window;
     std::string windowSize = "1600x900", viewProjection, viewDepth;
-    std::string docsPage, probeFile;
+    std::string docsPage, probeFile, probeSize = "64x36";
     bool techniqueLevels = false, techniqueDerived = false;
 
     Commands() {
@@ -161,11 +161,10 @@ struct Commands {
                               ->group(""); // hidden
         techs->add_flag("--levels", techniqueLevels, "the quality levels make presets tunes: ID LEVEL ROWS TUNED");
         techs->add_flag("--derived", techniqueDerived, "the presets that follow tuned ones: ID NAME FROM ROWS");
-        app.add_subcommand("probe-technique", "render a user technique's file in two small frames (the explorer's test)")
-            ->group("") // hidden: app/view/technique_watch.h runs it
-            ->add_option("file", probeFile, "NAME.ao.glsl")
-            ->required()
-            ->type_name(ssao::kInFile);
+        CLI::App* probe = app.add_subcommand("probe-technique", "render a user technique's file in two frames (the explorer's test)")
+                              ->group(""); // hidden: app/view/technique_watch.h runs it
+        probe->add_option("file", probeFile, "NAME.ao.glsl")->required()->type_name(ssao::kInFile);
+        probe->add_option("--size", probeSize, "the frames' size WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
         addView(*sub("view", "open the interactive explorer window (GLFW + Dear ImGui)"));
     }
 
@@ -212,7 +211,11 @@ struct Commands {
         ssao::setTransparentMode(ssao::parseTransparent(transparent));
         ssao::HeadlessRunner::setFrameTimeLimit(frameTimeLimit);
         // The generated pages and the option list describe the program, not this user's folder.
-        if (app.got_subcommand("probe-technique")) return ssao::runProbeTechnique(probeFile);
+        if (app.got_subcommand("probe-technique")) {
+            int w = 0, h = 0;
+            ssao::parseSizeOption(probeSize, w, h);
+            return ssao::runProbeTechnique(probeFile, w, h);
+        }
         if (!app.got_subcommand("docs") && !app.got_subcommand("options"))
             window.app.techniqueDir = ssao::loadUserTechniques(techniqueDir);
         if (app.got_subcommand("params")) {
@@ -238,6 +241,10 @@ struct Commands {
                         ssao::executablePath().c_str(), ssao::dataRoot().c_str(), ssao::dataRootSource().c_str(),
                         ssao::shaderRoot().c_str(), ssao::assetRoot().c_str(),
                         ssao::PresetStore::defaultUserDir().c_str(), window.app.techniqueDir.c_str());
+            for (const std::string& id : ssao::userTechniqueIds())
+                std::printf("           %s (%s)\n", id.c_str(), ssao::findTechnique(id).file.c_str());
+            if (window.app.techniqueDir.empty() || ssao::userTechniqueIds().empty())
+                std::printf("           (none found: put NAME.ao.glsl files there, docs/own-technique.md)\n");
             return 0;
         }
         if (app.got_subcommand("bench"))

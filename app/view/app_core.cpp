@@ -344,7 +344,9 @@ void AppCore::useViewRadius() {
 void AppCore::pollShaderReload() {
     frames_.pollShaderReload();
     if (frames_.reloadedShaders()) setStatus("shaders reloaded", false);
-    const TechniqueWatch::News news = techniques_.poll();
+    // Probed at the size the explorer renders its still frames at: a shader that passes there does
+    // not stall the window.
+    const TechniqueWatch::News news = techniques_.poll(frames_.renderer().width(), frames_.renderer().height());
     techniqueVerdicts_ += unsigned(news.errors.size() + news.adopted.size());
     for (const std::string& e : news.errors) {
         setStatus(e, true);

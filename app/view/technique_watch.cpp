@@ -21,10 +21,10 @@ namespace {
 constexpr const char* kErrorPrefix = "ssaolab: error: ";
 
 // The probe in its own process: its verdict is its exit code, its "ok HASH" line and its error line.
-void probe(const std::string& program, const std::string& path, const std::string& hash, bool& ok,
-           std::string& message) {
+void probe(const std::string& program, const std::string& path, const std::string& hash, const std::string& size,
+           bool& ok, std::string& message) {
     const ProgramRun r = runProgram({program, "--frame-time-limit", std::to_string(TechniqueWatch::kFrameLimitS),
-                                     "probe-technique", path},
+                                     "probe-technique", path, "--size", size},
                                     ChildStream::Capture, ChildStream::Capture, TechniqueWatch::kProbeLimitS);
     std::istringstream lines(r.out);
     std::string line, error, tested;
@@ -61,7 +61,8 @@ TechniqueWatch::TechniqueWatch(std::string dir, std::string program, std::functi
     worker_ = std::make_unique<LatestJob<Job, State>>(
         [this](const Job& job) {
             State s;
-            probe(program_, job.path, job.hash, s.ok, s.message);
+            probe(program_, job.path, job.hash, std::to_string(job.width) + "x" + std::to_string(job.height), s.ok,
+                  s.message);
             s.done = true;
             worker_->publish(job, [&](State& st) { st.done = true, st.ok = s.ok, st.message = s.message; });
         },
@@ -70,7 +71,7 @@ TechniqueWatch::TechniqueWatch(std::string dir, std::string program, std::functi
 
 TechniqueWatch::~TechniqueWatch() = default;
 
-TechniqueWatch::News TechniqueWatch::poll() {
+TechniqueWatch::News TechniqueWatch::poll(int width, int height) {
     News news;
     if (dir_.empty()) return news;
     if (probing_) {
@@ -81,7 +82,8 @@ TechniqueWatch::News TechniqueWatch::poll() {
     if (!probing_ && !queue_.empty()) {
         probing_ = queue_.front();
         queue_.pop_front();
-        worker_->start({probing_->path + "#" + probing_->hash, probing_->path, probing_->hash});
+        worker_->start({probing_->path + "#" + probing_->hash, probing_->path, probing_->hash, std::max(width, 16),
+                        std::max(height, 16)});
     }
     news.probing = probing_.has_value();
     return news;

@@ -1,7 +1,8 @@
 // The explorer's watch over the user's technique folder (renderer/techniques/user/user_folder.h):
 // each NAME.ao.glsl whose text changes (or that appears) is checked in-process (its header and
-// body rules), then probed in a child process - `ssaolab probe-technique FILE` renders two small
-// frames under a per-frame time limit, the whole probe under a wall-clock limit - and only a
+// body rules), then probed in a child process - `ssaolab probe-technique FILE` renders two frames
+// at the explorer's render size under a per-frame time limit (a shader too slow for the explorer's
+// frames fails it), the whole probe under a wall-clock limit - and only a
 // version that passed is adopted (techniques/technique.h setUserTechniques). A version that fails
 // is named with its reason (FILE:LINE, or the time limit) and the last good one keeps running, so
 // a shader that never ends or crashes the driver cannot freeze or end the explorer.
@@ -35,12 +36,14 @@ class TechniqueWatch {
         std::vector<std::string> errors;  // one line each: FILE:LINE: why, and that the last good one runs
         bool probing = false;             // a probe is still running
     };
-    // Reads the folder (call it a few times a second) and takes a finished probe's verdict.
-    News poll();
+    // Reads the folder (call it a few times a second) and takes a finished probe's verdict; a new
+    // version is probed at `width` x `height`, the size the explorer renders at.
+    News poll(int width, int height);
 
   private:
     struct Job {
         std::string key, path, hash;
+        int width = 0, height = 0;
     };
     struct State {
         std::string key;

@@ -3,6 +3,7 @@
 // to a technique other than the chosen one, with the radius shown in world units and pixels under
 // the AO group.
 #include "settings/params.h"
+#include "techniques/technique.h"
 #include "view/ui_panels.h"
 
 #include <algorithm>
@@ -42,8 +43,12 @@ void tooltip(const Param& p, bool applies, const Preset& loaded, bool changed) {
     if (!p.when.empty())
         ImGui::TextColored(applies ? ImVec4(0.6f, 0.6f, 0.6f, 1) : ImVec4(1, 0.75f, 0.3f, 1),
                            "applies when %s", p.whenText().c_str());
-    ImGui::TextDisabled("%s %s, where it is %s (R resets to it)", changed ? "* : changed from" : "as in",
-                        baselineName(loaded).c_str(), p.format(p.get(loaded.settings)).c_str());
+    if (loaded.name == "defaults" || loaded.keys.count(p.key))
+        ImGui::TextDisabled("%s %s, where it is %s (R resets to it)", changed ? "* : changed from" : "as in",
+                            baselineName(loaded).c_str(), p.format(p.get(loaded.settings)).c_str());
+    else // the preset does not set it: its value is the default
+        ImGui::TextDisabled("%s the default %s (R resets to it; %s does not set it)", changed ? "* : changed from" : "as",
+                            p.format(p.get(loaded.settings)).c_str(), baselineName(loaded).c_str());
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
 }
@@ -173,6 +178,18 @@ static bool otherTechnique(const Param& p, const Settings& s) {
     return std::find(ids.begin(), ids.end(), s.ao.technique) == ids.end();
 }
 
+// A group's heading: a technique's rows under its id and label, its summary on hover (a user
+// technique's from its file's header).
+static void groupHeading(const std::string& group) {
+    for (const TechniqueInfo& t : techniques())
+        if (t.id == group && t.label != t.id) {
+            ImGui::TextDisabled("%s - %s", group.c_str(), t.label.c_str());
+            if (ImGui::IsItemHovered() && !t.summary.empty()) ImGui::SetTooltip("%s", t.summary.c_str());
+            return;
+        }
+    ImGui::TextDisabled("%s", group.c_str());
+}
+
 void drawParameters(const ParamsView& in, UiActions& out) {
     std::string group;
     Settings s = in.settings; // the rows' working copy: what the app's settings become once applied
@@ -182,7 +199,7 @@ void drawParameters(const ParamsView& in, UiActions& out) {
             if (group == "ao") radiusLine(in, out);
             group = p.group();
             ImGui::Spacing();
-            ImGui::TextDisabled("%s", group.c_str());
+            groupHeading(group);
             ImGui::Separator();
         }
         paramWidget(in.loaded, p, s, out);

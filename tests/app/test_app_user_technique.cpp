@@ -142,3 +142,21 @@ TEST_F(AppUserTechnique, ANewHeaderIsAdoptedAndTheValuesFitItsRanges) {
     ui_->frames(2);
     EXPECT_NEAR(meanAo(), 0.6, 1e-6);
 }
+
+TEST_F(AppUserTechnique, TheProbeRendersAtTheExplorersSizeSoAShaderTooSlowThereIsRefused) {
+    // Endless only on frames wider than 100 pixels: a probe of a small frame would pass it, and the
+    // explorer's own frames would then stall. The probe renders at the explorer's size instead.
+    ASSERT_GT(ui_->app().renderer().width(), 100);
+    std::string body = "    if (ssaoFrameSize().x <= 100.0) return value;\n"
+                       "    float x = 0.0;\n    for (int i = 0; i >= 0; i += int(ssaoRadius() > -1.0)) {\n";
+    for (int step = 0; step < 64; ++step)
+        body += "        x = sin(x * 1.3 + float(i));\n";
+    write(flat(body + "    }\n    return x;"));
+    awaitVerdict();
+    const std::string error = ui_->app().frames().shaderError();
+    std::printf("%s\n", error.c_str());
+    EXPECT_NE(error.find("a frame took longer than"), std::string::npos) << error;
+    ui_->app().renderer().invalidate();
+    ui_->frames(2);
+    EXPECT_NEAR(meanAo(), 0.5, 1e-6); // the last good version
+}

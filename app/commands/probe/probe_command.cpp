@@ -10,20 +10,20 @@
 
 namespace ssao {
 
-int runProbeTechnique(const std::string& file) {
+int runProbeTechnique(const std::string& file, int width, int height) {
     const std::shared_ptr<const UserTechnique> t = readUserTechnique(file);
     setUserTechniques({t});
     Settings s = defaultSettings();
     s.ao.technique = userTechniqueId(t->name);
     HeadlessRunner run;
     const Scene scene = loadNamedScene("builtin:showcase");
-    auto r = run.makeRenderer(64, 36);
+    auto r = run.makeRenderer(width, height);
     r->setScene(scene);
     r->setCamera(defaultCamera(scene));
     r->setSettings(s);
     r->render();
     run.readFinite(*r, "ao.raw", t->path);
-    r->inspect(0, {32, 18}); // the inspector's variant compiles and runs too
+    r->inspect(0, {width / 2, height / 2}); // the inspector's variant compiles and runs too
     run.checkGl(t->path);
     std::printf("ok %s\n", t->hash.c_str());
     return 0;

@@ -371,11 +371,15 @@ void saveTuned(const TuneOptions& o, const Tuner& t, const std::vector<Knob>& kn
     char desc[640];
     std::snprintf(desc, sizeof desc,
                   "ssaolab tune: %s fitted to the ray-traced reference (R = %.3g x diagonal) on %zu training views; "
-                  "%s train %.4f -> %.4f, held-out views %.4f -> %.4f, held-out scenes %.4f -> %.4f",
+                  "%s train %.4f -> %.4f, held-out views %.4f -> %.4f",
                   o.technique.c_str(), o.radiusScene, t.count(Role::Train), objectiveName(o).c_str(), rmseOf(before.train), rmseOf(after.train),
-                  rmseOf(before.heldOutViews), rmseOf(after.heldOutViews), rmseOf(before.heldOutScenes),
-                  rmseOf(after.heldOutScenes));
+                  rmseOf(before.heldOutViews), rmseOf(after.heldOutViews));
     p.description = desc;
+    if (!std::isnan(before.heldOutScenes)) { // "nan -> nan" said nothing where there are none
+        std::snprintf(desc, sizeof desc, ", held-out scenes %.4f -> %.4f", rmseOf(before.heldOutScenes),
+                      rmseOf(after.heldOutScenes));
+        p.description += desc;
+    }
     if (v.overfit) {
         std::snprintf(desc, sizeof desc, " rose %.4f -> %.4f", v.before, v.after);
         p.description += "; overfit (saved with --save-overfit): held-out " + v.metric + desc;
