@@ -7,10 +7,10 @@
 
 namespace ssao {
 
-void SecondLayerPass::setup(PassBuilder& b, const Settings& s) const {
+void SecondLayerPass::setup(PassBuilder& b, const Settings&) const {
     b.read("gbuffer.position"); // the first layer, peeled away
-    b.write(describe(kOutput, glFormat(s.gbuffer.positionFormat), 4, Display::Vector,
-                     "view-space position of the nearest surface facing the camera behind the one seen (w = 0: none)",
+    b.write(describe(kOutput, GL_R32F, 1, Display::Scalar,
+                     "linear depth of the nearest surface facing the camera behind the one seen (0 = none)",
                      "scene units"));
     ResourceDesc z = describe("gbuffer.second_z", GL_DEPTH_COMPONENT32F, 1, Display::Scalar, "the second layer's depth test");
     z.internal = true;
@@ -22,6 +22,7 @@ SecondLayerConfig SecondLayerPass::config(const Settings& s, const FrameInfo& f)
     c.frame = withoutFrameIndex(f.constants);
     c.separation = s.gbuffer.secondLayerSeparation * 2.0f * f.sceneRadius; // a fraction of the diagonal
     c.cull = s.skip.cull;
+    c.hiddenFaces = s.skip.hiddenFaces;
     c.sceneVersion = f.sceneVersion;
     return c;
 }
@@ -36,7 +37,7 @@ void SecondLayerPass::run(PassContext& ctx, const SecondLayerConfig& c) {
         if (program) glProgramUniform1f(program, SSAO_LOC_SECOND_LAYER_SEPARATION, c.separation);
     const glm::mat4 viewProj = c.frame.proj * c.frame.view;
     // Every draw: what the G-buffer's occlusion culling leaves out is what this layer is for.
-    ctx.scene()->draw(programs, {&viewProj, reversed, c.cull != 0, false});
+    ctx.scene()->draw(programs, {&viewProj, reversed, c.cull != 0, c.hiddenFaces != 0});
 }
 
 } // namespace ssao

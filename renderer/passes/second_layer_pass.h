@@ -2,8 +2,10 @@
 // surface facing the camera that lies at least a minimum separation behind the one the G-buffer
 // shows - what the depth buffer hides, as Mara, McGuire, Nowrouzezahrai and Luebke's deep G-buffer
 // (HPG 2016) keeps it, here by depth peeling against this frame's own first layer (their exact
-// two-pass form). Facing is judged by the interpolated normal, as the back-face layer does; w = 1
-// where a surface was found, 0 where none. The bitmask marks its sectors too (vbao.frag).
+// two-pass form). Facing is judged by the interpolated normal, as the back-face layer does. It is
+// stored as a linear depth (0 where none), one channel to fetch per tap: a tap at a pixel centre
+// gets the point back exactly from its uv (position_taps.glsl aoSecondLayerAt). The bitmask marks
+// its sectors too (vbao.frag).
 #pragma once
 #include "graph/gbuffer_layers.h"
 #include "graph/pass.h"
@@ -17,6 +19,7 @@ struct SecondLayerConfig {
     gpu::FrameConstants frame; // without the temporal frame index
     float separation;          // scene units
     int32_t cull;
+    int32_t hiddenFaces; // skip.hidden_faces: the sides closed shells hide face away, which it drops anyway
     uint32_t sceneVersion;
 };
 SSAO_CONFIG_END

@@ -54,7 +54,7 @@ TEST_F(SecondLayer, HoldsTheSurfaceBehindAndNeverBrightensTheBitmask) {
     auto r = makeRenderer(loadScene("builtin:hidden"), s, 160, 120);
     r->render();
     const Image first = readBack(r->texture("gbuffer.position"), 4);
-    const Image second = readBack(r->texture(SecondLayerPass::kOutput), 4);
+    const Image second = readBack(r->texture(SecondLayerPass::kOutput), 1);
     const glm::mat4 toWorld = glm::inverse(r->camera().view());
     long onPlate = 0, wallBehind = 0;
     for (size_t i = 0; i < first.data.size() / 4; ++i) {
@@ -62,10 +62,11 @@ TEST_F(SecondLayer, HoldsTheSurfaceBehindAndNeverBrightensTheBitmask) {
         const glm::vec3 p1 = glm::vec3(toWorld * glm::vec4(first.data[4 * i], first.data[4 * i + 1], first.data[4 * i + 2], 1));
         if (std::abs(p1.z - 1.05f) > 1e-3f) continue; // a pixel on the plate's face
         ++onPlate;
-        if (second.data[4 * i + 3] == 0.0f) continue;
-        const glm::vec3 p2 =
-            glm::vec3(toWorld * glm::vec4(second.data[4 * i], second.data[4 * i + 1], second.data[4 * i + 2], 1));
-        wallBehind += std::abs(p2.z + 2.0f) < 1e-3f; // the wall's face, z = -2
+        if (second.data[i] == 0.0f) continue;
+        // The point on this pixel's ray at the layer's depth: its world z is the wall's face, z = -2.
+        const glm::vec3 v1(first.data[4 * i], first.data[4 * i + 1], first.data[4 * i + 2]);
+        const glm::vec3 p2 = glm::vec3(toWorld * glm::vec4(v1 * (second.data[i] / -v1.z), 1));
+        wallBehind += std::abs(p2.z + 2.0f) < 1e-3f;
     }
     ASSERT_GT(onPlate, 1000);
     EXPECT_GT(double(wallBehind), 0.95 * double(onPlate)) << wallBehind << " of " << onPlate;
