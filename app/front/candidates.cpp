@@ -47,6 +47,12 @@ std::vector<Candidate> frontCandidates(const Settings& current, const PresetStor
     neighbours("ao.resolution");
     neighbours("denoise.kind");
     neighbours(current.ao.technique + ".quality");
+    // The second depth layer, for a technique that reads it.
+    if (const Param* layer = findParam("gbuffer.second_layer"); layer && layer->applies(current) && !current.gbuffer.secondLayer) {
+        Settings s = current;
+        s.gbuffer.secondLayer = true;
+        add("current + gbuffer.second_layer=true", "neighbour", s, false, false);
+    }
     for (const auto& e : store.entries())
         if (e.builtin) add(e.name, "preset", store.load(e.name).settings, false, false);
     // Each user technique at its header's defaults, on the current settings' other choices.

@@ -48,6 +48,7 @@ struct TechniqueRows {
     std::vector<Param> rows; // its rows ("id.*"); the table adds "applies while ao.technique = id"
     bool adaptive = false;   // it takes ao.adaptive (a march or tap count the rule cuts)
     bool deinterleave = false; // it takes ao.deinterleave (TechniqueInfo::deinterleave)
+    bool secondLayer = false;  // it reads gbuffer.second_layer (TechniqueInfo::secondLayer)
     std::string file, version; // a user technique's file and its hash; "" for a built-in
 };
 const std::vector<TechniqueRows>& registeredTechniques();

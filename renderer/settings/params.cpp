@@ -47,6 +47,13 @@ std::vector<std::string> adaptiveTechniques() {
     return ids;
 }
 
+std::vector<std::string> secondLayerTechniques() {
+    std::vector<std::string> ids;
+    for (const auto& info : registeredTechniques())
+        if (info.secondLayer) ids.push_back(info.id);
+    return ids;
+}
+
 std::vector<std::string> deinterleaveTechniques() {
     std::vector<std::string> ids;
     for (const auto& info : registeredTechniques())
@@ -77,7 +84,8 @@ std::vector<Param> coreRows() {
         BOOL_ROW("gbuffer.second_layer", "Second layer", gbuffer.secondLayer,
                  "A second geometry pass keeps, per pixel, the nearest surface facing the camera behind the one "
                  "seen (depth peeling, as Mara et al.'s deep G-buffer): the bitmask then also hides the sectors of "
-                 "what the depth buffer hides - a wall behind a thin object, a part behind a part."),
+                 "what the depth buffer hides - a wall behind a thin object, a part behind a part.")
+            .onlyWhen("ao.technique", secondLayerTechniques()),
         FLOAT_ROW("gbuffer.second_layer_separation", "Layer separation", gbuffer.secondLayerSeparation, 0.0, 0.1,
                   "x diagonal",
                   "How far behind the first surface the second must lie (a fraction of the scene's diagonal), so a "

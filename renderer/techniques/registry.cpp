@@ -42,7 +42,7 @@ std::unique_ptr<Generation> makeGeneration(unsigned number, std::vector<Techniqu
     g->list = std::move(list);
     g->refused = std::move(refused);
     for (const auto& t : g->list)
-        g->rows.push_back({t.id, t.params(), bool(t.adaptive), t.deinterleave, t.file, t.version});
+        g->rows.push_back({t.id, t.params(), bool(t.adaptive), t.deinterleave, t.secondLayer, t.file, t.version});
     return g;
 }
 

@@ -44,6 +44,9 @@ struct TechniqueInfo {
     // takes its pixel's noise from noise.glsl's aoNoise and its taps at whole pixels of the frame it
     // is drawn over.
     bool deinterleave = false;
+    // Its shader reads the second depth layer (gbuffer.second_layer, passes/second_layer_pass.h)
+    // where the settings have it: the row applies to it, and the Front tab tries it as a neighbour.
+    bool secondLayer = false;
     // Why these settings are unphysical by design (a seed article's artefact a preset reproduces on
     // purpose), or "" when the technique must hold the physics with them: an open plane unoccluded,
     // a corner darkening toward the wall (tests/gl/test_physics_limits.cpp, `ssaolab stress`).

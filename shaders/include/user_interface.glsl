@@ -95,6 +95,11 @@ float ssaoLinearDepthAt(vec2 uv) {
 // less than `assumed`; `assumed` otherwise (position_taps.glsl aoBackGap).
 float ssaoBackGap(vec2 uv, vec3 S, float assumed) { return aoBackGap(ssao.aoCommon, uv, S, assumed); }
 
+// The second depth layer at uv, where gbuffer.second_layer is on: the view-space point of the
+// nearest surface facing the camera behind the one the G-buffer shows there, w = 1; w = 0 where
+// there is none, the layer is off or uv is off the frame (position_taps.glsl aoSecondLayerAt).
+vec4 ssaoSecondLayerAt(vec2 uv) { return aoSecondLayerAt(uv); }
+
 // ---- Projection (perspective or orthographic, standard or reversed depth) ------------------
 
 // Whether the camera is orthographic (parallel rays).

@@ -352,3 +352,16 @@ TEST(FrontCandidates, EachUserTechniqueIsAPointAtItsHeadersDefaults) {
     EXPECT_TRUE(found);
     setUserTechniques({});
 }
+
+TEST(FrontCandidates, ATechniqueThatReadsTheSecondLayerIsTriedWithIt) {
+    const PresetStore store = PresetStore::standard(std::string(SSAOLAB_TEST_TMP) + "/front_presets");
+    auto has = [&](const Settings& current) {
+        for (const Candidate& c : frontCandidates(current, store, 0.5f))
+            if (c.label == "current + gbuffer.second_layer=true") return c.settings.gbuffer.secondLayer;
+        return false;
+    };
+    Settings bitmask = defaultSettings();
+    setParam(bitmask, "ao.technique", "vbao");
+    EXPECT_TRUE(has(bitmask));
+    EXPECT_FALSE(has(defaultSettings())); // the kernel reads no second layer
+}

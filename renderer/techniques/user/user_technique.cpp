@@ -63,6 +63,7 @@ TechniqueInfo userTechniqueInfo(std::shared_ptr<const UserTechnique> t) {
     info.file = t->path;
     info.version = t->hash;
     info.user = t;
+    info.secondLayer = true; // ssaoSecondLayerAt (shaders/include/user_interface.glsl)
     const std::string id = info.id;
     info.params = [t, id] {
         std::vector<Param> rows;

@@ -42,6 +42,7 @@ TechniqueInfo vbaoTechnique() {
             "Levesque, Gilet 2023",
                     vbaoParams);
     t.deinterleave = true;
+    t.secondLayer = true; // each layer's interval marks its sectors (vbao.frag)
     t.adaptive = [](const Settings& s) { return AdaptiveCount{s.vbao.steps, true}; };
     // denoise.kind = auto: none. Every filter of the denoiser sweep raised its raw error on some
     // scene (box4 by up to 0.085; an AO-range bilateral by 0.0008): its noise is finer than the detail a
