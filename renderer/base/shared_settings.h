@@ -1,7 +1,7 @@
 // What a person sets (units, meaning) — not what the GPU sees: each pass packs its own constants
 // with one pure function. These are the blocks every technique and pass shares; Settings, the
 // whole, adds one member per technique (techniques/technique_settings.h). The member initialisers
-// are the one place defaults live; the parameter table (settings/params.cpp plus each technique's
+// are the one place defaults live; the parameter table (settings/core_rows.cpp plus each technique's
 // rows) reads them from Settings{}.
 #pragma once
 #include <string>

@@ -33,13 +33,15 @@ class AppUserTechnique : public GlTest {
   protected:
     void SetUp() override {
         GlTest::SetUp();
-        dir_ = std::string(SSAOLAB_TEST_TMP) + "/app_techniques";
+        // Per test: ctest runs these tests at the same time, and each edits its folder's file.
+        const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        dir_ = std::string(SSAOLAB_TEST_TMP) + "/app_techniques_" + name;
         fs::remove_all(dir_);
         fs::create_directories(dir_);
         write(flat("    return value;"));
         setUserTechniques(scanUserTechniques(dir_, true).loaded);
         AppOptions o;
-        o.userPresetDir = std::string(SSAOLAB_TEST_TMP) + "/app_techniques_presets";
+        o.userPresetDir = dir_ + "_presets";
         o.techniqueDir = dir_;
         o.probeProgram = SSAOLAB_BINARY;
         o.renderScale = 0.3f;

@@ -20,7 +20,7 @@ constexpr int kMaxBodyLines = 80;
 // by steps. Keyed by file name and function.
 const std::map<std::string, std::string> kTables = {
     // The parameter table's core rows: one braced list, a row per shared setting.
-    {"params.cpp", "coreRows"},
+    {"core_rows.cpp", "coreRows"},
 };
 
 bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
