@@ -37,7 +37,7 @@ namespace ssao {
 
 void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--scene", o.scene,
-                   "builtin:NAME (showcase, plane, corner, slabs), or a .gltf/.glb file (default: the preset's "
+                   "builtin:NAME (showcase, plane, corner, slabs, hidden), or a .gltf/.glb file (default: the preset's "
                    "scene, else builtin:showcase)")->type_name(kInFile);
     o.preset = kStartPreset; // one default everywhere: the window's first frame (settings/preset.h)
     cmd.add_option(
