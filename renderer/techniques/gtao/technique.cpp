@@ -59,6 +59,7 @@ TechniqueInfo gtaoTechnique() {
             "2016, Intel XeGTAO",
                     gtaoParams);
     t.deinterleave = true;
+    t.secondLayer = true; // the surface behind a tap is a candidate horizon (gtao.frag)
     t.adaptive = [](const Settings& s) { // its quality presets set the steps
         int slices = 0, steps = 0;
         gtaoSlicesSteps(s.gtao, slices, steps);

@@ -86,12 +86,27 @@ void main() {
                 // Beyond the radius an occluder fades to the tangent plane; a tap that does not
                 // count is the tangent plane itself, which never raises a horizon (hCos >= low).
                 shc = counts ? mix(low, shc, w) : low;
+                // What the depth buffer hides behind the tap (gbuffer.second_layer) is a candidate
+                // horizon too, weighed by the same falloff: where the tap is out of reach (an
+                // occluder near the eye), the surface behind it may not be.
+                vec4 S2 = aoSecondLayerAt(uv);
+                vec3 delta2 = S2.xyz - P;
+                bool second = false; // the second layer's surface set this tap's horizon
+                if (S2.w != 0.0 && dot(delta2, delta2) > 0.0) {
+                    vec3 inSlice2 = aoSliceDelta(sl, delta2);
+                    float shc2 = dot(inSlice2, V) / max(length(inSlice2), 1e-30);
+                    float w2 = clamp(length(vec3(delta2.xy, delta2.z * (1.0 + ssao.thin.x))) * falloffMul + falloffAdd, 0.0, 1.0);
+                    shc2 = mix(low, shc2, w2);
+                    second = shc2 > shc;
+                    shc = max(shc, shc2);
+                }
                 bool raises = side == 0 ? shc > hCos0 : shc > hCos1;
                 if (side == 0) hCos0 = max(hCos0, shc);
                 else hCos1 = max(hCos1, shc);
                 INSPECT_TAP(held && S.w != 0.0 ? S.xyz : P, uv,
                             !held         ? SSAO_TAP_OFFSCREEN
                             : S.w == 0.0  ? SSAO_TAP_SKY
+                            : second      ? (raises ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN) | SSAO_TAP_SECOND_LAYER
                             : !counts     ? SSAO_TAP_OPEN
                             : raises && w > 0.0 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN,
                             counts ? w : 0.0, slice);
