@@ -30,25 +30,12 @@ Param techniqueRow() {
     return t;
 }
 
-// The techniques that take ao.adaptive.
-std::vector<std::string> adaptiveTechniques() {
+// The ids of the registered techniques that have a capability (TechniqueRows' flags): the techniques
+// a shared row applies to.
+std::vector<std::string> techniquesWith(bool TechniqueRows::*capability) {
     std::vector<std::string> ids;
     for (const auto& info : registeredTechniques())
-        if (info.adaptive) ids.push_back(info.id);
-    return ids;
-}
-
-std::vector<std::string> secondLayerTechniques() {
-    std::vector<std::string> ids;
-    for (const auto& info : registeredTechniques())
-        if (info.secondLayer) ids.push_back(info.id);
-    return ids;
-}
-
-std::vector<std::string> deinterleaveTechniques() {
-    std::vector<std::string> ids;
-    for (const auto& info : registeredTechniques())
-        if (info.deinterleave) ids.push_back(info.id);
+        if (info.*capability) ids.push_back(info.id);
     return ids;
 }
 
@@ -76,7 +63,7 @@ std::vector<Param> coreRows() {
                  "A second geometry pass keeps, per pixel, the nearest surface facing the camera behind the one "
                  "seen (depth peeling, as Mara et al.'s deep G-buffer): the bitmask then also hides the sectors of "
                  "what the depth buffer hides - a wall behind a thin object, a part behind a part.")
-            .onlyWhen("ao.technique", secondLayerTechniques()),
+            .onlyWhen("ao.technique", techniquesWith(&TechniqueRows::secondLayer)),
         FLOAT_ROW("gbuffer.second_layer_separation", "Layer separation", gbuffer.secondLayerSeparation, 0.0, 0.1,
                   "x diagonal",
                   "How far behind the first surface the second must lie (a fraction of the scene's diagonal), so a "
@@ -119,7 +106,7 @@ std::vector<Param> coreRows() {
                  "take fewer samples - a march one step per 'pixels per sample' of radius, an area sampler "
                  "one tap per its square of the disc. Time saved and error change: docs/bench/skips.md. "
                  "(The kernel's samples are a fixed set: it keeps them all.)")
-            .onlyWhen("ao.technique", adaptiveTechniques()),
+            .onlyWhen("ao.technique", techniquesWith(&TechniqueRows::adaptive)),
         FLOAT_ROW("ao.adaptive_px", "Pixels per sample", ao.adaptivePx, 1.0, 32.0, "pixels",
                   "Adaptive samples: radius in pixels each march step (or each tap's square of the disc) "
                   "covers before the count is cut; 1 keeps every step that lands on a new pixel.")
@@ -130,7 +117,7 @@ std::vector<Param> coreRows() {
                  "on a 4-pixel grid. Pays where neighbouring pixels sharing a texture cache line matters (gl_ssao: "
                  "1.9x for HBAO on a Quadro M6000); measured on llvmpipe in docs/bench/skips.md. Full resolution "
                  "only; not with the position pyramid, guard band, back-face layer or normals from depth.")
-            .onlyWhen("ao.technique", deinterleaveTechniques()),
+            .onlyWhen("ao.technique", techniquesWith(&TechniqueRows::deinterleave)),
         // ---- Denoise --------------------------------------------------------------------------
         ENUM_ROW("denoise.kind", "Denoise", denoise.kind, DenoiseKind,
                  "Removes the sampling noise: auto (default: the technique's own choice, measured on the benchmark to "

@@ -146,8 +146,10 @@ void checkTechniqueFile(const nlohmann::json& j, const std::string& origin, std:
     const auto& f = j["technique_file"];
     if (!f.is_object() || !f.contains("id") || !f["id"].is_string() || !f.contains("hash") || !f["hash"].is_string())
         throw Error(origin + ": technique_file must be {\"id\": ..., \"file\": ..., \"hash\": ...}");
-    const std::string id = f["id"].get<std::string>(), hash = f["hash"].get<std::string>();
-    const std::string file = f.contains("file") && f["file"].is_string() ? f["file"].get<std::string>() : id;
+    // Names from the file reach a warning or an error line: clipped, as a name is never that long.
+    auto clipped = [](std::string v) { return v.size() > 80 ? v.substr(0, 80) + "..." : v; };
+    const std::string id = clipped(f["id"].get<std::string>()), hash = clipped(f["hash"].get<std::string>());
+    const std::string file = f.contains("file") && f["file"].is_string() ? clipped(f["file"].get<std::string>()) : id;
     for (const TechniqueRows& t : registeredTechniques())
         if (t.id == id) {
             if (t.version != hash)

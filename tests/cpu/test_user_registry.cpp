@@ -208,3 +208,24 @@ TEST_F(UserRegistry, AFloatAtTheEndOfItsRangePacksAsTheRowHoldsIt) {
     setParam(s, "user.ends.k", "0.3");
     EXPECT_EQ(packUserParams(t->header, userParamValues(*t, s)).size(), 16u);
 }
+
+TEST_F(UserRegistry, AHostileTechniqueFileFieldIsOneBoundedLine) {
+    setUserTechniques({mine(header())});
+    // Wrong types: one error naming the field's shape.
+    for (const char* bad : {R"({"technique_file": 3})", R"({"technique_file": {"id": 1, "hash": "x"}})",
+                            R"({"technique_file": {"id": "user.mine"}})", R"({"technique_file": []})"}) {
+        const std::string e = errorOf([&] { presetFromJson(nlohmann::json::parse(bad), "p.json"); });
+        EXPECT_NE(e.find("technique_file must be"), std::string::npos) << bad << ": " << e;
+    }
+    // A huge name with control bytes and shell syntax: clipped, and only ever text.
+    nlohmann::json j = {{"technique_file",
+                         {{"id", "user.gone$(touch x)\n" + std::string(100000, 'a')}, {"file", std::string(100000, 'b')},
+                          {"hash", "0"}}}};
+    const std::string e = errorOf([&] { presetFromJson(j, "p.json"); });
+    EXPECT_NE(e.find("which is not loaded"), std::string::npos) << e.substr(0, 200);
+    EXPECT_LT(e.size(), 400u);
+    j["technique_file"]["id"] = "user.mine";
+    const Preset p = presetFromJson(j, "p.json");
+    ASSERT_EQ(p.warnings.size(), 1u);
+    EXPECT_LT(p.warnings[0].size(), 400u);
+}
