@@ -182,7 +182,13 @@ std::vector<bool> Renderer::sharedWithChainA(std::map<std::string, std::string>*
 void Renderer::buildGraph() {
     std::vector<FrameGraph::Node> nodes;
     std::map<std::string, std::string> aliases;
-    nodes.push_back({&passFor("gbuffer", [] { return std::make_unique<GBufferPass>(); }), &settings_});
+    gbufferSettings_ = settings_;
+    if (!settings_.gbuffer.secondLayer && settingsB_ && settingsB_->gbuffer.secondLayer) {
+        gbufferSettings_.gbuffer.secondLayer = true;
+        gbufferSettings_.gbuffer.secondLayerSeparation = settingsB_->gbuffer.secondLayerSeparation;
+        gbufferSettings_.gbuffer.secondLayerBuild = settingsB_->gbuffer.secondLayerBuild;
+    }
+    nodes.push_back({&passFor("gbuffer", [] { return std::make_unique<GBufferPass>(); }), &gbufferSettings_});
     // The guard band, shared by both chains, as wide as the wider chain asks.
     const int band = std::max(GuardBandPass::bandOf(settings_), settingsB_ ? GuardBandPass::bandOf(*settingsB_) : 0);
     if (band > 0)
@@ -192,8 +198,8 @@ void Renderer::buildGraph() {
     // The back-face layer, shared likewise.
     if (BackFacePass::on(settings_) || (settingsB_ && BackFacePass::on(*settingsB_)))
         nodes.push_back({&passFor("back_faces", [] { return std::make_unique<BackFacePass>(); }), &settings_});
-    if (SecondLayerPass::on(settings_) || (settingsB_ && SecondLayerPass::on(*settingsB_)))
-        nodes.push_back({&passFor("second_layer", [] { return std::make_unique<SecondLayerPass>(); }), &settings_});
+    if (SecondLayerPass::on(gbufferSettings_))
+        nodes.push_back({&passFor("second_layer", [] { return std::make_unique<SecondLayerPass>(); }), &gbufferSettings_});
     // The position pyramid, shared by both chains, when a chain's technique reads it.
     if (usesPyramid(settings_) || (settingsB_ && usesPyramid(*settingsB_)))
         nodes.push_back({&passFor("position_mips", [] { return std::make_unique<PositionPyramidPass>(); }),

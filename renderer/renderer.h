@@ -126,6 +126,9 @@ class Renderer {
     Camera camera_, effective_;
     Settings settings_;
     std::optional<Settings> settingsB_;
+    // The shared G-buffer's settings: chain A's, with the second layer of the chain that has one
+    // (A's first), so either chain's layer is built (buildGraph).
+    Settings gbufferSettings_;
     int width_ = 0, height_ = 0;
     float displayScale_ = 1.0f;
     bool moving_ = false, motionLods_ = false;

@@ -32,8 +32,10 @@ class Measurement {
     const Settings& settings() const { return settings_; }
 
   private:
-    enum class Phase { First, Accumulating, Timing, Done };
+    enum class Phase { First, Accumulating, Timing, TwinTiming, Done };
     void judge(Renderer& r, const ReferenceImage& ref, const ReferenceImage* oracle);
+    void timeFrame(Renderer& r);
+    void timeTwin(Renderer& r);
 
     Settings settings_;
     int warmup_ = 0, frames_ = 0;
@@ -41,6 +43,7 @@ class Measurement {
     int timed_ = 0; // timing frames rendered (warm-up included)
     std::vector<double> ms_;
     std::vector<double> parts_[PassTimes::kParts]; // per timed frame, per part (PassTimes)
+    std::vector<double> twinGBuffer_; // the one-layer twin's G-buffer pass (second_layer_build = previous)
     ViewResult result_;
     Evaluation eval_;
 };

@@ -24,6 +24,10 @@ enum class DenoiseKind { Auto, None, Box4, Box4Centred, Gaussian, Bilateral };
 // joint-bilateral 2x2 upsample (passes/upsample_joint.frag); Filter lets the filter's last pass run
 // at full resolution and upsample (bilinearly; the bilateral with its own depth and normal weights).
 enum class DenoiseUpsample { Joint, Filter };
+// How the second depth layer is built (passes/second_layer_pass.h): Peel, a second geometry pass
+// against this frame's first layer (exact); Previous, inside the G-buffer's own pass against the
+// previous frame's first layer reprojected (Mara et al. 2016's single pass).
+enum class SecondLayerBuild { Peel, Previous };
 
 struct GBufferSettings {
     TargetFormat positionFormat = TargetFormat::RGBA32F;
@@ -35,6 +39,7 @@ struct GBufferSettings {
     // behind the first, so taps see what the first layer hides.
     bool secondLayer = false;
     float secondLayerSeparation = 0.005f;
+    SecondLayerBuild secondLayerBuild = SecondLayerBuild::Peel;
 };
 
 // What every AO technique shares: which one runs, its radius (in one of three unit systems),

@@ -1,7 +1,10 @@
 #include "passes/gbuffer_pass.h"
 
 #include "gl/shader_library.h"
+#include "passes/second_layer_pass.h"
 #include "scene/gpu_scene.h"
+
+#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 
@@ -33,6 +36,11 @@ void GBufferPass::setup(PassBuilder& b, const Settings& s) const {
                      "scene units"));
     b.write(describe("gbuffer.zbuffer", GL_DEPTH_COMPONENT32F, 1, Display::Scalar,
                      "hardware depth in [0,1] (non-linear, 1 at near when reversed; seed 001 reconstructs positions from it)"));
+    if (keepsSecondLayer(s)) b.write(secondLayerResource());
+}
+
+bool GBufferPass::keepsSecondLayer(const Settings& s) {
+    return s.gbuffer.secondLayer && s.gbuffer.secondLayerBuild == SecondLayerBuild::Previous;
 }
 
 GBufferConfig GBufferPass::config(const Settings& s, const FrameInfo& f) const {
@@ -44,7 +52,10 @@ GBufferConfig GBufferPass::config(const Settings& s, const FrameInfo& f) const {
     c.hiddenFaces = s.skip.hiddenFaces;
     c.sceneVersion = f.sceneVersion;
     c.lod = f.lod;
-    c.occluded = s.skip.occluded;
+    c.secondLayer = keepsSecondLayer(s);
+    c.separation = c.secondLayer ? secondLayerSeparation(s, f) : 0.0f;
+    // What the first layer hides is what the second layer is for: every draw is drawn.
+    c.occluded = s.skip.occluded && !c.secondLayer;
     return c;
 }
 
@@ -66,7 +77,8 @@ void GBufferPass::run(PassContext& ctx, const GBufferConfig& c) {
     gl::Defines defs;
     written_.clear();
     for (const Target& t : kTargets) {
-        if (c.skipUnused && !ctx.needed(t.name)) {
+        const bool reprojected = c.secondLayer && std::string(t.name) == "gbuffer.position"; // the next frame's
+        if (c.skipUnused && !ctx.needed(t.name) && !reprojected) {
             ctx.leaveUnwritten(t.name);
             continue;
         }
@@ -79,6 +91,7 @@ void GBufferPass::run(PassContext& ctx, const GBufferConfig& c) {
     const bool reversed = c.frame.camera.y != 0.0f;
     const SceneDrawState state(reversed, int(outputs.size()) - 1); // every colour target; the depth
     if (c.normalUnorm) defs.push_back({"NORMAL_UNORM", "1"});
+    if (c.secondLayer) defs.push_back({"SECOND_LAYER_PREVIOUS", "1"});
     const glm::mat4 viewProj = c.frame.proj * c.frame.view;
     // Location 0 is uBaseColor; without the albedo target it is compiled out (-1: ignored).
     const bool albedo = std::find(outputs.begin(), outputs.end(), "gbuffer.albedo") != outputs.end();
@@ -93,7 +106,55 @@ void GBufferPass::run(PassContext& ctx, const GBufferConfig& c) {
                          ctx.shaders.program("passes/occlusion_box.vert", "passes/occlusion_box.frag"));
         o.occlusion = &occlusion_; // with it off the visible set waits, unchanged: it only ever guides the order
     }
+    const bool hadPrevious = c.secondLayer && beginSecondLayer(ctx, c, programs);
     stats_ = ctx.scene()->draw(programs, o);
+    if (!c.secondLayer) return;
+    keepPrevious(ctx, c);
+    if (!hadPrevious) {
+        // No previous frame to reproject (the first, a new size or scene): this frame's own first
+        // layer is the previous one; drawn again, the depth test keeps the G-buffer as it is.
+        beginSecondLayer(ctx, c, programs);
+        o.occlusion = nullptr;
+        ctx.scene()->draw(programs, o);
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindImageTexture(SSAO_IMG_SECOND_LAYER, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+}
+
+bool GBufferPass::beginSecondLayer(PassContext& ctx, const GBufferConfig& c, const ScenePrograms& programs) {
+    const gl::Texture2D& layer = ctx.in(gbuffer::kSecondLayer);
+    const gl::Texture2D& position = ctx.in("gbuffer.position");
+    const float none = 0.0f; // the bits of 0.0f are 0: no surface
+    glClearTexImage(layer.id(), 0, GL_RED, GL_FLOAT, &none);
+    // The r32f layer is written as r32ui: image units match formats by size.
+    glBindImageTexture(SSAO_IMG_SECOND_LAYER, layer.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    const bool valid = previous_.position && previous_.position.width() == position.width() &&
+                       previous_.position.height() == position.height() &&
+                       previous_.position.format() == position.format() && previous_.sceneVersion == c.sceneVersion;
+    const glm::mat4 toPrevious = valid ? previous_.view * glm::inverse(c.frame.view) : glm::mat4(1.0f);
+    const glm::mat4 proj = valid ? previous_.proj : c.frame.proj;
+    const float separation = valid ? c.separation : INFINITY; // nothing lies behind an unknown first layer
+    if (valid) previous_.position.bind(SSAO_TEX_PREVIOUS_POSITION);
+    for (GLuint program : {programs.opaque, programs.mask}) {
+        if (!program) continue;
+        glProgramUniformMatrix4fv(program, SSAO_LOC_TO_PREVIOUS_VIEW, 1, GL_FALSE, glm::value_ptr(toPrevious));
+        glProgramUniformMatrix4fv(program, SSAO_LOC_PREVIOUS_PROJ, 1, GL_FALSE, glm::value_ptr(proj));
+        glProgramUniform1f(program, SSAO_LOC_SECOND_LAYER_SEPARATION, separation);
+    }
+    return valid;
+}
+
+void GBufferPass::keepPrevious(PassContext& ctx, const GBufferConfig& c) {
+    const gl::Texture2D& position = ctx.in("gbuffer.position");
+    if (!previous_.position || previous_.position.width() != position.width() ||
+        previous_.position.height() != position.height() || previous_.position.format() != position.format())
+        previous_.position = gl::Texture2D(position.width(), position.height(), position.format(), "gbuffer.previous_position");
+    glCopyImageSubData(position.id(), GL_TEXTURE_2D, 0, 0, 0, 0, previous_.position.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       position.width(), position.height(), 1);
+    previous_.view = c.frame.view;
+    previous_.proj = c.frame.proj;
+    previous_.sceneVersion = c.sceneVersion;
+    previous_.position.bind(SSAO_TEX_PREVIOUS_POSITION);
 }
 
 ScenePrograms scenePrograms(PassContext& ctx, const std::string& vert, const std::string& frag, gl::Defines defines,

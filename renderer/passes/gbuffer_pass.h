@@ -1,6 +1,7 @@
 // G-buffer in view space (seeds 000/003/004): position, normal, albedo, linear depth, and the
 // hardware depth buffer — the inputs every AO technique reads.
 #pragma once
+#include "gl/resources.h"
 #include "gl/shader_library.h"
 #include "graph/pass.h"
 #include "scene/gpu_scene.h"
@@ -19,6 +20,8 @@ struct GBufferConfig {
     uint32_t sceneVersion;     // what it draws
     int32_t lod;               // skip.motion_lod while the camera moves: the clustered level drawn, -1 none (FrameInfo::lod)
     int32_t occluded;          // skip.occluded: draws the scene hides are not drawn (scene/occlusion_culler.h)
+    int32_t secondLayer;       // gbuffer.second_layer_build = previous: this pass keeps the second layer too
+    float separation;          // its minimum separation, scene units
 };
 SSAO_CONFIG_END
 
@@ -30,12 +33,23 @@ class GBufferPass final : public ConfiguredPass<GBufferConfig> {
     // draws, draws_culled, triangles, triangles_culled, targets_written, targets_skipped
     std::vector<std::pair<std::string, double>> counters() const override;
     const std::vector<std::string>& written() const { return written_; }
+    // gbuffer.second_layer_build = previous: this pass writes gbuffer.second_layer too.
+    static bool keepsSecondLayer(const Settings& s);
 
   private:
     void run(PassContext& ctx, const GBufferConfig& c) override;
     DrawStats stats_;
     std::vector<std::string> written_; // colour targets the last run wrote
     OcclusionCuller occlusion_;        // skip.occluded: what the last run saw, carried to the next
+    // second_layer_build = previous: the last run's gbuffer.position and the camera it was seen from.
+    struct Previous {
+        gl::Texture2D position;
+        glm::mat4 view{1.0f}, proj{1.0f};
+        uint32_t sceneVersion = 0;
+    } previous_;
+    // Binds the cleared layer and the previous frame; whether there was one to reproject.
+    bool beginSecondLayer(PassContext& ctx, const GBufferConfig& c, const ScenePrograms& programs);
+    void keepPrevious(PassContext& ctx, const GBufferConfig& c); // this frame's position, for the next
 };
 
 GLenum glFormat(TargetFormat f);

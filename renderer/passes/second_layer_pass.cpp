@@ -7,11 +7,19 @@
 
 namespace ssao {
 
+ResourceDesc secondLayerResource() {
+    return describe(gbuffer::kSecondLayer, GL_R32F, 1, Display::Scalar,
+                    "1 / linear depth of the nearest surface facing the camera behind the one seen (0 = none)",
+                    "1 / scene units");
+}
+
+float secondLayerSeparation(const Settings& s, const FrameInfo& f) {
+    return s.gbuffer.secondLayerSeparation * 2.0f * f.sceneRadius; // a fraction of the diagonal
+}
+
 void SecondLayerPass::setup(PassBuilder& b, const Settings&) const {
     b.read("gbuffer.position"); // the first layer, peeled away
-    b.write(describe(kOutput, GL_R32F, 1, Display::Scalar,
-                     "linear depth of the nearest surface facing the camera behind the one seen (0 = none)",
-                     "scene units"));
+    b.write(secondLayerResource());
     ResourceDesc z = describe("gbuffer.second_z", GL_DEPTH_COMPONENT32F, 1, Display::Scalar, "the second layer's depth test");
     z.internal = true;
     b.write(z);
@@ -20,7 +28,7 @@ void SecondLayerPass::setup(PassBuilder& b, const Settings&) const {
 SecondLayerConfig SecondLayerPass::config(const Settings& s, const FrameInfo& f) const {
     SecondLayerConfig c{};
     c.frame = withoutFrameIndex(f.constants);
-    c.separation = s.gbuffer.secondLayerSeparation * 2.0f * f.sceneRadius; // a fraction of the diagonal
+    c.separation = secondLayerSeparation(s, f);
     c.cull = s.skip.cull;
     c.hiddenFaces = s.skip.hiddenFaces;
     c.sceneVersion = f.sceneVersion;

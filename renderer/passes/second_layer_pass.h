@@ -27,7 +27,9 @@ SSAO_CONFIG_END
 class SecondLayerPass final : public ConfiguredPass<SecondLayerConfig> {
   public:
     static constexpr const char* kOutput = gbuffer::kSecondLayer;
-    static bool on(const Settings& s) { return s.gbuffer.secondLayer; }
+    static bool on(const Settings& s) {
+        return s.gbuffer.secondLayer && s.gbuffer.secondLayerBuild == SecondLayerBuild::Peel;
+    }
     SecondLayerPass() : ConfiguredPass("second_layer", Chain::a()) {}
     void setup(PassBuilder& b, const Settings& s) const override;
     SecondLayerConfig config(const Settings& s, const FrameInfo& f) const override;
@@ -35,5 +37,10 @@ class SecondLayerPass final : public ConfiguredPass<SecondLayerConfig> {
   private:
     void run(PassContext& ctx, const SecondLayerConfig& c) override;
 };
+
+// gbuffer.second_layer as either build writes it: 1 / linear depth (0 = none), one channel.
+ResourceDesc secondLayerResource();
+// gbuffer.second_layer_separation in scene units (a fraction of the diagonal).
+float secondLayerSeparation(const Settings& s, const FrameInfo& f);
 
 } // namespace ssao

@@ -69,6 +69,12 @@ std::vector<Param> coreRows() {
                   "How far behind the first surface the second must lie (a fraction of the scene's diagonal), so a "
                   "surface is not found again as its own second layer (Mara et al.'s minimum separation).")
             .onlyWhen("gbuffer.second_layer", {"true"}),
+        ENUM_ROW("gbuffer.second_layer_build", "Layer built by", gbuffer.secondLayerBuild, SecondLayerBuild,
+                 "peel: a second geometry pass against this frame's first layer (exact). previous: the G-buffer's "
+                 "own pass keeps it, against the previous frame's first layer reprojected (Mara et al.'s single "
+                 "pass: no second pass, every hidden fragment shaded; what the last frame did not see is missing).",
+                 ({{"peel", SecondLayerBuild::Peel}, {"previous", SecondLayerBuild::Previous}}))
+            .onlyWhen("gbuffer.second_layer", {"true"}),
         // ---- AO (every technique) -------------------------------------------------------------
         techniqueRow(),
         ENUM_ROW(

@@ -22,6 +22,10 @@
 #define SSAO_TEX_BLUE_NOISE 14  // 64x64 blue noise, two channels (techniques/noise/blue_noise.h)
 #define SSAO_TEX_POSITION_MIPS 15 // gbuffer.position with a MIP pyramid (passes/position_pyramid_pass.h)
 #define SSAO_TEX_SECOND_LAYER 16 // gbuffer.second_layer: the nearest front surface behind the first (passes/second_layer_pass.h)
+#define SSAO_TEX_PREVIOUS_POSITION 17 // the G-buffer pass: the previous frame's gbuffer.position (second_layer_build = previous)
+
+// ---- Image units -----------------------------------------------------------------------------
+#define SSAO_IMG_SECOND_LAYER 0 // the G-buffer pass: gbuffer.second_layer as r32ui, atomic max of 1/depth's bits
 
 // ---- Uniform / storage buffer bindings -----------------------------------------------------
 #define SSAO_UBO_FRAME 0   // FrameConstants
@@ -31,6 +35,8 @@
 #define SSAO_SSBO_INSPECT 0 // sample inspector record (INSPECT builds only)
 #define SSAO_LOC_AO_LAYER_CELL 30 // deinterleaved AO: the layer's cell of the 4x4 tile (noise.glsl, techniques/deinterleave.h)
 #define SSAO_LOC_SECOND_LAYER_SEPARATION 31 // the second layer's minimum separation, scene units (passes/second_layer.frag)
+#define SSAO_LOC_TO_PREVIOUS_VIEW 32 // mat4 (32-35): this frame's view space -> the previous frame's (passes/gbuffer.frag)
+#define SSAO_LOC_PREVIOUS_PROJ 36    // mat4 (36-39): the previous frame's projection (passes/gbuffer.frag)
 
 #define SSAO_MAX_DENOISE_TAPS 65 // 2*32+1 taps of a 1-D kernel
 #define SSAO_BILATERAL_MAX_HALF_WIDTH 8 // the bilateral's 2-D window: at most 17x17

@@ -69,8 +69,8 @@ vec4 aoSecondLayerAt(vec2 uv) {
     return vec4(0.0);
 #else
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec4(0.0);
-    float depth = textureLod(aoSecondLayer, uv, 0.0).r;
-    return depth > 0.0 ? vec4(frameViewPosition(uv, depth), 1.0) : vec4(0.0);
+    float inverseDepth = textureLod(aoSecondLayer, uv, 0.0).r; // 1 / scene units, 0 = none
+    return inverseDepth > 0.0 ? vec4(frameViewPosition(uv, 1.0 / inverseDepth), 1.0) : vec4(0.0);
 #endif
 }
 

@@ -13,12 +13,12 @@ in vec2 vUv;
 layout(binding = SSAO_TEX_POSITION) uniform sampler2D gPosition; // the first layer
 layout(location = SSAO_LOC_SECOND_LAYER_SEPARATION) uniform float uSeparation; // scene units
 
-layout(location = 0) out float oDepth; // distance along -z, scene units
+layout(location = 0) out float oInverseDepth; // 1 / distance along -z (1 / scene units)
 
 void main() {
     alphaMaskTest(vUv); // MASK draws: cut-outs are not surfaces
     if (dot(vViewNormal, frameViewVector(vViewPos)) < 0.0) discard; // faces away: the back-face layer's
     vec4 first = texelFetch(gPosition, ivec2(gl_FragCoord.xy), 0);
     if (first.w == 0.0 || -vViewPos.z <= -first.z + uSeparation) discard; // the first layer, or too near it
-    oDepth = -vViewPos.z;
+    oInverseDepth = 1.0 / -vViewPos.z;
 }
