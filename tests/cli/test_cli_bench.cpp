@@ -426,3 +426,34 @@ TEST(CliBench, TwoScenesOfOneFileNameKeepTheirOwnRows) {
         names.push_back(s["name"]);
     EXPECT_EQ(names, (std::vector<std::string>{"scene", "builtin:corner"}));
 }
+
+TEST(CliBench, TwoLayerRowsAreSplitAgainstATwoLayerOracleAndCountTheirLayer) {
+    // builtin:hidden: a wall the first layer hides behind a plate. The two-layer rows' screen is the
+    // deep oracle's, smaller than the one-layer screen; the report says how much of it they closed.
+    const std::string sweep = writeTemp("layers_sweep.json", R"({"name": "layers", "groups": [{"name": "two",
+        "preset": "vbao-high", "set": {"gbuffer.second_layer": true},
+        "vary": {"gbuffer.second_layer_build": ["peel", "previous"]}}]})");
+    const std::string out = outDir("bench_layers");
+    const CliRun r = ssaolab("bench --scene builtin:hidden --size 160x90 --views 1 --frames 2 --warmup 0 "
+                             "--reference-rays 16 --no-plot --quiet --sweep " + sweep + " --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(slurp(out + "/results.json"));
+    double oneLayer = NAN;
+    std::vector<nlohmann::json> two;
+    for (const auto& v : j["results"]) {
+        const std::string label = v["label"];
+        if (label == "learnopengl (baseline)") oneLayer = v["rmse_screen"].get<double>();
+        if (label.find("second_layer_build") != std::string::npos) two.push_back(v);
+    }
+    ASSERT_EQ(two.size(), 2u);
+    for (const auto& v : two) {
+        EXPECT_LT(v["rmse_screen"].get<double>(), 0.5 * oneLayer) << v["label"]; // the hidden wall is seen
+        const auto& layers = v["pass_ms"]["layers"];
+        ASSERT_TRUE(layers.is_number()) << v["label"]; // the layer's time, either build
+        EXPECT_GE(layers.get<double>(), 0.0) << v["label"];
+    }
+    EXPECT_EQ(j["oracle"]["layers_two_layer_rows"], 2);
+    const std::string md = slurp(out + "/report.md");
+    const std::regex closed(R"(second\\_layer\\_build=[a-z]+ [^\n]*\| \d+ % \|)");
+    EXPECT_EQ(std::distance(std::sregex_iterator(md.begin(), md.end(), closed), std::sregex_iterator()), 2) << md;
+}

@@ -162,21 +162,16 @@ class SceneBench {
             ref = provider.get(r_.camera(), r_.width(), r_.height(), {radius, o_.referenceRays, variant_},
                                [&](double f) { bar.update(f); }, &cached);
         }
-        // The screen-space oracle of the same view, R and rays: what the G-buffer alone decides.
-        std::optional<ReferenceImage> oracle;
-        ErrorMetrics screen;
-        if (o_.oracle) {
-            ReferenceSettings os{radius, o_.referenceRays, variant_};
-            os.visibility = ReferenceVisibility::Screen;
-            os.layers = o_.oracleLayers;
-            os.thickness = float(o_.oracleThickness);
-            os.guardBand = o_.oracleGuard;
-            ProgressBar bar("  oracle " + scene.name + " " + vname, !o_.quiet);
-            oracle = provider.get(r_.camera(), r_.width(), r_.height(), os, [&](double f) { bar.update(f); });
-            screen = evaluate(Image{oracle->width, oracle->height, 1, oracle->ao}, ref).metrics;
-        }
+        // The screen-space oracle of the same view, R and rays: what the G-buffer alone decides; with
+        // two-layer rows, also the oracle of a deep G-buffer, which those rows are split against.
+        std::optional<ReferenceImage> oracle, deep;
+        screen_ = deepScreen_ = ErrorMetrics{};
+        if (o_.oracle) oracle = traceOracle(provider, ref, radius, o_.oracleLayers, scene.name + " " + vname, screen_);
+        if (o_.oracle && o_.oracleLayers == 1 && anyTwoLayerRow(configs))
+            deep = traceOracle(provider, ref, radius, 2, scene.name + " " + vname + " (two layers)", deepScreen_);
         oracle_ = oracle ? &*oracle : nullptr;
-        screen_ = screen;
+        deepOracle_ = deep ? &*deep : nullptr;
+        const ErrorMetrics screen = screen_;
         std::optional<MotionTruth> motion; // the path's references, when rows are scored in motion
         if (o_.motion) {
             ProgressBar bar("  motion references " + scene.name + " " + vname, !o_.quiet);
@@ -219,16 +214,36 @@ class SceneBench {
         return facts;
     }
 
+    ReferenceImage traceOracle(ReferenceProvider& provider, const ReferenceImage& ref, float radius, int layers,
+                               const std::string& what, ErrorMetrics& screen) {
+        ReferenceSettings os{radius, o_.referenceRays, variant_};
+        os.visibility = ReferenceVisibility::Screen;
+        os.layers = layers;
+        os.thickness = float(o_.oracleThickness);
+        os.guardBand = o_.oracleGuard;
+        ProgressBar bar("  oracle " + what, !o_.quiet);
+        ReferenceImage oracle = provider.get(r_.camera(), r_.width(), r_.height(), os, [&](double f) { bar.update(f); });
+        screen = evaluate(Image{oracle.width, oracle.height, 1, oracle.ao}, ref).metrics;
+        return oracle;
+    }
+
+    bool anyTwoLayerRow(const std::vector<size_t>& configs) const {
+        for (size_t c : configs)
+            if (!run_.sweep.configs[c].isEngine() && run_.sweep.configs[c].settings.gbuffer.secondLayer) return true;
+        return false;
+    }
+
     ViewResult one(size_t c, const std::string& scene, const std::string& vname, float radius, const ReferenceImage& ref,
                    const std::string& thumbs) {
         const BenchConfig& cfg = run_.sweep.configs[c];
         Measurement m(withRadius(cfg.settings, radius), o_.warmup, o_.frames);
-        while (!m.step(r_, ref, oracle_)) {
+        const bool deep = deepOracle_ && !cfg.isEngine() && cfg.settings.gbuffer.secondLayer;
+        while (!m.step(r_, ref, deep ? deepOracle_ : oracle_)) {
         }
         runner_.checkGl("measuring " + cfg.label + " on " + scene + " " + vname);
         if (!thumbs.empty()) writeThumbnails(thumbs, c, m.evaluation(), ref);
         ViewResult v = m.result();
-        if (v.hasSplit) v.screen = screen_;
+        if (v.hasSplit) v.screen = deep ? deepScreen_ : screen_;
         if (motion_) {
             const MotionMetrics mm = measureMotion(r_, withRadius(cfg.settings, radius), *motion_);
             runner_.checkGl("measuring " + cfg.label + " in motion on " + scene + " " + vname);
@@ -249,6 +264,8 @@ class SceneBench {
     ReferenceVariant variant_;
     const ReferenceImage* oracle_ = nullptr; // of the view being measured
     ErrorMetrics screen_;                    // its oracle against the truth
+    const ReferenceImage* deepOracle_ = nullptr; // its two-layer oracle, for the two-layer rows
+    ErrorMetrics deepScreen_;
     const MotionTruth* motion_ = nullptr;    // its camera path's truth (bench --motion)
     BenchEngines& engines_;                  // the web engines' rows (bench --engines)
 };
@@ -283,6 +300,7 @@ int runBench(const BenchOptions& o) {
                               {"radius_scene", o.radiusScene}};
     if (o.oracle)
         run.facts["oracle"] = {{"layers", o.oracleLayers},
+                               {"layers_two_layer_rows", 2}, // gbuffer.second_layer rows: a deep G-buffer's oracle
                                {"guard_band_px", o.oracleGuard},
                                {"thickness_r", std::isinf(o.oracleThickness) ? nlohmann::json("inf")
                                                                              : nlohmann::json(o.oracleThickness)}};
