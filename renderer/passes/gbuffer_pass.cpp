@@ -108,7 +108,10 @@ void GBufferPass::run(PassContext& ctx, const GBufferConfig& c) {
     }
     const bool hadPrevious = c.secondLayer && beginSecondLayer(ctx, c, programs);
     stats_ = ctx.scene()->draw(programs, o);
-    if (!c.secondLayer) return;
+    if (!c.secondLayer) {
+        previous_ = {}; // a frame drawn without it: the next one with it has no previous frame
+        return;
+    }
     keepPrevious(ctx, c);
     if (!hadPrevious) {
         // No previous frame to reproject (the first, a new size or scene): this frame's own first

@@ -212,3 +212,22 @@ TEST_F(SecondLayer, TheSinglePassReprojectsThePreviousFrameAsTheCameraMoves) {
                 worst);
     EXPECT_GE(worst, 0.97); // what the last frame did not see is what may differ
 }
+
+TEST_F(SecondLayer, TheSinglePassForgetsAFrameFromBeforeItWasTurnedOff) {
+    // The layer on at one view, off while the camera moves far, on again: the frame it kept is not
+    // this view's previous one, so it starts over as on a first frame.
+    const Scene scene = loadScene("builtin:hidden");
+    Settings peel = bitmask(true), single = bitmask(true), off = bitmask(false);
+    single.gbuffer.secondLayerBuild = SecondLayerBuild::Previous;
+    auto a = makeRenderer(scene, peel, 160, 120);
+    auto b = makeRenderer(scene, single, 160, 120);
+    b->render();
+    Camera moved = b->userCamera();
+    moved.eye = moved.target + glm::vec3(-1.0f, 0.6f, 1.0f) * glm::length(moved.eye - moved.target);
+    b->setSettings(off);
+    b->setCamera(moved);
+    b->render();
+    b->setSettings(single);
+    a->setCamera(moved);
+    EXPECT_GE(agreement(secondLayerOf(*a), secondLayerOf(*b)), 0.999);
+}
