@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build engine-modules run test docs screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column user-twins
+.PHONY: deps configure build engine-modules run test docs screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column user-twins layers
 
 deps:
 	@bash .ci/install-deps.sh
@@ -96,6 +96,11 @@ gpu-column: build
 # built-in twins on the same frames, the AO pass's time and its ratio (~5 minutes on llvmpipe).
 user-twins: build
 	@bash .ci/user-twins.sh $(BUILD) $(SCENES)
+
+# docs/bench/layers.md: each bitmask preset and GTAO high with one depth layer and with two, the
+# second peeled and in the single pass, and what nested parts need (~10 minutes on llvmpipe).
+layers: build
+	@bash .ci/layers.sh $(BUILD) $(SCENES)
 
 # docs/stability.md: every technique under extreme projections, scales, placements, precisions and
 # parameter limits (`ssaolab stress`).
