@@ -54,8 +54,8 @@ bool aoTapHeld(AoCommon_ c, sampler2D positions, vec2 uv, float offsetPx, out ve
 // depth (the true thickness) but never less than `assumed` (the technique's thickness); else
 // `assumed`. Never less: with the true thickness of a thin wall every tap hides only a sliver of
 // sectors and the rays between the taps pass, so the error against the reference grows; the
-// assumed thickness is what fills the gaps between sparse samples. Taps off the frame have no back
-// layer.
+// assumed thickness is what fills the gaps between sparse samples (vbao.true_thickness asks for the
+// true one; docs/bench/layers.md measures both). Taps off the frame have no back layer.
 layout(binding = SSAO_TEX_BACK_DEPTH) uniform sampler2D aoBackDepth;
 
 // The second depth layer at uv (gbuffer.second_layer, passes/second_layer_pass.h): the nearest
@@ -74,7 +74,8 @@ vec4 aoSecondLayerAt(vec2 uv) {
 #endif
 }
 
-float aoBackGap(AoCommon_ c, vec2 uv, vec3 S, float assumed) {
+// `exact` (vbao.true_thickness): the far side's depth even where it is less than `assumed`.
+float aoBackGapOf(AoCommon_ c, vec2 uv, vec3 S, float assumed, bool exact) {
 #ifndef AO_BACK_DEPTH
     return assumed;
 #else
@@ -83,6 +84,8 @@ float aoBackGap(AoCommon_ c, vec2 uv, vec3 S, float assumed) {
     float back = textureLod(aoBackDepth, uv, 0.0).r, front = -S.z;
     if (!(back > front)) return assumed; // no back face behind it (an open surface, or none at all)
     float gap = frame.camera.x != 0.0 ? back - front : length(S) * (back / front - 1.0); // along the view ray
-    return max(gap, assumed);
+    return exact ? gap : max(gap, assumed);
 #endif
 }
+
+float aoBackGap(AoCommon_ c, vec2 uv, vec3 S, float assumed) { return aoBackGapOf(c, uv, S, assumed, false); }

@@ -90,3 +90,29 @@ TEST_F(BackFaces, TheInspectorShowsWhichTapsReadTheBackLayer) {
             EXPECT_EQ(fromBack, 0);
     }
 }
+
+TEST_F(BackFaces, TheTrueThicknessOnlyEverOpensSectorsAndKeepsAnOpenPlaneOpen) {
+    // vbao.true_thickness: a solid ends at its far side even short of the assumed thickness, so
+    // against the assumed depth it can only open sectors, never close one.
+    Settings assumed = defaultSettings();
+    assumed.ao.technique = "vbao";
+    assumed.gbuffer.backFaces = true;
+    assumed.vbao.thickness = 4.0f; // deeper than builtin:corner's 0.2 wall at R = 0.5
+    Settings exact = assumed;
+    exact.vbao.trueThickness = true;
+    for (const char* name : {"builtin:showcase", "builtin:corner"}) {
+        const Rendered a = render(name, assumed, 160, 90), b = render(name, exact, 160, 90);
+        float darker = 0, brighter = 0;
+        for (size_t i = 0; i < a.aoRaw.data.size(); ++i) {
+            darker = std::max(darker, a.aoRaw.data[i] - b.aoRaw.data[i]);
+            brighter = std::max(brighter, b.aoRaw.data[i] - a.aoRaw.data[i]);
+        }
+        EXPECT_LT(darker, 1e-5f) << name;
+        EXPECT_TRUE(finiteInRange(b.ao, 0.0f, 1.0f)) << name;
+        std::printf("%s: the true thickness opens up to %.3f of a pixel's AO\n", name, brighter);
+        if (std::string(name) == "builtin:corner") EXPECT_GT(brighter, 0.01f); // light behind the thin wall
+    }
+    const Rendered plane = render("builtin:plane", exact, 96, 54);
+    for (size_t i = 0; i < plane.aoRaw.data.size(); ++i)
+        if (plane.depth.data[i] > 0.0f) ASSERT_GT(plane.aoRaw.data[i], 0.999f) << i; // geometry pixels
+}

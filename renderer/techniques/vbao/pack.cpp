@@ -8,7 +8,7 @@ gpu::VbaoConstants packVbaoConstants(const VbaoSettings& s, const gpu::AoCommon&
     gpu::VbaoConstants c{};
     c.aoCommon = common;
     c.params = {s.thickness, s.distributionPower, kMinFirstStepPx, 0.0f};
-    c.modes = {s.slices, s.steps, 0, 0};
+    c.modes = {s.slices, s.steps, s.trueThickness ? 1 : 0, 0};
     return c;
 }
 

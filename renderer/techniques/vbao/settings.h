@@ -14,6 +14,9 @@ struct VbaoSettings {
     int steps = 8;                  // depth samples per side of a slice
     float thickness = 1.0f;         // assumed depth of every surface, in units of the AO radius
     float distributionPower = 2.0f; // step k of n at (k/n)^p of the radius, denser near the pixel
+    // Where the back-face layer (gbuffer.back_faces) holds a surface's far side, its sectors end
+    // there even when that is thinner than `thickness`; off: never less than the assumed depth.
+    bool trueThickness = false;
     AoNoise noise = AoNoise::Ign;
     bool pyramid = false; // far taps read the position pyramid (passes/position_pyramid_pass.h): off,
                           // on llvmpipe it costs time for the same error (docs/bench/report.md)

@@ -20,6 +20,11 @@ std::vector<Param> vbaoParams() {
                   "behaves like a horizon (GTAO)."),
         FLOAT_ROW("vbao.distribution_power", "Step distribution", vbao.distributionPower, 0.5, 4.0, "power",
                   "Step k of n lies at (k/n)^p of the radius: >1 samples more densely near the pixel."),
+        BOOL_ROW("vbao.true_thickness", "True thickness", vbao.trueThickness,
+                 "Where the back-face layer holds a surface's far side, its sectors end there even when that is "
+                 "thinner than the assumed thickness. Off: the far side only ever lengthens a sample (rays "
+                 "between sparse samples of a thin wall would pass). docs/bench/layers.md measures both.")
+            .onlyWhen("gbuffer.back_faces", {"true"}),
         NOISE_ROW("vbao.noise", vbao.noise),
         PYRAMID_ROW("vbao.pyramid", vbao.pyramid),
     };

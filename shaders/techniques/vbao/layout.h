@@ -16,7 +16,7 @@ namespace ssao::gpu {
 SSAO_STRUCT VbaoConstants_ {
     AoCommon_ aoCommon; // radius, power, noise, normals, pyramid (first in every technique's block)
     vec4 params;  // x: thickness (x radius), y: step distribution power, z: smallest first step (px), w: unused
-    ivec4 modes;  // slices, steps per side, unused, unused
+    ivec4 modes;  // slices, steps per side, 1 = true thickness (vbao.true_thickness), unused
 };
 
 #ifdef __cplusplus

@@ -116,7 +116,7 @@ void main() {
                 // deltaPosBackface = deltaPos - viewVec * thickness), not along the sample's own
                 // ray: its angle then needs no vector of its own, |front - gap V|^2 = ff - 2 gap fv
                 // + gap^2.
-                float gap = aoBackGap(ssao.aoCommon, uv, S.xyz, thickness);
+                float gap = aoBackGapOf(ssao.aoCommon, uv, S.xyz, thickness, ssao.modes.z != 0);
                 float sgn = side == 0 ? 1.0 : -1.0; // side 0 at positive angles from V
                 uint bits = intervalBits(front, gap, V, sgn, n);
                 bits = counts ? bits : 0u; // a tap that does not count (NaN angles included) hides nothing
@@ -130,7 +130,7 @@ void main() {
                 bool counts2 = S2.w != 0.0 && dist2 > 0.0 && dist2 <= R;
                 uint bits2 = 0u;
                 if (counts2) // most taps have nothing within R behind them: no angles to compute
-                    bits2 = intervalBits(aoSliceDelta(sl, front2), aoBackGap(ssao.aoCommon, uv, S2.xyz, thickness), V, sgn, n);
+                    bits2 = intervalBits(aoSliceDelta(sl, front2), aoBackGapOf(ssao.aoCommon, uv, S2.xyz, thickness, ssao.modes.z != 0), V, sgn, n);
                 bool hides2 = (bits2 & ~mask) != 0u;
                 mask |= bits2;
                 INSPECT_TAP(hides2 && !hides ? S2.xyz : held && S.w != 0.0 ? S.xyz : P, uv,
@@ -138,7 +138,7 @@ void main() {
                             : S.w == 0.0    ? SSAO_TAP_SKY
                             : !counts && !hides2 ? SSAO_TAP_OPEN
                                             : (hides || hides2 ? SSAO_TAP_OCCLUDED : SSAO_TAP_OPEN) |
-                                                  (gap > thickness ? SSAO_TAP_BACK_LAYER : 0) |
+                                                  (gap != thickness ? SSAO_TAP_BACK_LAYER : 0) |
                                                   (hides2 ? SSAO_TAP_SECOND_LAYER : 0),
                             float(bitCount(bits | bits2)) / 32.0, slice);
             }
