@@ -395,6 +395,37 @@ void unusedTargetRows(Context& c, const std::string& view) {
     }
 }
 
+// The second depth layer in the G-buffer's own pass (gbuffer.second_layer_build = previous) against
+// its second geometry pass (peel): the G-buffer and the layer's passes, the bitmask at its
+// defaults. Each build's frames in a row - the single pass reprojects its own previous frame - and
+// the same still frame from both.
+void secondLayerRow(Context& c, const std::string& view) {
+    Renderer& r = c.r;
+    r.setWanted(std::set<std::string>{"ao.denoised"});
+    Settings peel = defaultSettings();
+    applyAssignment(peel, "ao.technique=vbao");
+    applyAssignment(peel, "gbuffer.second_layer=true");
+    Settings single = peel;
+    applyAssignment(single, "gbuffer.second_layer_build=previous");
+    std::vector<double> ms[2], wall[2];
+    Image out[2];
+    for (int k = 0; k < 2; ++k) {
+        r.setSettings(k == 0 ? single : peel);
+        for (int f = -1; f < c.o.frames; ++f) { // f = -1: warm-up (and the single pass's first frame)
+            const FrameTime t = timeFrame(r, true);
+            if (f >= 0) ms[k].push_back(t.sum({"gbuffer", "second_layer"})), wall[k].push_back(t.wallMs);
+        }
+        out[k] = readBack(r.texture("ao.denoised"), 1);
+    }
+    SkipRow row{"layer", c.scene, view, "second layer in the G-buffer's pass (bitmask defaults)",
+                "G-buffer + layer GPU ms"};
+    row.with = median(ms[0]), row.without = median(ms[1]);
+    row.wallWith = median(wall[0]), row.wallWithout = median(wall[1]);
+    row.errorChange = maxDiff(out[0], out[1], geometryMask(r));
+    c.run.rows.push_back(row);
+    r.setSettings(defaultSettings());
+}
+
 void gbufferRows(Context& c, const Camera& cam, const std::string& view) {
     c.note("G-buffer, " + view);
     c.r.setCamera(cam);
@@ -402,6 +433,7 @@ void gbufferRows(Context& c, const Camera& cam, const std::string& view) {
     demandRow(c, view);
     fusedUpsampleRow(c, view);
     unusedTargetRows(c, view);
+    secondLayerRow(c, view);
 }
 
 } // namespace

@@ -140,6 +140,16 @@ void gbufferTables(std::ostringstream& md, const SkipsRun& run) {
                " | " + num(r.wallWith, "%.1f") + " / " + num(r.wallWithout, "%.1f") + " | " + change(r.errorChange) +
                " |";
     });
+
+    table(md, "The second depth layer in the G-buffer's own pass (gbuffer.second_layer_build=previous) instead of a "
+              "second geometry pass (peel); each build's frames in a row",
+          "| scene | view | G-buffer + layer ms, one pass | two passes | ratio | wall ms one / two | AO change |",
+          "|---|---|---:|---:|---:|---:|---|");
+    rows(md, run, "layer", [](const SkipRow& r) {
+        return "| " + markdownCell(r.scene) + " | " + markdownCell(r.view) + " | " + num(r.with) + " | " + num(r.without) + " | " + ratio(r) +
+               " | " + num(r.wallWith, "%.1f") + " / " + num(r.wallWithout, "%.1f") + " | " + change(r.errorChange) +
+               " |";
+    });
 }
 } // namespace
 
