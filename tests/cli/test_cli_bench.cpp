@@ -212,6 +212,7 @@ TEST(Cli, SkipsMeasuresEverySkipAgainstTheSameFrameWithoutIt) {
     EXPECT_EQ(count["occluded"], 2);
     EXPECT_EQ(count["cull"], 2);
     EXPECT_EQ(count["targets"], 6);
+    EXPECT_EQ(count["layer"], 2); // the one-pass second layer, exact on a still frame (above)
     EXPECT_NE(slurp(out + "/skips.md").find("#### Frustum culling"), std::string::npos);
     EXPECT_NE(slurp(out + "/skips.md").find("#### Draws the scene hides"), std::string::npos);
     EXPECT_NE(slurp(out + "/skips.md").find("#### Deinterleaved sampling"), std::string::npos);
