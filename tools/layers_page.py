@@ -9,6 +9,8 @@ import json
 import math
 import sys
 
+from markdown_cell import cell
+
 FAMILIES = ["vbao-high", "vbao-ultra", "vbao-half-ultra", "gtao-high"]
 
 
@@ -71,7 +73,7 @@ def main(results_json, page):
     out = ["# One depth layer against two", "",
            "Machine: %s, %s, %s hardware threads; %s, %s views a scene, %s timed frames each (median), R = %.0f %% of "
            "the diagonal, %s reference rays; %s build, git %s." % (
-               run["cpu"], run["gl_renderer"], run["hardware_threads"], run["size"], run["views_per_scene"],
+               cell(run["cpu"]), cell(run["gl_renderer"]), run["hardware_threads"], run["size"], run["views_per_scene"],
                run["frames"], 100 * run["reference"]["radius_scene"], run["reference"]["rays"], run["build_type"],
                run["git_revision"]), "",
            "How to read it: *RMSE x* and *time x* are ratios to the baseline (learnopengl) on the same views; time is "
@@ -92,13 +94,13 @@ def main(results_json, page):
     for sc in scenes:
         base = rows[(sc, "learnopengl (baseline)")]
         one_screen = base["screen"]
-        out += ["## %s" % sc, "", "| configuration | RMSE | RMSE x | time x | layer ms | screen | closed | technique |",
+        out += ["## %s" % cell(sc), "", "| configuration | RMSE | RMSE x | time x | layer ms | screen | closed | technique |",
                 "|---|---:|---:|---:|---:|---:|---:|---:|"]
         mine = sorted(((n, r) for (s, n), r in rows.items() if s == sc), key=lambda nr: nr[0])
         for n, r in mine:
             closed = 100.0 * (1.0 - r["screen"] ** 2 / one_screen ** 2) if r["two"] and one_screen > 0 else None
             out.append("| %s | %.4f | %.2f | %.2f | %s | %s | %s | %s |" % (
-                n, r["rmse"], r["rmse"] / base["rmse"], r["time"], fmt(r["layer"], "%.1f"), fmt(r["screen"], "%.4f"),
+                cell(n), r["rmse"], r["rmse"] / base["rmse"], r["time"], fmt(r["layer"], "%.1f"), fmt(r["screen"], "%.4f"),
                 fmt(closed, "%.0f %%"), fmt(r["technique"], "%.4f")))
         out.append("")
 
@@ -108,7 +110,7 @@ def main(results_json, page):
             if not sel:
                 return "–"
             e, n, r = min(sel)
-            return "%s: %.2fx at %.2fx time" % (n, e / base["rmse"], r["time"])
+            return "%s: %.2fx at %.2fx time" % (cell(n), e / base["rmse"], r["time"])
         worst, worst_name = -1.0, ""
         for fam in FAMILIES:
             one = rows.get((sc, fam))
@@ -116,8 +118,8 @@ def main(results_json, page):
                 two = rows.get((sc, "%s, 2 layers (%s)" % (fam, build)))
                 if one and two and two["rmse"] - one["rmse"] > worst:
                     worst, worst_name = two["rmse"] - one["rmse"], "%s, %s" % (fam, build)
-        summary.append("| %s | %s | %s | %s | %+.4f (%s) |" % (sc, best(False, 1.0), best(True, 1.0), best(True, None),
-                                                             worst, worst_name))
+        summary.append("| %s | %s | %s | %s | %+.4f (%s) |" % (cell(sc), best(False, 1.0), best(True, 1.0),
+                                                             best(True, None), worst, cell(worst_name)))
     text = "\n".join(out[:6] + summary + [""] + out[6:])
     open(page, "w").write(text)
     print(text)

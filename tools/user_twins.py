@@ -8,6 +8,8 @@ import json
 import math
 import sys
 
+from markdown_cell import cell
+
 PAIRS = [("LearnOpenGL kernel", "ao.technique=kernel", "ao.technique=user.learnopengl user.learnopengl.ssao_noise=none"),
          ("XeGTAO (GTAO high)", "ao.technique=gtao gtao.pyramid=false gtao.quality=high", "ao.technique=user.xegtao")]
 
@@ -24,7 +26,7 @@ def main(results_json, results_csv, page):
     scenes = sorted({r["scene"] for r in rows})
     out = ["# A user technique against its built-in twin", "",
            "Machine: %s, %s, %s hardware threads; %s, %s views a scene, %s timed frames each (median); "
-           "%s build, git %s." % (run["cpu"], run["gl_renderer"], run["hardware_threads"], run["size"],
+           "%s build, git %s." % (cell(run["cpu"]), cell(run["gl_renderer"]), run["hardware_threads"], run["size"],
                                   run["views_per_scene"], run["frames"], run["build_type"], run["git_revision"]),
            "",
            "How to read it: each pair renders the same frames, the built-in and the user file that computes the "
@@ -48,7 +50,7 @@ def main(results_json, results_csv, page):
             ratio = ums / bms
             logs.append(math.log(ratio))
             worst = max(worst, abs(ratio - 1.0))
-            out.append("| %s | %s | %.3f | %.3f | %.3f | %.4f | %.4f |" % (name, scene, bms, ums, ratio, brmse, urmse))
+            out.append("| %s | %s | %.3f | %.3f | %.3f | %.4f | %.4f |" % (name, cell(scene), bms, ums, ratio, brmse, urmse))
         out.append("| %s | geometric mean | | | **%.3f** | | |" % (name, math.exp(sum(logs) / len(logs))))
     out += ["", "Largest distance of one scene's ratio from 1: %.1f %%." % (100.0 * worst), ""]
     text = "\n".join(out)

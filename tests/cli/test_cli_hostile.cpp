@@ -1,5 +1,6 @@
 // Whole program on hostile input: broken third-party files, planted links, NaN options, bytes that are not UTF-8.
 #include "cli_run.h"
+#include "util/process.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -120,4 +121,34 @@ TEST(CliHostile, NanOptionsAndNonUtf8NamesGiveOneLineOrAReport) {
     EXPECT_EQ(r.exitCode, 0) << r.err;
     const nlohmann::json m = nlohmann::json::parse(slurp(out + "/metrics.json"));
     EXPECT_NE(m["scene"]["name"].get<std::string>().find("caf\xef\xbf\xbd.gltf"), std::string::npos); // U+FFFD
+}
+
+TEST(CliHostile, ThePageScriptsKeepANameInItsOwnCell) {
+    // tools/layers_page.py writes docs/bench/layers.md from a bench run: a scene named with a table
+    // separator, markup and a line break stays text in its own cell and heading.
+    const std::string hostile = "a|b <script>*x*\nc";
+    auto result = [&](int config) {
+        return nlohmann::json{{"scene", hostile}, {"config", config}, {"rmse", 0.1}, {"time_ratio", 1.0},
+                              {"pass_ms", {{"layers", nullptr}}}, {"rmse_screen", 0.05}, {"rmse_vs_oracle", 0.08}};
+    };
+    const nlohmann::json run = {
+        {"cpu", "cpu"}, {"gl_renderer", "gl"}, {"hardware_threads", 2}, {"size", "64x36"}, {"views_per_scene", 1},
+        {"frames", 1}, {"reference", {{"radius_scene", 0.05}, {"rays", 8}}}, {"build_type", "Release"},
+        {"git_revision", "abc"},
+        {"configurations",
+         {{{"label", "learnopengl (baseline)"}, {"group", "baseline"}, {"keys", nlohmann::json::object()}, {"baseline", true}},
+          {{"label", "preset=vbao-high"}, {"group", "vbao-high"}, {"keys", {{"preset", "vbao-high"}}}}}},
+        {"results", {result(0), result(1)}}};
+    const std::string in = writeTemp("layers_hostile.json", run.dump());
+    const std::string dir = outDir("layers_hostile");
+    std::filesystem::create_directories(dir);
+    const std::string page = dir + "/layers.md";
+    const ssao::ProgramRun r = ssao::runProgram({"/usr/bin/python3", std::string(SSAOLAB_SOURCE_DIR) + "/tools/layers_page.py", in, page},
+                                                ssao::ChildStream::Discard, ssao::ChildStream::Capture);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const std::string md = slurp(page);
+    const std::string escaped = "a\\|b &lt;script&gt;\\*x\\* c";
+    EXPECT_NE(md.find("## " + escaped + "\n"), std::string::npos) << md;
+    EXPECT_NE(md.find("| " + escaped + " | vbao-high: 1.00x"), std::string::npos) << md;
+    EXPECT_EQ(md.find("<script>"), std::string::npos);
 }
