@@ -72,8 +72,9 @@ std::string splitMarkdown(const BenchRun& run) {
     std::map<std::pair<std::string, std::string>, double> oneLayerScreen; // (scene, view): the baseline's
     for (const ViewResult& v : run.views)
         if (v.hasSplit && v.config == run.sweep.baseline) oneLayerScreen[{v.scene, v.viewpoint}] = v.screen.rmse;
-    const bool deep = run.facts.is_object() && run.facts.value("oracle", nlohmann::json::object()).value("layers", 1) == 1 &&
-                      run.facts.value("oracle", nlohmann::json::object()).value("layers_two_layer_rows", 1) == 2;
+    const nlohmann::json o = run.facts.is_object() ? run.facts.value("oracle", nlohmann::json::object())
+                                                   : nlohmann::json::object();
+    const bool deep = o.value("layers", 1) == 1 && o.value("layers_two_layer_rows", 1) == 2;
     for (const ViewResult& v : run.views) {
         if (!v.hasSplit || !reported(run.sweep.configs[v.config])) continue;
         if (!cells.count(v.scene)) scenes.push_back(v.scene);
@@ -89,8 +90,6 @@ std::string splitMarkdown(const BenchRun& run) {
         if (deep && !cfg.isEngine() && cfg.settings.gbuffer.secondLayer && oneLayerScreen.count({v.scene, v.viewpoint}))
             c.screenOneLayer.add(oneLayerScreen[{v.scene, v.viewpoint}]);
     }
-    const nlohmann::json o = run.facts.is_object() ? run.facts.value("oracle", nlohmann::json::object())
-                                                   : nlohmann::json::object();
     std::ostringstream md;
     md << "\n### What the screen cannot see\n\nEach error split in two against the **screen-space oracle**: the "
           "same integral, R and rays as the reference, with visibility decided only by what the G-buffer holds ("

@@ -77,7 +77,7 @@ void GBufferPass::run(PassContext& ctx, const GBufferConfig& c) {
     gl::Defines defs;
     written_.clear();
     for (const Target& t : kTargets) {
-        const bool reprojected = c.secondLayer && std::string(t.name) == "gbuffer.position"; // the next frame's
+        const bool reprojected = c.secondLayer && &t == &kTargets[0]; // the position: what the next frame reprojects
         if (c.skipUnused && !ctx.needed(t.name) && !reprojected) {
             ctx.leaveUnwritten(t.name);
             continue;
@@ -157,7 +157,6 @@ void GBufferPass::keepPrevious(PassContext& ctx, const GBufferConfig& c) {
     previous_.view = c.frame.view;
     previous_.proj = c.frame.proj;
     previous_.sceneVersion = c.sceneVersion;
-    previous_.position.bind(SSAO_TEX_PREVIOUS_POSITION);
 }
 
 ScenePrograms scenePrograms(PassContext& ctx, const std::string& vert, const std::string& frag, gl::Defines defines,

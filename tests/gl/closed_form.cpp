@@ -1,5 +1,8 @@
 #include "closed_form.h"
 
+#include "gl/readback.h"
+#include "output/reference_report.h"
+
 #include <cmath>
 #include <map>
 
@@ -10,6 +13,12 @@ using namespace ssao;
 double wallClosedForm(double d, double R) {
     const double a = std::min(d / R, 1.0);
     return 1.0 - (std::acos(a) - a * std::sqrt(1.0 - a * a)) / M_PI;
+}
+
+Evaluation judgeAgainstReference(Renderer& r, const EmbreeScene& rt, int rays) {
+    const ReferenceImage ref = traceReference(rt, r.camera(), r.width(), r.height(),
+                                              referenceSettingsFor(r.radiusAtCentre(), rays, ReferenceVariant::Visibility));
+    return evaluate(readBack(r.texture("ao.denoised"), 1), ref);
 }
 
 CornerProfile cornerProfile(const Settings& s, const std::string& scene) {

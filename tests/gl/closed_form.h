@@ -1,7 +1,9 @@
-// Closed forms of cosine-weighted visibility within R (the reference's definition) and the
-// builtin:corner profile that tests compare each technique against.
+// What tests judge AO against: closed forms of cosine-weighted visibility within R (the reference's
+// definition), the builtin:corner profile, and the ray-traced reference of a rendered view.
 #pragma once
 #include "gl_fixture.h"
+#include "metrics/evaluate.h"
+#include "reference/embree_scene.h"
 
 #include <string>
 
@@ -22,5 +24,9 @@ struct CornerProfile {
 // `scene`: builtin:corner, or builtin:hidden (the same floor and wall, the wall hidden by a plate).
 CornerProfile cornerProfile(const ssao::Settings& s, const std::string& scene = "builtin:corner");
 inline double cornerRmse(const ssao::Settings& s) { return cornerProfile(s).rmse; }
+
+// The renderer's last frame (ao.denoised) against the visibility reference of its camera, size
+// and radius, traced with `rays` per pixel.
+ssao::Evaluation judgeAgainstReference(ssao::Renderer& r, const ssao::EmbreeScene& rt, int rays);
 
 } // namespace ssaotest

@@ -8,7 +8,6 @@
 #include "gl/readback.h"
 #include "metrics/evaluate.h"
 #include "passes/second_layer_pass.h"
-#include "output/reference_report.h"
 #include "scene/scene.h"
 
 #include <cmath>
@@ -117,9 +116,7 @@ TEST_F(SecondLayer, NestedPartsAreNeverWorseAgainstTheReference) {
             s.gbuffer.backFaces = backFaces;
             auto r = makeRenderer(scene, s, 160, 90);
             r->render();
-            const ReferenceImage ref = traceReference(rt, r->camera(), 160, 90,
-                                                      referenceSettingsFor(r->radiusAtCentre(), 32, ReferenceVariant::Visibility));
-            const Evaluation e = evaluate(readBack(r->texture("ao.denoised"), 1), ref);
+            const Evaluation e = judgeAgainstReference(*r, rt, 32);
             ASSERT_EQ(e.metrics.nonFinite, 0);
             rmse[second] = e.metrics.rmse;
         }

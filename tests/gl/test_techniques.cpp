@@ -59,9 +59,7 @@ TEST_F(Techniques, TheBilateralDenoiserKeepsAoFromCrossingEdges) {
         s.denoise.kind = k == 0 ? DenoiseKind::Box4 : DenoiseKind::Bilateral;
         auto r = makeRenderer(scene, s, 480, 270);
         r->render();
-        const ReferenceImage ref = traceReference(rt, r->camera(), 480, 270,
-                                                  referenceSettingsFor(r->radiusAtCentre(), 64, ReferenceVariant::Visibility));
-        const Evaluation e = evaluate(readBack(r->texture("ao.denoised"), 1), ref);
+        const Evaluation e = judgeAgainstReference(*r, rt, 64);
         ASSERT_EQ(e.metrics.nonFinite, 0);
         edge[k] = e.metrics.rmseEdge;
     }
