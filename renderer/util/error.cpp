@@ -5,8 +5,24 @@
 
 namespace ssao {
 
+namespace {
+// A cut at or before `at` that does not split a UTF-8 sequence.
+size_t charBoundary(const std::string& s, size_t at) {
+    while (at > 0 && at < s.size() && (static_cast<unsigned char>(s[at]) & 0xC0) == 0x80)
+        --at;
+    return at;
+}
+} // namespace
+
 std::string oneLine(const std::string& message) {
+    // A value echoed from input may be any length: the line keeps its start and its end, which
+    // says what was expected, and how much was left out between them.
+    constexpr size_t kMax = 600, kHead = 400, kTail = 160;
     std::string msg = message;
+    if (msg.size() > kMax) {
+        const size_t head = charBoundary(msg, kHead), tail = charBoundary(msg, msg.size() - kTail);
+        msg = msg.substr(0, head) + " ... [" + std::to_string(tail - head) + " bytes left out] ... " + msg.substr(tail);
+    }
     while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ' || msg.back() == '\r'))
         msg.pop_back();
     for (char& c : msg) {

@@ -15,7 +15,8 @@ struct Error : std::runtime_error {
 bool parseDecimal(const std::string& text, double& out);
 
 // A message as the one line a terminal shows: trailing blanks dropped, line breaks as ';', other
-// control bytes (an escape sequence in a file name) as '?'.
+// control bytes (an escape sequence in a file name) as '?', and at most about 600 bytes (a long
+// middle, e.g. a huge value echoed from a file, left out and counted).
 std::string oneLine(const std::string& message);
 
 inline std::string hex(unsigned v) {

@@ -77,3 +77,19 @@ TEST(Escape, AnErrorLineHoldsNoControlBytes) {
     EXPECT_EQ(ssao::oneLine("a\r\nb\x07\x7f"), "a;;b??");
     EXPECT_EQ(ssao::oneLine("caf\xc3\xa9 \t ok"), "caf\xc3\xa9 \t ok"); // UTF-8 and tabs stay
 }
+
+TEST(Escape, AnErrorLineIsBoundedAndKeepsWhatWasExpected) {
+    // A preset's 100 000-character enum value echoed back: the line keeps its start and the end
+    // that names the choices, never a UTF-8 sequence cut in two.
+    const std::string value(100000, 'x');
+    const std::string line = ssao::oneLine("preset p.json: gbuffer.second_layer_build: '\xc3\xa9" + value +
+                                           "\xc3\xa9' is not one of peel|previous");
+    EXPECT_LE(line.size(), 640u);
+    EXPECT_EQ(line.rfind("preset p.json: gbuffer.second_layer_build: '", 0), 0u);
+    EXPECT_NE(line.find("bytes left out"), std::string::npos);
+    const std::string end = "' is not one of peel|previous";
+    EXPECT_EQ(line.substr(line.size() - end.size()), end);
+    for (size_t i = 0; i + 1 < line.size(); ++i)
+        if (static_cast<unsigned char>(line[i]) == 0xc3) EXPECT_EQ(static_cast<unsigned char>(line[i + 1]), 0xa9);
+    EXPECT_EQ(ssao::oneLine(std::string(600, 'a')), std::string(600, 'a')); // a line that fits is whole
+}
