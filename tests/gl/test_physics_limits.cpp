@@ -1,5 +1,6 @@
 // Physics at every setting, not only at the defaults: for every technique, at each of its quality
-// levels (its defaults and every shipped TECHNIQUE-* preset) and with each of its rows (and the
+// levels (its defaults and every shipped TECHNIQUE-* preset, each also deinterleaved and with two
+// depth layers where the technique takes them) and with each of its rows (and the
 // shared AO and denoise rows) at the ends of its range or at each of its choices, an open plane
 // stays unoccluded (AO >= 0.99, finite, in [0,1]) and the floor beside a wall follows the closed
 // form: within the technique's stated bound at its quality levels; at any limit never darker away
@@ -58,6 +59,16 @@ std::vector<Config> qualityLevels(const std::string& id) {
         d.label += " deinterleaved";
         out.push_back(d);
     }
+    // Two depth layers (gbuffer.second_layer) at each level, both builds, where the technique reads them.
+    for (size_t i = 0, n = out.size(); i < n; ++i)
+        for (const SecondLayerBuild build : {SecondLayerBuild::Peel, SecondLayerBuild::Previous}) {
+            Config d = out[i];
+            d.settings.gbuffer.secondLayer = true;
+            d.settings.gbuffer.secondLayerBuild = build;
+            if (!findParam("gbuffer.second_layer")->applies(d.settings)) break;
+            d.label += build == SecondLayerBuild::Peel ? " 2 layers" : " 2 layers, one pass";
+            out.push_back(d);
+        }
     return out;
 }
 
@@ -75,7 +86,9 @@ void makeApply(Settings& s, const Param& p) {
 // The technique's own rows and the shared rows a user sets beside them, each at its limits.
 std::vector<Config> limits(const std::string& id) {
     static const std::set<std::string> shared = {"ao.power",    "ao.resolution", "ao.normals", "ao.adaptive",
-                                                 "ao.adaptive_px", "ao.deinterleave", "denoise.kind", "denoise.upsample"};
+                                                 "ao.adaptive_px", "ao.deinterleave", "denoise.kind", "denoise.upsample",
+                                                 "gbuffer.back_faces", "gbuffer.second_layer",
+                                                 "gbuffer.second_layer_separation", "gbuffer.second_layer_build"};
     std::vector<Config> out;
     for (const Param& p : paramTable()) {
         if (p.group() != id && !shared.count(p.key)) continue;
