@@ -1,6 +1,7 @@
 // ssaolab command line: `view` (window), `render` (headless), `params` (the parameter table).
 // Without a subcommand: the window when there is a display, else a headless render into out/.
 #include "cli/cli_util.h"
+#include "cli/compile_gate.h"
 #include "cli/headless_runner.h"
 #include "cli/scene_options.h"
 #include "cli/user_techniques.h"
@@ -97,7 +98,9 @@ struct Commands {
     ssao::StressOptions stress;
     ssao::WindowOptions window;
     std::string windowSize = "1600x900", viewProjection, viewDepth;
-    std::string docsPage, probeFile, probeSize = "64x36";
+    std::string docsPage, probeFile, probeSize = "64x36", childSource, compileVert = "passes/fullscreen.vert", compileShaders;
+    std::vector<std::string> compileDefines;
+    unsigned childMaxMib = 0;
     bool techniqueLevels = false, techniqueDerived = false;
 
     Commands() {
@@ -118,8 +121,9 @@ struct Commands {
             ->capture_default_str()
             ->check(ssao::cliRange(1.0, 1 << 20));
         app.add_option("--max-mask-mpix", maxMaskMpix,
-                       "refuse scenes whose MASK materials' base-colour textures (the only images decoded, for their "
-                       "alpha cut-outs) hold more pixels in total (millions of 2^20), checked from each image's header")
+                       "refuse scenes whose MASK materials' base-colour textures (the only images ssaolab decodes, for "
+                       "their alpha cut-outs) hold more pixels in total (millions of 2^20), checked from each image's "
+                       "header; for a web engine's browser (tune --engine, bench --engines) every image of the scene counts")
             ->capture_default_str()
             ->check(ssao::cliRange(1.0, 1 << 14));
         app.add_option("--frame-time-limit", frameTimeLimit,
@@ -165,6 +169,16 @@ struct Commands {
                               ->group(""); // hidden: app/view/technique_watch.h runs it
         probe->add_option("file", probeFile, "NAME.ao.glsl")->required()->type_name(ssao::kInFile);
         probe->add_option("--size", probeSize, "the frames' size WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
+        CLI::App* compile = app.add_subcommand("compile-glsl", "compile one program of an untrusted fragment shader (the compile gate's test)")
+                                ->group(""); // hidden: app/cli/compile_gate.h runs it
+        compile->add_option("name", probeFile, "the name the shader's errors carry")->required()->type_name("NAME");
+        compile->add_option("--shaders", compileShaders, "the shader folder its includes come from")->type_name(ssao::kInDir);
+        compile->add_option("--vert", compileVert, "the vertex shader, a file under the folder")->type_name("SHADER")->capture_default_str();
+        compile->add_option("--define", compileDefines, "one define each")->type_name("NAME=VALUE");
+        for (CLI::App* c : {probe, compile}) {
+            c->add_option("--source", childSource, "the bytes to try (a file the parent wrote)")->type_name(ssao::kInFile);
+            c->add_option("--max-memory-mib", childMaxMib, "cap this process's address space (MiB)")->check(ssao::cliRange(64, 1 << 20));
+        }
         addView(*sub("view", "open the interactive explorer window (GLFW + Dear ImGui)"));
     }
 
@@ -214,8 +228,13 @@ struct Commands {
         if (app.got_subcommand("probe-technique")) {
             int w = 0, h = 0;
             ssao::parseSizeOption(probeSize, w, h);
-            return ssao::runProbeTechnique(probeFile, w, h);
+            return ssao::runProbeTechnique(probeFile, childSource, w, h, childMaxMib);
         }
+        if (app.got_subcommand("compile-glsl")) {
+            if (childSource.empty()) throw ssao::Error("compile-glsl needs --source FILE");
+            return ssao::runCompileGlsl(probeFile, childSource, compileShaders, compileVert, compileDefines, childMaxMib);
+        }
+        ssao::installCompileGate(ssao::executablePath()); // every other command compiles a user's GLSL after a child did
         if (!app.got_subcommand("docs") && !app.got_subcommand("options"))
             window.app.techniqueDir = ssao::loadUserTechniques(techniqueDir);
         if (app.got_subcommand("params")) {

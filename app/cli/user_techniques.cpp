@@ -12,8 +12,11 @@ std::string loadUserTechniques(const std::string& techniqueDir) {
     std::vector<std::string> warnings;
     for (const auto& [id, why] : scan.refused)
         warnings.push_back(why + " (" + id + " is not available)");
+    if (!scan.overWarning.empty()) warnings.push_back(scan.overWarning); // one line for every file past the cap
     printWarnings(warnings);
-    if (!scan.loaded.empty() || !scan.refused.empty()) setUserTechniques(scan.loaded, scan.refused);
+    std::vector<std::pair<std::string, std::string>> refused = scan.refused;
+    refused.insert(refused.end(), scan.over.begin(), scan.over.end());
+    if (!scan.loaded.empty() || !refused.empty()) setUserTechniques(scan.loaded, refused);
     return dir;
 }
 

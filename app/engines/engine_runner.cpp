@@ -1,5 +1,6 @@
 #include "engines/engine_runner.h"
 
+#include "scene/browser_assets.h"
 #include "scene/scene.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -101,6 +102,7 @@ EngineRunner::EngineRunner(EngineTools tools, EngineTable table, std::string sce
     : tools_(std::move(tools)), table_(std::move(table)), width_(width), height_(height), views_(std::move(views)) {
     std::error_code ec;
     scene_ = fs::absolute(sceneFile, ec).string();
+    checkBrowserAssets(scene_); // what the browser would fetch and decode, before it starts
     static std::atomic<int> counter{0};
     const fs::path base = fs::temp_directory_path(ec);
     for (int attempt = 0; attempt < 100 && work_.empty(); ++attempt) {

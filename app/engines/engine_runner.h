@@ -56,6 +56,7 @@ struct EngineResult {
 
 class EngineRunner {
   public:
+    // Refuses a scene whose buffers or images the browser must not load (scene/browser_assets.h).
     EngineRunner(EngineTools tools, EngineTable table, std::string sceneFile, int width, int height,
                  std::vector<EngineView> views);
     ~EngineRunner(); // removes its work folder

@@ -5,35 +5,35 @@
 #include "util/json_file.h"
 
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 namespace ssao {
 
 namespace {
 
-// The fitted factor of a search entry ({"x_R": 1.5}); none when absent or not a finite number
-// (positive unless `signedOk`: a bias per R may be 0).
-std::optional<double> factorOf(const nlohmann::json& search, const std::string& name, const char* key, bool signedOk) {
-    if (!search.is_object() || !search.contains(name) || !search[name].is_object()) return std::nullopt;
-    const nlohmann::json& s = search[name];
-    if (!s.contains(key) || !s[key].is_number()) return std::nullopt;
-    const double x = s[key].get<double>();
-    return std::isfinite(x) && (signedOk || x > 0) ? std::optional<double>(x) : std::nullopt;
-}
-
-double valueOf(const nlohmann::json& v, const EngineParam& p, const std::string& where) {
-    if (p.type == EngineParam::Type::Boolean) {
-        if (!v.is_boolean()) throw Error(where + " must be true or false");
-        return v.get<bool>() ? 1.0 : 0.0;
+// The fitted factor of a search entry ({"x_R": 1.5}): none when absent; else a finite number inside
+// the row's search range, the only factors a tune can fit.
+std::optional<double> factorOf(const nlohmann::json& search, const EngineParam& p, const char* key, const std::string& where) {
+    if (!search.is_object() || !search.contains(p.name) || !search[p.name].is_object() || !search[p.name].contains(key))
+        return std::nullopt;
+    const nlohmann::json& x = search[p.name][key];
+    char range[96];
+    std::snprintf(range, sizeof range, "[%.9g, %.9g]", p.searchLo, p.searchHi);
+    const std::string field = where + ": search." + p.name + "." + key;
+    if (!x.is_number() || !std::isfinite(x.get<double>())) throw Error(field + " must be a finite number in " + range);
+    const double d = x.get<double>();
+    if (d < p.searchLo || d > p.searchHi) {
+        char v[48];
+        std::snprintf(v, sizeof v, "%.9g", d);
+        throw Error(field + " = " + v + " is outside the range a tune searches, " + range);
     }
-    if (!v.is_number() || !std::isfinite(v.get<double>())) throw Error(where + " must be a finite number");
-    return v.get<double>();
+    return d;
 }
 
 } // namespace
 
-TunedEngine readTunedEngine(const std::string& file) {
-    const nlohmann::json j = readJsonFile(file, "tuned engine settings");
+TunedEngine parseTunedEngine(const nlohmann::json& j, const std::string& file) {
     const std::string what = "tuned engine settings " + file;
     if (!j.is_object() || !j.contains("engine") || !j["engine"].is_string() || !j.contains("settings") || !j["settings"].is_object())
         throw Error(what + ": not a `ssaolab tune --engine --out` file (no \"engine\" and \"settings\")");
@@ -43,25 +43,47 @@ TunedEngine readTunedEngine(const std::string& file) {
         throw Error(what + ": tuned " + t.table.package + " " + (version.empty() ? "(no version)" : version) +
                     "; the installed table is for " + t.table.version + " (tune it again)");
     const nlohmann::json search = j.contains("search") ? j["search"] : nlohmann::json();
-    auto add = [&](const nlohmann::json& values, const std::string& field) {
+    if (!search.is_null() && !search.is_object()) throw Error(what + ": \"search\" must be an object");
+    auto add = [&](const nlohmann::json& values, const std::string& field, EngineParam::Role role) {
         for (const auto& [name, v] : values.items()) {
             const EngineParam* p = t.table.find(name);
-            if (!p || p->role == EngineParam::Role::Fixed)
-                throw Error(what + ": " + field + "." + name + " is not a shape or cost parameter of " + t.table.engine);
-            const double value = valueOf(v, *p, what + ": " + field + "." + name);
-            if (const auto x = p->relative ? factorOf(search, name, "x_make_peers_value", false) : std::nullopt)
+            if (!p || p->role != role)
+                throw Error(what + ": " + field + "." + name + " is not a " + (role == EngineParam::Role::Cost ? "cost" : "shape or cost") +
+                            " parameter of " + t.table.engine);
+            const std::string where = what + ": " + field + "." + name;
+            // A fit relative to the view or per R is its factor (checked against the search range);
+            // the value beside it is the first training view's, which the engine's GUI range need not
+            // hold (a length in a small scene's units): checked as a value of its type only.
+            const auto x = p->relative ? factorOf(search, *p, "x_make_peers_value", what) : std::nullopt;
+            const auto r = p->perRadius ? factorOf(search, *p, p->perRadius == 1 ? "x_R" : "x_1_over_R", what) : std::nullopt;
+            if (x || r) {
+                EngineParam typeOnly = *p;
+                typeOnly.range.reset();
+                checkedEngineValue(typeOnly, v, where);
+            }
+            if (x)
                 t.scale[name] = *x;
-            else if (const auto r = p->perRadius ? factorOf(search, name, p->perRadius == 1 ? "x_R" : "x_1_over_R", true) : std::nullopt)
+            else if (r)
                 t.perRadius[name] = {*r, p->perRadius};
             else
-                t.values[name] = value;
+                t.values[name] = checkedEngineValue(*p, v, where);
         }
     };
-    add(j["settings"], "settings");
-    if (j.contains("cost_settings") && j["cost_settings"].is_object() && j["cost_settings"].contains("values") &&
-        j["cost_settings"]["values"].is_object())
-        add(j["cost_settings"]["values"], "cost_settings.values");
+    for (const auto& [name, v] : j["settings"].items()) {
+        const EngineParam* p = t.table.find(name);
+        add(nlohmann::json{{name, v}}, "settings", p && p->role == EngineParam::Role::Cost ? EngineParam::Role::Cost : EngineParam::Role::Shape);
+    }
+    if (j.contains("cost_settings")) {
+        const nlohmann::json& c = j["cost_settings"];
+        if (!c.is_object() || (c.contains("values") && !c["values"].is_object()))
+            throw Error(what + ": \"cost_settings\" must be an object whose \"values\" is an object");
+        if (c.contains("values")) add(c["values"], "cost_settings.values", EngineParam::Role::Cost);
+    }
     return t;
+}
+
+TunedEngine readTunedEngine(const std::string& file) {
+    return parseTunedEngine(readJsonFile(file, "tuned engine settings"), file);
 }
 
 std::map<std::string, double> jobValues(const EngineTable& table,

@@ -20,9 +20,13 @@ struct TunedEngine {
     std::map<std::string, double> values;                      // the engine's value
 };
 
-// Throws ssao::Error (one line naming the file and the field): not a tune result, another package
-// version than the installed table's, a parameter the engine lacks or fixes, a non-finite value.
+// Throws ssao::Error (one line naming the file, the field and the range it breaks): not a tune
+// result, another package version than the installed table's, a parameter the engine lacks or
+// fixes, a value of the wrong type or outside its row's range (table.h checkedEngineValue), a
+// fitted factor outside the row's search range.
 TunedEngine readTunedEngine(const std::string& file);
+// The same checks on a result in memory: tune runs them on its own output before writing it.
+TunedEngine parseTunedEngine(const nlohmann::json& j, const std::string& file);
 
 // The values a job sets on a view of world radius R: `values` and `perRadius` resolved (integers
 // rounded, 6 significant digits); `scale` goes to the runner as it is.

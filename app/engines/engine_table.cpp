@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <set>
 
@@ -24,6 +25,21 @@ std::string textField(const nlohmann::json& j, const char* key, const std::strin
     if (!j.contains(key) || !j[key].is_string() || j[key].get<std::string>().empty())
         throw Error(where + ": \"" + key + "\" must be a non-empty string");
     return j[key].get<std::string>();
+}
+
+// A name the snippet writes as code (the pass's variable, a property path, a setter and its key):
+// JavaScript identifiers joined by '.', nothing else.
+std::string codeName(const nlohmann::json& j, const char* key, const std::string& where) {
+    const std::string s = textField(j, key, where);
+    bool start = true;
+    for (char c : s) {
+        const bool letter = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_' || c == '$';
+        if (c == '.' && !start) { start = true; continue; }
+        if (!letter && (start || c < '0' || c > '9')) throw Error(where + ": \"" + key + "\" must be JavaScript identifiers joined by '.'");
+        start = false;
+    }
+    if (start) throw Error(where + ": \"" + key + "\" must be JavaScript identifiers joined by '.'");
+    return s;
 }
 
 double numberOf(const nlohmann::json& v, EngineParam::Type type, const std::string& where) {
@@ -54,8 +70,8 @@ EngineParam::Role roleOf(const std::string& s, const std::string& where) {
 void readWrite(EngineParam& p, const nlohmann::json& row, const std::string& where) {
     const nlohmann::json& w = row.contains("write") ? row["write"] : nlohmann::json();
     if (!w.is_object()) throw Error(where + ": \"write\" must be an object (path, call and key, or constructor_arg)");
-    if (w.contains("path")) p.writePath = textField(w, "path", where + " write");
-    if (w.contains("call")) p.writeCall = textField(w, "call", where + " write"), p.writeKey = textField(w, "key", where + " write");
+    if (w.contains("path")) p.writePath = codeName(w, "path", where + " write");
+    if (w.contains("call")) p.writeCall = codeName(w, "call", where + " write"), p.writeKey = codeName(w, "key", where + " write");
     if (w.contains("constructor_arg")) {
         if (!w["constructor_arg"].is_number_unsigned()) throw Error(where + ": constructor_arg must be an index");
         p.constructorArg = w["constructor_arg"].get<int>();
@@ -157,7 +173,7 @@ EngineTable loadEngineTable(const std::string& path) {
     t.peer = textField(j, "peer", path);
     textField(j, "docs", path);
     if (!j.contains("snippet") || !j["snippet"].is_object()) throw Error(path + ": no \"snippet\" object");
-    t.variable = textField(j["snippet"], "variable", path + " snippet");
+    t.variable = codeName(j["snippet"], "variable", path + " snippet");
     if (j["snippet"].contains("setup") && j["snippet"]["setup"].is_array())
         for (const auto& line : j["snippet"]["setup"])
             if (line.is_string()) t.setup.push_back(line.get<std::string>());
@@ -182,9 +198,39 @@ EngineTable findEngine(const std::string& name) {
     return loadEngineTable(enginePeersDir() + "/engines/" + name + ".json");
 }
 
+std::string engineRangeText(const EngineParam& p) {
+    if (p.type == EngineParam::Type::Boolean) return "true or false";
+    if (!p.range) return "any";
+    char b[96];
+    std::snprintf(b, sizeof b, "[%.9g, %.9g]", p.range->first, p.range->second);
+    return b;
+}
+
+double checkedEngineValue(const EngineParam& p, const nlohmann::json& v, const std::string& where) {
+    const std::string range = engineRangeText(p);
+    if (p.type == EngineParam::Type::Boolean) {
+        if (!v.is_boolean()) throw Error(where + " must be true or false");
+        return v.get<bool>() ? 1.0 : 0.0;
+    }
+    const bool integer = p.type == EngineParam::Type::Integer;
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+        throw Error(where + " must be " + (integer ? "an integer" : "a finite number") + " in " + range);
+    const double d = v.get<double>();
+    if (integer && d != std::floor(d)) throw Error(where + " must be an integer in " + range);
+    if (p.range && (d < p.range->first || d > p.range->second)) {
+        char b[64];
+        std::snprintf(b, sizeof b, "%.9g", d);
+        throw Error(where + " = " + b + " is outside " + p.name + "'s range " + range);
+    }
+    return d;
+}
+
 nlohmann::json engineValueJson(const EngineParam& p, double v) {
     if (p.type == EngineParam::Type::Boolean) return v != 0.0;
-    if (p.type == EngineParam::Type::Integer) return static_cast<long long>(std::llround(v));
+    if (p.type == EngineParam::Type::Integer) {
+        if (!(std::fabs(v) <= 9007199254740992.0)) throw Error(p.name + " is not an integer JavaScript holds exactly");
+        return static_cast<long long>(std::llround(v));
+    }
     return v;
 }
 

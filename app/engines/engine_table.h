@@ -62,5 +62,11 @@ EngineTable loadEngineTable(const std::string& path);
 EngineTable findEngine(const std::string& name);
 // A value as the engine's type writes it in JSON (true/false, an integer, a number).
 nlohmann::json engineValueJson(const EngineParam& p, double v);
+// A value a file gives for `p`, checked against its row: its type (true/false; a finite number; an
+// integer), inside the row's range. Throws one line "WHERE must be ..." naming the range. Every
+// engine value read from a file goes through it, and tune's own output before it is written.
+double checkedEngineValue(const EngineParam& p, const nlohmann::json& v, const std::string& where);
+// The row's range as text: "[lo, hi]" ("any" when it documents none).
+std::string engineRangeText(const EngineParam& p);
 
 } // namespace ssao

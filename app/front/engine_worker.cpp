@@ -25,13 +25,14 @@ std::string viewSnippet(const EngineWorker::Job& job, const EngineTable& t, cons
     }
     const std::string what =
         s.candidate.tuned()
-            ? "the fit of " + std::filesystem::path(s.candidate.file).filename().string() + " (ssaolab tune --engine) on this view"
+            ? "the fit named below (ssaolab tune --engine) on this view"
             : "the engine's defaults with every length from R, as ssaolab's make peers sets them";
     char b[320];
-    std::snprintf(b, sizeof b, "%s at %dx%d, R = %.4g scene units: geometry RMSE %.4f against the ray-traced reference (%d rays)",
-                  job.sceneName.c_str(), job.width, job.height, double(job.radius), s.error.rmse,
-                  job.reference ? job.reference->samples : 0);
-    return engineSnippet(t, values, {"ssaolab view: " + t.title + " (" + t.package + " " + t.version + ")", what, b});
+    std::snprintf(b, sizeof b, "the view below at %dx%d, R = %.4g scene units: geometry RMSE %.4f against the ray-traced reference (%d rays)",
+                  job.width, job.height, double(job.radius), s.error.rmse, job.reference ? job.reference->samples : 0);
+    SnippetFacts facts{{"ssaolab view: " + t.title + " (" + t.package + " " + t.version + ")", what, b}, {{"scene", job.sceneName}}};
+    if (s.candidate.tuned()) facts.names.emplace_back("fit", std::filesystem::path(s.candidate.file).filename().string());
+    return engineSnippet(t, values, facts);
 }
 
 // The AO painted as the explorer's views paint a buffer of its own (shaders/display/view.frag):

@@ -26,11 +26,27 @@ void addMotionPathOptions(CLI::App& cmd, CameraPathSpec& spec) {
                    "motion: fraction of the distance to the target the path moves toward it")
         ->capture_default_str()
         ->check(cliRange(-0.5, 0.9));
+    cmd.add_option("--motion-max-mib", spec.maxMib,
+                   "motion: memory the path's frames may keep at once (references, reprojection, AO), checked before any work")
+        ->capture_default_str()
+        ->check(cliRange(16, 1 << 20));
+}
+
+void checkMotionBudget(const CameraPathSpec& spec, int width, int height, size_t truths) {
+    const double mib = double(truths) * spec.frames * double(width) * height * kMotionBytesPerPixelFrame / double(1 << 20);
+    if (mib <= spec.maxMib) return;
+    char b[320];
+    std::snprintf(b, sizeof b,
+                  "motion: %zu path%s of %d frames at %dx%d keep %.0f MiB at once, over --motion-max-mib %u: lower "
+                  "--motion-frames or --size, or raise --motion-max-mib",
+                  truths, truths == 1 ? "" : "s", spec.frames, width, height, mib, spec.maxMib);
+    throw Error(b);
 }
 
 MotionTruth traceMotionTruth(ReferenceProvider& provider, const Bounds& bounds, const Camera& start, int w, int h,
                              const CameraPathSpec& spec, const ReferenceSettings& rs,
                              const std::function<void(double)>& progress, const std::atomic<bool>* cancel) {
+    checkMotionBudget(spec, w, h, 1);
     MotionTruth t;
     t.spec = spec, t.width = w, t.height = h, t.settings = rs;
     t.path = cameraPath(start, spec);

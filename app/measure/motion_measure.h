@@ -23,8 +23,17 @@ class App;
 
 namespace ssao {
 
-// --motion-frames, --motion-orbit, --motion-dolly (render, bench, tune).
+// --motion-frames, --motion-orbit, --motion-dolly, --motion-max-mib (render, bench, tune).
 void addMotionPathOptions(CLI::App& cmd, CameraPathSpec& spec);
+
+// What a path's frames keep at once, per pixel of a frame: the reference's five float images
+// (AO, standard error, depth, geometry, ambiguity), the reprojection to the previous frame and the
+// rendered AO. A run that keeps `truths` paths at once (tune keeps every view's) needs truths x
+// frames x pixels x this.
+constexpr size_t kMotionBytesPerPixelFrame = 5 * 4 + 4 + 4;
+// Throws, before any work, one line naming what the paths would keep against spec.maxMib and the
+// options that change it (--motion-frames, --size, --motion-max-mib).
+void checkMotionBudget(const CameraPathSpec& spec, int width, int height, size_t truths);
 
 struct MotionTruth {
     CameraPathSpec spec;
@@ -41,6 +50,7 @@ struct MotionTruth {
 // The truth of the path from `start` (a camera as set: its clip planes are fitted to `bounds` as the
 // renderer fits them). `progress` gets 0..1 over the whole path. A raised `cancel` is seen between
 // frames (a frame's trace runs to its end and is cached): it throws ssao::Error.
+// It checks its own budget first (checkMotionBudget of one path).
 MotionTruth traceMotionTruth(ReferenceProvider& provider, const Bounds& bounds, const Camera& start, int width,
                              int height, const CameraPathSpec& spec, const ReferenceSettings& rs,
                              const std::function<void(double)>& progress = {},

@@ -5,12 +5,13 @@
 #include "techniques/user/user_technique.h"
 #include "util/error.h"
 #include "util/files.h"
-#include "util/process.h"
+#include "cli/untrusted_child.h"
 
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
-#include <sstream>
+#include <set>
+#include <utility>
 
 namespace fs = std::filesystem;
 
@@ -18,37 +19,12 @@ namespace ssao {
 
 namespace {
 
-constexpr const char* kErrorPrefix = "ssaolab: error: ";
-
-// The probe in its own process: its verdict is its exit code, its "ok HASH" line and its error line.
-void probe(const std::string& program, const std::string& path, const std::string& hash, const std::string& size,
-           bool& ok, std::string& message) {
-    const ProgramRun r = runProgram({program, "--frame-time-limit", std::to_string(TechniqueWatch::kFrameLimitS),
-                                     "probe-technique", path, "--size", size},
-                                    ChildStream::Capture, ChildStream::Capture, TechniqueWatch::kProbeLimitS);
-    std::istringstream lines(r.out);
-    std::string line, error, tested;
-    while (std::getline(lines, line)) {
-        if (line.rfind(kErrorPrefix, 0) == 0 && error.empty()) error = line.substr(std::strlen(kErrorPrefix));
-        const std::string stops = " - the run stops"; // the frame limit's words for a headless run
-        if (error.size() > stops.size() && error.compare(error.size() - stops.size(), stops.size(), stops) == 0)
-            error.resize(error.size() - stops.size());
-        if (line.rfind("ok ", 0) == 0) tested = line.substr(3);
-    }
-    ok = r.started && r.exitCode == 0 && tested == hash;
-    if (ok) return;
-    if (!r.started)
-        message = path + ": the probe could not be started (" + program + ")";
-    else if (r.timedOut)
-        message = path + ": the probe did not finish within " + std::to_string(int(TechniqueWatch::kProbeLimitS)) +
-                  " s (a shader that never ends?)";
-    else if (!error.empty())
-        message = error;
-    else if (r.exitCode == 0)
-        message = path + ": the file changed while it was probed";
-    else
-        message = path + ": the probe ended without a verdict (exit " + std::to_string(r.exitCode) +
-                  (r.exitCode < 0 ? ": a signal - the driver crashed?" : "") + ")";
+// The probe in its own process, handed the bytes checked here (never the file again: a link swapped
+// in meanwhile is not followed); its verdict is its exit code, its "ok HASH" line and its error line.
+ChildVerdict probe(const std::string& program, const std::string& path, const std::string& text, const std::string& size) {
+    return runUntrustedChild(program, {"--frame-time-limit", std::to_string(TechniqueWatch::kFrameLimitS), "probe-technique",
+                                       path, "--size", size},
+                             text, path);
 }
 
 } // namespace
@@ -61,8 +37,8 @@ TechniqueWatch::TechniqueWatch(std::string dir, std::string program, std::functi
     worker_ = std::make_unique<LatestJob<Job, State>>(
         [this](const Job& job) {
             State s;
-            probe(program_, job.path, job.hash, std::to_string(job.width) + "x" + std::to_string(job.height), s.ok,
-                  s.message);
+            const ChildVerdict v = probe(program_, job.path, job.text, std::to_string(job.width) + "x" + std::to_string(job.height));
+            s.ok = v.ok, s.message = v.message;
             s.done = true;
             worker_->publish(job, [&](State& st) { st.done = true, st.ok = s.ok, st.message = s.message; });
         },
@@ -82,8 +58,8 @@ TechniqueWatch::News TechniqueWatch::poll(int width, int height) {
     if (!probing_ && !queue_.empty()) {
         probing_ = queue_.front();
         queue_.pop_front();
-        worker_->start({probing_->path + "#" + probing_->hash, probing_->path, probing_->hash, std::max(width, 16),
-                        std::max(height, 16)});
+        worker_->start({probing_->path + "#" + probing_->hash, probing_->path, probing_->hash, probing_->text,
+                        std::max(width, 16), std::max(height, 16)});
     }
     news.probing = probing_.has_value();
     return news;
@@ -92,41 +68,60 @@ TechniqueWatch::News TechniqueWatch::poll(int width, int height) {
 void TechniqueWatch::scan(News& news) {
     std::vector<std::string> files;
     try {
-        files = listFilesInside(dir_, "", "technique folder", kMaxUserFolderFiles);
+        files = listTechniqueFiles(dir_).files;
     } catch (const Error&) {
-        return; // the folder went away or is too full: what runs keeps running
+        return; // the folder went away: what runs keeps running
     }
-    std::sort(files.begin(), files.end());
+    std::set<std::string> present;
     for (const std::string& f : files) {
-        if (f.find('/') != std::string::npos || f.size() <= 8 || f.compare(f.size() - 8, 8, ".ao.glsl") != 0) continue;
         const std::string path = (fs::path(dir_) / f).string();
+        present.insert(path);
         std::string text;
         try {
             text = readFileInside(dir_, f, "user technique", kMaxUserFileBytes);
         } catch (const Error& e) {
             if (seen_[path] != "unreadable") news.errors.push_back(std::string(e.what()) + " - not adopted");
             seen_[path] = "unreadable";
+            forget(path);
             continue;
         }
         const std::string hash = userTechniqueHash(text);
         if (seen_[path] == hash) continue;
         seen_[path] = hash;
+        queue_.erase(std::remove_if(queue_.begin(), queue_.end(), [&](const Candidate& c) { return c.path == path; }),
+                     queue_.end()); // an older version waiting is replaced
         try {
             loadUserTechnique(text, path, builtinTechniqueIds()); // the header and body rules, first
         } catch (const Error& e) {
             news.errors.push_back(std::string(e.what()) + " - the last good version keeps running");
             continue;
         }
-        queue_.erase(std::remove_if(queue_.begin(), queue_.end(), [&](const Candidate& c) { return c.path == path; }),
-                     queue_.end());
         queue_.push_back({path, hash, std::move(text)});
     }
+    // A file no longer listed (removed, or now a link, a FIFO or a folder) is no version to adopt.
+    for (auto it = seen_.begin(); it != seen_.end();) {
+        if (present.count(it->first)) {
+            ++it;
+            continue;
+        }
+        forget(it->first);
+        it = seen_.erase(it); // read afresh when a regular file is there again
+    }
+}
+
+void TechniqueWatch::forget(const std::string& path) {
+    queue_.erase(std::remove_if(queue_.begin(), queue_.end(), [&](const Candidate& c) { return c.path == path; }),
+                 queue_.end());
+    if (probing_ && probing_->path == path) probingDropped_ = true;
 }
 
 void TechniqueWatch::finish(const State& s, News& news) {
     const Candidate c = *probing_;
     probing_.reset();
-    if (s.ok)
+    const bool dropped = std::exchange(probingDropped_, false);
+    if (dropped)
+        news.errors.push_back(c.path + ": changed while it was probed (now gone, or no longer a regular file) - not adopted");
+    else if (s.ok)
         adopt(c, news);
     else
         news.errors.push_back(s.message + " - the last good version keeps running");

@@ -194,7 +194,20 @@ void ShaderLibrary::setSource(const std::string& name, const std::string& text) 
     sources_[name] = text;
 }
 
+namespace {
+SourceGate& sourceGate() {
+    static SourceGate gate;
+    return gate;
+}
+} // namespace
+
+void setSourceGate(SourceGate gate) {
+    sourceGate() = std::move(gate);
+}
+
 ProgramHandle ShaderLibrary::build(const std::string& vert, const std::string& frag, const Defines& defines) const {
+    if (const SourceGate& gate = sourceGate())
+        if (auto src = sources_.find(frag); src != sources_.end()) gate(dir_, vert, frag, src->second, defines);
     ShaderHandle vs = compile(GL_VERTEX_SHADER, dir_, vert, defines, sources_);
     ShaderHandle fs = compile(GL_FRAGMENT_SHADER, dir_, frag, defines, sources_);
     ProgramHandle prog(glCreateProgram());

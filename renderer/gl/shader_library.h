@@ -8,6 +8,7 @@
 #include "gl/handle.h"
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
@@ -28,6 +29,15 @@ std::string preprocessShader(const std::string& shaderDir, const std::string& fi
 
 // Rewrites driver log lines "0:12(3): error" (Mesa) and "0(12) : error" (NVIDIA) to "file:12: error".
 std::string mapLogToFiles(const std::string& log, const std::vector<std::string>& files);
+
+// Text registered with setSource is untrusted (a user's file): before the driver compiles a program
+// of it, the process's gate - when one is set - is asked with the shader folder, the program's
+// stages, that text and the defines, and may throw ssao::Error to refuse it. The app sets one gate that compiles the same
+// program first in a child process under memory and time limits (app/cli/compile_gate.h), so a
+// compiler that crashes or blows up does it there.
+using SourceGate = std::function<void(const std::string& shaderDir, const std::string& vert, const std::string& frag,
+                                      const std::string& text, const Defines& defines)>;
+void setSourceGate(SourceGate gate);
 
 class ShaderLibrary {
   public:

@@ -12,6 +12,7 @@ struct CameraPathSpec {
     int frames = 8;       // cameras on the path, the start included (2..64)
     float orbitDeg = 4.0f; // total orbit about the target, about the camera's up axis, degrees
     float dolly = 0.1f;   // total move toward the target, as a fraction of the start's distance
+    unsigned maxMib = 2048; // what a run may keep of the path's frames at once (--motion-max-mib; app/measure/motion_measure.h)
 };
 
 // Throws ssao::Error naming the field when a spec is outside its range (frames 2..64, orbit

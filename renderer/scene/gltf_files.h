@@ -29,6 +29,10 @@ bool readFileInFolder(std::vector<unsigned char>* out, std::string* err, const s
 bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*);
 bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*);
 
+// The file as tinygltf reads it (gltf_loader.cpp): regular files only, buffers inside the scene's
+// folder and byte budget, images never decoded; glTF 1.0 and geometry-changing extensions refused.
+tinygltf::Model readModel(const GuardedGltf& g, const std::string& path, SceneFolder& folder);
+
 // Where the MASK textures' bytes come from: files through the same folder and byte budget as the
 // buffers, bufferViews checked to lie inside their buffer.
 ImageSources imageSources(const GuardedGltf& g, const tinygltf::Model& model, SceneFolder& folder);

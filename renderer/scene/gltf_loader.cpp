@@ -223,8 +223,6 @@ std::optional<Camera> cameraFromNode(const tinygltf::Model& m, const tinygltf::N
 
 } // namespace
 
-namespace {
-
 // The file as tinygltf reads it: regular files only, buffers inside the scene's folder, images
 // never decoded; glTF 1.0 and geometry-changing extensions refused by name.
 tinygltf::Model readModel(const GuardedGltf& g, const std::string& path, SceneFolder& folder) {
@@ -258,6 +256,8 @@ tinygltf::Model readModel(const GuardedGltf& g, const std::string& path, SceneFo
                         " (ssaolab reads uncompressed float geometry; it honours EXT_mesh_gpu_instancing and KHR_texture_transform)");
     return model;
 }
+
+namespace {
 
 // The nodes to draw: the default scene's roots, or, in a file without scenes, every node without a
 // parent. glTF 2.0 §3.5.3: a node has at most one parent and the hierarchy is a set of disjoint

@@ -31,34 +31,39 @@ std::string percentDecode(const std::string& uri) {
     return out;
 }
 
+void encodedImage(const ImageSources& src, int image, std::vector<unsigned char>& owned, const unsigned char*& data,
+                  size_t& size) {
+    if (!src.images || !src.images->is_array() || image < 0 || size_t(image) >= src.images->size())
+        throw Error("no such image");
+    const nlohmann::json& img = (*src.images)[size_t(image)];
+    if (!img.is_object()) throw Error("the image is not an object");
+    if (img.contains("bufferView")) {
+        if (!img["bufferView"].is_number_integer()) throw Error("its bufferView is not an index");
+        const auto view = src.bufferView(img["bufferView"].get<int>());
+        data = view.first, size = view.second;
+        return;
+    }
+    if (!img.contains("uri") || !img["uri"].is_string()) throw Error("it has neither a uri nor a bufferView");
+    const std::string uri = img["uri"].get<std::string>();
+    if (uri.rfind("data:", 0) == 0) {
+        std::string mime; // tinygltf's decoder: the base64 data URIs glTF allows for images
+        if (!tinygltf::DecodeDataURI(&owned, mime, uri, 0, false))
+            throw Error("its data URI is not a base64 image or octet-stream");
+    } else {
+        owned = src.readUri(percentDecode(uri));
+    }
+    data = owned.data(), size = owned.size();
+}
+
 std::vector<unsigned char> MaskTextures::encoded(int image, const std::string& who, const unsigned char*& data,
                                                  size_t& size) {
     const std::string at = what_ + ": image " + std::to_string(image) + " (the base-colour texture of " + who + ")";
-    if (!src_.images || !src_.images->is_array() || image < 0 || size_t(image) >= src_.images->size())
-        throw Error(at + " does not exist");
-    const nlohmann::json& img = (*src_.images)[size_t(image)];
-    if (!img.is_object()) throw Error(at + " is not an object");
     std::vector<unsigned char> owned;
     try {
-        if (img.contains("bufferView")) {
-            if (!img["bufferView"].is_number_integer()) throw Error("its bufferView is not an index");
-            const auto view = src_.bufferView(img["bufferView"].get<int>());
-            data = view.first, size = view.second;
-            return owned;
-        }
-        if (!img.contains("uri") || !img["uri"].is_string()) throw Error("it has neither a uri nor a bufferView");
-        const std::string uri = img["uri"].get<std::string>();
-        if (uri.rfind("data:", 0) == 0) {
-            std::string mime; // tinygltf's decoder: the base64 data URIs glTF allows for images
-            if (!tinygltf::DecodeDataURI(&owned, mime, uri, 0, false))
-                throw Error("its data URI is not a base64 image or octet-stream");
-        } else {
-            owned = src_.readUri(percentDecode(uri));
-        }
+        encodedImage(src_, image, owned, data, size);
     } catch (const Error& e) {
         throw Error(at + ": " + e.what());
     }
-    data = owned.data(), size = owned.size();
     return owned;
 }
 

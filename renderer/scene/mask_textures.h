@@ -46,4 +46,10 @@ class MaskTextures {
 
 std::string percentDecode(const std::string& uri);
 
+// The encoded bytes of image `image` of `src`: a view of its bufferView (`data`, `size`) or the
+// bytes of its data URI or file in `owned`. Throws ssao::Error saying why not (no image, no uri nor
+// bufferView, a bad data URI, a file outside the folder or its budget).
+void encodedImage(const ImageSources& src, int image, std::vector<unsigned char>& owned, const unsigned char*& data,
+                  size_t& size);
+
 } // namespace ssao

@@ -24,7 +24,14 @@ std::string stagingName(const std::string& path) {
 void checkOutputPath(const std::string& path) {
     struct stat st{};
     if (::lstat(path.c_str(), &st) != 0) {
-        if (errno == ENOENT) return; // absent: it will be created
+        if (errno == ENOENT) { // absent: it will be created, in a folder that must be there now
+            const size_t slash = path.find_last_of('/');
+            const std::string parent = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+            struct stat dir{};
+            if (::stat(parent.c_str(), &dir) != 0 || !S_ISDIR(dir.st_mode))
+                throw Error("cannot write " + path + ": the folder " + parent + " does not exist");
+            return;
+        }
         throw Error("cannot write " + path + ": " + std::strerror(errno));
     }
     if (!S_ISREG(st.st_mode))

@@ -13,7 +13,7 @@ namespace ssao {
 // (O_EXCL, O_NOFOLLOW) under a name unique to the process and the call, so a link planted at it
 // cannot redirect the write and two processes writing one folder never share it.
 void writeFileAtomically(const std::string& path, const std::string& bytes);
-// The destination check alone: absent, or a regular file.
+// The destination check alone: absent in a folder that exists, or a regular file.
 void checkOutputPath(const std::string& path);
 
 } // namespace ssao

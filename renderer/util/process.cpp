@@ -1,5 +1,7 @@
 #include "util/process.h"
 
+#include "util/error.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -10,6 +12,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -102,6 +105,24 @@ ProgramRun runProgram(const std::vector<std::string>& argv, ChildStream out, Chi
     }
     if (capture) ::close(fds[0]);
     return run;
+}
+
+// A sanitizer's shadow memory takes terabytes of address space: no limit there.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define SSAO_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define SSAO_SANITIZED 1
+#endif
+#endif
+
+void limitAddressSpace(unsigned mib) {
+#ifdef SSAO_SANITIZED
+    (void)mib;
+#else
+    const rlimit r{rlim_t(mib) << 20, rlim_t(mib) << 20};
+    if (::setrlimit(RLIMIT_DATA, &r) != 0) throw Error("cannot limit this process's memory to " + std::to_string(mib) + " MiB");
+#endif
 }
 
 } // namespace ssao

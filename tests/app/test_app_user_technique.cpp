@@ -162,3 +162,26 @@ TEST_F(AppUserTechnique, TheProbeRendersAtTheExplorersSizeSoAShaderTooSlowThereI
     ui_->frames(2);
     EXPECT_NEAR(meanAo(), 0.5, 1e-6); // the last good version
 }
+
+TEST_F(AppUserTechnique, AVersionWhoseFileBecomesALinkWhileItIsProbedIsDropped) {
+    // The probe tests the bytes checked here, never the path again: a link swapped in meanwhile -
+    // even to a file outside the folder holding the very same text - is not followed, and the
+    // version it replaced is not adopted.
+    const std::string outside = std::string(SSAOLAB_TEST_TMP) + "/app_techniques_outside.ao.glsl";
+    writeTemp("app_techniques_outside.ao.glsl", flat("    return value * 0.5;"));
+    write(flat("    return value * 0.5;"));
+    ui_->app().pollShaderReload(); // read, checked and handed to its probe
+    fs::remove(dir_ + "/flat.ao.glsl");
+    fs::create_symlink(outside, dir_ + "/flat.ao.glsl");
+    awaitVerdict();
+    const std::string error = ui_->app().frames().shaderError();
+    EXPECT_NE(error.find("changed while it was probed"), std::string::npos) << error;
+    EXPECT_EQ(ui_->app().status().find("new version running"), std::string::npos) << ui_->app().status();
+    for (int i = 0; i < 10; ++i) { // later scans: the link is never read, nothing else is adopted
+        ui_->app().pollShaderReload();
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    ui_->app().renderer().invalidate();
+    ui_->frames(2);
+    EXPECT_NEAR(meanAo(), 0.5, 1e-6); // the first version still runs
+}

@@ -52,10 +52,23 @@ nlohmann::json runSnippet(const std::string& variable, const std::string& snippe
         "  });\n"
         "}\n"
         "const " + variable + " = mock('');\n";
-    const std::string file = writeTemp("snippet_" + tag + ".js", mock + snippet + "\nconsole.log(JSON.stringify(recorded));\n");
-    const ssao::ProgramRun r = ssao::runProgram({"node", file}, ssao::ChildStream::Capture, ssao::ChildStream::Capture);
-    EXPECT_EQ(r.exitCode, 0) << r.out;
-    return r.exitCode == 0 ? nlohmann::json::parse(r.out) : nlohmann::json();
+    // Nothing but the recorded writes may leave the snippet: a global it made is reported too.
+    const std::string tail = "\nconst extra = ['pwned', 'alert'].filter((k) => k in globalThis);\n"
+                             "if (extra.length) recorded['globals: ' + extra.join(',')] = 1;\n"
+                             "console.log(JSON.stringify(recorded));\n";
+    nlohmann::json got;
+    for (const char* ext : {".js", ".mjs"}) { // a script, then a module
+        const std::string file = writeTemp("snippet_" + tag + ext, mock + snippet + tail);
+        const ssao::ProgramRun r = ssao::runProgram({"node", file}, ssao::ChildStream::Capture, ssao::ChildStream::Capture);
+        EXPECT_EQ(r.exitCode, 0) << ext << ":\n" << snippet << r.out;
+        if (r.exitCode != 0) return nlohmann::json();
+        const nlohmann::json j = nlohmann::json::parse(r.out);
+        if (!got.is_null()) {
+            EXPECT_EQ(j, got) << "the script and the module set different values";
+        }
+        got = j;
+    }
+    return got;
 }
 
 
@@ -126,7 +139,7 @@ TEST(EngineTables, DefaultsAreThePinnedPackagesOwn) {
     }
 }
 
-TEST(EngineSnippet, ParsesAsJavaScriptAndSetsExactlyTheTunedValues) {
+TEST(EngineSnippet, HostileNamesParseAsScriptAndModuleAndSetOnlyTheTunedValues) {
     ASSERT_TRUE(nodeRuns()) << "Node.js is not installed (make deps)";
     for (const std::string& n : ssao::engineNames()) {
         const ssao::EngineTable t = ssao::findEngine(n);
@@ -138,10 +151,22 @@ TEST(EngineSnippet, ParsesAsJavaScriptAndSetsExactlyTheTunedValues) {
                 values.emplace_back(p.name, v);
                 want[p.writeCall.empty() ? p.writePath : p.writeCall + "(" + p.writeKey + ")"] = v;
             }
-        const std::string snippet = ssao::engineSnippet(t, values, {"tuned on\nscene.gltf", "second line"});
-        const std::string file = writeTemp("snippet_" + n + "_alone.js", snippet);
-        const ssao::ProgramRun check = ssao::runProgram({"node", "--check", file}, ssao::ChildStream::Capture, ssao::ChildStream::Capture);
-        EXPECT_EQ(check.exitCode, 0) << n << ":\n" << snippet << check.out;
+        // Names that end a // comment (U+2028, U+2029, CR), hide the rest of a line (<!--), close a
+        // string or a <script>, and bytes that are not UTF-8: none may run or set anything.
+        const std::string live = "globalThis.pwned=2;<!--";
+        const std::vector<std::string> hostile = {"a\xe2\x80\xa8" + live + ".gltf", "b\xe2\x80\xa9" + live, "c\r" + live,
+                                                  "d\n" + live, "e\"; " + live + " \"\\", "</script><script>alert(1)</script>",
+                                                  "f*/ " + live + " /*", "\xff\xfe\xc0\xaf" + live, "\xf0\x9f\x98\x80 ${live}`"};
+        ssao::SnippetFacts facts;
+        for (const std::string& h : hostile) facts.notes.push_back("tuned on " + h);
+        for (size_t i = 0; i < hostile.size(); ++i) facts.names.emplace_back("name" + std::to_string(i), hostile[i]);
+        const std::string snippet = ssao::engineSnippet(t, values, facts);
+        for (const char* ext : {".js", ".mjs"}) {
+            const std::string file = writeTemp("snippet_" + n + "_alone" + ext, snippet);
+            const ssao::ProgramRun check = ssao::runProgram({"node", "--check", file}, ssao::ChildStream::Capture, ssao::ChildStream::Capture);
+            EXPECT_EQ(check.exitCode, 0) << n << ext << ":\n" << snippet << check.out;
+        }
+        for (unsigned char c : snippet) EXPECT_TRUE(c == '\n' || (c >= 0x20 && c < 0x7f)) << n << ": byte " << int(c);
         const nlohmann::json got = runSnippet(t.variable, snippet, n);
         ASSERT_EQ(got.size(), want.size()) << n << ":\n" << snippet << got.dump();
         for (const auto& [key, v] : want)

@@ -113,7 +113,11 @@ class PathOptions : public ::testing::Test {
             return {{{"--scene", "builtin:corner"}, {"--out", "run_out"}}, "--technique sao --size 64x36"};
         if (command == "view")
             return {{{"--scene", "builtin:corner"}, {"--screenshot", "run_out.png"}}, "--size 320x240 --frames 1"};
-        if (command == "probe-technique") return {{}, ""}; // its one argument, the file
+        if (command == "probe-technique")
+            return {{{"file", std::string(SSAOLAB_SOURCE_DIR) + "/examples/techniques/learnopengl.ao.glsl"}}, "--size 32x18"};
+        if (command == "compile-glsl")
+            return {{{"name", "x.frag"}, {"--source", writeTemp("paths_compile_source.frag", "#version 450 core\nlayout(location = 0) out vec4 o;\nvoid main() { o = vec4(1.0); }\n")}},
+                    ""};
         if (command.empty()) // the global options (--technique-dir), given to a render
             return {{}, "render --scene builtin:corner --out run_out " + common("render")};
         ADD_FAILURE() << "no recipe for `ssaolab " << command << "`: add one so its path options are tried";

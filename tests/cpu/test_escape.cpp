@@ -93,3 +93,22 @@ TEST(Escape, AnErrorLineIsBoundedAndKeepsWhatWasExpected) {
         if (static_cast<unsigned char>(line[i]) == 0xc3) EXPECT_EQ(static_cast<unsigned char>(line[i + 1]), 0xa9);
     EXPECT_EQ(ssao::oneLine(std::string(600, 'a')), std::string(600, 'a')); // a line that fits is whole
 }
+
+TEST(Escape, JsStringIsPrintableAsciiThatNothingEnds) {
+    EXPECT_EQ(ssao::jsString("plain name.gltf"), "\"plain name.gltf\"");
+    EXPECT_EQ(ssao::jsString("a\"b\\c"), "\"a\\\"b\\\\c\"");
+    EXPECT_EQ(ssao::jsString("x\xe2\x80\xa8y\xe2\x80\xa9z"), "\"x\\u2028y\\u2029z\""); // line ends in JavaScript
+    EXPECT_EQ(ssao::jsString("</script><!--"), "\"\\u003C/script\\u003E\\u003C!--\"");
+    EXPECT_EQ(ssao::jsString("\n\r\t\x7f"), "\"\\u000A\\u000D\\u0009\\u007F\"");
+    EXPECT_EQ(ssao::jsString("\xf0\x9f\x98\x80"), "\"\\uD83D\\uDE00\""); // a surrogate pair
+    EXPECT_EQ(ssao::jsString("\xe9"), "\"\\uFFFD\"");                        // a lone Latin-1 byte
+    EXPECT_EQ(ssao::jsString("\xc0\xaf"), "\"\\uFFFD\\uFFFD\"");              // an overlong '/'
+    EXPECT_EQ(ssao::jsString("\xed\xa0\x80"), "\"\\uFFFD\\uFFFD\\uFFFD\"");   // an encoded surrogate
+    for (int c = 0; c < 256; ++c)
+        for (unsigned char b : ssao::jsString(std::string(1, char(c)) + "\xe2\x80")) EXPECT_TRUE(b >= 0x20 && b < 0x7f) << c;
+}
+
+TEST(Escape, JsCommentTextKeepsOnlyPrintableAscii) {
+    EXPECT_EQ(ssao::jsCommentText("R = 0.5 (640x360)"), "R = 0.5 (640x360)");
+    EXPECT_EQ(ssao::jsCommentText("a\xe2\x80\xa8" "b\nc\rd"), "a???b?c?d");
+}

@@ -1,10 +1,12 @@
 // libFuzzer target: a user technique's file (NAME.ao.glsl, techniques/user/user_header.h). The
 // header parser, then for every header it accepts the GLSL and the block's bytes at its defaults;
-// the first line also goes to the file-name rule. Any ssao::Error from the parser is a correct
+// the body's limits (user_source.h checkUserBody: macros measured under a work budget, never
+// expanded); the first line also goes to the file-name rule. Any ssao::Error from the parser is a correct
 // answer; a crash, a sanitizer report, another exception type, or an accepted header whose
 // defaults do not pack or whose strings are not printable ASCII is not.
 #include "techniques/technique.h"
 #include "techniques/user/user_header.h"
+#include "techniques/user/user_source.h"
 #include "util/error.h"
 
 #include <cstdint>
@@ -55,6 +57,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     } catch (const ssao::Error&) {
     }
     if (h) checkAccepted(*h);
+    try {
+        ssao::checkUserBody(text, "fuzz.ao.glsl");
+    } catch (const ssao::Error&) {
+    }
     try {
         ssao::userTechniqueName(text.substr(0, text.find('\n')), ids);
     } catch (const ssao::Error&) {

@@ -28,16 +28,17 @@ try {
 }
 let failed = false;
 try {
-    const { page, setup } = session;
+    const { evaluate, setup } = session;
     fs.mkdirSync(args.out, { recursive: true });
     const results = { renderer: setup.renderer, three_revision: setup.three, jobs: new Array(spec.jobs.length) };
     // By view, so each view's passes are built once.
     const order = spec.jobs.map((_, i) => i).sort((a, b) => spec.jobs[a].view - spec.jobs[b].view || a - b);
     for (const i of order) {
         const job = spec.jobs[i], view = spec.views[job.view];
-        await page.evaluate(([k, c, r]) => window.setEngineView(k, c, r), [job.view, view.camera, view.radius]);
+        await evaluate(`view ${job.view}`, ([k, c, r]) => window.setEngineView(k, c, r),
+                       [job.view, view.camera, view.radius]);
         const peer = job.peer ?? spec.peer, params = job.peer ? spec.tables[job.peer] : spec.params;
-        const r = await page.evaluate((j) => window.runEngine(j),
+        const r = await evaluate(`job ${i}`, (j) => window.runEngine(j),
             { peer, params, values: job.values ?? {}, scale: job.scale ?? {}, frames: job.frames ?? spec.frames ?? 0 });
         fs.writeFileSync(path.join(args.out, path.basename(job.image)), pgmBytes(r.ao, width, height));
         const { ao, ...rest } = r;

@@ -13,10 +13,16 @@ const [width, height] = args.size.split('x').map(Number);
 const frames = Number(args.frames ?? 20);
 const peers = (args.peers ?? 'ssao,sao,gtao,n8ao').split(',');
 const metrics = JSON.parse(fs.readFileSync(args.metrics, 'utf8'));
-const session = await openSession({ modules: args.modules, sceneFile: args.scene, width, height,
-                                    camera: metrics.camera, radius: Number(args.radius), tool: 'run_peers' });
+let session;
 try {
-    const { page, setup } = session;
+    session = await openSession({ modules: args.modules, sceneFile: args.scene, width, height,
+                                  camera: metrics.camera, radius: Number(args.radius), tool: 'run_peers' });
+} catch (e) {
+    console.error(`run_peers: ${e.message.split('\n')[0]}`);
+    process.exit(1);
+}
+try {
+    const { evaluate, setup } = session;
     console.log(`run_peers: ${setup.renderer}; three.js r${setup.three}; ${setup.hidden} of ${setup.meshes} meshes transparent (hidden); ${setup.flipped} vertex normals turned to their winding`);
     fs.mkdirSync(args.out, { recursive: true });
     const results = { renderer: setup.renderer, three_revision: setup.three, width, height, frames,
@@ -25,7 +31,7 @@ try {
         const [name, ...kv] = spec.split(':');
         const opts = Object.fromEntries(kv.map((t) => t.split('=')).map(([k, v]) => [k, Number(v)]));
         const label = [name, ...kv.map((t) => t.replace('=', ''))].join('_');
-        const r = await page.evaluate(([n, o, f]) => window.runPeer(n, o, f), [name, opts, frames]);
+        const r = await evaluate(label, ([n, o, f]) => window.runPeer(n, o, f), [name, opts, frames]);
         fs.writeFileSync(path.join(args.out, `${label}.pgm`), pgmBytes(r.ao, width, height));
         console.log(`run_peers: ${label}: frame ${r.frame_ms.toFixed(1)} ms, RenderPass alone ${r.plain_ms.toFixed(1)} ms, AO + denoise ${r.ao_ms.toFixed(1)} ms`);
         results.peers.push({ name, label, settings: opts, frame_ms: r.frame_ms, plain_ms: r.plain_ms, ao_ms: r.ao_ms, image: `${label}.pgm` });

@@ -276,6 +276,7 @@ int runBench(const BenchOptions& o) {
     // Everything that needs no GL first: bad input fails in milliseconds with one line.
     int w = 0, h = 0;
     parseSizeOption(o.size, w, h);
+    if (o.motion) checkMotionBudget(o.motionPath, w, h, 1); // one view's path at a time
     const ShardSpec shard = parseShard(o.shard);
     std::vector<std::string> specs = o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
     BenchEngines engines(o.engines, specs, w, h, o.frames); // a missing browser or a builtin scene: refused here

@@ -7,6 +7,7 @@
 #include "cli/cli_util.h"
 #include "metrics/evaluate.h"
 #include "cli/progress_bar.h"
+#include "scene/browser_assets.h"
 #include "scene/scene.h"
 #include "settings/params.h"
 #include "settings/preset.h"
@@ -88,6 +89,8 @@ BenchEngines::BenchEngines(const BenchEngineOptions& o, const std::vector<std::s
                         "; name glTF scenes with --scene FILE.gltf");
     for (const EngineTable& t : tables_)
         tools_ = locateEngineTools(o.modules, t, "bench --engines");
+    for (const std::string& spec : sceneSpecs) // what the browser would load, before any work (EngineRunner again)
+        checkBrowserAssets(spec);
 }
 
 size_t BenchEngines::tableOf(const std::string& engine) {

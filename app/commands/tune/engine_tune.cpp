@@ -3,6 +3,7 @@
 #include "measure/bench_run.h"
 #include "commands/tune/engine_compare.h"
 #include "engines/engine_runner.h"
+#include "engines/engine_settings_file.h"
 #include "commands/tune/engine_tune_page.h"
 #include "commands/tune/engine_tuner.h"
 #include "engines/engine_snippet.h"
@@ -15,6 +16,7 @@
 #include "cli/progress_bar.h"
 #include "reference/reference_cache.h"
 #include "cli/scene_options.h"
+#include "scene/browser_assets.h"
 #include "scene/view_fit.h"
 #include "settings/preset.h"
 #include "util/atomic_file.h"
@@ -269,9 +271,11 @@ void save(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& k
     }
     const Scene& sc = t.scenes()[v.scene];
     char head[400];
-    std::snprintf(head, sizeof head, "fitted to the ray-traced reference on %s (view '%s', %dx%d, R = %.4g scene units); held-out RMSE %.4f -> %.4f",
-                  sc.name.c_str(), v.viewpoint.c_str(), w, h, o.radiusScene * 2.0 * sc.bounds.radius(), r.verdict.before, r.verdict.after);
-    const std::string snippet = engineSnippet(tab, ordered, {"ssaolab tune --engine " + tab.engine + ": " + tab.title + " (" + tab.package + " " + tab.version + ")", head});
+    std::snprintf(head, sizeof head, "fitted to the ray-traced reference on the scene and view below (%dx%d, R = %.4g scene units); held-out RMSE %.4f -> %.4f",
+                  w, h, o.radiusScene * 2.0 * sc.bounds.radius(), r.verdict.before, r.verdict.after);
+    const SnippetFacts facts{{"ssaolab tune --engine " + tab.engine + ": " + tab.title + " (" + tab.package + " " + tab.version + ")", head},
+                             {{"scene", sc.name}, {"view", v.viewpoint}}};
+    const std::string snippet = engineSnippet(tab, ordered, facts);
     const std::string js = snippetPath(o);
     std::error_code ec;
     const nlohmann::json out = {
@@ -282,6 +286,7 @@ void save(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& k
                   {"camera", cameraToJson(cameraToFile(v.camera, sc))}, {"size", {w, h}}, {"radius", o.radiusScene * 2.0 * sc.bounds.radius()}}},
         {"scores", scoresJson(o, r)}, {"per_scene", perSceneJson(t, r)}, {"tuning_seconds", seconds}, {"browser_sessions", t.sessions()},
         {"snippet", std::filesystem::path(js).filename().string()}};
+    parseTunedEngine(out, o.out); // what bench --engine-settings will accept, checked by the same reader
     writeFileAtomically(o.out, dumpJson(out) + "\n");
     writeFileAtomically(js, snippet);
     if (!o.quiet) std::printf("saved %s and %s\n", o.out.c_str(), js.c_str());
@@ -315,6 +320,10 @@ int runEngineTune(const TuneOptions& o) {
     parseSizeOption(o.size, w, h);
     EngineTable table = findEngine(o.engine.engine);
     refuseTechniqueOptions(o, table);
+    for (const std::string& spec : o.scenes) // what the browser would load, before any work (EngineRunner again)
+        checkBrowserAssets(spec);
+    for (const std::string& spec : o.heldOutScenes)
+        checkBrowserAssets(spec);
     checkOutputPath(o.out); // before minutes of tuning
     checkOutputPath(snippetPath(o));
     checkOutputPath(pagePath(o));

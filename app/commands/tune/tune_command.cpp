@@ -399,6 +399,8 @@ int runTune(const TuneOptions& o) {
         throw Error("--budget-ms and --budget-ratio choose an engine's sample counts: add --engine NAME (bench --budget-ms answers for ssaolab's techniques)");
     int w = 0, h = 0;
     parseSizeOption(o.size, w, h);
+    if (o.objective == "motion") // every view's path is kept for the whole search
+        checkMotionBudget(o.motionPath, w, h, size_t(o.views) * (o.scenes.size() + o.heldOutScenes.size() + (o.scenes.empty() ? 1 : 0)));
     checkOutputPath(o.out); // before minutes of tuning: a device or a FIFO is never replaced
     findTechnique(o.technique); // throws naming the choices
     Settings start = defaultSettings();

@@ -44,6 +44,28 @@ std::shared_ptr<const UserTechnique> readUserTechnique(const std::string& path) 
     return std::make_shared<UserTechnique>(loadUserTechnique(text, path, builtinTechniqueIds()));
 }
 
+TechniqueFolderList listTechniqueFiles(const std::string& dir) {
+    TechniqueFolderList list;
+    std::error_code ec;
+    size_t seen = 0;
+    for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+        if (++seen > kMaxUserFolderEntries) {
+            list.truncated = true;
+            break;
+        }
+        const std::string name = it->path().filename().string();
+        const auto st = it->symlink_status(ec);
+        if (!ec && fs::is_regular_file(st) && isTechniqueFile(name)) list.files.push_back(name);
+    }
+    if (ec) throw Error("technique folder " + dir + ": cannot list it (" + ec.message() + ")");
+    std::sort(list.files.begin(), list.files.end());
+    if (list.files.size() > kMaxUserFolderFiles) {
+        list.over.assign(list.files.begin() + long(kMaxUserFolderFiles), list.files.end());
+        list.files.resize(kMaxUserFolderFiles);
+    }
+    return list;
+}
+
 UserTechniqueScan scanUserTechniques(const std::string& dir, bool mustExist) {
     UserTechniqueScan scan;
     std::error_code ec;
@@ -53,10 +75,19 @@ UserTechniqueScan scanUserTechniques(const std::string& dir, bool mustExist) {
         return scan;
     }
     if (!fs::is_directory(st)) throw Error("technique folder " + dir + " is not a folder");
-    std::vector<std::string> files = listFilesInside(dir, "", "technique folder", kMaxUserFolderFiles);
-    std::sort(files.begin(), files.end());
-    for (const std::string& f : files) {
-        if (!isTechniqueFile(f)) continue;
+    const TechniqueFolderList list = listTechniqueFiles(dir);
+    const std::string cap = std::to_string(kMaxUserFolderFiles);
+    for (const std::string& f : list.over)
+        scan.over.emplace_back(idOf(f), (fs::path(dir) / f).string() + ": not loaded: the technique folder holds more than " +
+                                            cap + " technique files (the first " + cap + " by name are)");
+    if (!list.over.empty() || list.truncated)
+        scan.overWarning = "technique folder " + dir + ": " +
+                           (list.truncated ? "more than " + std::to_string(kMaxUserFolderEntries) + " entries, the rest not read; "
+                                           : std::string()) +
+                           (list.over.empty() ? std::string("")
+                                              : std::to_string(list.over.size()) + " technique files past the first " + cap +
+                                                    " by name are not loaded (" + list.over.front() + " ... " + list.over.back() + ")");
+    for (const std::string& f : list.files) {
         const std::string path = (fs::path(dir) / f).string();
         try {
             std::string text;

@@ -4,28 +4,10 @@
 
 #include "../../../shaders/include/bindings.h"
 
-#include <sstream>
 
 namespace ssao {
 
 namespace {
-
-// Whether a line of the body is a preprocessor #include (blanks allowed around '#').
-bool isInclude(const std::string& line) {
-    size_t i = line.find_first_not_of(" \t");
-    if (i == std::string::npos || line[i] != '#') return false;
-    i = line.find_first_not_of(" \t", i + 1);
-    return i != std::string::npos && line.compare(i, 7, "include") == 0;
-}
-
-void checkBody(const UserTechnique& t) {
-    std::istringstream in(t.text);
-    std::string line;
-    for (int no = 1; std::getline(in, line); ++no)
-        if (isInclude(line))
-            throw Error(t.path + ":" + std::to_string(no) +
-                        ": #include is not available to a user technique (interface 1 offers what it can read)");
-}
 
 void checkNames(const UserTechnique& t) {
     for (const UserParam& p : t.header.params) {
@@ -48,7 +30,7 @@ UserTechnique loadUserTechnique(const std::string& text, const std::string& path
     t.header = parseUserHeader(text, path, builtinIds);
     t.hash = userTechniqueHash(text);
     checkNames(t);
-    checkBody(t);
+    checkUserBody(t.text, t.path);
     return t;
 }
 

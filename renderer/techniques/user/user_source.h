@@ -27,6 +27,19 @@ struct UserTechnique {
 UserTechnique loadUserTechnique(const std::string& text, const std::string& path,
                                 const std::vector<std::string>& builtinIds);
 
+// The body's limits, checked on its tokens before any compiler sees it (user_body.cpp): no
+// #include, #line, #version, #extension or ## token pasting; macros measured as they would expand
+// (each #define's brackets balanced); at most kMaxUserExpandedTokens tokens and steps of macro
+// expansion, kMaxUserStatementTokens tokens in one statement (the compiler's recursion on one
+// expression), kMaxUserNesting levels of brackets and kMaxUserArrayElements elements in an array
+// of a constant size. What these checks cannot see (a size the driver folds from a function) meets
+// the compile gate's child process (gl/shader_library.h setSourceGate). Throws "PATH:LINE: ...".
+constexpr int kMaxUserExpandedTokens = 1 << 17;
+constexpr int kMaxUserStatementTokens = 8192;
+constexpr int kMaxUserNesting = 64;
+constexpr int kMaxUserArrayElements = 4096;
+void checkUserBody(const std::string& text, const std::string& path);
+
 // The fragment shader's source (the shader loader inlines its includes from shaders/).
 std::string userShaderSource(const UserTechnique& t);
 
