@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build engine-modules run test docs screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column user-twins layers
+.PHONY: deps configure build engine-modules run test docs screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column user-twins layers temporal
 
 deps:
 	@bash .ci/install-deps.sh
@@ -101,6 +101,11 @@ user-twins: build
 # second peeled and in the single pass, and what nested parts need (~10 minutes on llvmpipe).
 layers: build
 	@bash .ci/layers.sh $(BUILD) $(SCENES)
+
+# docs/bench/temporal.md: GTAO high and the bitmask with and without temporal accumulation along an
+# orbit and a dolly on every shared scene, at each memory in motion and with the noise off (~5 minutes).
+temporal: build
+	@bash .ci/temporal.sh $(BUILD) $(SCENES)
 
 # docs/stability.md: every technique under extreme projections, scales, placements, precisions and
 # parameter limits (`ssaolab stress`).

@@ -32,6 +32,19 @@ void addMotionPathOptions(CLI::App& cmd, CameraPathSpec& spec) {
         ->check(cliRange(16, 1 << 20));
 }
 
+std::vector<std::string> unusedMotionOptions(const CameraPathSpec& spec, const std::string& needs) {
+    const CameraPathSpec d;
+    std::vector<std::string> out;
+    auto note = [&](bool set, const std::string& option) {
+        if (set) out.push_back(option + " does nothing without " + needs + " (no camera path is measured)");
+    };
+    note(spec.frames != d.frames, "--motion-frames " + std::to_string(spec.frames));
+    note(spec.orbitDeg != d.orbitDeg, "--motion-orbit");
+    note(spec.dolly != d.dolly, "--motion-dolly");
+    note(spec.maxMib != d.maxMib, "--motion-max-mib");
+    return out;
+}
+
 void checkMotionBudget(const CameraPathSpec& spec, int width, int height, size_t truths) {
     const double mib = double(truths) * spec.frames * double(width) * height * kMotionBytesPerPixelFrame / double(1 << 20);
     if (mib <= spec.maxMib) return;
@@ -169,15 +182,25 @@ nlohmann::json motionJson(const MotionMetrics& m, const MotionTruth& t) {
 }
 
 std::string motionLine(const MotionMetrics& m, const MotionTruth& t) {
+    // A figure no pixel backs is "n/a", never "nan".
+    auto fig = [](double v, const char* spec) {
+        char s[32];
+        std::snprintf(s, sizeof s, spec, v);
+        return std::isfinite(v) ? std::string(s) : std::string("n/a");
+    };
+    const std::string ghosting =
+        ghostingText(m) + (std::isfinite(m.ghosting) ? " (MAE " + fig(m.disoccludedMae, "%.4f") + " at " +
+                                                           std::to_string(m.disoccludedPixels) + " disoccluded pixels, "
+                                                     : " (fewer than " + std::to_string(MotionOptions{}.minGhostPixels) +
+                                                           " disoccluded pixels back a figure; ");
     char b[512];
     std::snprintf(b, sizeof b,
                   "motion (%d frames, orbit %.3g deg, dolly %.3g, %d-ray references%s): RMSE mean %.4f, max %.4f; "
-                  "instability %.4f (reference floor %.4f); ghosting %+.4f (MAE %.4f at %ld disoccluded pixels, "
-                  "%.4f stable, %.4f stable near edges)",
+                  "instability %s (reference floor %s); ghosting %s%s stable, %s stable near edges)",
                   t.spec.frames, t.spec.orbitDeg, t.spec.dolly, t.settings.samples,
-                  t.cached == t.spec.frames ? ", cached" : "", m.rmseMean, m.rmseMax, m.instability,
-                  m.instabilityFloor, m.ghosting, m.disoccludedMae, m.disoccludedPixels, m.stableMae,
-                  m.stableEdgeMae);
+                  t.cached == t.spec.frames ? ", cached" : "", m.rmseMean, m.rmseMax, fig(m.instability, "%.4f").c_str(),
+                  fig(m.instabilityFloor, "%.4f").c_str(), ghosting.c_str(), fig(m.stableMae, "%.4f").c_str(),
+                  fig(m.stableEdgeMae, "%.4f").c_str());
     return b;
 }
 

@@ -31,6 +31,10 @@ void addMotionPathOptions(CLI::App& cmd, CameraPathSpec& spec);
 // rendered AO. A run that keeps `truths` paths at once (tune keeps every view's) needs truths x
 // frames x pixels x this.
 constexpr size_t kMotionBytesPerPixelFrame = 5 * 4 + 4 + 4;
+// Warnings for path options set away from their defaults in a run that has no path (`needs`: the
+// option that makes one, "--motion" or "--objective motion"), as settings that do nothing are named.
+std::vector<std::string> unusedMotionOptions(const CameraPathSpec& spec, const std::string& needs);
+
 // Throws, before any work, one line naming what the paths would keep against spec.maxMib and the
 // options that change it (--motion-frames, --size, --motion-max-mib).
 void checkMotionBudget(const CameraPathSpec& spec, int width, int height, size_t truths);

@@ -238,7 +238,7 @@ static std::string motionMarkdown(const BenchRun& run) {
     for (size_t i = 0; i < moving.size(); ++i) {
         const ConfigSummary& s = *moving[i];
         md << "| " << markdownCell(run.sweep.configs[s.config].label) << " | " << num(s.rmse, 4) << " | "
-           << num(s.motion.rmseMean, 4) << " | " << num(s.motion.instability, 4) << " | " << num(s.motion.ghosting, 3)
+           << num(s.motion.rmseMean, 4) << " | " << num(s.motion.instability, 4) << " | " << (std::isfinite(s.motion.ghosting) ? num(s.motion.ghosting, 3) : std::string("n/a"))
            << " | " << num(score(s), 4) << " | " << stillRank[s.config] << " | " << i + 1 << " |\n";
     }
     return md.str();

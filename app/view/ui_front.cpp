@@ -34,9 +34,9 @@ std::string pointText(const FrontPoint& p, const FrontPoint* base) {
     if (p.motion)
         std::snprintf(b, sizeof b,
                       "%s\n%.3f ms GPU (AO + denoise)%s\nmotion score %.4f%s: per-frame RMSE %.4f, instability "
-                      "%.4f, ghosting %+.4f\nstill RMSE %.4f",
+                      "%.4f, ghosting %s\nstill RMSE %.4f",
                       p.candidate.label.c_str(), p.result.gpuMs, tr.c_str(), p.score, er.c_str(), p.motion->rmseMean,
-                      p.motion->instability, p.motion->ghosting, p.result.error.rmse);
+                      p.motion->instability, ghostingText(*p.motion).c_str(), p.result.error.rmse);
     else
         std::snprintf(b, sizeof b, "%s\n%.3f ms GPU (AO + denoise)%s\nRMSE %.4f%s, bias %+.4f, edge RMSE %.4f",
                       p.candidate.label.c_str(), p.result.gpuMs, tr.c_str(), p.result.error.rmse, er.c_str(),

@@ -83,7 +83,13 @@ struct DenoiseSettings {
 struct TemporalSettings {
     bool enabled = false;
     int frames = 8;                // frames accumulated after a change; then the frame stays still
-    float depthTolerance = 0.02f; // relative depth mismatch that rejects the history of a pixel
+    // How far off this pixel's tangent plane a history texel's surface may lie and still be kept, in
+    // pixel footprints (the width of one pixel at that depth): a test of the pixel's own scale.
+    float planeTolerance = 1.0f;
+    // While the camera moves, the history counts as at most this many frames: each frame's
+    // reprojection resamples it and the view changes the AO, so a long memory lags and blurs
+    // (docs/bench/temporal.md).
+    int movingFrames = 2;
 };
 
 struct CompositeSettings {

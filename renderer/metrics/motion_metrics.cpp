@@ -5,9 +5,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace ssao {
+
+std::string ghostingText(const MotionMetrics& m) {
+    if (!std::isfinite(m.ghosting)) return "n/a (" + std::to_string(m.disoccludedPixels) + " pixels)";
+    char b[32];
+    std::snprintf(b, sizeof b, "%+.4f", m.ghosting);
+    return b;
+}
 
 double motionScore(double rmseMean, double instability) {
     const double i = std::isfinite(instability) ? instability : 0.0;
@@ -116,7 +124,7 @@ MotionMetrics computeMotionMetrics(int w, int h, const std::vector<MotionFrameIn
     if (s.freshN) m.disoccludedMae = s.fresh / double(s.freshN);
     if (s.stableN) m.stableMae = s.stable / double(s.stableN);
     if (s.stableEdgeN) m.stableEdgeMae = s.stableEdge / double(s.stableEdgeN);
-    if (s.freshN && s.stableN) m.ghosting = m.disoccludedMae - m.stableMae;
+    if (s.freshN >= std::max(1L, opt.minGhostPixels) && s.stableN) m.ghosting = m.disoccludedMae - m.stableMae;
     return m;
 }
 

@@ -11,6 +11,7 @@
 // Pure CPU code on plain float arrays: no GL.
 #pragma once
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace ssao {
@@ -31,6 +32,9 @@ struct MotionFrameInput {
 
 struct MotionOptions {
     int ghostFrames = 2; // a disoccluded pixel counts as fresh for its first ghostFrames frames
+    // Ghosting is a mean over fresh pixels: fewer than this many back no figure (NaN, shown as
+    // "n/a (K pixels)"); two pixels once printed as a ghosting of +0.6.
+    long minGhostPixels = 64;
 };
 
 struct MotionMetrics {
@@ -45,7 +49,7 @@ struct MotionMetrics {
     long pairs = 0;
     // Mean |T - R|: at fresh disoccluded pixels, at stable ones, and at stable ones within 3 px of a
     // depth discontinuity (where disocclusions happen: the control for edge error); NaN when the set
-    // is empty. ghosting = disoccludedMae - stableMae.
+    // is empty. ghosting = disoccludedMae - stableMae, NaN with fewer than minGhostPixels fresh pixels.
     double disoccludedMae = kNaN, stableMae = kNaN, stableEdgeMae = kNaN, ghosting = kNaN;
     long disoccludedPixels = 0, stablePixels = 0;
 };
@@ -53,6 +57,8 @@ struct MotionMetrics {
 // The motion score, one number for ranking (bench's motion rank, the explorer's motion axis):
 // sqrt(mean per-frame RMSE^2 + instability^2), the instability an RMS of its own (NaN counts as 0).
 double motionScore(double rmseMean, double instability);
+// Ghosting as every line prints it: "+0.0123", or "n/a (K pixels)" where too few fresh pixels back it.
+std::string ghostingText(const MotionMetrics& m);
 double motionScore(const MotionMetrics& m);
 // What `tune --objective motion` minimises per view: the motion score squared.
 double motionObjective(const MotionMetrics& m);

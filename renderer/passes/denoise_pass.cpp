@@ -26,7 +26,7 @@ void DenoisePass::setup(PassBuilder& b, const Settings& s) const {
     tmp.internal = true;
     // The copy needs no depth: the raw AO is already 1 on the sky (run()).
     if (bilateral || joint || s.temporal.enabled || (s.skip.sky && !copiesRaw(s))) b.read("gbuffer.depth");
-    if (bilateral) b.read("gbuffer.normal");
+    if (bilateral || s.temporal.enabled) b.read("gbuffer.normal"); // temporal: the history's plane test
     if ((!joint || d.kind != DenoiseKind::None) && !copiesRaw(s)) b.write(tmp); // joint + none: the upsample alone
     if (joint && d.kind != DenoiseKind::None) { // the filter's last pass, before the upsample
         ResourceDesc low = describe(chain().res("denoise.low"), GL_R32F, 1, Display::Unit,

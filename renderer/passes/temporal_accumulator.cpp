@@ -1,6 +1,7 @@
 #include "passes/temporal_accumulator.h"
 
 #include "gl/shader_library.h"
+#include "techniques/technique.h"
 
 #include "../../shaders/include/bindings.h"
 
@@ -15,7 +16,11 @@ TemporalConfig temporalConfig(const Settings& s, const FrameInfo& f) {
     c.enabled = 1;
     c.reset = f.temporalReset;
     c.frames = float(s.temporal.frames);
-    c.depthTolerance = s.temporal.depthTolerance;
+    c.planeTolerance = s.temporal.planeTolerance;
+    c.movingFrames = float(s.temporal.movingFrames);
+    const TechniqueInfo& t = findTechnique(s.ao.technique);
+    c.staticNoise = t.staticNoise && t.staticNoise(s);
+    c.normalUnorm = s.gbuffer.normalFormat == TargetFormat::RGBA8;
     return c;
 }
 
@@ -35,15 +40,20 @@ void TemporalAccumulator::run(PassContext& ctx, const TemporalConfig& c, const s
     const bool reset = !valid_ || c.reset;
 
     // 1: blend into the next history.
-    GLuint prog = ctx.shaders.program("passes/fullscreen.vert", "passes/temporal.frag");
+    gl::Defines defs;
+    if (c.normalUnorm) defs.push_back({"NORMAL_UNORM", "1"});
+    GLuint prog = ctx.shaders.program("passes/fullscreen.vert", "passes/temporal.frag", defs);
     glUseProgram(prog);
     glProgramUniformMatrix4fv(prog, 0, 1, GL_FALSE, glm::value_ptr(prevViewProj_));
     glProgramUniformMatrix4fv(prog, 1, 1, GL_FALSE, glm::value_ptr(prevView_));
     const glm::mat4 invView = glm::inverse(view);
     glProgramUniformMatrix4fv(prog, 2, 1, GL_FALSE, glm::value_ptr(invView));
-    glProgramUniform4f(prog, 3, reset ? 1.0f : 0.0f, c.frames, c.depthTolerance, 0.0f);
+    glProgramUniform4f(prog, 3, reset ? 1.0f : 0.0f, c.frames, c.planeTolerance, c.staticNoise ? 1.0f : 0.0f);
+    glProgramUniform4fv(prog, 4, 1, glm::value_ptr(prevLens_));
+    glProgramUniform1f(prog, 5, c.movingFrames);
     ctx.in(ao).bind(SSAO_TEX_AO);
     ctx.in("gbuffer.depth").bind(SSAO_TEX_LINEAR_DEPTH);
+    ctx.in("gbuffer.normal").bind(SSAO_TEX_NORMAL);
     history_[current_].texture().bind(SSAO_TEX_HISTORY);
     history_[next].bind();
     ctx.drawFullscreen();
@@ -60,6 +70,7 @@ void TemporalAccumulator::run(PassContext& ctx, const TemporalConfig& c, const s
     current_ = next;
     prevViewProj_ = viewProj;
     prevView_ = view;
+    prevLens_ = {c.frame.invProj[0][0], c.frame.invProj[1][1], c.frame.camera.x, 0.0f};
     valid_ = true;
 }
 

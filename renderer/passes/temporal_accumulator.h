@@ -20,7 +20,10 @@ struct TemporalConfig {
     int32_t enabled;
     int32_t reset; // drop the history (settings, size or scene changed)
     float frames;  // running mean over this many frames
-    float depthTolerance;
+    float planeTolerance; // pixel footprints (temporal.plane_tolerance)
+    float movingFrames;   // the running mean's length while the camera moves
+    int32_t staticNoise;  // the AO's noise is the same every frame: nothing to average
+    int32_t normalUnorm;  // gbuffer.normal holds (n + 1) / 2
 };
 SSAO_CONFIG_END
 
@@ -35,6 +38,7 @@ class TemporalAccumulator {
     gl::RenderTarget history_[2];
     int current_ = 0; // index of the latest history
     glm::mat4 prevViewProj_{1.0f}, prevView_{1.0f};
+    glm::vec4 prevLens_{1.0f, 1.0f, 0.0f, 0.0f}; // the previous frame's inverse projection scale, orthographic
     bool valid_ = false; // a history of this size exists
 };
 

@@ -174,9 +174,14 @@ std::vector<Param> coreRows() {
                 "Frames blended after a change (running mean: frame k weighs 1/k); then the image is final "
                 "and nothing re-runs.")
             .onlyWhen("temporal.enabled", {"true"}),
-        FLOAT_ROW("temporal.depth_tolerance", "Depth tolerance", temporal.depthTolerance, 0.001, 0.5, "relative",
-                  "A pixel's history is dropped when the surface there was at a depth differing by more than "
-                  "this fraction (disocclusion: no ghost trails while the camera moves).")
+        INT_ROW("temporal.moving_frames", "Frames in motion", temporal.movingFrames, 1, 64, "frames",
+                "While the camera moves, the history counts as at most this many frames: a shorter memory "
+                "lags less behind the view and blurs less with each reprojection, at the price of more noise.")
+            .onlyWhen("temporal.enabled", {"true"}),
+        FLOAT_ROW("temporal.plane_tolerance", "Plane tolerance", temporal.planeTolerance, 0.05, 16.0, "pixels",
+                  "A history texel is kept only where the surface it recorded lies this close to the pixel's "
+                  "tangent plane, in widths of one pixel at that depth (disocclusion: no ghost trails, and no "
+                  "other surface's AO mixed in, near or far).")
             .onlyWhen("temporal.enabled", {"true"}),
         // ---- Composite ------------------------------------------------------------------------
         FLOAT_ROW("composite.ambient", "Ambient", composite.ambient, 0.0, 4.0, "",

@@ -14,6 +14,7 @@ TechniqueInfo oneBlockTechnique(std::string id, std::string label, std::string s
     t.params = std::move(params);
     t.makePasses = onePass<OneBlockPass<Module>>();
     t.pyramid = [](const Settings& s) { return Module::pyramid(s); };
+    t.staticNoise = [](const Settings& s) { return Module::noise(s) == AoNoise::None; };
     return t;
 }
 

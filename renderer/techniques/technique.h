@@ -40,6 +40,10 @@ struct TechniqueInfo {
     std::function<bool(const Settings&)> pyramid;
     // The count ao.adaptive cuts for these settings; null = the technique takes no adaptive count.
     std::function<AdaptiveCount(const Settings&)> adaptive;
+    // Whether its AO under these settings is the same every frame (no noise, or none that moves
+    // with the temporal frame index): temporal accumulation then has nothing to average and reads
+    // no history (passes/temporal_accumulator.h); null = never.
+    std::function<bool(const Settings&)> staticNoise;
     // Its shader can run over deinterleaved layers (ao.deinterleave, techniques/deinterleave.h): it
     // takes its pixel's noise from noise.glsl's aoNoise and its taps at whole pixels of the frame it
     // is drawn over.

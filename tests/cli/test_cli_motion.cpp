@@ -133,3 +133,21 @@ TEST(CliMotion, TuneMinimisesTheMotionObjective) {
     EXPECT_NE(p["scores"]["metric"].get<std::string>().find("motion score"), std::string::npos) << p["scores"];
     expectCleanFailure(ssaolab("tune --objective sideways"), "--objective");
 }
+
+TEST(CliMotion, PathOptionsWithoutAPathSayTheyDoNothing) {
+    const CliRun r = ssaolab("render --motion-frames 4 --motion-orbit 8 --size 64x36 --timing-frames 1 --quiet --out " +
+                             outDir("motion_unused"));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("ssaolab: warning: --motion-frames 4 does nothing without --motion"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("ssaolab: warning: --motion-orbit does nothing without --motion"), std::string::npos) << r.err;
+    const CliRun quiet = ssaolab("render --size 64x36 --timing-frames 1 --quiet --out " + outDir("motion_unused_none"));
+    EXPECT_EQ(quiet.err.find("does nothing"), std::string::npos) << quiet.err;
+}
+
+TEST(CliMotion, AStillPathPrintsNoNanAndGhostingNoPixelBacksAsNotAvailable) {
+    const CliRun r = ssaolab("render " + kTiny + "--timing-frames 1 --motion --motion-frames 3 --motion-orbit 0 "
+                             "--motion-dolly 0 --out " + outDir("motion_still_line"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("ghosting n/a (0 pixels)"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+}

@@ -272,7 +272,7 @@ TEST(MotionMetrics, ADisocclusionsFirstFramesAreJudgedAgainstStablePixels) {
     for (int i = 20; i < 30; ++i) tests[1][size_t(i)] = tests[2][size_t(i)] = 1.4f;
     std::vector<MotionFrameInput> frames;
     for (size_t k = 0; k < 4; ++k) frames.push_back(frame(tests[k], ref, k ? &maps[k] : nullptr));
-    const MotionMetrics m = computeMotionMetrics(w, h, frames);
+    const MotionMetrics m = computeMotionMetrics(w, h, frames, {2, 40}); // 40 fresh pixels back a figure here
     EXPECT_EQ(m.disoccludedPixels, 40); // 20 pixels x their first 2 frames
     EXPECT_NEAR(m.disoccludedMae, 0.3, 1e-6);
     EXPECT_NEAR(m.stableMae, 0.05, 1e-6);
@@ -283,6 +283,24 @@ TEST(MotionMetrics, ADisocclusionsFirstFramesAreJudgedAgainstStablePixels) {
     EXPECT_EQ(m.pairs, long(3 * n - 30));
     // One frame of freshness: only frame 1's disoccluded pixels.
     EXPECT_EQ(computeMotionMetrics(w, h, frames, {1}).disoccludedPixels, 20);
+}
+
+TEST(MotionMetrics, GhostingFromTooFewDisoccludedPixelsIsNoFigure) {
+    // Two disoccluded pixels once printed as a ghosting of +0.6073: a mean over 2 pixels says nothing.
+    const int w = 20, h = 10;
+    const size_t n = size_t(w) * h;
+    std::vector<float> ref(n, 0.5f);
+    std::vector<std::vector<float>> tests(3, std::vector<float>(n, 0.55f));
+    std::vector<std::vector<int>> maps(3, identity(n));
+    maps[1][0] = kDisoccluded;
+    tests[1][0] = tests[2][0] = 1.0f;
+    std::vector<MotionFrameInput> frames;
+    for (size_t k = 0; k < 3; ++k) frames.push_back(frame(tests[k], ref, k ? &maps[k] : nullptr));
+    const MotionMetrics m = computeMotionMetrics(w, h, frames);
+    EXPECT_EQ(m.disoccludedPixels, 2);
+    EXPECT_TRUE(std::isnan(m.ghosting));
+    EXPECT_EQ(ghostingText(m), "n/a (2 pixels)");
+    EXPECT_EQ(ghostingText(computeMotionMetrics(w, h, frames, {2, 2})), "+0.4500"); // 0.5 fresh - 0.05 stable
 }
 
 TEST(MotionMetrics, NonFiniteAoCountsAsOpenAndAmbiguousPixelsAreLeftOut) {

@@ -62,8 +62,8 @@ TEST_F(Modes, EveryValueOfEveryParameterIsFiniteAndChangesTheImage) {
     // their extremes must change the image, not both.
     const std::set<std::string> limits = {"hbao.max_radius_px"};
     // Rows that only act once the camera moves (a still frame cannot show them): test_temporal.cpp's
-    // moving-camera test shows what the depth tolerance does.
-    const std::set<std::string> movingOnly = {"temporal.depth_tolerance"};
+    // moving-camera tests show what the plane tolerance and the memory in motion do.
+    const std::set<std::string> movingOnly = {"temporal.plane_tolerance", "temporal.moving_frames"};
     // Rows that choose another route to the same frame on a still camera: the single-pass second
     // layer reprojects the previous frame, which is this one (test_second_layer.cpp moves the camera).
     const std::set<std::string> sameWhenStill = {"gbuffer.second_layer_build"};

@@ -277,6 +277,7 @@ int runBench(const BenchOptions& o) {
     int w = 0, h = 0;
     parseSizeOption(o.size, w, h);
     if (o.motion) checkMotionBudget(o.motionPath, w, h, 1); // one view's path at a time
+    if (!o.motion) printWarnings(unusedMotionOptions(o.motionPath, "--motion"));
     const ShardSpec shard = parseShard(o.shard);
     std::vector<std::string> specs = o.scenes.empty() ? std::vector<std::string>{"builtin:showcase"} : o.scenes;
     BenchEngines engines(o.engines, specs, w, h, o.frames); // a missing browser or a builtin scene: refused here

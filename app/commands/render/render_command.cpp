@@ -354,6 +354,7 @@ int runRender(const RenderOptions& o) {
     makeOutputFolder(o.out); // before any work: a FIFO, a device or a file there fails in milliseconds
     RenderJob job = prepareRender(o);
     if (o.motion) checkMotionBudget(o.motionPath, job.w, job.h, 1); // before the still frame and its trace
+    if (!o.motion) printWarnings(unusedMotionOptions(o.motionPath, "--motion"));
     if (o.reference && parseVariant(o.referenceVariant) == ReferenceVariant::Visibility) // before the render and trace
         ScreenLayers::checkBudget(job.w, job.h, o.oracleLayers, o.oracleGuard);
     HeadlessRunner run({o.shaderDir, o.verboseGl});

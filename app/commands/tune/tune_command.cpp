@@ -414,6 +414,9 @@ int runTune(const TuneOptions& o) {
     for (std::string& w : applyAssignments(start, o.sets))
         warnings.push_back(std::move(w));
     validateSettings(start);
+    if (o.objective != "motion")
+        for (std::string& w : unusedMotionOptions(o.motionPath, "--objective motion"))
+            warnings.push_back(std::move(w));
     printWarnings(warnings);
     std::vector<Scene> scenes;
     std::set<std::string> seen;

@@ -74,6 +74,7 @@ TechniqueInfo kernelTechnique() {
     t.params = kernelParams;
     t.makePasses = onePass<KernelPass>();
     t.unphysical = kernelUnphysical; // no adaptive count (a fixed kernel), no pyramid
+    t.staticNoise = [](const Settings& s) { return s.kernel.noise == Noise::None; };
     // denoise.kind = auto: one depth- and normal-aware bilateral pass, 5x5, lowers the raw AO's
     // error on all 5 scenes of the denoiser sweep (mean -0.0044; box4 raised it by up to 0.053).
     t.denoiser.kind = DenoiseKind::Bilateral;

@@ -64,6 +64,7 @@ TechniqueInfo userTechniqueInfo(std::shared_ptr<const UserTechnique> t) {
     info.version = t->hash;
     info.user = t;
     info.secondLayer = true; // ssaoSecondLayerAt (shaders/include/user_interface.glsl)
+    info.staticNoise = [t](const Settings& s) { return userNoise(*t, s) == AoNoise::None; };
     const std::string id = info.id;
     info.params = [t, id] {
         std::vector<Param> rows;
