@@ -114,3 +114,22 @@ TEST(CliTuneGuard, AKnobThatIsNeitherNamedNorInTheDefaultSetNeverMoves) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(moved(start, dir + "/multiplier.json"), std::set<std::string>{"gtao.radius_multiplier"});
 }
+
+TEST(CliTuneGuard, AFittedValueAtAnEdgeOfItsRangeIsNamedAndTheStartIsNamedAsSuch) {
+    const std::string base = "tune --scene builtin:corner --size 64x36 --views 2 --rounds 1 --grid 3 --reference-rays 4 "
+                             "--save-overfit ";
+    const std::string edge = outDir("tune_edge") + ".json", inside = outDir("tune_inside") + ".json";
+    const CliRun r = ssaolab(base + "--technique sao --knob sao.bias --out " + edge);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("ssaolab: warning: tuned sao.bias = 0 is the bottom of its range"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("the optimum may lie beyond"), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("start (the technique's defaults) -> tuned"), std::string::npos) << r.out;
+    const nlohmann::json j = nlohmann::json::parse(slurp(edge));
+    EXPECT_EQ(j["scores"]["at_range_edge"], nlohmann::json::array({"sao.bias"}));
+    EXPECT_EQ(j["scores"]["start_point"], "the technique's defaults");
+    EXPECT_TRUE(j["scores"]["start"]["train"].is_number());
+    const CliRun in = ssaolab(base + "--technique gtao --knob gtao.distribution_power --out " + inside);
+    ASSERT_EQ(in.exitCode, 0) << in.err;
+    EXPECT_EQ(in.err.find("optimum may lie beyond"), std::string::npos) << in.err;
+    EXPECT_EQ(nlohmann::json::parse(slurp(inside))["scores"]["at_range_edge"], nlohmann::json::array());
+}

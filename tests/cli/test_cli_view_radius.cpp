@@ -66,3 +66,17 @@ TEST(CliViewRadius, TheSplitsSharesAddUpInMetricsAndTheSummary) {
     EXPECT_NEAR(s, rs * rs / (total * total), 1e-6);
     EXPECT_NE(sp["shares"]["how_to_read"].get<std::string>().find("negative interaction"), std::string::npos);
 }
+
+TEST(CliViewRadius, AFrameThatReadsTheSecondLayerIsSplitAgainstATwoLayerOracle) {
+    // As bench splits its two-layer rows: a one-layer oracle would charge the technique for what its
+    // own second layer sees ("technique 1.17 + screen 0.64 + interaction -0.81").
+    for (const std::string layers : {"false", "true"}) {
+        const std::string out = outDir("split_layers_" + layers);
+        const CliRun r = ssaolab("render --scene builtin:hidden --size 64x36 --timing-frames 1 --reference "
+                                 "--reference-rays 8 --quiet --set ao.technique=vbao --set gbuffer.second_layer=" +
+                                 layers + " --out " + out);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const nlohmann::json m = nlohmann::json::parse(slurp(out + "/metrics.json"));
+        EXPECT_EQ(m["error_split"]["oracle"]["layers"].get<int>(), layers == "true" ? 2 : 1);
+    }
+}

@@ -71,7 +71,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         ->check(CLI::IsMember({"visibility", "obscurance"}));
     cmd.add_flag("--no-cache", o.noCache, "trace the reference even if the cache holds it");
     cmd.add_option("--oracle-layers", o.oracleLayers,
-                   "with --reference: depth layers of the screen-space oracle's G-buffer (2: a deep G-buffer)")
+                   "with --reference: depth layers of the screen-space oracle's G-buffer (2: a deep G-buffer; at least 2 when the settings read gbuffer.second_layer)")
         ->capture_default_str()
         ->check(cliRange(1, 2));
     cmd.add_option("--oracle-thickness", o.oracleThickness,
@@ -228,6 +228,12 @@ std::string scoreImages(const RenderOptions& o, const ReferenceImage& ref, const
     return lines;
 }
 
+// The screen-space oracle's depth layers for these settings: a frame that reads the second depth
+// layer is split against the oracle of a two-layer G-buffer, as bench splits its two-layer rows.
+int oracleLayersFor(const RenderOptions& o, const Settings& s) {
+    return s.gbuffer.secondLayer ? std::max(2, o.oracleLayers) : o.oracleLayers;
+}
+
 // --reference: traces (or loads) the reference, writes its files and the error blocks into `m`;
 // returns the summary line.
 std::string judgeAgainstReference(const RenderOptions& o, const Renderer& r, const FrameCapture& frame,
@@ -254,7 +260,7 @@ std::string judgeAgainstReference(const RenderOptions& o, const Renderer& r, con
     if (rs.variant == ReferenceVariant::Visibility) {
         ReferenceSettings os = rs;
         os.visibility = ReferenceVisibility::Screen;
-        os.layers = o.oracleLayers;
+        os.layers = oracleLayersFor(o, r.settings());
         os.thickness = float(o.oracleThickness);
         os.guardBand = o.oracleGuard;
         ReferenceImage oracle;
@@ -356,7 +362,7 @@ int runRender(const RenderOptions& o) {
     if (o.motion) checkMotionBudget(o.motionPath, job.w, job.h, 1); // before the still frame and its trace
     if (!o.motion) printWarnings(unusedMotionOptions(o.motionPath, "--motion"));
     if (o.reference && parseVariant(o.referenceVariant) == ReferenceVariant::Visibility) // before the render and trace
-        ScreenLayers::checkBudget(job.w, job.h, o.oracleLayers, o.oracleGuard);
+        ScreenLayers::checkBudget(job.w, job.h, oracleLayersFor(o, job.settings), o.oracleGuard);
     HeadlessRunner run({o.shaderDir, o.verboseGl});
     job.info.glRenderer = run.glRenderer();
     job.info.glPlatform = run.glPlatform();

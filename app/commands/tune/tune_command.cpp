@@ -305,8 +305,30 @@ std::vector<HeldOutScore> heldOutScores(const Tuner& t, const std::vector<std::p
     return out;
 }
 
+// Where the search started: what "start -> tuned" compares with.
+std::string startName(const TuneOptions& o) {
+    return o.preset.empty() ? "the technique's defaults" : "preset " + o.preset;
+}
+
+// The fitted values at an edge of their row's range (tune's own range for radius_multiplier): the
+// optimum may lie beyond what the row allows, and the fit says so.
+std::vector<std::string> atRangeEdge(const std::vector<Knob>& knobs, std::vector<std::string>* keys = nullptr) {
+    std::vector<std::string> out;
+    for (const Knob& k : knobs) {
+        const Param* p = k.key == "radius_multiplier" ? nullptr : findParam(k.key);
+        const double minV = p ? p->min : 0.05, maxV = p ? p->max : 10.0, eps = 1e-6 * std::max(1.0, maxV - minV);
+        if (k.value > minV + eps && k.value < maxV - eps) continue;
+        char b[320];
+        std::snprintf(b, sizeof b, "tuned %s = %.4g is the %s of its range [%.4g, %.4g]: the optimum may lie beyond",
+                      k.key.c_str(), k.value, k.value <= minV + eps ? "bottom" : "top", minV, maxV);
+        out.push_back(b);
+        if (keys) keys->push_back(k.key);
+    }
+    return out;
+}
+
 nlohmann::json scoresJson(const Scores& before, const Scores& after, const FitVerdict& v, const Tuner& t,
-                          const TuneOptions& o) {
+                          const TuneOptions& o, const std::vector<Knob>& knobs) {
     auto side = [](const Scores& s) {
         nlohmann::json j;
         auto put = [&](const char* k, double mse) { j[k] = std::isfinite(mse) ? nlohmann::json(rmseOf(mse)) : nlohmann::json(); };
@@ -316,6 +338,8 @@ nlohmann::json scoresJson(const Scores& before, const Scores& after, const FitVe
     nlohmann::json train = nlohmann::json::array(), held = nlohmann::json::array();
     for (size_t i = 0; i < t.sceneCount(); ++i)
         (i >= t.sceneCount() - t.heldOutScenes() ? held : train).push_back(t.scene(i).name);
+    std::vector<std::string> edgeKeys;
+    atRangeEdge(knobs, &edgeKeys);
     const std::string path = o.objective != "motion" ? "" : ", along a " + std::to_string(o.motionPath.frames) +
         "-frame path (orbit " + std::to_string(o.motionPath.orbitDeg) + " deg, dolly " + std::to_string(o.motionPath.dolly) + ")";
     return {{"metric", objectiveName(o) + " against the ray-traced reference (visibility, R = " + std::to_string(o.radiusScene) +
@@ -324,9 +348,11 @@ nlohmann::json scoresJson(const Scores& before, const Scores& after, const FitVe
             {"held_out_scenes", held},
             {"views", {{"train", t.count(Role::Train)}, {"held_out_views", t.count(Role::HeldOutView)},
                        {"held_out_scenes", t.count(Role::HeldOutScene)}}},
-            {"defaults", side(before)},
+            {"start_point", startName(o)},
+            {"start", side(before)},
             {"tuned", side(after)},
-            {"held_out", {{"defaults", v.before}, {"tuned", v.after}}}, // every held-out view, both kinds
+            {"held_out", {{"start", v.before}, {"tuned", v.after}}}, // every held-out view, both kinds
+            {"at_range_edge", edgeKeys},
             {"overfit", v.overfit}};
 }
 
@@ -338,8 +364,9 @@ void printTuned(const TuneOptions& o, const Tuner& t, const std::vector<Knob>& k
                 t.heldOutScenes());
     for (const Knob& k : knobs)
         std::printf(" %s=%.4g", k.key == "radius_multiplier" ? "R x" : k.key.c_str(), k.value);
-    std::printf("\n%s, defaults -> tuned: training %.4f -> %.4f, held-out views %.4f -> %.4f", objectiveName(o).c_str(),
-                rmseOf(before.train), rmseOf(after.train), rmseOf(before.heldOutViews), rmseOf(after.heldOutViews));
+    std::printf("\n%s, start (%s) -> tuned: training %.4f -> %.4f, held-out views %.4f -> %.4f", objectiveName(o).c_str(),
+                startName(o).c_str(), rmseOf(before.train), rmseOf(after.train), rmseOf(before.heldOutViews),
+                rmseOf(after.heldOutViews));
     if (t.heldOutScenes())
         std::printf(", held-out scenes %.4f -> %.4f", rmseOf(before.heldOutScenes), rmseOf(after.heldOutScenes));
     std::printf("\n");
@@ -367,7 +394,7 @@ void saveTuned(const TuneOptions& o, const Tuner& t, const std::vector<Knob>& kn
     p.scene = spec.rfind("builtin:", 0) == 0 ? spec : std::filesystem::absolute(spec, ec).string();
     p.size = std::make_pair(w, h);
     p.camera = cameraToFile(t.firstView().camera, t.scene(t.firstView().scene));
-    p.scores = scoresJson(before, after, v, t, o);
+    p.scores = scoresJson(before, after, v, t, o, knobs);
     char desc[640];
     std::snprintf(desc, sizeof desc,
                   "ssaolab tune: %s fitted to the ray-traced reference (R = %.3g x diagonal) on %zu training views; "
@@ -445,6 +472,7 @@ int runTune(const TuneOptions& o) {
     FitVerdict verdict = judgeFit(heldOutScores(t, heldBefore, heldAfter));
     verdict.metric = objectiveName(o);
     printTuned(o, t, knobs, before, after);
+    printWarnings(atRangeEdge(knobs));
     if (verdict.overfit && !o.saveOverfit) throw Error(refusalText(verdict, o.out)); // nothing written
     saveTuned(o, t, knobs, before, after, verdict, w, h);
     if (verdict.overfit)
