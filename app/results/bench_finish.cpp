@@ -1,6 +1,7 @@
 #include "results/bench_finish.h"
 
 #include "cli/scene_options.h"
+#include "metrics/motion_metrics.h"
 #include "results/bench_report.h"
 #include "settings/preset.h"
 #include "util/error.h"
@@ -23,9 +24,17 @@ void printBenchSummary(const BenchRun& run, const std::string& out, bool plot) {
                     sweep.configs[cheap].label.c_str(), run.summary[cheap].gpuMs, run.summary[cheap].timeRatio,
                     run.summary[cheap].rmse, run.summary[cheap].rmseRatio);
     if (best != std::string::npos)
-        std::printf("lowest error: %s: RMSE %.4f (%.3fx) in %.3f ms (%.3fx)\n", sweep.configs[best].label.c_str(),
+        std::printf("lowest error%s: %s: RMSE %.4f (%.3fx) in %.3f ms (%.3fx)\n",
+                    run.facts.contains("motion") ? " on a still camera" : "", sweep.configs[best].label.c_str(),
                     run.summary[best].rmse, run.summary[best].rmseRatio, run.summary[best].gpuMs,
                     run.summary[best].timeRatio);
+    if (const size_t m = mostAccurateInMotion(run); m != std::string::npos) {
+        const ConfigSummary& s = run.summary[m];
+        std::printf("lowest error in motion: %s: motion score %.4f in %.3f ms (%.3fx)\n", sweep.configs[m].label.c_str(),
+                    motionScore(s.motion.rmseMean, s.motion.instability), s.gpuMs, s.timeRatio);
+        if (const std::string d = winnersDifferLine(run, [](const std::string& x) { return x; }); !d.empty())
+            std::printf("%s\n", d.c_str());
+    }
     int front = 0;
     for (const auto& s : run.summary)
         front += s.pareto;

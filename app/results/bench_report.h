@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,5 +25,11 @@ bool plotBench(const std::string& dir, const std::string& title, bool quiet);
 // baseline's (fastest such), and the lowest-error configuration. npos when none.
 size_t fastestAtMostBaselineError(const BenchRun& run);
 size_t mostAccurate(const BenchRun& run);
+// With bench --motion: the lowest motion score (npos without motion columns).
+size_t mostAccurateInMotion(const BenchRun& run);
+// One sentence when the still camera's most accurate row is not the most accurate in motion ("" when
+// they agree or there is no motion column): a still answer is not the one a moving camera needs.
+// `name` writes a configuration's label for the sink (markdownCell for report.md).
+std::string winnersDifferLine(const BenchRun& run, const std::function<std::string(const std::string&)>& name);
 
 } // namespace ssao

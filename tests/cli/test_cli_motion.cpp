@@ -151,3 +151,26 @@ TEST(CliMotion, AStillPathPrintsNoNanAndGhostingNoPixelBacksAsNotAvailable) {
     EXPECT_NE(r.out.find("ghosting n/a (0 pixels)"), std::string::npos) << r.out;
     EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
 }
+
+TEST(CliMotion, AMotionAnswerThatDiffersFromTheStillOneIsSaid) {
+    // A long memory in motion: the best still frame (the bitmask, 64 accumulated frames) lags behind a
+    // wide orbit, where a single frame of the same technique (its defaults, in every sweep) does not.
+    const std::string out = outDir("motion_answer");
+    fs::remove_all(out);
+    const std::string sweep = writeTemp("motion_answer_sweep.json", R"({"name": "answer", "groups": [
+        {"name": "long memory", "set": {"ao.technique": "vbao", "temporal.enabled": true, "temporal.frames": 64,
+                                        "temporal.moving_frames": 64, "temporal.plane_tolerance": 16}}]})");
+    const CliRun r = ssaolab("bench " + kTiny + "--views 1 --frames 1 --warmup 0 --no-plot --motion --motion-frames 4 "
+                             "--motion-orbit 30 --sweep " + sweep + " --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string longMemory = "ao.technique=vbao temporal.enabled=true temporal.frames=64";
+    EXPECT_NE(r.out.find("lowest error on a still camera: " + longMemory), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("lowest error in motion: "), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("lowest error in motion: " + longMemory), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("is not the lowest in motion"), std::string::npos) << r.out;
+    const std::string md = slurp(out + "/report.md");
+    EXPECT_NE(md.find("Lowest error on a still camera: **"), std::string::npos);
+    EXPECT_NE(md.find("Lowest error in motion (motion score): **"), std::string::npos);
+    EXPECT_NE(md.find("is not the lowest in motion"), std::string::npos);
+    EXPECT_NE(md.find("| configuration | x baseline time | still RMSE |"), std::string::npos);
+}
