@@ -24,9 +24,10 @@ void printBenchSummary(const BenchRun& run, const std::string& out, bool plot) {
                     sweep.configs[cheap].label.c_str(), run.summary[cheap].gpuMs, run.summary[cheap].timeRatio,
                     run.summary[cheap].rmse, run.summary[cheap].rmseRatio);
     if (best != std::string::npos)
-        std::printf("lowest error%s: %s: RMSE %.4f (%.3fx) in %.3f ms (%.3fx)\n",
+        std::printf("lowest error%s: %s: RMSE %.4f (%.3fx) in %.3f ms%s (%.3fx)\n",
                     run.facts.contains("motion") ? " on a still camera" : "", sweep.configs[best].label.c_str(),
                     run.summary[best].rmse, run.summary[best].rmseRatio, run.summary[best].gpuMs,
+                    run.summary[best].unsureTimeViews ? " (unsure: its frames' times varied past 2x)" : "",
                     run.summary[best].timeRatio);
     if (const size_t m = mostAccurateInMotion(run); m != std::string::npos) {
         const ConfigSummary& s = run.summary[m];

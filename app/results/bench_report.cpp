@@ -67,6 +67,10 @@ size_t fastestAtMostBaselineError(const BenchRun& run) {
     return best;
 }
 
+std::string timeFlag(const ConfigSummary& s) {
+    return s.unsureTimeViews > 0 ? " (!)" : "";
+}
+
 size_t mostAccurate(const BenchRun& run) {
     size_t best = std::string::npos;
     for (const auto& s : run.summary)
@@ -257,7 +261,7 @@ static std::string motionMarkdown(const BenchRun& run) {
           "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (size_t i = 0; i < moving.size(); ++i) {
         const ConfigSummary& s = *moving[i];
-        md << "| " << markdownCell(run.sweep.configs[s.config].label) << " | " << num(s.timeRatio, 3) << " | " << num(s.rmse, 4) << " | "
+        md << "| " << markdownCell(run.sweep.configs[s.config].label) << " | " << num(s.timeRatio, 3) << timeFlag(s) << " | " << num(s.rmse, 4) << " | "
            << num(s.motion.rmseMean, 4) << " | " << num(s.motion.instability, 4) << " | " << (std::isfinite(s.motion.ghosting) ? num(s.motion.ghosting, 3) : std::string("n/a"))
            << " | " << num(score(s), 4) << " | " << stillRank[s.config] << " | " << i + 1 << " |\n";
     }
@@ -293,18 +297,18 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile, cons
     const size_t cheap = fastestAtMostBaselineError(run), best = mostAccurate(run);
     if (cheap != std::string::npos)
         md << "Fastest configuration at most as wrong as the baseline: **" << markdownCell(cfgs[cheap].label)
-           << "**: " << num(run.summary[cheap].gpuMs, 4) << " ms (" << num(run.summary[cheap].timeRatio, 3)
+           << "**: " << num(run.summary[cheap].gpuMs, 4) << " ms" << timeFlag(run.summary[cheap]) << " (" << num(run.summary[cheap].timeRatio, 3)
            << "x the baseline's time), RMSE " << num(run.summary[cheap].rmse, 4) << " ("
            << num(run.summary[cheap].rmseRatio, 3) << "x).\n\n";
     if (best != std::string::npos)
         md << "Lowest error" << (run.facts.contains("motion") ? " on a still camera" : "") << ": **"
            << markdownCell(cfgs[best].label) << "**: RMSE " << num(run.summary[best].rmse, 4) << " ("
            << num(run.summary[best].rmseRatio, 3) << "x the baseline's) in "
-           << num(run.summary[best].gpuMs, 4) << " ms (" << num(run.summary[best].timeRatio, 3) << "x).\n\n";
+           << num(run.summary[best].gpuMs, 4) << " ms" << timeFlag(run.summary[best]) << " (" << num(run.summary[best].timeRatio, 3) << "x).\n\n";
     if (const size_t m = mostAccurateInMotion(run); m != std::string::npos) {
         const ConfigSummary& s = run.summary[m];
         md << "Lowest error in motion (motion score): **" << markdownCell(cfgs[m].label) << "**: "
-           << num(motionScore(s.motion.rmseMean, s.motion.instability), 4) << " in " << num(s.gpuMs, 4) << " ms ("
+           << num(motionScore(s.motion.rmseMean, s.motion.instability), 4) << " in " << num(s.gpuMs, 4) << " ms" << timeFlag(s) << " ("
            << num(s.timeRatio, 3) << "x).\n\n";
         if (const std::string d = winnersDifferLine(run, markdownCell); !d.empty()) md << d << "\n\n";
     }
@@ -318,7 +322,7 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile, cons
             if (!frontOnly || s.pareto || s.config == run.sweep.baseline) rows.push_back(&s);
         std::sort(rows.begin(), rows.end(), [](auto* a, auto* b) { return a->timeRatio < b->timeRatio; });
         for (const ConfigSummary* s : rows)
-            md << "| " << markdownCell(cfgs[s->config].label) << " | " << num(s->gpuMs, 4) << " | " << num(s->timeRatio, 3)
+            md << "| " << markdownCell(cfgs[s->config].label) << " | " << num(s->gpuMs, 4) << timeFlag(*s) << " | " << num(s->timeRatio, 3)
                << " | " << num(s->rmse, 4) << " | " << num(s->rmseRatio, 3) << " | " << num(s->bias, 3)
                << " | " << num(s->psnrGeometrySrgb, 4) << " | " << num(s->psnrFullSrgb, 4) << " | "
                << num(s->ssim, 4) << " | " << num(s->rmseEdge, 4) << " | " << num(s->rmseInterior, 4) << " | "
@@ -332,7 +336,9 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile, cons
     md << engineMarkdown(run);
     md << "\n### Every configuration\n\n";
     table(false);
-    md << "\nTime: GPU timer queries (GL_TIME_ELAPSED) of every pass but the G-buffer and the composite, "
+    md << "\nTime: a time marked (!) is unsure: on at least one view its slowest timed frame took more than "
+       << num(kUnsureTimeSpread, 2) << "x its median (measure again with more --frames). "
+       << "GPU timer queries (GL_TIME_ELAPSED) of every pass but the G-buffer and the composite, "
           "mean over views of each view's median; x baseline: the geometric mean over views of each view's "
           "median divided by the baseline's median on that view (the front and the ranking use it). RMSE: linear AO over the reference's geometry pixels, "
           "sqrt of the mean MSE over views; PSNR of the mean sRGB MSE over views (XeGTAO's averaging); bias "

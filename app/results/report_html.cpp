@@ -262,6 +262,15 @@ std::string cell(double v, int digits = 4) {
            "</td>";
 }
 
+// A time whose frames varied past kUnsureTimeSpread x their median on some view: marked, and why.
+std::string unsureCell(double v) {
+    char why[160];
+    std::snprintf(why, sizeof why, "unsure: on a view, the slowest timed frame took more than %.3gx the median",
+                  kUnsureTimeSpread);
+    return std::string("<td class=\"n\" data-v=\"") + (std::isfinite(v) ? fmt(v, 10) : "1e300") + "\" title=\"" + why +
+           "\">" + fmt(v, 4) + " (!)</td>";
+}
+
 // Every configuration, sortable by any column (click a header); with bench --motion, its error in motion.
 std::string table(const BenchRun& run) {
     const bool motion = run.facts.contains("motion");
@@ -280,7 +289,7 @@ std::string table(const BenchRun& run) {
         s << "<tr class=\"" << (c.pareto ? "on" : "") << (cfg.baseline ? " base" : "") << "\"><td title=\""
           << htmlAttr(cfg.label + alsoKnownAs(cfg, "; ")) << "\">" << htmlText(cfg.label)
           << "</td><td>" << htmlText(cfg.group) << "</td><td>" << htmlText(cfg.technique()) << "</td>" << cell(c.timeRatio, 3)
-          << cell(c.gpuMs) << cell(c.rmse) << cell(c.rmseRatio, 3) << cell(c.bias, 3) << cell(c.rmseEdge)
+          << (c.unsureTimeViews ? unsureCell(c.gpuMs) : cell(c.gpuMs)) << cell(c.rmse) << cell(c.rmseRatio, 3) << cell(c.bias, 3) << cell(c.rmseEdge)
           << cell(c.psnrGeometrySrgb) << cell(c.ssim);
         if (motion) s << cell(c.motion.rmseMean) << cell(c.motion.instability) << cell(c.motion.ghosting, 3);
         s << "<td>" << (c.pareto ? "yes" : "") << "</td></tr>";

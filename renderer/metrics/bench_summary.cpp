@@ -127,6 +127,7 @@ std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t conf
                 passSum[k] += v.passMs.ms[k];
             s.gpuMsMin = std::min(s.gpuMsMin, v.gpuMsMin);
             s.gpuMsMax = std::max(s.gpuMsMax, v.gpuMsMax);
+            s.unsureTimeViews += v.gpuMsMax > kUnsureTimeSpread * v.gpuMs;
             mse += v.error.rmse * v.error.rmse;
             mseFirst += v.rmseFirstFrame * v.rmseFirstFrame;
             s.mae += v.error.mae;

@@ -68,6 +68,10 @@ struct ConfigSummary {
     size_t config = 0;
     int views = 0;
     double gpuMs = 0, gpuMsMin = 0, gpuMsMax = 0;  // mean of the views' medians; min of mins; max of maxes
+    // Views whose slowest timed frame took more than kUnsureTimeSpread x their median: a time that
+    // varied that much is flagged wherever it is shown (one view's 77.8 ms beside a 20.2 ms median
+    // once made a half-resolution preset look slower than a full-resolution one).
+    int unsureTimeViews = 0;
     PassTimes passMs;                               // mean of the views' medians
     double rmse = 0, mae = 0, bias = 0;            // RMSE = sqrt(mean of the views' MSE)
     double psnrGeometrySrgb = 0, psnrFullSrgb = 0; // 10 log10(1 / mean MSE) over views
@@ -81,6 +85,8 @@ struct ConfigSummary {
     SplitSummary technique, screen; // the AO against the oracle; the oracle against the truth
     MotionSummary motion;           // over the views measured in motion (NaN: none)
 };
+
+constexpr double kUnsureTimeSpread = 2.0;
 
 double median(std::vector<double> v); // NaN when empty
 

@@ -60,6 +60,19 @@ TEST(BenchSummary, SummariesAverageViewsAndRatioToTheBaseline) {
     EXPECT_EQ(s[2].views, 0);  // never measured: NaN, not on the front
     EXPECT_TRUE(std::isnan(s[2].rmse));
     EXPECT_FALSE(s[2].pareto);
+    EXPECT_EQ(s[0].unsureTimeViews, 0); // every frame within 1 ms of its median
+}
+
+TEST(BenchSummary, AViewWhoseFramesVariedPastTwiceTheMedianMarksItsTimeUnsure) {
+    // One view's median of 20.2 ms with a slowest frame of 77.8 ms.
+    ViewResult steady, spread;
+    steady.config = spread.config = 0;
+    steady.gpuMs = 10, steady.gpuMsMin = 9, steady.gpuMsMax = 19.9;
+    spread.gpuMs = 20.2, spread.gpuMsMin = 19, spread.gpuMsMax = 77.8;
+    steady.viewpoint = "a", spread.viewpoint = "b";
+    std::vector<ViewResult> one = {steady}, two = {steady, spread};
+    EXPECT_EQ(summarize(one, 1, 0)[0].unsureTimeViews, 0);
+    EXPECT_EQ(summarize(two, 1, 0)[0].unsureTimeViews, 1);
 }
 
 TEST(BenchSummary, RowsFromTwoMachinesAreRankedByTheirOwnBaselines) {
