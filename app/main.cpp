@@ -234,7 +234,9 @@ struct Commands {
             if (childSource.empty()) throw ssao::Error("compile-glsl needs --source FILE");
             return ssao::runCompileGlsl(probeFile, childSource, compileShaders, compileVert, compileDefines, childMaxMib);
         }
-        ssao::installCompileGate(ssao::executablePath()); // every other command compiles a user's GLSL after a child did
+        // Every other command compiles a user's GLSL after a child did: this very binary, even if the
+        // file was replaced since it started.
+        ssao::installCompileGate("/proc/self/exe");
         if (!app.got_subcommand("docs") && !app.got_subcommand("options"))
             window.app.techniqueDir = ssao::loadUserTechniques(techniqueDir);
         if (app.got_subcommand("params")) {

@@ -69,8 +69,7 @@ struct ConfigSummary {
     int views = 0;
     double gpuMs = 0, gpuMsMin = 0, gpuMsMax = 0;  // mean of the views' medians; min of mins; max of maxes
     // Views whose slowest timed frame took more than kUnsureTimeSpread x their median: a time that
-    // varied that much is flagged wherever it is shown (one view's 77.8 ms beside a 20.2 ms median
-    // once made a half-resolution preset look slower than a full-resolution one).
+    // varied that much is flagged wherever it is shown (one slow frame can reorder two rows).
     int unsureTimeViews = 0;
     PassTimes passMs;                               // mean of the views' medians
     double rmse = 0, mae = 0, bias = 0;            // RMSE = sqrt(mean of the views' MSE)

@@ -34,16 +34,24 @@ std::string clipped(const std::string& uri) {
 std::string servedRelativePath(const std::string& uri) {
     if (hasScheme(uri) || uri.rfind("//", 0) == 0 || uri.rfind("/", 0) == 0 || uri.rfind("\\", 0) == 0)
         throw Error("'" + clipped(uri) + "' is a network or absolute URI; the engine's browser loads only files inside the scene's folder");
-    const std::string raw = uri.substr(0, uri.find_first_of("?#")); // a query or fragment is no part of the file
+    // A query or fragment, a '+' (a space to tinygltf, itself to the browser) or a control character
+    // (dropped by the browser's URL parser): each would be read as another file by another reader.
+    for (char c : uri)
+        if (c == '?' || c == '#' || c == '+' || static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+            throw Error("'" + clipped(uri) + "' holds a '?', '#', '+' or a control character, which the browser and "
+                        "ssaolab would read as different files");
+    const std::string& raw = uri;
     std::string path;
     size_t start = 0;
     for (;;) {
         const size_t slash = raw.find('/', start);
         const std::string part = percentDecode(raw.substr(start, slash == std::string::npos ? std::string::npos : slash - start));
-        if (part.empty() || part == "." || part == ".." || part.find_first_of(std::string("/\\\0", 3)) != std::string::npos)
-            throw Error("'" + clipped(uri) + "' leaves the scene's folder or names a folder (an empty, '.' or '..' component, "
+        if (part.empty() || part == ".." || part.find_first_of(std::string("/\\\0", 3)) != std::string::npos)
+            throw Error("'" + clipped(uri) + "' leaves the scene's folder or names a folder (an empty or '..' component, "
                         "or an encoded separator)");
-        path += (path.empty() ? "" : "/") + part;
+        if (part != ".") path += (path.empty() ? "" : "/") + part; // dropped, as the browser drops it
+        if (slash == std::string::npos && path.empty())
+            throw Error("'" + clipped(uri) + "' names the scene's folder, not a file");
         if (slash == std::string::npos) return path;
         start = slash + 1;
     }

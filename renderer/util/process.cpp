@@ -87,6 +87,11 @@ ProgramRun runProgram(const std::vector<std::string>& argv, ChildStream out, Chi
             deadline = Clock::now() + std::chrono::microseconds(static_cast<long long>(timeoutSeconds * 1e6));
         char buf[4096];
         while (capture) {
+            if (deadline && msLeft(deadline) == 0) { // a child that never stops writing still meets its limit
+                ::kill(pid, SIGKILL);
+                run.timedOut = true;
+                break;
+            }
             pollfd p{fds[0], POLLIN, 0};
             const int ready = ::poll(&p, 1, msLeft(deadline));
             if (ready < 0 && errno == EINTR) continue;
@@ -120,7 +125,11 @@ void limitAddressSpace(unsigned mib) {
 #ifdef SSAO_SANITIZED
     (void)mib;
 #else
-    const rlimit r{rlim_t(mib) << 20, rlim_t(mib) << 20};
+    rlimit r{};
+    if (::getrlimit(RLIMIT_DATA, &r) != 0) throw Error("cannot read this process's memory limit");
+    const rlim_t want = rlim_t(mib) << 20; // only ever lowered: an inherited lower limit stays
+    r.rlim_max = r.rlim_max == RLIM_INFINITY ? want : std::min(r.rlim_max, want);
+    r.rlim_cur = r.rlim_cur == RLIM_INFINITY ? r.rlim_max : std::min(r.rlim_cur, r.rlim_max);
     if (::setrlimit(RLIMIT_DATA, &r) != 0) throw Error("cannot limit this process's memory to " + std::to_string(mib) + " MiB");
 #endif
 }

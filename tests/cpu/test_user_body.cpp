@@ -99,3 +99,46 @@ TEST(UserBody, DirectivesThatRedirectOrReconfigureTheCompilerAreRefusedByLine) {
     expectRefused("#define CAT(a, b) a ## b\n", "t.ao.glsl:1:", "token pasting");
     expectRefused("/* a comment\nover lines */ float x;\n#define \\\n  Y 1\n#line 9\n", "t.ao.glsl:5:", "#line");
 }
+
+TEST(UserBody, TheCheckerItselfRecursesOnlyBoundedlyDeep) {
+    // 20 000 chained macros, and a call nested 20 000 times in its own argument: refused by line
+    // before the checker's own recursion could run out of stack.
+    std::string chain = "#define M0 1.0\n";
+    for (int i = 1; i < 20000; ++i)
+        chain += "#define M" + std::to_string(i) + " M" + std::to_string(i - 1) + "\n";
+    expectRefused(chain + "float f() { return M19999; }\n", "t.ao.glsl:20001:", "levels deep");
+    expectRefused("#define F(x) x\nfloat f() { return " + repeated("F(", 20000, "") + "1.0" + std::string(20000, ')') + "; }\n",
+                  "t.ao.glsl:2:", "levels deep");
+}
+
+TEST(UserBody, WhatThePreprocessorSeesIsWhatIsChecked) {
+    // Lines are spliced before comments end, as GLSL reads them: a comment closed by "*\<newline>/"
+    // hides nothing.
+    expectRefused("/* x *\\\n/\n#line 5\n", "t.ao.glsl:3:", "#line is not available");
+    // An #include inside a comment is still a line the shader library would inline.
+    expectRefused("/*\n#include \"../../etc/passwd\"\n*/\n", "t.ao.glsl:2:", "#include is not available");
+    // A function-like macro whose name is also a part of the word "define".
+    expectRefused("#define f(x) x + x + x + x\nfloat g() { return " + repeated("f(", 15, "") + "0.1" + std::string(15, ')') +
+                      "; }\n",
+                  "t.ao.glsl:2:", "expand");
+    // #if is not evaluated: every definition a name was given may apply, #undef forgets nothing.
+    expectRefused("#define K " + repeated("k", 3000, "+") + "\n#if 0\n#undef K\n#define K 1\n#endif\n"
+                  "float g(float k) { return K + K + K; }\n",
+                  "t.ao.glsl:6:", "macros expanded");
+    // A stray ')' in a branch that is not compiled does not lift the nesting bound.
+    expectRefused("#if 0\n" + std::string(100, ')') + "\n#endif\nfloat g() { return " + std::string(100, '(') + "1.0" +
+                      std::string(100, ')') + "; }\n",
+                  "t.ao.glsl:4:", "nest deeper than 64");
+    // An unsigned size: -1u is 4294967295.
+    expectRefused("float a[-1u];\n", "t.ao.glsl:1:", "an array of 4.2949673e+09 elements");
+}
+
+TEST(UserBody, ConstantsAreEvaluatedWithinTheSameBounds) {
+    // 200 000 signs, and a 623-byte doubling chain evaluated as an array's size: each once crashed
+    // (the checker's own stack) or hung the checker.
+    expectRefused("float w[" + std::string(200000, '-') + "1];\n", "t.ao.glsl:1:", "levels deep");
+    std::string chain = "#define M0 1\n";
+    for (int k = 1; k <= 14; ++k)
+        chain += "#define M" + std::to_string(k) + " (" + repeated("M" + std::to_string(k - 1), 8, "+") + ")\n";
+    expectRefused(chain + "float w[M14];\n", "t.ao.glsl:16:", "steps");
+}

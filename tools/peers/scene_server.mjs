@@ -36,10 +36,13 @@ export function requestComponents(rawUrl) {
 
 // A glTF URI as an allowlist key ('a/b c.png'): a relative reference with no scheme and no leading
 // '/', decoded per component, '.' components dropped as the browser drops them; null otherwise
-// (data:, http:, file:, '//host', a '..' anywhere, a malformed escape).
+// (data:, http:, file:, '//host', a '..' anywhere, a malformed escape, and '?', '#', '+' or a
+// control character, which the browser, tinygltf and ssaolab's own check would each read differently:
+// scene/browser_assets.cpp refuses the same).
 export function uriKey(uri) {
     if (typeof uri !== 'string' || /^[a-z][a-z0-9+.-]*:/i.test(uri) || /^[/\\]/.test(uri)) return null;
-    const parts = decodeComponents(uri.split(/[?#]/)[0]);
+    if (/[?#+\x00-\x1f\x7f]/.test(uri)) return null;
+    const parts = decodeComponents(uri);
     const kept = parts && parts.filter((n) => n !== '.');
     return kept && kept.length > 0 && kept.every(plainName) ? kept.join('/') : null;
 }

@@ -82,7 +82,8 @@ test('the allowlist holds only plain relative references', () => {
     for (const u of ['http://x/a.png', 'HTTPS://x', 'file:///etc/passwd', 'blob:x', 'data:,x', '/a.png', '//h/a.png',
                      '\\\\h\\a.png', '../a.png', 'a/%2e%2e/b.png', 'a%2Fb.png', 'a%5Cb.png', 'a%00.png', '%ZZ', '', '.', 42])
         assert.equal(uriKey(u), null, String(u));
-    assert.equal(uriKey('./tex/a%20b.png#frag'), 'tex/a b.png');
+    assert.equal(uriKey('./tex/a%20b.png'), 'tex/a b.png');
+    for (const u of ['big.png?x', 'a.png#frag', 'a+b.bin', 'a\tb.png', '.\t./x.png']) assert.equal(uriKey(u), null, u);
     assert.deepEqual(requestComponents('/scene/a%2520b'), ['scene', 'a%20b']); // decoded once, not twice
 });
 

@@ -1,6 +1,7 @@
 #include "commands/probe/probe_command.h"
 
 #include "cli/headless_runner.h"
+#include "gl/resources.h"
 #include "gl/shader_library.h"
 #include "settings/params.h"
 #include "techniques/technique.h"
@@ -70,7 +71,16 @@ int runCompileGlsl(const std::string& name, const std::string& source, const std
     HeadlessRunner run;
     gl::ShaderLibrary lib(shaderDir.empty() ? shaderRoot() : shaderDir);
     lib.setSource(name, text);
-    lib.program(vert, name, defs);
+    const GLuint program = lib.program(vert, name, defs);
+    // One pixel drawn: llvmpipe generates a shader's machine code at its first draw, which must
+    // happen here too, not first in the parent.
+    gl::RenderTarget target;
+    target.ensure(1, 1, GL_R32F, "compile-glsl.target");
+    target.bind();
+    glViewport(0, 0, 1, 1);
+    glUseProgram(program);
+    gl::FullscreenTriangle().draw();
+    glFinish();
     run.checkGl(name);
     std::printf("ok %s\n", userTechniqueHash(text).c_str());
     return 0;

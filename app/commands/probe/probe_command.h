@@ -12,7 +12,8 @@
 //
 // `ssaolab compile-glsl NAME --source TEXT --shaders DIR --vert FILE --define K=V ...`: one program of a
 // fragment shader registered as NAME (gl/shader_library.h setSourceGate, app/cli/compile_gate.h)
-// compiled and linked as the parent would; prints "ok HASH" or its compile error.
+// compiled and linked as the parent would and drawn on one pixel (llvmpipe generates machine code at
+// the first draw); prints "ok HASH" or its compile error.
 #pragma once
 #include <string>
 #include <utility>

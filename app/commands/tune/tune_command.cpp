@@ -472,9 +472,9 @@ int runTune(const TuneOptions& o) {
     FitVerdict verdict = judgeFit(heldOutScores(t, heldBefore, heldAfter));
     verdict.metric = objectiveName(o);
     printTuned(o, t, knobs, before, after);
-    printWarnings(atRangeEdge(knobs));
     if (verdict.overfit && !o.saveOverfit) throw Error(refusalText(verdict, o.out)); // nothing written
     saveTuned(o, t, knobs, before, after, verdict, w, h);
+    printWarnings(atRangeEdge(knobs)); // once saved: a failed write is its one line
     if (verdict.overfit)
         printWarnings({overfitSavedText(verdict, o.out)});
     else if (!verdict.worse.empty())

@@ -14,6 +14,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <sstream>
 
 namespace ssao {
 
@@ -23,6 +24,7 @@ struct Tok {
     std::string text;
     int line = 0;
     bool ident = false, number = false;
+    size_t col = 0; // where it starts on its line
 };
 
 struct Macro {
@@ -55,7 +57,7 @@ void lexLine(const std::string& s, int line, std::vector<Tok>& out) {
                                     ((s[j] == '+' || s[j] == '-') && (s[j - 1] == 'e' || s[j - 1] == 'E')))) ++j;
         else if (c == '#' && j < s.size() && s[j] == '#')
             ++j; // token pasting, refused by name
-        out.push_back({s.substr(i, j - i), line, ident, number});
+        out.push_back({s.substr(i, j - i), line, ident, number, i});
         i = j;
     }
 }
@@ -71,15 +73,18 @@ class BodyChecker {
     Extent measure(const std::vector<Tok>& seq, size_t b, size_t e, const Macro* owner, const std::vector<Extent>* args,
                    std::set<std::string>& active, int line);
     size_t callEnd(const std::vector<Tok>& seq, size_t open, size_t e, std::vector<std::pair<size_t, size_t>>& args) const;
-    std::optional<double> constant(const std::vector<Tok>& seq, size_t& i, size_t e, int depth) const;
+    std::optional<double> constant(const std::vector<Tok>& seq, size_t& i, size_t e, int line);
     void arraySize(const std::vector<Tok>& toks, size_t open);
     void step(int line);
 
     user::Where where_;
-    std::map<std::string, Macro> macros_;
+    // Every definition a name was given, each possibly live: #if is not evaluated, so a name defined
+    // in two branches is measured as the costlier, and #undef forgets nothing.
+    std::map<std::string, std::vector<Macro>> macros_;
     std::map<std::string, double> constInts_;
     double work_ = 0, total_ = 0, statement_ = 0;
     int depth_ = 0;
+    int recursion_ = 0; // measure() calls open: macros within macros, calls within arguments
 };
 
 void BodyChecker::step(int line) {
@@ -88,10 +93,35 @@ void BodyChecker::step(int line) {
                               " steps (a user technique's text, macros expanded, is bounded)");
 }
 
-// The text's lines: comments blanked (newlines kept), directives (with their \-continued lines)
-// handled in order with the code between them.
+// The text as the GLSL preprocessor reads it: first every #include line the shader library would
+// inline - it matches physical lines whatever a comment says (gl/shader_library.cpp includeTarget) -
+// then lines spliced at a backslash-newline, then comments blanked (newlines kept); directives
+// handled in order with the code between them. `lines[k]`: the file's line of spliced line k.
 void BodyChecker::run(const std::string& text) {
-    std::string s = text;
+    {
+        std::istringstream in(text);
+        std::string line;
+        for (int no = 1; std::getline(in, line); ++no) {
+            size_t i = line.find_first_not_of(" \t");
+            if (i == std::string::npos || line[i] != '#') continue;
+            i = line.find_first_not_of(" \t", i + 1);
+            if (i != std::string::npos && line.compare(i, 7, "include") == 0)
+                where_.fail(no, "#include is not available to a user technique (interface 1 offers what it can read)");
+        }
+    }
+    std::string s;
+    std::vector<int> lines{1};
+    int original = 1;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const size_t crlf = i + 2 < text.size() && text[i + 1] == '\r' && text[i + 2] == '\n' ? 1 : 0;
+        if (text[i] == '\\' && i + 1 + crlf < text.size() && text[i + 1 + crlf] == '\n') { // a splice
+            i += 1 + crlf;
+            ++original;
+            continue;
+        }
+        s += text[i];
+        if (text[i] == '\n') lines.push_back(++original);
+    }
     for (size_t i = 0; i + 1 < s.size(); ++i) {
         if (s[i] == '/' && s[i + 1] == '/') {
             while (i < s.size() && s[i] != '\n') s[i++] = ' ';
@@ -105,25 +135,18 @@ void BodyChecker::run(const std::string& text) {
     }
     std::vector<Tok> pending;
     size_t start = 0;
-    for (int no = 1; start <= s.size(); ++no) {
+    for (size_t k = 0; start <= s.size(); ++k) {
         size_t end = s.find('\n', start);
         if (end == std::string::npos) end = s.size();
-        std::string line = s.substr(start, end - start);
-        const int first = no;
-        while (!line.empty() && line.back() == '\\' && end < s.size()) { // a continued directive or line
-            line.pop_back();
-            const size_t next = s.find('\n', end + 1);
-            line += s.substr(end + 1, (next == std::string::npos ? s.size() : next) - end - 1);
-            end = next == std::string::npos ? s.size() : next;
-            ++no;
-        }
+        const std::string line = s.substr(start, end - start);
+        const int no = lines[std::min(k, lines.size() - 1)];
         const size_t hash = line.find_first_not_of(" \t\r");
         if (hash != std::string::npos && line[hash] == '#') {
             code(pending);
             pending.clear();
-            directive(line.substr(hash + 1), first);
+            directive(line.substr(hash + 1), no);
         } else {
-            lexLine(line, first, pending);
+            lexLine(line, no, pending);
         }
         start = end + 1;
     }
@@ -135,15 +158,12 @@ void BodyChecker::directive(const std::string& rest, int no) {
     lexLine(rest, no, toks);
     if (toks.empty()) return;
     const std::string& d = toks[0].text;
-    if (d == "include")
-        where_.fail(no, "#include is not available to a user technique (interface 1 offers what it can read)");
     if (d == "line" || d == "version" || d == "extension")
         where_.fail(no, "#" + d + " is not available to a user technique (" +
                             (d == "line" ? std::string("its errors name the file's own lines")
                                          : "ssaolab sets the GLSL version and the extensions the interface needs") + ")");
     for (const Tok& t : toks)
         if (t.text == "##") where_.fail(no, "token pasting (##) is not available to a user technique");
-    if (d == "undef" && toks.size() > 1) macros_.erase(toks[1].text);
     if ((d == "if" || d == "elif") && toks.size() > 1) {
         std::set<std::string> active;
         measure(toks, 1, toks.size(), nullptr, nullptr, active, no);
@@ -152,8 +172,7 @@ void BodyChecker::directive(const std::string& rest, int no) {
     Macro m;
     size_t i = 2;
     // A function-like macro's '(' follows its name with no blank between.
-    const size_t nameEnd = rest.find(toks[1].text) + toks[1].text.size();
-    if (toks.size() > 2 && toks[2].text == "(" && nameEnd < rest.size() && rest[nameEnd] == '(') {
+    if (toks.size() > 2 && toks[2].text == "(" && toks[2].col == toks[1].col + toks[1].text.size()) {
         m.function = true;
         for (i = 3; i < toks.size() && toks[i].text != ")"; ++i)
             if (toks[i].ident) m.params.push_back(toks[i].text);
@@ -166,7 +185,7 @@ void BodyChecker::directive(const std::string& rest, int no) {
         m.body.push_back(toks[i]);
     }
     if (depth != 0) where_.fail(no, "a #define's body must close every bracket it opens, and open every one it closes");
-    macros_[toks[1].text] = std::move(m);
+    macros_[toks[1].text].push_back(std::move(m));
 }
 
 void BodyChecker::code(const std::vector<Tok>& t) {
@@ -176,7 +195,8 @@ void BodyChecker::code(const std::vector<Tok>& t) {
         if (k.text == "const" && i + 4 < t.size() && (t[i + 1].text == "int" || t[i + 1].text == "uint") && t[i + 2].ident &&
             t[i + 3].text == "=") { // an array's size may be such a constant
             size_t j = i + 4;
-            if (const auto v = constant(t, j, t.size(), 0); v && j < t.size() && t[j].text == ";") constInts_[t[i + 2].text] = *v;
+            if (const auto v = constant(t, j, t.size(), t[i].line); v && j < t.size() && t[j].text == ";")
+                constInts_[t[i + 2].text] = *v;
         }
         if (k.text == "[") arraySize(t, i);
         size_t next = i + 1;
@@ -184,13 +204,14 @@ void BodyChecker::code(const std::vector<Tok>& t) {
         const auto m = k.ident ? macros_.find(k.text) : macros_.end();
         if (m != macros_.end()) {
             std::vector<std::pair<size_t, size_t>> spans;
-            if (m->second.function && i + 1 < t.size() && t[i + 1].text == "(") {
+            const bool function = std::any_of(m->second.begin(), m->second.end(), [](const Macro& d) { return d.function; });
+            if (function && i + 1 < t.size() && t[i + 1].text == "(") {
                 const size_t end = callEnd(t, i + 1, t.size(), spans);
                 if (end != std::string::npos) next = end;
             }
             x = measure(t, i, next, nullptr, nullptr, active, k.line);
         } else {
-            depth_ += opens(k.text) ? 1 : closes(k.text) ? -1 : 0;
+            depth_ = std::max(0, depth_ + (opens(k.text) ? 1 : closes(k.text) ? -1 : 0)); // a stray ')' in #if 0
         }
         if (depth_ + x.depth > kMaxUserNesting)
             where_.fail(k.line, "brackets nest deeper than " + std::to_string(kMaxUserNesting) + " levels");
@@ -207,6 +228,15 @@ void BodyChecker::code(const std::vector<Tok>& t) {
 
 Extent BodyChecker::measure(const std::vector<Tok>& seq, size_t b, size_t e, const Macro* owner,
                             const std::vector<Extent>* args, std::set<std::string>& active, int line) {
+    // The checker's own stack: a chain of thousands of #defines, or a call nested in its argument
+    // thousands of times, is refused before it recurses that deep.
+    struct Open {
+        int& n;
+        ~Open() { --n; }
+    } open{++recursion_};
+    if (recursion_ > kMaxUserNesting * 4)
+        where_.fail(line, "macros expand within macros or calls more than " + std::to_string(kMaxUserNesting * 4) +
+                              " levels deep");
     Extent out;
     int cur = 0;
     auto add = [&](const Extent& x) {
@@ -229,19 +259,30 @@ Extent BodyChecker::measure(const std::vector<Tok>& seq, size_t b, size_t e, con
             }
         }
         const auto m = k.ident && !active.count(k.text) ? macros_.find(k.text) : macros_.end();
-        std::vector<std::pair<size_t, size_t>> spans;
-        const size_t end = m != macros_.end() && m->second.function && i + 1 < e && seq[i + 1].text == "("
-                               ? callEnd(seq, i + 1, e, spans)
-                               : std::string::npos;
-        if (m != macros_.end() && (!m->second.function || end != std::string::npos)) {
+        if (m != macros_.end()) {
+            std::vector<std::pair<size_t, size_t>> spans;
+            const bool function = std::any_of(m->second.begin(), m->second.end(), [](const Macro& d) { return d.function; });
+            const size_t end = function && i + 1 < e && seq[i + 1].text == "(" ? callEnd(seq, i + 1, e, spans) : std::string::npos;
             std::vector<Extent> argx;
             for (const auto& [ab, ae] : spans)
                 argx.push_back(measure(seq, ab, ae, owner, args, active, line));
+            // Each definition that could apply, the costliest counted; after an object-like one the
+            // call's own tokens follow as they are.
+            const Extent rest = end == std::string::npos ? Extent{} : measure(seq, i + 1, end, owner, args, active, line);
+            Extent worst{-1, 0};
             active.insert(k.text);
-            add(measure(m->second.body, 0, m->second.body.size(), &m->second, &argx, active, line));
+            for (const Macro& d : m->second) {
+                if (d.function && end == std::string::npos) continue; // a function-like name not called
+                Extent x = measure(d.body, 0, d.body.size(), d.function ? &d : nullptr, d.function ? &argx : nullptr, active, line);
+                if (!d.function) x.tokens += rest.tokens, x.depth = std::max(x.depth, rest.depth);
+                worst.tokens = std::max(worst.tokens, x.tokens), worst.depth = std::max(worst.depth, x.depth);
+            }
             active.erase(k.text);
-            i = m->second.function ? end : i + 1;
-            continue;
+            if (worst.tokens >= 0) {
+                add(worst);
+                i = end == std::string::npos ? i + 1 : end;
+                continue;
+            }
         }
         add({1, 0});
         ++i;
@@ -270,9 +311,17 @@ size_t BodyChecker::callEnd(const std::vector<Tok>& seq, size_t open, size_t e,
 
 // An integer constant expression of literals, #defined and `const int` names, + - * / % and
 // brackets; none when it holds anything else (a variable: an index, not a size).
-std::optional<double> BodyChecker::constant(const std::vector<Tok>& seq, size_t& i, size_t e, int depth) const {
-    if (depth > 16) return std::nullopt;
+std::optional<double> BodyChecker::constant(const std::vector<Tok>& seq, size_t& i, size_t e, int line) {
     auto primary = [&](auto& self, auto& expr) -> std::optional<double> {
+        // Each level of signs, brackets and macros is a level of this recursion: bounded as measure's.
+        struct Open {
+            int& n;
+            ~Open() { --n; }
+        } open{++recursion_};
+        if (recursion_ > kMaxUserNesting * 4)
+            where_.fail(line, "a constant nests signs, brackets or macros more than " + std::to_string(kMaxUserNesting * 4) +
+                                  " levels deep");
+        step(line);
         if (i >= e) return std::nullopt;
         const Tok& k = seq[i];
         if (k.text == "-" || k.text == "+") {
@@ -291,10 +340,15 @@ std::optional<double> BodyChecker::constant(const std::vector<Tok>& seq, size_t&
         if (k.number) return std::strtod(k.text.c_str(), nullptr);
         if (const auto c = constInts_.find(k.text); c != constInts_.end()) return c->second;
         const auto m = macros_.find(k.text);
-        if (m == macros_.end() || m->second.function) return std::nullopt;
-        size_t j = 0;
-        const auto v = constant(m->second.body, j, m->second.body.size(), depth + 1);
-        return v && j == m->second.body.size() ? v : std::nullopt;
+        if (m == macros_.end()) return std::nullopt;
+        std::optional<double> largest; // of every definition that could apply
+        for (const Macro& d : m->second) {
+            size_t j = 0;
+            const auto v = d.function ? std::nullopt : constant(d.body, j, d.body.size(), line);
+            if (!v || j != d.body.size()) return std::nullopt;
+            if (!largest || std::fabs(*v) > std::fabs(*largest)) largest = v;
+        }
+        return largest;
     };
     auto term = [&](auto& expr) -> std::optional<double> {
         auto v = primary(primary, expr);
@@ -324,8 +378,13 @@ void BodyChecker::arraySize(const std::vector<Tok>& toks, size_t open) {
     double elements = 1;
     for (size_t at = open; at < toks.size() && toks[at].text == "[";) {
         size_t j = at + 1;
-        const auto v = constant(toks, j, toks.size(), 0);
+        auto v = constant(toks, j, toks.size(), toks[open].line);
         if (!v || j >= toks.size() || toks[j].text != "]") return;
+        // An unsigned literal makes the size unsigned: -1u is 4294967295.
+        const bool unsignedSize = std::any_of(toks.begin() + long(at) + 1, toks.begin() + long(j), [](const Tok& t) {
+            return t.number && (t.text.back() == 'u' || t.text.back() == 'U');
+        });
+        if (unsignedSize) v = std::fmod(std::fmod(*v, 4294967296.0) + 4294967296.0, 4294967296.0);
         elements *= std::max(1.0, std::fabs(*v));
         if (elements > kMaxUserArrayElements)
             where_.fail(toks[open].line, "an array of " + user::formatNumber(elements) + " elements; a user technique's arrays hold at most " +
