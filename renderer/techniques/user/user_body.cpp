@@ -76,6 +76,13 @@ class BodyChecker {
     std::optional<double> constant(const std::vector<Tok>& seq, size_t& i, size_t e, int line);
     void arraySize(const std::vector<Tok>& toks, size_t open);
     void step(int line);
+    // One more level of the checker's own recursion (measure, constant), given back when the result
+    // is destroyed; past kMaxUserNesting x 4 levels the file is refused (its stack stays small).
+    struct Level {
+        int& n;
+        ~Level() { --n; }
+    };
+    Level deeper(int line, const char* what);
 
     user::Where where_;
     // Every definition a name was given, each possibly live: #if is not evaluated, so a name defined
@@ -86,6 +93,12 @@ class BodyChecker {
     int depth_ = 0;
     int recursion_ = 0; // measure() calls open: macros within macros, calls within arguments
 };
+
+BodyChecker::Level BodyChecker::deeper(int line, const char* what) {
+    if (++recursion_ > kMaxUserNesting * 4)
+        where_.fail(line, std::string(what) + " more than " + std::to_string(kMaxUserNesting * 4) + " levels deep");
+    return Level{recursion_};
+}
 
 void BodyChecker::step(int line) {
     if (++work_ > kMaxUserExpandedTokens)
@@ -228,15 +241,8 @@ void BodyChecker::code(const std::vector<Tok>& t) {
 
 Extent BodyChecker::measure(const std::vector<Tok>& seq, size_t b, size_t e, const Macro* owner,
                             const std::vector<Extent>* args, std::set<std::string>& active, int line) {
-    // The checker's own stack: a chain of thousands of #defines, or a call nested in its argument
-    // thousands of times, is refused before it recurses that deep.
-    struct Open {
-        int& n;
-        ~Open() { --n; }
-    } open{++recursion_};
-    if (recursion_ > kMaxUserNesting * 4)
-        where_.fail(line, "macros expand within macros or calls more than " + std::to_string(kMaxUserNesting * 4) +
-                              " levels deep");
+    // A chain of thousands of #defines, or a call nested in its argument thousands of times.
+    const Level level = deeper(line, "macros expand within macros or calls");
     Extent out;
     int cur = 0;
     auto add = [&](const Extent& x) {
@@ -313,14 +319,7 @@ size_t BodyChecker::callEnd(const std::vector<Tok>& seq, size_t open, size_t e,
 // brackets; none when it holds anything else (a variable: an index, not a size).
 std::optional<double> BodyChecker::constant(const std::vector<Tok>& seq, size_t& i, size_t e, int line) {
     auto primary = [&](auto& self, auto& expr) -> std::optional<double> {
-        // Each level of signs, brackets and macros is a level of this recursion: bounded as measure's.
-        struct Open {
-            int& n;
-            ~Open() { --n; }
-        } open{++recursion_};
-        if (recursion_ > kMaxUserNesting * 4)
-            where_.fail(line, "a constant nests signs, brackets or macros more than " + std::to_string(kMaxUserNesting * 4) +
-                                  " levels deep");
+        const Level level = deeper(line, "a constant nests signs, brackets or macros"); // each a level of recursion
         step(line);
         if (i >= e) return std::nullopt;
         const Tok& k = seq[i];
