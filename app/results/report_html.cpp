@@ -1,6 +1,8 @@
 #include "results/report_html.h"
 
 #include "measure/thumbnails.h"
+#include "metrics/motion_metrics.h"
+#include "results/bench_report.h"
 #include "output/escape.h"
 #include "util/error.h"
 #include "util/files.h"
@@ -109,7 +111,8 @@ void labelsAndKey(std::ostringstream& s, const std::vector<Point>& pts, const st
 
 // Time-against-error plot: log x (time x baseline), linear y (RMSE), the front as a step line,
 // the reference's noise floor as a grey band from 0.
-std::string svgPlot(const std::vector<Point>& pts, const std::string& title, double noise, double W = 720) {
+std::string svgPlot(const std::vector<Point>& pts, const std::string& title, double noise, double W = 720,
+                    const std::string& yAxis = "RMSE vs ray-traced reference") {
     const double H = W * 0.6, L = 62, R = 18, T = 30, B = 50;
     double xlo = 1e300, xhi = 0, yhi = 0;
     for (const Point& p : pts) {
@@ -145,7 +148,7 @@ std::string svgPlot(const std::vector<Point>& pts, const std::string& title, dou
     s << "<text class=\"axis\" x=\"" << (L + W - R) / 2 << "\" y=\"" << H - 12
       << "\">AO + denoise GPU time, x the baseline's on the same view and machine (log)</text>"
       << "<text class=\"axis\" transform=\"translate(14 " << (T + H - B) / 2
-      << ") rotate(-90)\">RMSE vs ray-traced reference</text>";
+      << ") rotate(-90)\">" << htmlText(yAxis) << "</text>";
     std::vector<const Point*> front;
     for (const Point& p : pts)
         if (p.front) front.push_back(&p);
@@ -174,6 +177,39 @@ std::string svgPlot(const std::vector<Point>& pts, const std::string& title, dou
 
 // Per configuration over `rows`: geometric mean of the time ratios, RMS of the RMSE, the min..max
 // bar in ratio units; the front of these points.
+// bench --motion: each configuration's time against its motion score (over all scenes), with its
+// own front: what a moving camera is answered with.
+std::vector<Point> motionPoints(const BenchRun& run) {
+    std::vector<Point> pts;
+    std::vector<double> t, e;
+    for (const ConfigSummary& s : run.summary) {
+        const double score = motionScore(s.motion.rmseMean, s.motion.instability);
+        if (!(s.timeRatio > 0) || !std::isfinite(score)) continue;
+        Point p;
+        p.label = run.sweep.configs[s.config].label;
+        p.baseline = s.config == run.sweep.baseline;
+        p.t = p.tmin = p.tmax = s.timeRatio, p.e = score;
+        p.hover = p.label + "\ntime " + fmt(p.t, 3) + "x the baseline's\nmotion score " + fmt(score);
+        pts.push_back(p);
+        t.push_back(p.t), e.push_back(p.e);
+    }
+    const std::vector<bool> f = paretoFront(t, e);
+    for (size_t i = 0; i < pts.size(); ++i)
+        pts[i].front = f[i];
+    return pts;
+}
+
+// With motion columns: the moving camera's answer beside the still one, and whether they differ.
+std::string motionAnswerHtml(const BenchRun& run) {
+    const size_t m = mostAccurateInMotion(run);
+    if (m == std::string::npos) return "";
+    const ConfigSummary& s = run.summary[m];
+    const std::string differ = winnersDifferLine(run, [](const std::string& x) { return htmlText(x); });
+    return "<p>Lowest error in motion (motion score): <b>" + htmlText(run.sweep.configs[m].label) + "</b>: " +
+           fmt(motionScore(s.motion.rmseMean, s.motion.instability)) + " at " + fmt(s.timeRatio, 3) +
+           "x the baseline's time. " + differ + "</p>";
+}
+
 std::vector<Point> pointsOf(const BenchRun& run, const std::vector<const ViewResult*>& rows) {
     const size_t n = run.sweep.configs.size();
     std::vector<double> logT(n, 0), mse(n, 0), lo(n, 1e300), hi(n, 0);
@@ -372,7 +408,12 @@ std::string benchHtml(const BenchRun& run, const std::string& dir, const Answer*
               << sh.value("rows", 0) << "</td></tr>";
         h << "</table>";
     }
-    h << "<h2>All scenes</h2><div class=\"plots\">" << svgPlot(pointsOf(run, all), "all scenes", noiseOf(all)) << "</div>";
+    const std::vector<Point> moving = motionPoints(run);
+    h << "<h2>All scenes</h2>" << motionAnswerHtml(run) << "<div class=\"plots\">"
+      << svgPlot(pointsOf(run, all), moving.empty() ? "all scenes" : "all scenes, still camera", noiseOf(all));
+    if (!moving.empty())
+        h << svgPlot(moving, "all scenes, in motion", 0.0, 720, "motion score: sqrt(RMSE^2 + instability^2)");
+    h << "</div>";
     h << "<h2>Per scene</h2><div class=\"plots\">";
     for (const auto& sc : sceneOrder)
         h << svgPlot(pointsOf(run, byScene[sc]), sc, noiseOf(byScene[sc]), 560);

@@ -173,4 +173,9 @@ TEST(CliMotion, AMotionAnswerThatDiffersFromTheStillOneIsSaid) {
     EXPECT_NE(md.find("Lowest error in motion (motion score): **"), std::string::npos);
     EXPECT_NE(md.find("is not the lowest in motion"), std::string::npos);
     EXPECT_NE(md.find("| configuration | x baseline time | still RMSE |"), std::string::npos);
+    const std::string html = slurp(out + "/report.html");
+    EXPECT_NE(html.find("Lowest error in motion (motion score): <b>"), std::string::npos);
+    EXPECT_NE(html.find("is not the lowest in motion"), std::string::npos);
+    EXPECT_NE(html.find("all scenes, in motion"), std::string::npos); // the motion front's own plot
+    EXPECT_NE(html.find("motion score: sqrt(RMSE^2 + instability^2)"), std::string::npos);
 }
