@@ -177,11 +177,20 @@ std::string svgPlot(const std::vector<Point>& pts, const std::string& title, dou
 
 // Per configuration over `rows`: geometric mean of the time ratios, RMS of the RMSE, the min..max
 // bar in ratio units; the front of these points.
+// Each point on the front of (time, error) or not.
+void markFront(std::vector<Point>& pts) {
+    std::vector<double> t, e;
+    for (const Point& p : pts)
+        t.push_back(p.t), e.push_back(p.e);
+    const std::vector<bool> f = paretoFront(t, e);
+    for (size_t i = 0; i < pts.size(); ++i)
+        pts[i].front = f[i];
+}
+
 // bench --motion: each configuration's time against its motion score (over all scenes), with its
 // own front: what a moving camera is answered with.
 std::vector<Point> motionPoints(const BenchRun& run) {
     std::vector<Point> pts;
-    std::vector<double> t, e;
     for (const ConfigSummary& s : run.summary) {
         const double score = motionScore(s.motion.rmseMean, s.motion.instability);
         if (!(s.timeRatio > 0) || !std::isfinite(score)) continue;
@@ -191,11 +200,8 @@ std::vector<Point> motionPoints(const BenchRun& run) {
         p.t = p.tmin = p.tmax = s.timeRatio, p.e = score;
         p.hover = p.label + "\ntime " + fmt(p.t, 3) + "x the baseline's\nmotion score " + fmt(score);
         pts.push_back(p);
-        t.push_back(p.t), e.push_back(p.e);
     }
-    const std::vector<bool> f = paretoFront(t, e);
-    for (size_t i = 0; i < pts.size(); ++i)
-        pts[i].front = f[i];
+    markFront(pts);
     return pts;
 }
 
@@ -223,7 +229,6 @@ std::vector<Point> pointsOf(const BenchRun& run, const std::vector<const ViewRes
         ++count[v->config];
     }
     std::vector<Point> pts;
-    std::vector<double> t, e;
     for (size_t c = 0; c < n; ++c) {
         if (!count[c]) continue;
         Point p;
@@ -235,11 +240,8 @@ std::vector<Point> pointsOf(const BenchRun& run, const std::vector<const ViewRes
                   (run.summary.size() > run.sweep.baseline ? fmt(p.e / run.summary[run.sweep.baseline].rmse, 3) : "–") +
                   "x the baseline's, over all scenes)";
         pts.push_back(p);
-        t.push_back(p.t), e.push_back(p.e);
     }
-    const std::vector<bool> f = paretoFront(t, e);
-    for (size_t i = 0; i < pts.size(); ++i)
-        pts[i].front = f[i];
+    markFront(pts);
     return pts;
 }
 
