@@ -112,7 +112,7 @@ ProgramRun runProgram(const std::vector<std::string>& argv, ChildStream out, Chi
     return run;
 }
 
-// A sanitizer's shadow memory takes terabytes of address space: no limit there.
+// A sanitizer's shadow memory takes terabytes of address space: no rlimit can hold it.
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
 #define SSAO_SANITIZED 1
 #elif defined(__has_feature)
@@ -123,7 +123,20 @@ ProgramRun runProgram(const std::vector<std::string>& argv, ChildStream out, Chi
 
 void limitAddressSpace(unsigned mib) {
 #ifdef SSAO_SANITIZED
-    (void)mib;
+    // A thread watches the peak resident memory instead: past `mib` MiB more than at the start (the
+    // sanitizer's own share), the process ends as a killed one would.
+    auto peakKiB = [] {
+        rusage u{};
+        ::getrusage(RUSAGE_SELF, &u);
+        return static_cast<long long>(u.ru_maxrss);
+    };
+    const long long limit = peakKiB() + (static_cast<long long>(mib) << 10);
+    std::thread([peakKiB, limit] {
+        for (;;) {
+            if (peakKiB() > limit) ::_exit(137);
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+    }).detach();
 #else
     rlimit r{};
     if (::getrlimit(RLIMIT_DATA, &r) != 0) throw Error("cannot read this process's memory limit");

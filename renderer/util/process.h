@@ -27,8 +27,9 @@ ProgramRun runProgram(const std::vector<std::string>& argv, ChildStream out = Ch
 // This process's private writable memory capped at `mib` MiB (RLIMIT_DATA: heap and anonymous
 // mappings, not the address space a GPU driver reserves or maps from its device), for a child that
 // runs untrusted work (a user's GLSL through the driver's compiler): past it an allocation fails
-// there instead of the machine's memory running out. A no-op in a sanitizer build, whose shadow
-// memory takes terabytes. Throws ssao::Error when the limit cannot be set.
+// there instead of the machine's memory running out. In a sanitizer build, whose shadow memory
+// takes terabytes of address space, a thread ends the process (exit 137) once its peak resident
+// memory has grown by `mib` instead. Throws ssao::Error when the limit cannot be set.
 void limitAddressSpace(unsigned mib);
 
 } // namespace ssao
