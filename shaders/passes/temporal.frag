@@ -88,15 +88,6 @@ void main() {
         return;
     }
     float frames = 1.0, result = ao;
-    // This frame's AO around the pixel: the history is brought into its range (a point's AO changes
-    // with the view; what the last frames saw can only narrow this frame's noise, not replace it).
-    float lo = ao, hi = ao;
-    for (int k = 0; k < 9; ++k) {
-        ivec2 q = clamp(ivec2(gl_FragCoord.xy) + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), textureSize(aoCurrent, 0) - 1);
-        if (!(texelFetch(gDepth, q, 0).r > 0.0)) continue;
-        float a = texelFetch(aoCurrent, q, 0).r;
-        lo = min(lo, a), hi = max(hi, a);
-    }
     vec4 world = uInvView * vec4(frameViewPosition(vUv, z), 1.0);
     vec4 clip = uPrevViewProj * world;
     if (uParams.x < 0.5 && uParams.w < 0.5 && clip.w > 0.0) {
@@ -110,6 +101,16 @@ void main() {
         vec3 n = dot(N, N) > 1e-12 ? normalize(mat3(uPrevView) * (mat3(uInvView) * N)) : normalize(-Q);
         vec2 h = reprojected(puv, Q, n);
         if (h.y > 0.0) {
+            // This frame's AO around the pixel: the history is brought into its range (a point's AO
+            // changes with the view; the last frames can only narrow this frame's noise, not replace it).
+            float lo = ao, hi = ao;
+            for (int k = 0; k < 9; ++k) {
+                ivec2 q = clamp(ivec2(gl_FragCoord.xy) + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0),
+                                textureSize(aoCurrent, 0) - 1);
+                if (!(texelFetch(gDepth, q, 0).r > 0.0)) continue;
+                float a = texelFetch(aoCurrent, q, 0).r;
+                lo = min(lo, a), hi = max(hi, a);
+            }
             // Moving (the point was elsewhere on screen last frame): a shorter memory, so what the
             // view changed and what resampling blurred fade within a few frames.
             bool moving = any(greaterThan(abs(puv - vUv) * vec2(textureSize(history, 0)), vec2(0.01)));
