@@ -5,7 +5,8 @@ Called by the C++ benchmark command once it has written summary.csv (one row per
 configuration) and results.csv (one row per scene, viewpoint and configuration).
 x: AO + denoise GPU time per frame as a multiple of the baseline's on the same view
 and machine (the time_ratio column; log axis), so shards measured on different
-machines plot together; y: geometry-pixel RMSE against the ray-traced reference.
+machines plot together; y: geometry-pixel RMSE against the ray-traced reference, or with
+--error motion_score the motion score along each view's camera path (bench --objective motion).
 Every configuration is a grey dot with a thin min..max time bar; the Pareto front
 (flagged by the C++ side, not recomputed) is highlighted and joined by a step line;
 the baseline is a black star. Only the front and the baseline are labelled (the
@@ -16,6 +17,7 @@ OUT_by_scene.png/.svg: one panel per scene, views averaged per configuration
 (mean time, RMS of the per-view RMSE), front as flagged per configuration.
 
 Usage: plot_pareto.py --summary S.csv [--results R.csv] --out DIR/pareto [--title T]
+                      [--error rmse|motion_score]
 Bad input: one line on stderr and exit status 2; unusable rows skipped with a warning.
 """
 import argparse
@@ -50,7 +52,11 @@ def flag(text):
     return (text or "").strip().lower() in ("1", "true")
 
 
-def read_rows(path, extra=()):
+YLABEL = {"rmse": "RMSE vs ray-traced reference (geometry pixels)",
+          "motion_score": "motion score: sqrt(per-frame RMSE^2 + instability^2) along the camera path"}
+
+
+def read_rows(path, extra=(), error="rmse"):
     """Rows of a benchmark CSV as dicts with the plotted fields parsed; bad rows skipped."""
     try:
         with open(path, newline="", encoding="utf-8") as f:
@@ -62,17 +68,17 @@ def read_rows(path, extra=()):
         fail(f"malformed CSV {path}: {e}")
     if not raw:
         fail(f"no rows in {path}")
-    missing = [c for c in ("label", "gpu_ms", "rmse") + tuple(extra) if c not in fields]
+    missing = [c for c in ("label", "gpu_ms", error) + tuple(extra) if c not in fields]
     if missing:
         fail(f"{path} lacks column(s) {', '.join(missing)}")
     rows = []
     ratio = "time_ratio" in fields
     for n, r in enumerate(raw, start=2):
-        ms, e = number(r.get("gpu_ms")), number(r.get("rmse"))
+        ms, e = number(r.get("gpu_ms")), number(r.get(error))
         t = number(r.get("time_ratio")) if ratio else ms
         if t is None or e is None or t <= 0 or ms is None or ms <= 0:
             warn(f"{path}:{n}: skipping '{r.get('label')}': gpu_ms={r.get('gpu_ms')!r}, "
-                 f"rmse={r.get('rmse')!r} (need finite numbers, gpu_ms > 0)")
+                 f"{error}={r.get(error)!r} (need finite numbers, gpu_ms > 0)")
             continue
         scale = t / ms  # the min..max bar in the same unit as t
         tmin, tmax = number(r.get("gpu_ms_min")), number(r.get("gpu_ms_max"))
@@ -148,7 +154,7 @@ def place_labels(ax, points):
         taken.append(best[2])
 
 
-def draw(ax, points, title, front_label, legend=True):
+def draw(ax, points, title, front_label, legend=True, error="rmse"):
     from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
     xs, ys = [p["t"] for p in points], [p["e"] for p in points]
     bars = [p for p in points if p["tmin"] is not None and p["tmax"] is not None
@@ -186,7 +192,7 @@ def draw(ax, points, title, front_label, legend=True):
     ax.grid(True, which="minor", axis="x", color="#eeeeee", lw=0.6)
     ax.set_axisbelow(True)
     ax.set_xlabel("AO + denoise GPU time per frame (x the baseline's on the same view and machine)", fontsize=9)
-    ax.set_ylabel("RMSE vs ray-traced reference (geometry pixels)", fontsize=9)
+    ax.set_ylabel(YLABEL[error], fontsize=9)
     ax.set_title("\n".join(textwrap.wrap(title, 70)), fontsize=9)
     if legend:
         ax.legend(loc="upper right", fontsize=7, framealpha=0.9)
@@ -224,10 +230,12 @@ def main(argv=None):
     ap.add_argument("--results", help="results.csv, per scene/viewpoint; adds OUT_by_scene")
     ap.add_argument("--out", required=True, help="output path without extension: DIR/pareto")
     ap.add_argument("--title", default="SSAO run time against error", help="figure title")
+    ap.add_argument("--error", default="rmse", choices=sorted(YLABEL),
+                    help="the y axis: the still RMSE, or the motion score (bench --objective motion)")
     args = ap.parse_args(argv)
     out = args.out[:-4] if args.out.lower().endswith((".png", ".svg")) else args.out
-    summary = read_rows(args.summary)
-    results = read_rows(args.results, extra=("scene",)) if args.results else None
+    summary = read_rows(args.summary, error=args.error)
+    results = read_rows(args.results, extra=("scene",), error=args.error) if args.results else None
     check_front(summary, args.summary)
     try:
         import matplotlib
@@ -238,7 +246,8 @@ def main(argv=None):
     try:
         os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
         fig, ax = plt.subplots(figsize=(10, 6.5))
-        draw(ax, summary, args.title, "Pareto front (best RMSE at this time)")
+        name = "motion score" if args.error == "motion_score" else "RMSE"
+        draw(ax, summary, args.title, f"Pareto front (best {name} at this time)", error=args.error)
         fig.tight_layout()  # before labelling: placement works on final pixel positions
         place_labels(ax, summary)
         save(fig, out)
@@ -247,10 +256,10 @@ def main(argv=None):
             cols, rows = min(len(scenes), 2), math.ceil(len(scenes) / 2)
             fig, axes = plt.subplots(rows, cols, figsize=(7.5 * cols, 5.2 * rows), squeeze=False)
             for i, (ax, (scene, pts)) in enumerate(zip(axes.flat, scenes.items())):
-                draw(ax, pts, scene, "Pareto front (this scene)", legend=(i == 0))
+                draw(ax, pts, scene, "Pareto front (this scene)", legend=(i == 0), error=args.error)
             for ax in list(axes.flat)[len(scenes):]:
                 ax.set_visible(False)
-            fig.suptitle("\n".join(textwrap.wrap(f"{args.title}: per scene (mean over views; RMSE as RMS)", 110)),
+            fig.suptitle("\n".join(textwrap.wrap(f"{args.title}: per scene (mean over views; {name} as RMS)", 110)),
                          fontsize=10)
             fig.tight_layout()
             for ax, pts in zip(axes.flat, scenes.values()):

@@ -3,8 +3,9 @@
 // own axis) or "the cheapest setting at most E wrong" (--max-error). One line with the
 // configuration, its time and error and their ratios to the baseline, a ready `--set` line, and a
 // preset file that reproduces it (scene, size, camera and R included: `render --preset` renders
-// the same numbers); the same answer opens report.md and report.html. An answer that accumulates
-// frames (temporal) says that its error holds for a still camera.
+// the same numbers); the same answer opens report.md and report.html. Every answer names its
+// objective (bench --objective): the still frame's RMSE, or the motion score along each view's
+// camera path; a still answer that accumulates frames (temporal) says its error holds for a still camera.
 #pragma once
 #include "results/bench_results.h"
 #include "scene/camera.h"
@@ -16,9 +17,10 @@
 namespace ssao {
 
 struct Question {
-    double budgetMs = 0;    // > 0: the lowest RMSE whose time (ms, mean over views) is at most this
-    double maxError = 0;    // > 0: the lowest time ratio whose RMSE is at most this
-    double budgetRatio = 0; // > 0: the lowest RMSE whose time ratio (x the baseline's) is at most this
+    double budgetMs = 0;    // > 0: the lowest error whose time (ms, mean over views) is at most this
+    double maxError = 0;    // > 0: the lowest time ratio whose error is at most this
+    double budgetRatio = 0; // > 0: the lowest error whose time ratio (x the baseline's) is at most this
+    Objective objective = Objective::Still; // which error: the still RMSE or the motion score
     bool asked() const { return budgetMs > 0 || maxError > 0 || budgetRatio > 0; }
 };
 
@@ -41,7 +43,8 @@ struct AnswerContext {
 
 // The answer as every output gives it.
 struct Answer {
-    std::string question;               // "within 0.5x the baseline's time", "at most RMSE 0.1"
+    std::string question;               // "within 0.5x the baseline's time, in motion"
+    Objective objective = Objective::Still; // what its error is
     size_t config = std::string::npos;  // npos: no configuration meets the question
     std::string line;                   // stdout's one line
     std::string command;                // renders the answer's preset against the reference

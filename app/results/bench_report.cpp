@@ -58,10 +58,11 @@ std::string metricCells(const ViewResult& v) {
 } // namespace
 
 size_t fastestAtMostBaselineError(const BenchRun& run) {
-    const double base = run.summary[run.sweep.baseline].rmse;
+    const Objective o = runObjective(run);
+    const double base = objectiveError(run.summary[run.sweep.baseline], o);
     size_t best = std::string::npos;
     for (const auto& s : run.summary)
-        if (s.config != run.sweep.baseline && std::isfinite(s.rmse) && s.rmse <= base &&
+        if (s.config != run.sweep.baseline && std::isfinite(objectiveError(s, o)) && objectiveError(s, o) <= base &&
             (best == std::string::npos || s.timeRatio < run.summary[best].timeRatio))
             best = s.config;
     return best;
@@ -81,9 +82,8 @@ size_t mostAccurate(const BenchRun& run) {
 
 size_t mostAccurateInMotion(const BenchRun& run) {
     size_t best = std::string::npos;
-    auto score = [&](size_t c) { return motionScore(run.summary[c].motion.rmseMean, run.summary[c].motion.instability); };
     for (const auto& s : run.summary)
-        if (std::isfinite(s.motion.rmseMean) && (best == std::string::npos || score(s.config) < score(best)))
+        if (std::isfinite(s.motionScore) && (best == std::string::npos || s.motionScore < run.summary[best].motionScore))
             best = s.config;
     return best;
 }
@@ -93,10 +93,9 @@ std::string winnersDifferLine(const BenchRun& run, const std::function<std::stri
     if (still == std::string::npos || moving == std::string::npos || still == moving) return "";
     const auto& cfgs = run.sweep.configs;
     const ConfigSummary &a = run.summary[still], &b = run.summary[moving];
-    return "The still camera's lowest error, " + name(cfgs[still].label) + " (motion score " +
-           num(motionScore(a.motion.rmseMean, a.motion.instability), 4) + "), is not the lowest in motion: " +
-           name(cfgs[moving].label) + " (motion score " + num(motionScore(b.motion.rmseMean, b.motion.instability), 4) + ", " +
-           num(b.timeRatio, 3) + "x the baseline's time).";
+    return "The still camera's lowest error, " + name(cfgs[still].label) + " (motion score " + num(a.motionScore, 4) +
+           "), is not the lowest in motion: " + name(cfgs[moving].label) + " (motion score " + num(b.motionScore, 4) +
+           ", " + num(b.timeRatio, 3) + "x the baseline's time).";
 }
 
 namespace {
@@ -116,7 +115,7 @@ std::string resultsCsv(const BenchRun& run) {
     f << "scene,viewpoint,label,technique,baseline,pareto," << kMetricHeader
       << ",baseline_ms,time_ratio,shard,rmse_vs_oracle,rmse_screen,share_technique,share_screen,share_interaction,"
          "motion_rmse_mean,motion_rmse_max,"
-         "motion_instability,motion_ghosting,settings\n";
+         "motion_instability,motion_ghosting,motion_score,settings\n";
     for (const auto& v : run.views) {
         const BenchConfig& c = cfgs[v.config];
         const std::string shard = run.shards.size() > size_t(v.shard) ? run.shards[v.shard].value("shard", "1/1") : "1/1";
@@ -126,7 +125,8 @@ std::string resultsCsv(const BenchRun& run) {
           << (v.hasSplit ? num(v.vsOracle.rmse) : "") << "," << (v.hasSplit ? num(v.screen.rmse) : "") << ","
           << shareCells(v.hasSplit, v.error.rmse, v.vsOracle.rmse, v.screen.rmse) << ","
           << num(v.motion.rmseMean) << "," << num(v.motion.rmseMax) << "," << num(v.motion.instability) << ","
-          << num(v.motion.ghosting) << "," << csvField(c.keys.dump()) << "\n";
+          << num(v.motion.ghosting) << "," << (v.hasMotion ? num(motionScore(v.motion.rmseMean, v.motion.instability)) : "")
+          << "," << csvField(c.keys.dump()) << "\n";
     }
     return f.str();
 }
@@ -139,7 +139,7 @@ std::string summaryCsv(const BenchRun& run) {
          "psnr_geometry_srgb,psnr_full_srgb,rmse_edge,rmse_interior,ssim,nonfinite,time_ratio,rmse_ratio,"
          "rmse_first_frame,rmse_vs_oracle,rmse_edge_vs_oracle,rmse_interior_vs_oracle,rmse_screen,"
          "rmse_edge_screen,rmse_interior_screen,share_technique,share_screen,share_interaction,gbuffer_ms,layers_ms,ao_ms,denoise_ms,composite_ms,motion_rmse_mean,"
-         "motion_instability,motion_ghosting,settings\n";
+         "motion_instability,motion_ghosting,motion_score,motion_score_ratio,settings\n";
     for (const auto& s : run.summary) {
         const BenchConfig& c = cfgs[s.config];
         f << csvField(c.label) << "," << csvField(c.technique()) << "," << c.baseline << "," << s.pareto
@@ -153,7 +153,7 @@ std::string summaryCsv(const BenchRun& run) {
           << shareCells(std::isfinite(s.technique.rmse), s.rmse, s.technique.rmse, s.screen.rmse) << ","
           << passCells(s.passMs) << ","
           << num(s.motion.rmseMean) << "," << num(s.motion.instability) << "," << num(s.motion.ghosting) << ","
-          << csvField(c.keys.dump())
+          << num(s.motionScore) << "," << num(s.motionRatio) << "," << csvField(c.keys.dump())
           << "\n";
     }
     return f.str();
@@ -240,7 +240,7 @@ std::string passMarkdown(const BenchRun& run) {
 static std::string motionMarkdown(const BenchRun& run) {
     if (!run.facts.contains("motion")) return "";
     const nlohmann::json& p = run.facts["motion"];
-    auto score = [](const ConfigSummary& s) { return motionScore(s.motion.rmseMean, s.motion.instability); };
+    auto score = [](const ConfigSummary& s) { return s.motionScore; };
     std::vector<const ConfigSummary*> still, moving;
     for (const auto& s : run.summary)
         if (std::isfinite(s.rmse) && std::isfinite(s.motion.rmseMean)) still.push_back(&s), moving.push_back(&s);
@@ -294,12 +294,18 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile, cons
        << " ms AO + denoise, geometry RMSE " << num(base.rmse, 4) << ", PSNR "
        << num(base.psnrGeometrySrgb, 4) << " dB (geometry, sRGB), " << num(base.psnrFullSrgb, 4)
        << " dB full frame.\n\n";
+    const Objective o = runObjective(run);
+    if (run.facts.contains("motion"))
+        md << "Objective: **" << objectiveTitle(o)
+           << "** (`--objective " << objectiveKey(o) << "`): the front, the answers and the fastest at most the "
+              "baseline's error rank by it.\n\n";
     const size_t cheap = fastestAtMostBaselineError(run), best = mostAccurate(run);
     if (cheap != std::string::npos)
-        md << "Fastest configuration at most as wrong as the baseline: **" << markdownCell(cfgs[cheap].label)
-           << "**: " << num(run.summary[cheap].gpuMs, 4) << " ms" << timeFlag(run.summary[cheap]) << " (" << num(run.summary[cheap].timeRatio, 3)
-           << "x the baseline's time), RMSE " << num(run.summary[cheap].rmse, 4) << " ("
-           << num(run.summary[cheap].rmseRatio, 3) << "x).\n\n";
+        md << "Fastest configuration at most as wrong as the baseline " << objectiveWhere(o) << ": **"
+           << markdownCell(cfgs[cheap].label) << "**: " << num(run.summary[cheap].gpuMs, 4) << " ms"
+           << timeFlag(run.summary[cheap]) << " (" << num(run.summary[cheap].timeRatio, 3) << "x the baseline's time), "
+           << objectiveErrorName(o) << " " << num(objectiveError(run.summary[cheap], o), 4) << " ("
+           << num(objectiveRatio(run.summary[cheap], o), 3) << "x).\n\n";
     if (best != std::string::npos)
         md << "Lowest error" << (run.facts.contains("motion") ? " on a still camera" : "") << ": **"
            << markdownCell(cfgs[best].label) << "**: RMSE " << num(run.summary[best].rmse, 4) << " ("
@@ -308,15 +314,17 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile, cons
     if (const size_t m = mostAccurateInMotion(run); m != std::string::npos) {
         const ConfigSummary& s = run.summary[m];
         md << "Lowest error in motion (motion score): **" << markdownCell(cfgs[m].label) << "**: "
-           << num(motionScore(s.motion.rmseMean, s.motion.instability), 4) << " in " << num(s.gpuMs, 4) << " ms" << timeFlag(s) << " ("
+           << num(s.motionScore, 4) << " in " << num(s.gpuMs, 4) << " ms" << timeFlag(s) << " ("
            << num(s.timeRatio, 3) << "x).\n\n";
         if (const std::string d = winnersDifferLine(run, markdownCell); !d.empty()) md << d << "\n\n";
     }
+    const bool moving = run.facts.contains("motion");
     auto table = [&](bool frontOnly) {
         md << "| configuration | AO+denoise ms | x baseline | RMSE | x baseline | bias | PSNR geo dB | PSNR "
               "full dB "
-              "| SSIM | edge RMSE | interior RMSE | 1st-frame RMSE | front "
-              "|\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
+              "| SSIM | edge RMSE | interior RMSE | 1st-frame RMSE | "
+           << (moving ? "motion score | x baseline | " : "") << "front "
+           << "|\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|" << (moving ? "---:|---:|" : "") << ":-:|\n";
         std::vector<const ConfigSummary*> rows;
         for (const auto& s : run.summary)
             if (!frontOnly || s.pareto || s.config == run.sweep.baseline) rows.push_back(&s);
@@ -326,9 +334,12 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile, cons
                << " | " << num(s->rmse, 4) << " | " << num(s->rmseRatio, 3) << " | " << num(s->bias, 3)
                << " | " << num(s->psnrGeometrySrgb, 4) << " | " << num(s->psnrFullSrgb, 4) << " | "
                << num(s->ssim, 4) << " | " << num(s->rmseEdge, 4) << " | " << num(s->rmseInterior, 4) << " | "
-               << num(s->rmseFirstFrame, 4) << " | " << (s->pareto ? "yes" : "") << " |\n";
+               << num(s->rmseFirstFrame, 4) << " | "
+               << (moving ? num(s->motionScore, 4) + " | " + num(s->motionRatio, 3) + " | " : std::string())
+               << (s->pareto ? "yes" : "") << " |\n";
     };
-    md << "### Pareto front (and the baseline), fastest first\n\n";
+    md << "### Pareto front" << (moving ? std::string(" ") + objectiveWhere(o) + " (" + objectiveErrorName(o) + ")" : "")
+       << " and the baseline, fastest first\n\n";
     table(true);
     md << passMarkdown(run);
     md << splitMarkdown(run);
@@ -349,7 +360,7 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile, cons
     return md.str();
 }
 
-bool plotBench(const std::string& dir, const std::string& title, bool quiet) {
+bool plotBench(const std::string& dir, const std::string& title, bool quiet, Objective objective) {
     const std::string script = dataRoot() + "/tools/plot_pareto.py"; // the source tree and an installation alike
     // Debian's python3 (python3-matplotlib) first: a pyenv/venv python3 on PATH may lack matplotlib.
     const std::string py = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
@@ -366,7 +377,8 @@ bool plotBench(const std::string& dir, const std::string& title, bool quiet) {
     } cleanup{staging};
     // Every value as one argv element in --key=value form: a title starting with '-' stays a title.
     const ProgramRun r = runProgram({py, script, "--summary=" + dir + "/summary.csv", "--results=" + dir + "/results.csv",
-                                     "--out=" + staging + "/pareto", "--title=" + title},
+                                     "--out=" + staging + "/pareto", "--title=" + title,
+                                     std::string("--error=") + (objective == Objective::Motion ? "motion_score" : "rmse")},
                                     quiet ? ChildStream::Discard : ChildStream::Inherit,
                                     quiet ? ChildStream::Discard : ChildStream::Inherit);
     if (!r.started || r.exitCode != 0) {

@@ -18,11 +18,12 @@ void writeBenchFiles(const BenchRun& run, const std::string& dir, const Answer* 
 
 // Markdown: the answer (if asked), the run's facts, the front, the headline sentences and the full table.
 std::string benchMarkdown(const BenchRun& run, const std::string& plotFile, const Answer* answer = nullptr);
-// Runs plot_pareto.py; returns false (after printing one line) when Python/matplotlib is missing.
-bool plotBench(const std::string& dir, const std::string& title, bool quiet);
+// Runs plot_pareto.py with the objective's error on its y axis; returns false (after printing one
+// line) when Python/matplotlib is missing.
+bool plotBench(const std::string& dir, const std::string& title, bool quiet, Objective objective = Objective::Still);
 
-// The rows quoted in the closing line: the best configuration whose error is at most the
-// baseline's (fastest such), and the lowest-error configuration. npos when none.
+// The rows quoted in the closing line: the fastest configuration whose error (the run's objective,
+// runObjective) is at most the baseline's, and the lowest still RMSE. npos when none.
 size_t fastestAtMostBaselineError(const BenchRun& run);
 size_t mostAccurate(const BenchRun& run);
 // With bench --motion: the lowest motion score (npos without motion columns).

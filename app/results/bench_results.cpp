@@ -50,6 +50,7 @@ nlohmann::json configJson(const BenchConfig& c, const ConfigSummary& s) {
     splitJson(j, s.technique, s.screen);
     sharesFields(j, s.rmse, s.technique.rmse, s.screen.rmse);
     motionJson(j, s.motion, false);
+    j["motion_score"] = jnum(s.motionScore), j["motion_score_ratio"] = jnum(s.motionRatio);
     return j;
 }
 
@@ -255,6 +256,10 @@ ViewResult readView(const Reader& rd, const nlohmann::json& j, const std::string
 }
 
 } // namespace
+
+Objective runObjective(const BenchRun& run) {
+    return run.facts.is_object() && run.facts.value("objective", "") == "motion" ? Objective::Motion : Objective::Still;
+}
 
 nlohmann::json resultsJson(const BenchRun& run) {
     nlohmann::json j = run.facts;

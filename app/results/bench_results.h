@@ -22,6 +22,9 @@ struct BenchRun {
     nlohmann::json shards = nlohmann::json::array();
 };
 
+// What the run ranks by: facts.objective ("still" when absent; results_check.h checks it).
+Objective runObjective(const BenchRun& run);
+
 // results.json: the facts, the shards, every configuration (with its complete settings) and its
 // summary, every view's result.
 nlohmann::json resultsJson(const BenchRun& run);

@@ -81,7 +81,8 @@ struct Point {
 // (fastest first) beside it, the baseline its name; the key under the plot (after "</svg>") spells
 // them out. `front` is sorted fastest first; X, Y map a point to the plot.
 void labelsAndKey(std::ostringstream& s, const std::vector<Point>& pts, const std::vector<const Point*>& front,
-                  const std::function<double(double)>& X, const std::function<double(double)>& Y, double W) {
+                  const std::function<double(double)>& X, const std::function<double(double)>& Y, double W,
+                  const std::string& errName) {
     std::vector<std::array<double, 4>> taken;
     auto put = [&](const Point& p, const std::string& text) {
         const double w = 6.0 * double(text.size()) + 4, h = 12;
@@ -104,7 +105,7 @@ void labelsAndKey(std::ostringstream& s, const std::vector<Point>& pts, const st
     s << "</svg>";
     s << "<ol class=\"key\"" << (W < 600 ? " style=\"columns:1\"" : "") << ">";
     for (const Point* p : front)
-        s << "<li>" << htmlText(p->label) << " <span class=\"num\">" << fmt(p->t, 3) << "x, RMSE " << fmt(p->e)
+        s << "<li>" << htmlText(p->label) << " <span class=\"num\">" << fmt(p->t, 3) << "x, " << errName << " " << fmt(p->e)
           << "</span></li>";
     s << "</ol>";
 }
@@ -169,7 +170,7 @@ std::string svgPlot(const std::vector<Point>& pts, const std::string& title, dou
           << "\" cy=\"" << Y(p.e) << "\" r=\"" << (p.baseline ? 6 : p.front ? 4.5 : 3.2) << "\"><title>"
           << htmlText(p.hover) << "</title></circle>";
     }
-    labelsAndKey(s, pts, front, X, Y, W);
+    labelsAndKey(s, pts, front, X, Y, W, yAxis.rfind("motion score", 0) == 0 ? "motion score" : "RMSE");
     std::ostringstream box;
     box << "<div class=\"plotbox\" style=\"max-width:" << W + 10 << "px\">" << s.str() << "</div>";
     return box.str();
@@ -192,7 +193,7 @@ void markFront(std::vector<Point>& pts) {
 std::vector<Point> motionPoints(const BenchRun& run) {
     std::vector<Point> pts;
     for (const ConfigSummary& s : run.summary) {
-        const double score = motionScore(s.motion.rmseMean, s.motion.instability);
+        const double score = s.motionScore;
         if (!(s.timeRatio > 0) || !std::isfinite(score)) continue;
         Point p;
         p.label = run.sweep.configs[s.config].label;
@@ -205,6 +206,15 @@ std::vector<Point> motionPoints(const BenchRun& run) {
     return pts;
 }
 
+// With motion columns: which error the front, the table's "front" column and the answers rank by.
+std::string objectiveHtml(const BenchRun& run) {
+    if (!run.facts.contains("motion")) return "";
+    const Objective o = runObjective(run);
+    return std::string("<p>Objective: <b>") + objectiveTitle(o) +
+           "</b> (<code>--objective " + objectiveKey(o) + "</code>): the front marked in the table and the "
+           "thumbnails, and every answer, rank by it; both fronts are plotted.</p>";
+}
+
 // With motion columns: the moving camera's answer beside the still one, and whether they differ.
 std::string motionAnswerHtml(const BenchRun& run) {
     const size_t m = mostAccurateInMotion(run);
@@ -212,18 +222,26 @@ std::string motionAnswerHtml(const BenchRun& run) {
     const ConfigSummary& s = run.summary[m];
     const std::string differ = winnersDifferLine(run, [](const std::string& x) { return htmlText(x); });
     return "<p>Lowest error in motion (motion score): <b>" + htmlText(run.sweep.configs[m].label) + "</b>: " +
-           fmt(motionScore(s.motion.rmseMean, s.motion.instability)) + " at " + fmt(s.timeRatio, 3) +
+           fmt(s.motionScore) + " at " + fmt(s.timeRatio, 3) +
            "x the baseline's time. " + differ + "</p>";
 }
 
-std::vector<Point> pointsOf(const BenchRun& run, const std::vector<const ViewResult*>& rows) {
+// A view's error under the run's objective: its still RMSE or its motion score (NaN: not measured).
+double viewError(const ViewResult& v, Objective o) {
+    if (o == Objective::Still) return v.error.rmse;
+    return v.hasMotion ? motionScore(v.motion.rmseMean, v.motion.instability) : std::nan("");
+}
+
+// Per configuration over `rows`, the error of objective `o`.
+std::vector<Point> pointsOf(const BenchRun& run, const std::vector<const ViewResult*>& rows, Objective o) {
     const size_t n = run.sweep.configs.size();
     std::vector<double> logT(n, 0), mse(n, 0), lo(n, 1e300), hi(n, 0);
     std::vector<int> count(n, 0);
     for (const ViewResult* v : rows) {
-        if (!(v->timeRatio > 0) || !std::isfinite(v->error.rmse)) continue;
+        const double e = viewError(*v, o);
+        if (!(v->timeRatio > 0) || !std::isfinite(e)) continue;
         const double scale = v->timeRatio / v->gpuMs;
-        logT[v->config] += std::log(v->timeRatio), mse[v->config] += v->error.rmse * v->error.rmse;
+        logT[v->config] += std::log(v->timeRatio), mse[v->config] += e * e;
         lo[v->config] = std::min(lo[v->config], v->gpuMsMin * scale);
         hi[v->config] = std::max(hi[v->config], v->gpuMsMax * scale);
         ++count[v->config];
@@ -236,9 +254,9 @@ std::vector<Point> pointsOf(const BenchRun& run, const std::vector<const ViewRes
         p.baseline = c == run.sweep.baseline;
         p.t = std::exp(logT[c] / count[c]), p.e = std::sqrt(mse[c] / count[c]);
         p.tmin = lo[c], p.tmax = hi[c];
-        p.hover = p.label + alsoKnownAs(run.sweep.configs[c], "\n") + "\ntime " + fmt(p.t, 3) + "x the baseline's\nRMSE " + fmt(p.e) + " (" +
-                  (run.summary.size() > run.sweep.baseline ? fmt(p.e / run.summary[run.sweep.baseline].rmse, 3) : "–") +
-                  "x the baseline's, over all scenes)";
+        const double base = run.summary.size() > run.sweep.baseline ? objectiveError(run.summary[run.sweep.baseline], o) : NAN;
+        p.hover = p.label + alsoKnownAs(run.sweep.configs[c], "\n") + "\ntime " + fmt(p.t, 3) + "x the baseline's\n" +
+                  objectiveErrorName(o) + " " + fmt(p.e) + " (" + fmt(p.e / base, 3) + "x the baseline's over all scenes)";
         pts.push_back(p);
     }
     markFront(pts);
@@ -319,9 +337,10 @@ std::string table(const BenchRun& run) {
       << (motion ? "<th title=\"RMS over views of the mean per-frame RMSE along the camera path\">motion RMSE</th>"
                    "<th title=\"RMS of the frame-to-frame AO change minus the reference's\">instability</th>"
                    "<th title=\"mean |error| in the first frames after a disocclusion minus at stable pixels\">"
-                   "ghosting</th>"
+                   "ghosting</th><th title=\"sqrt(motion RMSE^2 + instability^2)\">motion score</th>"
+                   "<th>x baseline score</th>"
                  : "")
-      << "<th>front</th></tr></thead><tbody>";
+      << "<th>front" << (motion ? std::string(" (") + objectiveWhere(runObjective(run)) + ")" : "") << "</th></tr></thead><tbody>";
     for (const ConfigSummary& c : run.summary) {
         const BenchConfig& cfg = run.sweep.configs[c.config];
         s << "<tr class=\"" << (c.pareto ? "on" : "") << (cfg.baseline ? " base" : "") << "\"><td title=\""
@@ -329,7 +348,9 @@ std::string table(const BenchRun& run) {
           << "</td><td>" << htmlText(cfg.group) << "</td><td>" << htmlText(cfg.technique()) << "</td>" << cell(c.timeRatio, 3)
           << (c.unsureTimeViews ? unsureCell(c.gpuMs) : cell(c.gpuMs)) << cell(c.rmse) << cell(c.rmseRatio, 3) << cell(c.bias, 3) << cell(c.rmseEdge)
           << cell(c.psnrGeometrySrgb) << cell(c.ssim);
-        if (motion) s << cell(c.motion.rmseMean) << cell(c.motion.instability) << cell(c.motion.ghosting, 3);
+        if (motion)
+            s << cell(c.motion.rmseMean) << cell(c.motion.instability) << cell(c.motion.ghosting, 3) << cell(c.motionScore)
+              << cell(c.motionRatio, 3);
         s << "<td>" << (c.pareto ? "yes" : "") << "</td></tr>";
     }
     s << "</tbody></table>";
@@ -364,7 +385,9 @@ std::string thumbnails(const BenchRun& run, const std::string& dir) {
     for (const ConfigSummary* c : rows) {
         const BenchConfig& cfg = run.sweep.configs[c->config];
         s << "<tr><td><b>" << htmlText(cfg.label) << "</b><br>" << fmt(c->timeRatio, 3) << "x the baseline's time ("
-          << fmt(c->gpuMs) << " ms)<br>RMSE " << fmt(c->rmse) << " (" << fmt(c->rmseRatio, 3) << "x)<br>bias "
+          << fmt(c->gpuMs) << " ms)<br>RMSE " << fmt(c->rmse) << " (" << fmt(c->rmseRatio, 3) << "x)"
+          << (std::isfinite(c->motionScore) ? "<br>motion score " + fmt(c->motionScore) + " (" + fmt(c->motionRatio, 3) + "x)" : "")
+          << "<br>bias "
           << fmt(c->bias, 3) << "</td>";
         for (const auto& [scene, vp] : views) {
             const std::string d = thumbnailDir(dir, scene, vp);
@@ -411,14 +434,17 @@ std::string benchHtml(const BenchRun& run, const std::string& dir, const Answer*
         h << "</table>";
     }
     const std::vector<Point> moving = motionPoints(run);
-    h << "<h2>All scenes</h2>" << motionAnswerHtml(run) << "<div class=\"plots\">"
-      << svgPlot(pointsOf(run, all), moving.empty() ? "all scenes" : "all scenes, still camera", noiseOf(all));
-    if (!moving.empty())
-        h << svgPlot(moving, "all scenes, in motion", 0.0, 720, "motion score: sqrt(RMSE^2 + instability^2)");
-    h << "</div>";
-    h << "<h2>Per scene</h2><div class=\"plots\">";
+    const Objective o = runObjective(run);
+    const char* kMotionAxis = "motion score: sqrt(RMSE^2 + instability^2)";
+    const std::string stillPlot = svgPlot(pointsOf(run, all, Objective::Still),
+                                          moving.empty() ? "all scenes" : "all scenes, still camera", noiseOf(all));
+    const std::string motionPlot = moving.empty() ? "" : svgPlot(moving, "all scenes, in motion", 0.0, 720, kMotionAxis);
+    h << "<h2>All scenes</h2>" << objectiveHtml(run) << motionAnswerHtml(run) << "<div class=\"plots\">"
+      << (o == Objective::Motion ? motionPlot + stillPlot : stillPlot + motionPlot) << "</div>";
+    h << "<h2>Per scene" << (moving.empty() ? "" : std::string(", ") + objectiveWhere(o)) << "</h2><div class=\"plots\">";
     for (const auto& sc : sceneOrder)
-        h << svgPlot(pointsOf(run, byScene[sc]), sc, noiseOf(byScene[sc]), 560);
+        h << (o == Objective::Motion ? svgPlot(pointsOf(run, byScene[sc], o), sc, 0.0, 560, kMotionAxis)
+                                     : svgPlot(pointsOf(run, byScene[sc], o), sc, noiseOf(byScene[sc]), 560));
     const bool engines = std::any_of(run.sweep.configs.begin(), run.sweep.configs.end(), [](const BenchConfig& c) { return c.isEngine(); });
     h << "</div><h2>The front" << (engines ? ", the web engines" : "") << " and the baseline, side by side</h2>"
       << (engines ? "<p>Web engines (rows 'engine NAME'): run in Chromium on the same views, camera, size and R, scored "

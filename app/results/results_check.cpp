@@ -151,6 +151,11 @@ std::vector<std::set<std::string>> checkFacts(const Facts& f, const nlohmann::js
     const auto& ref = f.at(j, "reference", "facts");
     f.text(ref, "definition", "facts.reference");
     if (j.contains("motion")) f.integer(f.at(j, "motion", "facts"), "frames", "facts.motion", 2, 64);
+    if (j.contains("objective")) {
+        const std::string o = f.text(j, "objective", "facts");
+        if (o != "still" && o != "motion") f.fail("facts.objective", "is neither \"still\" nor \"motion\"");
+        if (o == "motion" && !j.contains("motion")) f.fail("facts.objective", "is \"motion\" without facts.motion");
+    }
     for (const char* k : {"cpu", "gl_renderer", "date", "git_revision", "build_type", "hostname"})
         f.optionalText(j, k, "facts");
     const auto& scenes = f.list(j, "scenes", "facts", kMaxResultScenes);

@@ -1,8 +1,11 @@
 #include "metrics/bench_summary.h"
 
+#include "metrics/motion_metrics.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace ssao {
 
@@ -106,7 +109,38 @@ MotionSummary motionOf(const std::vector<const MotionSummary*>& m) {
 }
 } // namespace
 
-std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t configCount, size_t baseline) {
+const char* objectiveKey(Objective o) {
+    return o == Objective::Motion ? "motion" : "still";
+}
+
+Objective parseObjective(const std::string& key) {
+    if (key == "still") return Objective::Still;
+    if (key == "motion") return Objective::Motion;
+    throw std::invalid_argument("objective '" + key + "' is neither 'still' nor 'motion'");
+}
+
+const char* objectiveErrorName(Objective o) {
+    return o == Objective::Motion ? "motion score" : "RMSE";
+}
+
+const char* objectiveTitle(Objective o) {
+    return o == Objective::Motion ? "the motion score" : "the still frame's RMSE";
+}
+
+const char* objectiveWhere(Objective o) {
+    return o == Objective::Motion ? "in motion" : "on a still camera";
+}
+
+double objectiveError(const ConfigSummary& s, Objective o) {
+    return o == Objective::Motion ? s.motionScore : s.rmse;
+}
+
+double objectiveRatio(const ConfigSummary& s, Objective o) {
+    return o == Objective::Motion ? s.motionRatio : s.rmseRatio;
+}
+
+std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t configCount, size_t baseline,
+                                     Objective objective) {
     rowRatios(views, baseline);
     std::vector<ConfigSummary> out(configCount);
     for (size_t c = 0; c < configCount; ++c) {
@@ -169,14 +203,17 @@ std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t conf
         s.ssim /= n;
         s.timeRatio = ratioViews ? std::exp(logRatio / ratioViews) : std::numeric_limits<double>::quiet_NaN();
     }
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (ConfigSummary& s : out)
+        if (std::isfinite(s.motion.rmseMean)) s.motionScore = motionScore(s.motion.rmseMean, s.motion.instability);
     std::vector<double> t, e;
     for (const auto& s : out)
-        t.push_back(s.timeRatio), e.push_back(s.rmse);
+        t.push_back(s.timeRatio), e.push_back(objectiveError(s, objective));
     const std::vector<bool> front = paretoFront(t, e);
     for (size_t c = 0; c < configCount; ++c) {
         out[c].pareto = front[c];
-        out[c].rmseRatio = baseline < configCount ? out[c].rmse / out[baseline].rmse
-                                                  : std::numeric_limits<double>::quiet_NaN();
+        out[c].rmseRatio = baseline < configCount ? out[c].rmse / out[baseline].rmse : nan;
+        out[c].motionRatio = baseline < configCount ? out[c].motionScore / out[baseline].motionScore : nan;
     }
     return out;
 }

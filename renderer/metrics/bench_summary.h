@@ -80,12 +80,31 @@ struct ConfigSummary {
     long nonFinite = 0;
     // To the baseline: time = geometric mean over views of each row's ratio; error = RMSE / RMSE.
     double timeRatio = 0, rmseRatio = 0;
-    bool pareto = false; // on the front of (timeRatio, rmse)
+    // The motion score (motion_metrics.h's motionScore of the RMS motion RMSE and instability) and its
+    // ratio to the baseline's; NaN without motion rows.
+    double motionScore = std::numeric_limits<double>::quiet_NaN(), motionRatio = std::numeric_limits<double>::quiet_NaN();
+    bool pareto = false; // on the front of (timeRatio, the objective's error)
     SplitSummary technique, screen; // the AO against the oracle; the oracle against the truth
     MotionSummary motion;           // over the views measured in motion (NaN: none)
 };
 
 constexpr double kUnsureTimeSpread = 2.0;
+
+// What a benchmark ranks by (bench --objective): the still frame's geometry RMSE, or the motion score
+// along each view's camera path. It decides the front, the answers and "fastest at most the baseline's".
+enum class Objective { Still, Motion };
+const char* objectiveKey(Objective o); // "still" / "motion"
+// "still" or "motion"; anything else throws std::invalid_argument.
+Objective parseObjective(const std::string& key);
+// "RMSE" / "motion score": the error's name in an answer.
+const char* objectiveErrorName(Objective o);
+// "the still frame's RMSE" / "the motion score": what the front is drawn against.
+const char* objectiveTitle(Objective o);
+// "on a still camera" / "in motion": what an answer holds for.
+const char* objectiveWhere(Objective o);
+// The error a configuration is ranked by, and its ratio to the baseline's (NaN: not measured).
+double objectiveError(const ConfigSummary& s, Objective o);
+double objectiveRatio(const ConfigSummary& s, Objective o);
 
 double median(std::vector<double> v); // NaN when empty
 
@@ -93,8 +112,9 @@ double median(std::vector<double> v); // NaN when empty
 // wrong, strictly better in one). Minimises both coordinates; ties keep both.
 std::vector<bool> paretoFront(const std::vector<double>& time, const std::vector<double>& error);
 
-// One summary per configuration 0..configCount-1 (in that order), ratios against `baseline`;
-// fills each view's timeRatio.
-std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t configCount, size_t baseline);
+// One summary per configuration 0..configCount-1 (in that order), ratios against `baseline`, the
+// front of time against the objective's error; fills each view's timeRatio.
+std::vector<ConfigSummary> summarize(std::vector<ViewResult>& views, size_t configCount, size_t baseline,
+                                     Objective objective = Objective::Still);
 
 } // namespace ssao

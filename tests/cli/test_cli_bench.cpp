@@ -350,7 +350,7 @@ TEST(CliBench, ABudgetGetsOneLineAPresetAndTheSameNumbersFromRender) {
                        "--no-plot --quiet --baseline gtao-low --max-error 0.5 --sweep " + sweep + " --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out; // --quiet: the answer alone
-    EXPECT_NE(r.out.find("answer (at most RMSE 0.5): "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("answer (at most RMSE 0.5, on a still camera): "), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("--set ao.radius_mode=world --set ao.radius="), std::string::npos) << r.out;
     const auto j = nlohmann::json::parse(slurp(out + "/results.json"));
     EXPECT_EQ(j["configurations"][0]["label"], "gtao-low (baseline)"); // --baseline: any preset

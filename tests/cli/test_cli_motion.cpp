@@ -1,5 +1,6 @@
 // Error in motion, whole program: `render --motion`, `bench --motion` (its columns, and `bench
-// merge` checking them) and `tune --objective motion`, at tiny sizes with few-ray references.
+// merge` checking them), `bench --objective motion` and `tune --objective motion`, at tiny sizes with
+// few-ray references.
 #include "cli_run.h"
 
 #include <gtest/gtest.h>
@@ -178,4 +179,48 @@ TEST(CliMotion, AMotionAnswerThatDiffersFromTheStillOneIsSaid) {
     EXPECT_NE(html.find("is not the lowest in motion"), std::string::npos);
     EXPECT_NE(html.find("all scenes, in motion"), std::string::npos); // the motion front's own plot
     EXPECT_NE(html.find("motion score: sqrt(RMSE^2 + instability^2)"), std::string::npos);
+}
+
+// bench --objective motion: the answer, the front and the plot rank by the motion score, and say so;
+// merge re-ranks the same rows under either objective; a still run cannot be ranked in motion.
+TEST(CliMotion, TheMotionObjectiveDecidesTheAnswerAndTheFront) {
+    const std::string out = outDir("objective_bench"), merged = outDir("objective_merged");
+    fs::remove_all(out), fs::remove_all(merged);
+    const std::string sweep = writeTemp("objective_sweep.json", R"({"name": "objective", "groups": [
+        {"name": "gtao", "set": {"ao.technique": "gtao"}},
+        {"name": "gtao temporal", "set": {"ao.technique": "gtao", "temporal.enabled": true, "temporal.frames": 8}}]})");
+    CliRun r = ssaolab("bench " + kTiny + "--views 1 --frames 1 --warmup 0 --no-plot --motion-frames 4 "
+                       "--objective motion --budget-ratio 100 --sweep " + sweep + " --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(slurp(out + "/results.json"));
+    EXPECT_EQ(j["objective"], "motion");
+    ASSERT_TRUE(j.contains("motion")) << "--objective motion implies --motion";
+    // The answer is the row of lowest motion score (any time is within 100x), named as a motion answer.
+    std::string best;
+    double score = INFINITY;
+    for (const auto& c : j["configurations"])
+        if (c["motion_score"].get<double>() < score) score = c["motion_score"].get<double>(), best = c["label"];
+    EXPECT_NE(r.out.find("answer (within 100x the baseline's time, in motion): " + best + ":"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("on the Pareto front of time against the motion score"), std::string::npos) << r.out;
+    for (const auto& c : j["configurations"]) { // the front: no row both faster and lower in score
+        bool dominated = false;
+        for (const auto& d : j["configurations"])
+            dominated = dominated || (d["time_ratio"] <= c["time_ratio"] && d["motion_score"] <= c["motion_score"] &&
+                                      (d["time_ratio"] < c["time_ratio"] || d["motion_score"] < c["motion_score"]));
+        EXPECT_EQ(c["pareto"].get<bool>(), !dominated) << c["label"];
+    }
+    EXPECT_NE(slurp(out + "/report.md").find("### Pareto front in motion (motion score)"), std::string::npos);
+    EXPECT_NE(slurp(out + "/summary.csv").find("motion_score,motion_score_ratio"), std::string::npos);
+
+    CliRun m = ssaolab("bench merge " + out + " --no-plot --quiet --objective still --budget-ratio 100 --out " + merged);
+    ASSERT_EQ(m.exitCode, 0) << m.err;
+    EXPECT_NE(m.out.find("on a still camera): "), std::string::npos) << m.out;
+    EXPECT_EQ(nlohmann::json::parse(slurp(merged + "/results.json"))["objective"], "still");
+
+    fs::remove_all(out);
+    ASSERT_EQ(ssaolab("bench " + kTiny + "--views 1 --frames 1 --warmup 0 --no-plot --quiet --sweep " + sweep +
+                      " --out " + out).exitCode, 0);
+    expectCleanFailure(ssaolab("bench merge " + out + " --no-plot --quiet --objective motion --out " + merged),
+                       "not scored in motion");
+    expectCleanFailure(ssaolab("bench " + kTiny + "--objective fastest --out " + out), "--objective");
 }

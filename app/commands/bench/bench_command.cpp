@@ -91,8 +91,15 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
                    "answer: the most accurate configuration whose time is at most this many times the baseline's "
                    "(the plot's axis: 0.5 = half the baseline's time)")
         ->check(cliRange(1e-6, 1e6));
-    cmd.add_option("--max-error", o.maxError, "answer: the fastest configuration whose RMSE is at most this")
+    cmd.add_option("--max-error", o.maxError,
+                   "answer: the fastest configuration whose error (RMSE, or the motion score with --objective motion) "
+                   "is at most this")
         ->check(cliRange(1e-9, 1.0));
+    cmd.add_option("--objective", o.objective,
+                   "what the front, the answers and 'fastest at most the baseline's error' rank by: still (the still "
+                   "frame's RMSE) or motion (the motion score along each view's camera path; implies --motion)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"still", "motion"}));
     cmd.add_flag("--motion", o.motion,
                  "also score every configuration in motion along a camera path from each view (a reference per "
                  "frame): motion RMSE, instability, ghosting columns");
@@ -272,7 +279,10 @@ class SceneBench {
 
 } // namespace
 
-int runBench(const BenchOptions& o) {
+int runBench(const BenchOptions& given) {
+    BenchOptions o = given;
+    const Objective objective = parseObjective(o.objective);
+    o.motion = o.motion || objective == Objective::Motion; // a motion objective needs the motion columns
     // Everything that needs no GL first: bad input fails in milliseconds with one line.
     int w = 0, h = 0;
     parseSizeOption(o.size, w, h);
@@ -333,7 +343,7 @@ int runBench(const BenchOptions& o) {
     for (const auto& s : scenes)
         title += (title.empty() ? "" : ", ") + s.name;
     title += " | " + o.size + " | " + runner.glRenderer();
-    return finishBench(run, o.out, title, o.plot, o.quiet, Question{o.budgetMs, o.maxError, o.budgetRatio});
+    return finishBench(run, o.out, title, o.plot, o.quiet, Question{o.budgetMs, o.maxError, o.budgetRatio, objective});
 }
 
 } // namespace ssao

@@ -41,6 +41,7 @@ struct BenchOptions {
     CameraPathSpec motionPath;
     double budgetMs = 0, maxError = 0;    // the question to answer (results/bench_answer.h); 0 = none
     double budgetRatio = 0;               // a budget as a multiple of the baseline's time; 0 = none
+    std::string objective = "still";      // what the front and the answers rank by; "motion" implies --motion
     BenchEngineOptions engines;           // web engines as rows (commands/bench/bench_engines.h)
     bool plot = true;
     bool quiet = false;

@@ -34,8 +34,13 @@ void addBenchMergeOptions(CLI::App& cmd, BenchMergeOptions& o) {
     cmd.add_option("--budget-ratio", o.budgetRatio,
                    "answer: the most accurate configuration whose time is at most this many times the baseline's")
         ->check(cliRange(1e-6, 1e6));
-    cmd.add_option("--max-error", o.maxError, "answer: the fastest configuration whose RMSE is at most this")
+    cmd.add_option("--max-error", o.maxError,
+                   "answer: the fastest configuration whose error (RMSE, or the motion score with --objective motion) "
+                   "is at most this")
         ->check(cliRange(1e-9, 1.0));
+    cmd.add_option("--objective", o.objective,
+                   "what the front and the answers rank by: still or motion (default: what the shards ran with)")
+        ->check(CLI::IsMember({"still", "motion"}));
     cmd.add_flag(
         "--no-plot", [&o](int64_t) { o.plot = false; }, "skip the matplotlib plot");
     cmd.add_flag("--quiet", o.quiet, "no progress output");
@@ -163,7 +168,8 @@ int runBenchMerge(const BenchMergeOptions& o) {
     if (!o.quiet)
         std::printf("bench merge: %zu shards, %zu rows, %zu configurations\n", run.shards.size(), run.views.size(),
                     run.sweep.configs.size());
-    return finishBench(run, o.out, title, o.plot, o.quiet, Question{o.budgetMs, o.maxError, o.budgetRatio});
+    const Objective objective = o.objective.empty() ? runObjective(run) : parseObjective(o.objective);
+    return finishBench(run, o.out, title, o.plot, o.quiet, Question{o.budgetMs, o.maxError, o.budgetRatio, objective});
 }
 
 } // namespace ssao

@@ -14,6 +14,7 @@ struct BenchMergeOptions {
     std::vector<std::string> dirs; // shard output folders
     std::string out = "bench-merged";
     double budgetMs = 0, maxError = 0, budgetRatio = 0;
+    std::string objective; // still | motion; "" = the one the shards ran with
     bool plot = true;
     bool quiet = false;
 };
