@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build engine-modules run test docs screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column user-twins layers temporal
+.PHONY: deps configure build engine-modules run test docs screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column user-twins layers temporal objective
 
 deps:
 	@bash .ci/install-deps.sh
@@ -106,6 +106,11 @@ layers: build
 # orbit and a dolly on every shared scene, at each memory in motion and with the noise off (~5 minutes).
 temporal: build
 	@bash .ci/temporal.sh $(BUILD) $(SCENES)
+
+# docs/bench/objective.md: per shared scene, the still and the motion answer at most the baseline's
+# time among the shipped presets with and without temporal accumulation (~45 minutes on llvmpipe).
+objective: build
+	@bash .ci/objective.sh $(BUILD) $(SCENES)
 
 # docs/stability.md: every technique under extreme projections, scales, placements, precisions and
 # parameter limits (`ssaolab stress`).

@@ -1,10 +1,16 @@
 #include "util/closest_name.h"
 
 #include <algorithm>
+#include <cctype>
 
 namespace ssao {
 
 namespace {
+// Letters differing only in case cost nothing: "N8AO" is n8ao mistyped, not another name.
+bool sameLetter(char x, char y) {
+    return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+}
+
 size_t editDistance(const std::string& a, const std::string& b) {
     std::vector<size_t> row(b.size() + 1);
     for (size_t j = 0; j <= b.size(); ++j)
@@ -14,7 +20,7 @@ size_t editDistance(const std::string& a, const std::string& b) {
         row[0] = i;
         for (size_t j = 1; j <= b.size(); ++j) {
             const size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (sameLetter(a[i - 1], b[j - 1]) ? 0 : 1)});
             diag = up;
         }
     }

@@ -210,3 +210,25 @@ TEST(TuneGuard, TheHeldOutErrorOfEveryViewDecides) {
     EXPECT_NE(line.find("b"), std::string::npos) << line;
     EXPECT_EQ(line.find('\n'), std::string::npos);
 }
+
+// A web engine's tune against its two baselines: the held-out views' error of the engine as its
+// package ships it, and of its defaults with every length from R. A tune that beats the rescaled
+// defaults (0.30 -> 0.184) but not what ships (0.15) is refused, naming the shipped baseline.
+TEST(TuneGuard, AnEngineTuneIsJudgedAgainstTheBetterOfItsTwoBaselines) {
+    const std::vector<HeldOutScore> shipped = {{"city (held-out views)", 0.15 * 0.15, 0.184 * 0.184, 5}};
+    const std::vector<HeldOutScore> fromR = {{"city (held-out views)", 0.30 * 0.30, 0.184 * 0.184, 5}};
+    EXPECT_FALSE(judgeFit(fromR).overfit) << "against the rescaled defaults alone it would pass";
+    const FitVerdict v = judgeAgainstBetter(shipped, fromR);
+    EXPECT_TRUE(v.overfit);
+    EXPECT_EQ(v.baseline, "as shipped");
+    EXPECT_NEAR(v.before, 0.15, 1e-12);
+    const std::string line = refusalText(v, "n8ao.json");
+    EXPECT_NE(line.find("against the engine as shipped"), std::string::npos) << line;
+    // Where the rescaled defaults are the better baseline, they are the one judged against.
+    const FitVerdict r = judgeAgainstBetter(fromR, shipped);
+    EXPECT_EQ(r.baseline, "with lengths from R");
+    EXPECT_TRUE(r.overfit);
+    const FitVerdict kept = judgeAgainstBetter({{"a", 0.04, 0.01, 2}}, {{"a", 0.05, 0.01, 2}});
+    EXPECT_FALSE(kept.overfit);
+    EXPECT_EQ(kept.baseline, "as shipped");
+}

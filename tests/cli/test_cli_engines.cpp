@@ -73,9 +73,9 @@ nlohmann::json runSnippet(const std::string& variable, const std::string& snippe
 
 
 // An engine's AO time is a difference of two median frames; at a tiny size it can be at or below
-// zero, and then the ratio is null rather than a number that means nothing.
+// zero, and then the ratio (to the engine as shipped) is null rather than a number that means nothing.
 void expectTimeRatioWhereTheDefaultsTookTime(const nlohmann::json& j) {
-    const nlohmann::json& ms = j["scores"]["defaults"]["ao_ms"];
+    const nlohmann::json& ms = j["scores"]["shipped"]["ao_ms"];
     ASSERT_TRUE(ms.is_number()) << j.dump(1);
     EXPECT_EQ(j["scores"]["time_ratio"].is_number(), ms.get<double>() > 0) << j.dump(1);
 }
@@ -103,7 +103,7 @@ TEST(EngineTables, EveryTableParsesWithEachDefaultInsideItsRange) {
     }
     // A default outside its range is refused, naming the row.
     nlohmann::json bad = ssao::readJsonFile(kPeers + "/engines/n8ao.json", "table");
-    bad["parameters"][0]["default"] = 50;
+    bad["parameters"][0]["default"] = -1;
     const std::string e = errorOf([&] { ssao::loadEngineTable(writeTemp("bad_engine.json", bad.dump())); });
     EXPECT_NE(e.find("aoRadius: the default lies outside its range"), std::string::npos) << e;
     EXPECT_NE(errorOf([] { ssao::findEngine("n8a0"); }).find("did you mean n8ao"), std::string::npos);
@@ -271,6 +271,14 @@ TEST(CliEngine, TuneWritesTheSettingsAndASnippetThatSetsThem) {
     EXPECT_EQ(j["snippet"], fs::path(js).filename().string());
     EXPECT_EQ(j["browser_sessions"], 3); // the defaults, one knob's grid, the timed comparison
     EXPECT_TRUE(j["scores"]["defaults"]["held_out_views"].is_number());
+    // Both baselines, and the better one named as what the guard judged against.
+    EXPECT_TRUE(j["scores"]["shipped"]["held_out_views"].is_number()) << j.dump(1);
+    const nlohmann::json& held = j["scores"]["held_out"];
+    const std::string better = held["shipped"] <= held["defaults"] ? "as shipped" : "with lengths from R";
+    EXPECT_EQ(held["baseline"], better) << j.dump(1);
+    EXPECT_NE(r.out.find("as shipped / lengths from R -> tuned"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("the engine " + better + " (the better baseline)"), std::string::npos) << r.out;
+    EXPECT_TRUE(j["scores"]["time_noise"].is_number()) << j.dump(1);
     expectTimeRatioWhereTheDefaultsTookTime(j);
     const nlohmann::json got = runSnippet("n8aopass", slurp(js), "tuned");
     EXPECT_EQ(got, (nlohmann::json{{"configuration.aoRadius", j["settings"]["aoRadius"]}})) << slurp(js);
@@ -350,9 +358,11 @@ TEST(CliEngine, TuneWritesAPageWithDefaultsTunedAndSsaolabsBest) {
     size_t images = 0;
     for (size_t at = html.find("data:image/png;base64,"); at != std::string::npos; at = html.find("data:image/png;base64,", at + 1))
         ++images;
-    EXPECT_GE(images, 5u); // the held-out view: reference, defaults and tuned AO + error
+    EXPECT_GE(images, 7u); // the held-out view: reference; as shipped, lengths from R and tuned AO + error
     EXPECT_NE(html.find("ssaolab within the tuned time"), std::string::npos);
-    EXPECT_NE(html.find("N8AO (N8AOPass) defaults"), std::string::npos);
+    EXPECT_NE(html.find("N8AO (N8AOPass) as shipped"), std::string::npos);
+    EXPECT_NE(html.find("N8AO (N8AOPass) lengths from R"), std::string::npos);
+    EXPECT_NE(html.find("the better of its two baselines"), std::string::npos);
 }
 
 // A length the engine compares with scene distances is searched per R, so one fitted value holds on

@@ -151,6 +151,9 @@ TEST(Applicability, EveryShippedPresetSetsOnlyKeysThatApply) {
 TEST(FirstHour, AMistypedKeyOrPresetNameSaysWhatWasMeant) {
     EXPECT_EQ(closestName("vbao-meduim", {"vbao-low", "vbao-medium", "vbao-high"}), "vbao-medium");
     EXPECT_EQ(didYouMean("zzzzzz", {"ao.radius"}), "");
+    // A name in the wrong case is the name: "N8AO" was n8ao, whatever the word's length.
+    EXPECT_EQ(closestName("N8AO", {"n8ao", "three-ssao", "three-gtao"}), "n8ao");
+    EXPECT_EQ(closestName("THREE-GTAO", {"n8ao", "three-ssao", "three-gtao"}), "three-gtao");
     Settings s = defaultSettings();
     EXPECT_TRUE(has(errorOf([&] { applyAssignment(s, "ao.raduis=2"); }), "(did you mean ao.radius?)"))
         << errorOf([&] { applyAssignment(s, "ao.raduis=2"); });

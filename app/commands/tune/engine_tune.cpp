@@ -50,11 +50,11 @@ void addEngineTuneOptions(CLI::App& cmd, EngineTuneOptions& o) {
                    "with --engine: the AO time (ms, training views' mean) that chooses the sample counts: the largest "
                    "that fits, after the shape is fitted (default: the engine's own counts)")
         ->type_name("MS")
-        ->check(cliRange(0.0, 1e6));
+        ->check(cliRange(1e-6, 1e6));
     cmd.add_option("--budget-ratio", o.budgetRatio,
                    "with --engine: the budget as a multiple of the defaults' AO time, measured in the same run")
         ->type_name("X")
-        ->check(cliRange(0.0, 1000.0));
+        ->check(cliRange(1e-6, 1000.0));
     cmd.add_option("--timing-frames", o.timingFrames, "with --engine: frames whose median times the defaults and the tuned settings")
         ->capture_default_str()
         ->check(cliRange(1, 1000));
@@ -62,23 +62,29 @@ void addEngineTuneOptions(CLI::App& cmd, EngineTuneOptions& o) {
 
 namespace {
 
-// One scene's views of one role: [0] defaults, [1] tuned; MSE and AO ms means.
+// The final measurement's sides (EngineTuner::finalMeasure); kRepeat times the shipped settings again.
+constexpr int kFromR = 0, kTuned = 1, kShipped = 2, kSides = 3, kRepeat = 3;
+
+// One scene's views of one role, per side; MSE and AO ms means.
 struct SceneScore {
     size_t scene;
     TuneRole role;
     int views = 0;
-    double mse[2] = {0, 0}, ms[2] = {0, 0};
+    double mse[kSides] = {0, 0, 0}, ms[kSides] = {0, 0, 0};
 };
 
 struct Outcome {
-    double train[2], heldViews[2], heldScenes[2], ms[2]; // [0] defaults, [1] tuned; MSE means, AO ms
-    FitVerdict verdict;
+    double train[kSides], heldViews[kSides], heldScenes[kSides], ms[kSides]; // per side: MSE means, AO ms
+    double heldAll[kSides];  // MSE mean over every held-out view
+    double timeNoise = 0;    // RMS over views of log(ms repeat / ms shipped): the timing's own spread
+    FitVerdict verdict; // against the better baseline (tune_guard.h judgeAgainstBetter)
+    int better = kShipped; // which baseline that is
     std::vector<SceneScore> perScene; // by scene, then role
 };
 
 std::vector<SceneScore> perSceneScores(const EngineTuner& t, const std::vector<std::vector<Sample>>& s) {
     std::map<std::pair<size_t, int>, SceneScore> by;
-    for (int side = 0; side < 2; ++side)
+    for (int side = 0; side < kSides; ++side)
         for (const Sample& x : s[side]) {
             const TuneView& v = t.views()[x.view];
             SceneScore& sc = by[{v.scene, int(v.role)}];
@@ -88,7 +94,7 @@ std::vector<SceneScore> perSceneScores(const EngineTuner& t, const std::vector<s
         }
     std::vector<SceneScore> out;
     for (auto& [key, sc] : by) {
-        for (int side = 0; side < 2; ++side)
+        for (int side = 0; side < kSides; ++side)
             sc.mse[side] /= sc.views, sc.ms[side] /= sc.views;
         out.push_back(sc);
     }
@@ -98,34 +104,49 @@ std::vector<SceneScore> perSceneScores(const EngineTuner& t, const std::vector<s
 // Scores per role and the held-out verdict from the final, timed measurement.
 Outcome judge(const EngineTuner& t, const std::vector<std::vector<Sample>>& s) {
     Outcome o{};
-    std::map<size_t, HeldOutScore> held; // by scene: MSE sums, then means
-    for (int side = 0; side < 2; ++side) {
-        std::vector<double> byRole[3], ms;
+    std::map<size_t, HeldOutScore> held[2]; // by scene, against [0] the defaults from R, [1] as shipped
+    for (int side = 0; side < kSides; ++side) {
+        std::vector<double> byRole[3], ms, heldAll;
         for (const Sample& x : s[side]) {
             const TuneView& v = t.views()[x.view];
             byRole[int(v.role)].push_back(x.mse);
             ms.push_back(x.ms);
             if (v.role == TuneRole::Train) continue;
-            HeldOutScore& h = held[v.scene];
-            h.scene = t.scenes()[v.scene].name + (v.role == TuneRole::HeldOutView ? " (held-out views)" : "");
-            (side == 0 ? h.before : h.after) += x.mse;
-            h.views += side == 0;
+            heldAll.push_back(x.mse);
+            for (int b = 0; b < 2; ++b) {
+                HeldOutScore& h = held[b][v.scene];
+                h.scene = t.scenes()[v.scene].name + (v.role == TuneRole::HeldOutView ? " (held-out views)" : "");
+                if (side == kTuned) h.after += x.mse;
+                if (side == (b == 0 ? kFromR : kShipped)) h.before += x.mse, ++h.views;
+            }
         }
         o.train[side] = meanOf(byRole[0]), o.heldViews[side] = meanOf(byRole[1]), o.heldScenes[side] = meanOf(byRole[2]);
-        o.ms[side] = meanOf(ms);
+        o.ms[side] = meanOf(ms), o.heldAll[side] = meanOf(heldAll);
     }
-    std::vector<HeldOutScore> list;
-    for (auto& [scene, h] : held) {
-        h.before /= h.views, h.after /= h.views;
-        list.push_back(h);
-    }
-    o.verdict = judgeFit(list);
+    std::vector<HeldOutScore> lists[2];
+    for (int b = 0; b < 2; ++b)
+        for (auto& [scene, h] : held[b]) {
+            h.before /= h.views, h.after /= h.views;
+            lists[b].push_back(h);
+        }
+    double noise = 0; // over the views where both timings took time (a tiny frame can time at or below 0)
+    int timed = 0;
+    for (size_t i = 0; i < s[kShipped].size() && i < s[kRepeat].size(); ++i)
+        if (s[kShipped][i].ms > 0 && s[kRepeat][i].ms > 0)
+            noise += std::pow(std::log(s[kRepeat][i].ms / s[kShipped][i].ms), 2), ++timed;
+    o.timeNoise = timed ? std::sqrt(noise / timed) : 0;
+    o.verdict = judgeAgainstBetter(lists[1], lists[0]);
+    o.better = o.verdict.baseline == "as shipped" ? kShipped : kFromR;
     o.perScene = perSceneScores(t, s);
     return o;
 }
 
 nlohmann::json rmseJson(double mse) {
     return std::isfinite(mse) ? nlohmann::json(std::sqrt(mse)) : nlohmann::json();
+}
+
+nlohmann::json msJson(double ms) {
+    return std::isfinite(ms) ? nlohmann::json(ms) : nlohmann::json();
 }
 
 const char* roleName(TuneRole r) {
@@ -136,27 +157,46 @@ nlohmann::json perSceneJson(const EngineTuner& t, const Outcome& r) {
     nlohmann::json rows = nlohmann::json::array();
     for (const SceneScore& s : r.perScene)
         rows.push_back({{"scene", t.scenes()[s.scene].name}, {"role", roleName(s.role)}, {"views", s.views},
-                        {"rmse", {{"defaults", rmseJson(s.mse[0])}, {"tuned", rmseJson(s.mse[1])}}},
-                        {"ao_ms", {{"defaults", std::isfinite(s.ms[0]) ? nlohmann::json(s.ms[0]) : nlohmann::json()},
-                                   {"tuned", std::isfinite(s.ms[1]) ? nlohmann::json(s.ms[1]) : nlohmann::json()}}}});
+                        {"rmse", {{"shipped", rmseJson(s.mse[kShipped])}, {"defaults", rmseJson(s.mse[kFromR])},
+                                  {"tuned", rmseJson(s.mse[kTuned])}}},
+                        {"ao_ms", {{"shipped", msJson(s.ms[kShipped])}, {"defaults", msJson(s.ms[kFromR])},
+                                   {"tuned", msJson(s.ms[kTuned])}}}});
     return rows;
 }
 
 nlohmann::json scoresJson(const TuneOptions& o, const Outcome& r) {
     auto side = [&](int s) {
         return nlohmann::json{{"train", rmseJson(r.train[s])}, {"held_out_views", rmseJson(r.heldViews[s])},
-                              {"held_out_scenes", rmseJson(r.heldScenes[s])}, {"ao_ms", std::isfinite(r.ms[s]) ? nlohmann::json(r.ms[s]) : nlohmann::json()}};
+                              {"held_out_scenes", rmseJson(r.heldScenes[s])}, {"ao_ms", msJson(r.ms[s])}};
     };
     return {{"metric", "geometry RMSE against the ray-traced reference (visibility, R = " + std::to_string(o.radiusScene) +
                            " x diagonal, " + std::to_string(o.referenceRays) + " rays), " + o.size +
                            "; AO ms: median frame with the pass - frame without, of " + std::to_string(o.engine.timingFrames) +
                            " frames, mean over every view"},
-            {"defaults", side(0)},
-            {"tuned", side(1)},
-            {"held_out", {{"defaults", r.verdict.before}, {"tuned", r.verdict.after}}},
+            {"shipped", side(kShipped)},
+            {"defaults", side(kFromR)},
+            {"tuned", side(kTuned)},
+            {"held_out", {{"shipped", rmseJson(r.heldAll[kShipped])}, {"defaults", rmseJson(r.heldAll[kFromR])},
+                          {"tuned", r.verdict.after}, {"baseline", r.verdict.baseline}}},
             {"held_out_rmse_ratio", r.verdict.before > 0 ? nlohmann::json(r.verdict.after / r.verdict.before) : nlohmann::json()},
-            {"time_ratio", r.ms[0] > 0 ? nlohmann::json(r.ms[1] / r.ms[0]) : nlohmann::json()},
+            {"time_ratio", r.ms[kShipped] > 0 ? nlohmann::json(r.ms[kTuned] / r.ms[kShipped]) : nlohmann::json()},
+            {"time_ratio_vs_defaults", r.ms[kFromR] > 0 ? nlohmann::json(r.ms[kTuned] / r.ms[kFromR]) : nlohmann::json()},
+            {"time_noise", r.timeNoise},
             {"overfit", r.verdict.overfit}};
+}
+
+// The tuned settings' AO time against the shipped, or "the same AO time" when the change is within
+// the timing's own spread (the shipped settings timed twice; at least 2 %).
+std::string timeText(const Outcome& r) {
+    const double ratio = r.ms[kTuned] / r.ms[kShipped], noise = std::max(0.02, 2.0 * r.timeNoise);
+    char b[160];
+    if (std::abs(std::log(ratio)) <= noise)
+        std::snprintf(b, sizeof b, "the shipped AO time within its timing's spread (x%.3f, %.1f -> %.1f ms; +-%.0f %%)", ratio,
+                      r.ms[kShipped], r.ms[kTuned], 100.0 * noise);
+    else
+        std::snprintf(b, sizeof b, "at x%.3f the shipped AO time (%.1f -> %.1f ms; the timing's spread +-%.0f %%)", ratio,
+                      r.ms[kShipped], r.ms[kTuned], 100.0 * noise);
+    return b;
 }
 
 void printOutcome(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& knobs, const Outcome& r, double seconds) {
@@ -170,11 +210,16 @@ void printOutcome(const TuneOptions& o, const EngineTuner& t, const std::vector<
     for (const Knob& k : knobs)
         std::printf(k.p->relative ? " %s=%.4g (x%.3g)" : k.p->perRadius == 1 ? " %s=%.4g (%.3g R)" : k.p->perRadius ? " %s=%.4g (%.3g / R)" : " %s=%.4g", k.p->name.c_str(),
                     values.at(k.p->name), k.value);
-    std::printf("\ngeometry RMSE, defaults -> tuned: training %.4f -> %.4f, held-out views %.4f -> %.4f",
-                std::sqrt(r.train[0]), std::sqrt(r.train[1]), std::sqrt(r.heldViews[0]), std::sqrt(r.heldViews[1]));
-    if (n[2]) std::printf(", held-out scenes %.4f -> %.4f", std::sqrt(r.heldScenes[0]), std::sqrt(r.heldScenes[1]));
-    std::printf("\nheld-out RMSE x%.3f at x%.3f the AO time (%.1f -> %.1f ms); tuning took %.0f s in %d browser sessions\n",
-                r.verdict.after / r.verdict.before, r.ms[1] / r.ms[0], r.ms[0], r.ms[1], seconds, t.sessions());
+    auto three = [](const double* m) {
+        char b[96];
+        std::snprintf(b, sizeof b, "%.4f / %.4f -> %.4f", std::sqrt(m[kShipped]), std::sqrt(m[kFromR]), std::sqrt(m[kTuned]));
+        return std::string(b);
+    };
+    std::printf("\ngeometry RMSE, as shipped / lengths from R -> tuned: training %s, held-out views %s",
+                three(r.train).c_str(), three(r.heldViews).c_str());
+    if (n[2]) std::printf(", held-out scenes %s", three(r.heldScenes).c_str());
+    std::printf("\nheld-out RMSE x%.3f the engine %s (the better baseline), %s; tuning took %.0f s in %d browser sessions\n",
+                r.verdict.after / r.verdict.before, r.verdict.baseline.c_str(), timeText(r).c_str(), seconds, t.sessions());
     std::fflush(stdout); // before any warning on stderr
 }
 
@@ -190,11 +235,14 @@ std::string pagePath(const TuneOptions& o) {
 std::vector<std::vector<std::string>> settingRows(const EngineTuner& t, const std::vector<Knob>& knobs) {
     const TuneView& v = t.firstTrainView();
     const auto tuned = t.valuesFor(knobs, v);
+    const KnobSet shipped = t.shippedKnobs();
     std::vector<std::vector<std::string>> rows;
     for (const EngineParam& p : t.table().params) {
         if (p.role == EngineParam::Role::Fixed || !v.base.count(p.name)) continue;
         const auto it = tuned.find(p.name);
-        rows.push_back({p.name, engineValueJson(p, exportedValue(v.base.at(p.name))).dump(),
+        const bool fromR = std::any_of(shipped.begin(), shipped.end(), [&](const Knob& k) { return k.p == &p; });
+        rows.push_back({p.name, engineValueJson(p, p.defaultValue).dump() + (fromR ? " (the package's)" : ""),
+                        engineValueJson(p, exportedValue(v.base.at(p.name))).dump(),
                         it == tuned.end() ? "(defaults)" : engineValueJson(p, it->second).dump(),
                         p.role == EngineParam::Role::Shape ? "shape (fitted)" : "cost (the budget's)", p.unit});
     }
@@ -208,14 +256,16 @@ std::vector<PageRow> pageRows(const TuneOptions& o, const EngineTuner& t, const 
     std::vector<PageRow> rows;
     for (const SceneScore& sc : r.perScene) {
         PageRow row{t.scenes()[sc.scene].name, roleName(sc.role), sc.views,
-                    {"defaults", std::sqrt(sc.mse[0]), sc.ms[0], nullptr}, {"tuned", std::sqrt(sc.mse[1]), sc.ms[1], nullptr}};
-        for (size_t side = 0; side < 2; ++side)
-            for (const Sample& x : s[side]) {
+                    {"defaults", std::sqrt(sc.mse[kFromR]), sc.ms[kFromR], nullptr},
+                    {"tuned", std::sqrt(sc.mse[kTuned]), sc.ms[kTuned], nullptr},
+                    {"as shipped", std::sqrt(sc.mse[kShipped]), sc.ms[kShipped], nullptr}};
+        for (int side = 0; side < kSides; ++side)
+            for (const Sample& x : s[size_t(side)]) {
                 const TuneView& v = t.views()[x.view];
                 if (v.scene != sc.scene || v.role != sc.role || !v.shown || !x.eval) continue;
                 row.shownView = v.viewpoint, row.ref = &v.ref;
-                (side == 0 ? row.defaults : row.tuned).eval = x.eval;
-                if (side == 0) continue;
+                (side == kFromR ? row.defaults : side == kTuned ? row.tuned : row.shipped).eval = x.eval;
+                if (side != kTuned) continue;
                 if (!runner) runner = std::make_unique<HeadlessRunner>(HeadlessRunner::Options{o.shaderDir, false});
                 ProgressBar bar("  ssaolab's presets on " + row.scene + " " + v.viewpoint, !o.quiet);
                 const float radius = o.radiusScene * 2.0f * t.scenes()[sc.scene].bounds.radius();
@@ -235,7 +285,8 @@ void writePage(const TuneOptions& o, const EngineTuner& t, const std::vector<Kno
     const EngineTable& tab = t.table();
     EnginePage p{tab.title, tab.package, tab.version, o.size, scoresJson(o, r)["metric"].get<std::string>(),
                  runFacts("Chromium (WebGL 2) for the engine; EGL for ssaolab"), settingRows(t, knobs),
-                 r.verdict.before, r.verdict.after, r.ms[1] / r.ms[0], seconds, pageRows(o, t, r, s)};
+                 r.verdict.before, r.verdict.after, r.ms[kTuned] / r.ms[kShipped], r.verdict.baseline, seconds,
+                 pageRows(o, t, r, s)};
     writeFileAtomically(pagePath(o), engineTunePageHtml(p));
     if (!o.quiet) std::printf("saved %s\n", pagePath(o).c_str());
 }

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <sstream>
 
 namespace ssao {
@@ -44,24 +45,27 @@ std::string factsLine(const nlohmann::json& f) {
 }
 
 void settingsTable(std::ostringstream& h, const EnginePage& p) {
-    h << "<h2>Settings</h2><table><tr><th>parameter</th><th>defaults (lengths from R)</th><th>tuned</th><th>role</th><th>unit</th></tr>";
+    h << "<h2>Settings</h2><table><tr><th>parameter</th><th>as shipped</th><th>defaults (lengths from R)</th><th>tuned</th><th>role</th>"
+         "<th>unit</th></tr>";
     for (const auto& row : p.settings) {
         h << "<tr>";
         for (size_t i = 0; i < row.size(); ++i)
-            h << (i == 1 || i == 2 ? "<td class=\"n\">" : "<td>") << htmlText(row[i]) << "</td>";
+            h << (i >= 1 && i <= 3 ? "<td class=\"n\">" : "<td>") << htmlText(row[i]) << "</td>";
         h << "</tr>";
     }
     h << "</table>";
 }
 
 void scoresTable(std::ostringstream& h, const EnginePage& p) {
-    h << "<h2>Error and time</h2><table><tr><th>scene</th><th>which views</th><th>views</th><th>RMSE defaults</th><th>RMSE tuned</th>"
-         "<th>AO ms defaults</th><th>AO ms tuned</th><th>ssaolab within the tuned time (shown view)</th><th>its RMSE</th><th>its ms</th></tr>";
+    h << "<h2>Error and time</h2><table><tr><th>scene</th><th>which views</th><th>views</th><th>RMSE as shipped</th>"
+         "<th>RMSE lengths from R</th><th>RMSE tuned (x the better)</th><th>AO ms as shipped</th><th>AO ms lengths from R</th>"
+         "<th>AO ms tuned (x shipped)</th><th>ssaolab within the tuned time (shown view)</th><th>its RMSE</th><th>its ms</th></tr>";
     for (const PageRow& r : p.rows) {
         h << "<tr><td>" << htmlText(r.scene) << "</td><td>" << htmlText(r.role) << "</td><td class=\"n\">" << r.views << "</td>"
-          << "<td class=\"n\">" << num(r.defaults.rmse) << "</td><td class=\"n\">" << num(r.tuned.rmse) << ratio(r.tuned.rmse, r.defaults.rmse)
-          << "</td><td class=\"n\">" << num(r.defaults.ms, "%.1f") << "</td><td class=\"n\">" << num(r.tuned.ms, "%.1f")
-          << ratio(r.tuned.ms, r.defaults.ms) << "</td>";
+          << "<td class=\"n\">" << num(r.shipped.rmse) << "</td><td class=\"n\">" << num(r.defaults.rmse) << "</td><td class=\"n\">"
+          << num(r.tuned.rmse) << ratio(r.tuned.rmse, std::min(r.defaults.rmse, r.shipped.rmse)) << "</td><td class=\"n\">"
+          << num(r.shipped.ms, "%.1f") << "</td><td class=\"n\">" << num(r.defaults.ms, "%.1f") << "</td><td class=\"n\">"
+          << num(r.tuned.ms, "%.1f") << ratio(r.tuned.ms, r.shipped.ms) << "</td>";
         if (r.hasSsaolab)
             h << "<td>" << htmlText(r.ssaolab.label) << "</td><td class=\"n\">" << num(r.ssaolab.rmse) << "</td><td class=\"n\">"
               << num(r.ssaolab.ms, "%.1f") << "</td>";
@@ -73,7 +77,9 @@ void scoresTable(std::ostringstream& h, const EnginePage& p) {
 }
 
 void thumbCell(std::ostringstream& h, const PageEntry& e, const ReferenceImage& ref, const std::string& what) {
-    h << "<td><div class=\"cap\">" << htmlText(what) << " · RMSE " << num(e.rmse) << "</div>";
+    // This view's own RMSE under its thumbnail (the tables give the mean over the row's views).
+    h << "<td><div class=\"cap\">" << htmlText(what) << " · this view's RMSE " << num(e.eval ? e.eval->metrics.rmse : e.rmse)
+      << "</div>";
     if (e.eval) h << img(aoThumbnailImage(*e.eval, ref), what + " AO") << img(errorThumbnailImage(*e.eval, ref), what + " error");
     h << "</td>";
 }
@@ -85,7 +91,8 @@ void thumbnails(std::ostringstream& h, const EnginePage& p) {
         if (r.shownView.empty() || !r.ref || !r.tuned.eval) continue;
         h << "<tr><td><div class=\"cap\">" << htmlText(r.scene + " · " + r.shownView) << " · reference</div>"
           << img(referenceThumbnailImage(*r.ref), "reference") << "</td>";
-        thumbCell(h, r.defaults, *r.ref, p.title + " defaults");
+        thumbCell(h, r.shipped, *r.ref, p.title + " as shipped");
+        thumbCell(h, r.defaults, *r.ref, p.title + " lengths from R");
         thumbCell(h, r.tuned, *r.ref, p.title + " tuned");
         if (r.hasSsaolab) thumbCell(h, r.ssaolab, *r.ref, "ssaolab " + r.ssaolab.label);
         h << "</tr>";
@@ -100,8 +107,9 @@ std::string engineTunePageHtml(const EnginePage& p) {
     h << "<!doctype html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << htmlText(p.title) << " tuned</title>" << kStyle
       << "</head><body><h1>" << htmlText(p.title + " (" + p.package + " " + p.version + ") tuned against the ray-traced reference, " + p.size)
       << "</h1><p class=\"machine\">" << factsLine(p.facts) << "</p>"
-      << "<p>Held-out geometry RMSE " << num(p.heldBefore) << " → " << num(p.heldAfter) << " (x" << num(p.heldAfter / p.heldBefore, "%.3f")
-      << ") at x" << num(p.timeRatio, "%.3f") << " the AO time; tuning took " << num(p.seconds, "%.0f") << " s.</p>"
+      << "<p>Held-out geometry RMSE " << num(p.heldBefore) << " (the engine " << htmlText(p.baseline)
+      << ", the better of its two baselines) → " << num(p.heldAfter) << " (x" << num(p.heldAfter / p.heldBefore, "%.3f")
+      << ") at x" << num(p.timeRatio, "%.3f") << " the shipped AO time; tuning took " << num(p.seconds, "%.0f") << " s.</p>"
       << "<p class=\"cap\">" << htmlText(p.metric) << ". Training views were fitted; held-out views and scenes were not: "
       << "their ratio is the gain that carries over. ssaolab's column is the most accurate shipped preset whose AO time on the "
          "shown view is at most the tuned engine's there (ssaolab: GL timer queries of AO + denoise; the engine: its frame with "

@@ -146,14 +146,24 @@ std::vector<BudgetRung> EngineTuner::chooseCost(std::vector<Knob>& knobs) {
     return rungs;
 }
 
+KnobSet EngineTuner::shippedKnobs() const {
+    KnobSet out;
+    for (const EngineParam& p : table_.params)
+        if (p.role != EngineParam::Role::Fixed && p.row.contains("harness")) out.push_back({&p, 0, 0, p.defaultValue, true});
+    return out;
+}
+
 std::vector<std::vector<Sample>> EngineTuner::finalMeasure(const std::vector<Knob>& tuned) {
-    return measure({KnobSet{}, tuned}, every, o_.engine.timingFrames, false, true);
+    return measure({KnobSet{}, tuned, shippedKnobs(), shippedKnobs()}, every, o_.engine.timingFrames, false, true);
 }
 
 std::map<std::string, double> EngineTuner::valuesFor(const KnobSet& c, const TuneView& v) const {
     std::map<std::string, double> out;
     for (const Knob& k : c) {
-        const double x = k.p->relative ? v.base.at(k.p->name) * k.value : k.p->perRadius ? std::pow(v.radius, k.p->perRadius) * k.value : k.value;
+        const double x = k.absolute ? k.value
+                         : k.p->relative ? v.base.at(k.p->name) * k.value
+                         : k.p->perRadius ? std::pow(v.radius, k.p->perRadius) * k.value
+                                          : k.value;
         out[k.p->name] = exportedValue(k.p->type == EngineParam::Type::Integer ? std::round(x) : x);
     }
     return out;

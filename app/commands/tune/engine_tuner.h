@@ -35,8 +35,10 @@ struct TuneView {
 
 struct Knob {
     const EngineParam* p;
-    // value: x the view's make-peers value when p->relative, x the view's R when p->perRadius, else the value itself
+    // value: x the view's make-peers value when p->relative, x the view's R when p->perRadius, else the
+    // value itself; `absolute`: the value itself whatever the row (the engine as its package ships it)
     double lo, hi, value;
+    bool absolute = false;
 };
 using KnobSet = std::vector<Knob>; // empty: the make-peers settings
 
@@ -70,8 +72,11 @@ class EngineTuner {
     // one factor; the training views' mean AO time of each rung (timed, with the fitted shape) picks
     // the largest that fits. Returns the rungs measured, the chosen one marked; none without a budget.
     std::vector<BudgetRung> chooseCost(std::vector<Knob>& knobs);
-    // Defaults and tuned on every view, timed: [0] the defaults' samples, [1] the tuned ones' (the
-    // shown views' images kept).
+    // The engine as its package ships it: every row the harness sets from R (lengths, and factors
+    // on them) back at the table's default, verbatim; the rows that read the AO alone stay set.
+    KnobSet shippedKnobs() const;
+    // Every view, timed: [0] the defaults with lengths from R, [1] the tuned settings, [2] the engine
+    // as shipped (the shown views' images kept), [3] as shipped again: the timing's own noise.
     std::vector<std::vector<Sample>> finalMeasure(const std::vector<Knob>& tuned);
     // The engine's value of each knob on a view.
     std::map<std::string, double> valuesFor(const KnobSet& c, const TuneView& v) const;

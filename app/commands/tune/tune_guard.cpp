@@ -20,11 +20,20 @@ FitVerdict judgeFit(const std::vector<HeldOutScore>& scores) {
     return v;
 }
 
+FitVerdict judgeAgainstBetter(const std::vector<HeldOutScore>& shipped, const std::vector<HeldOutScore>& fromR) {
+    FitVerdict a = judgeFit(shipped), b = judgeFit(fromR);
+    a.baseline = "as shipped", b.baseline = "with lengths from R";
+    return b.before < a.before ? b : a; // ties: the package's own settings
+}
+
 namespace {
+std::string against(const FitVerdict& v) {
+    return v.baseline.empty() ? "" : " against the engine " + v.baseline;
+}
 std::string rise(const FitVerdict& v) {
     char b[96];
     std::snprintf(b, sizeof b, " rose %.4f -> %.4f", v.before, v.after);
-    return "held-out " + v.metric + b;
+    return "held-out " + v.metric + b + against(v);
 }
 std::string list(const std::vector<std::string>& names) {
     std::string out;
@@ -47,7 +56,7 @@ std::string overfitSavedText(const FitVerdict& v, const std::string& out) {
 std::string worseScenesText(const FitVerdict& v) {
     char b[96];
     std::snprintf(b, sizeof b, " fell %.4f -> %.4f overall", v.before, v.after);
-    return "held-out " + v.metric + b + ", but rose on " + list(v.worse);
+    return "held-out " + v.metric + b + against(v) + ", but rose on " + list(v.worse);
 }
 
 } // namespace ssao

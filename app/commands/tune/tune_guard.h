@@ -20,9 +20,16 @@ struct FitVerdict {
     double before = 0, after = 0;   // `metric` over every held-out view
     bool overfit = false;           // after > before: the fit does not carry over
     std::vector<std::string> worse; // scenes whose held-out error rose
+    std::string baseline;           // what `before` is when there were several ("as shipped"); "" one
 };
 
 FitVerdict judgeFit(const std::vector<HeldOutScore>& scores);
+
+// A web engine's tune has two baselines on the same held-out views: the engine as its package ships
+// it, and its defaults with every length from R. The fit is judged against the better of the two
+// over all held-out views (the lower `before`), named in `baseline`: a tune that beats the rescaled
+// defaults but not what the user already has is overfit.
+FitVerdict judgeAgainstBetter(const std::vector<HeldOutScore>& shipped, const std::vector<HeldOutScore>& fromR);
 
 // The one line of each outcome (no "ssaolab: error/warning:" prefix): refused, saved anyway, and
 // saved while some scenes got worse. `out` is the preset file.
