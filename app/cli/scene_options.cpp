@@ -1,5 +1,6 @@
 #include "cli/scene_options.h"
 
+#include "cli/headless_runner.h"
 #include "util/error.h"
 #include "renderer.h"
 
@@ -23,6 +24,18 @@ void applyCameraOptions(Camera& c, const std::string& clip, const std::string& p
     if (clip == "fixed") c.clip = ClipMode::Fixed;
     if (!projection.empty()) c.projectionKind = parseProjection(projection);
     if (!depth.empty()) c.depth = parseDepthMode(depth);
+}
+
+void addStartCameraOption(CLI::App& cmd, std::string& camera) {
+    cmd.add_option("--camera", camera,
+                   "the first viewpoint, eye,target[,up[,fov_deg[,near,far]]] in the scene file's coordinates (as "
+                   "render takes it); the other views orbit about it (default: the scene's own camera)")
+        ->type_name("EYE,TARGET...");
+}
+
+Camera startCamera(const std::string& cameraOption, const Scene& scene) {
+    const Camera base = defaultCamera(scene);
+    return cameraOption.empty() ? base : parseCamera(cameraOption, base, scene.origin);
 }
 
 void parseSizeOption(const std::string& s, int& w, int& h) {

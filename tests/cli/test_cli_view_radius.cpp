@@ -80,3 +80,31 @@ TEST(CliViewRadius, AFrameThatReadsTheSecondLayerIsSplitAgainstATwoLayerOracle) 
         EXPECT_EQ(m["error_split"]["oracle"]["layers"].get<int>(), layers == "true" ? 2 : 1);
     }
 }
+
+// bench and tune take R as --radius-scene x the diagonal: the same check on every view's reference,
+// one warning per scene naming the --radius-scene that fits the view; --camera sets the first view
+// as render takes it; a framed view warns nothing.
+TEST(CliViewRadius, BenchAndTuneWarnOnceAScenePerViewAndOfferTheRadiusScene) {
+    const std::string sweep = writeTemp("view_radius_sweep.json", R"({"name": "r", "groups": [{"name": "g", "set": {"ao.technique": "gtao"}}]})");
+    const std::regex hint("ssaolab: warning: builtin:showcase: R = ([0-9.]+) units[^\\n]*view '[^']+' spans "
+                          "\\(([0-9.]+) units across[^\\n]*--radius-scene ([0-9.e-]+) gives the view 5% of its extent");
+    for (const std::string& cmd :
+         {"bench --views 2 --frames 1 --warmup 0 --no-plot --quiet --sweep " + sweep + " --out " + outDir("view_radius_bench"),
+          "tune --technique gtao --views 2 --rounds 1 --grid 3 --knob gtao.falloff_range --save-overfit --quiet --out " +
+              outDir("view_radius_tune") + ".json"}) {
+        const std::string base = cmd + " --scene builtin:showcase --size 64x36 --reference-rays 4 ";
+        const CliRun close = ssaolab(base + kCloseUp);
+        ASSERT_EQ(close.exitCode, 0) << cmd << "\n" << close.err;
+        EXPECT_EQ(close.err.find("gives the view"), close.err.rfind("gives the view")) << "once: " << cmd << "\n" << close.err;
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(close.err, m, hint)) << cmd << "\n" << close.err;
+        const double radius = std::stod(m[1]), extent = std::stod(m[2]), fraction = std::stod(m[3]);
+        EXPECT_GT(radius, 0.6 * extent) << cmd;
+        EXPECT_LT(fraction, 0.05) << cmd;
+        EXPECT_GT(fraction, 0.0) << cmd;
+        const CliRun framed = ssaolab(base);
+        ASSERT_EQ(framed.exitCode, 0) << cmd << "\n" << framed.err;
+        EXPECT_EQ(framed.err.find("--radius-scene"), std::string::npos) << cmd << "\n" << framed.err;
+    }
+    expectCleanFailure(ssaolab("bench --scene builtin:showcase --camera 1,2 --out " + outDir("view_radius_bad")), "--camera");
+}

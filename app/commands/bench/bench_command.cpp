@@ -13,6 +13,7 @@
 #include "cli/progress_bar.h"
 #include "reference/reference_cache.h"
 #include "cli/scene_options.h"
+#include "cli/view_radius.h"
 #include "scene/scene.h"
 #include "settings/preset.h"
 #include "util/error.h"
@@ -45,6 +46,7 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
     cmd.add_option("--views", o.views, "viewpoints per scene: its camera, then orbits around it")
         ->capture_default_str()
         ->check(cliRange(1, 32));
+    addStartCameraOption(cmd, o.camera);
     cmd.add_option("--frames", o.frames, "timed frames per configuration and view (median, min, max)")
         ->capture_default_str()
         ->check(cliRange(1, 10000));
@@ -137,7 +139,7 @@ class SceneBench {
                                 {"diagonal", 2.0f * scene.bounds.radius()},
                                 {"radius", radius},
                                 {"viewpoints", nlohmann::json::array()}};
-        const auto vps = viewpoints(defaultCamera(scene), o_.views);
+        const auto vps = viewpoints(startCamera(o_.camera, scene), o_.views);
         for (size_t vi = 0; vi < vps.size(); ++vi) {
             std::vector<size_t> configs;
             for (const WorkUnit& u : units)
@@ -145,6 +147,7 @@ class SceneBench {
             if (!configs.empty()) facts["viewpoints"].push_back(view(scene, vps[vi].first, vps[vi].second, vi, radius, provider, configs));
         }
         run_.facts["scenes"].push_back(facts);
+        if (const std::string w = radius_.line(scene.name); !w.empty()) printWarnings({w});
         if (!engines_.active()) return;
         engines_.runScene(spec, scene, radius, o_.quiet, run_);
         std::map<std::string, size_t> order; // the engines' rows among the others: viewpoint, then configuration
@@ -171,6 +174,7 @@ class SceneBench {
         }
         // The screen-space oracle of the same view, R and rays: what the G-buffer alone decides; with
         // two-layer rows, also the oracle of a deep G-buffer, which those rows are split against.
+        radius_.check(scene.name, vname, ref, r_.camera(), o_.radiusScene, 2.0 * scene.bounds.radius());
         std::optional<ReferenceImage> oracle, deep;
         screen_ = deepScreen_ = ErrorMetrics{};
         if (o_.oracle) oracle = traceOracle(provider, ref, radius, o_.oracleLayers, scene.name + " " + vname, screen_);
@@ -275,6 +279,7 @@ class SceneBench {
     ErrorMetrics deepScreen_;
     const MotionTruth* motion_ = nullptr;    // its camera path's truth (bench --motion)
     BenchEngines& engines_;                  // the web engines' rows (bench --engines)
+    SceneRadiusWarnings radius_;             // R against what each view spans
 };
 
 } // namespace

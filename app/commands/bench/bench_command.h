@@ -22,7 +22,8 @@ struct BenchOptions {
     std::vector<std::string> scenes; // default: builtin:showcase
     std::string sweep = "builtin";
     std::string size = "1280x720";
-    int views = 3;   // the scene's camera + orbits
+    int views = 3;   // the scene's camera (or --camera) + orbits
+    std::string camera; // --camera: the first viewpoint of every scene, file coordinates ("" = its own)
     int frames = 20; // timed frames per configuration and view (median, min, max)
     int warmup = 2;  // untimed frames first (shader compilation, caches)
     int referenceRays = 512;

@@ -280,13 +280,28 @@ std::vector<PageRow> pageRows(const TuneOptions& o, const EngineTuner& t, const 
     return rows;
 }
 
+// R of every scene, where it comes from and its unit: what "lengths from R" scaled.
+std::string radiusLine(const TuneOptions& o, const EngineTuner& t) {
+    std::string out = "R, the AO radius of the reference and of every length the harness sets from it: ";
+    char b[160];
+    for (size_t i = 0; i < t.scenes().size(); ++i) {
+        const double diagonal = 2.0 * t.scenes()[i].bounds.radius();
+        std::snprintf(b, sizeof b, "%s%.4g scene units on %s", i ? ", " : "", o.radiusScene * diagonal,
+                      t.scenes()[i].name.c_str());
+        out += b;
+    }
+    std::snprintf(b, sizeof b, " (--radius-scene %.4g x each scene's bounding-box diagonal; scene units are the glTF's, "
+                               "metres by its convention).", o.radiusScene);
+    return out + b;
+}
+
 void writePage(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& knobs, const Outcome& r,
                const std::vector<std::vector<Sample>>& s, double seconds) {
     const EngineTable& tab = t.table();
     EnginePage p{tab.title, tab.package, tab.version, o.size, scoresJson(o, r)["metric"].get<std::string>(),
                  runFacts("Chromium (WebGL 2) for the engine; EGL for ssaolab"), settingRows(t, knobs),
-                 r.verdict.before, r.verdict.after, r.ms[kTuned] / r.ms[kShipped], r.verdict.baseline, seconds,
-                 pageRows(o, t, r, s)};
+                 r.verdict.before, r.verdict.after, r.ms[kTuned] / r.ms[kShipped], r.verdict.baseline, radiusLine(o, t),
+                 seconds, pageRows(o, t, r, s)};
     writeFileAtomically(pagePath(o), engineTunePageHtml(p));
     if (!o.quiet) std::printf("saved %s\n", pagePath(o).c_str());
 }

@@ -110,6 +110,7 @@ std::string engineTunePageHtml(const EnginePage& p) {
       << "<p>Held-out geometry RMSE " << num(p.heldBefore) << " (the engine " << htmlText(p.baseline)
       << ", the better of its two baselines) → " << num(p.heldAfter) << " (x" << num(p.heldAfter / p.heldBefore, "%.3f")
       << ") at x" << num(p.timeRatio, "%.3f") << " the shipped AO time; tuning took " << num(p.seconds, "%.0f") << " s.</p>"
+      << "<p>" << htmlText(p.radius) << "</p>"
       << "<p class=\"cap\">" << htmlText(p.metric) << ". Training views were fitted; held-out views and scenes were not: "
       << "their ratio is the gain that carries over. ssaolab's column is the most accurate shipped preset whose AO time on the "
          "shown view is at most the tuned engine's there (ssaolab: GL timer queries of AO + denoise; the engine: its frame with "

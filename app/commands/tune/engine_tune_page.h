@@ -39,6 +39,7 @@ struct EnginePage {
     std::vector<std::vector<std::string>> settings; // name, shipped value, make-peers value, tuned value, role, unit
     double heldBefore = 0, heldAfter = 0, timeRatio = 0; // against the better baseline; time: x the shipped
     std::string baseline; // which baseline heldBefore is ("as shipped", "with lengths from R")
+    std::string radius;   // one line: R per scene, its source and its unit
     double seconds = 0;
     std::vector<PageRow> rows;
 };

@@ -6,6 +6,8 @@
 #include "cli/progress_bar.h"
 #include "reference/reference_cache.h"
 #include "cli/scene_options.h"
+#include "cli/cli_util.h"
+#include "cli/view_radius.h"
 #include "scene/view_fit.h"
 #include "settings/preset.h"
 #include "util/error.h"
@@ -182,16 +184,18 @@ void EngineTuner::addViews(size_t si, const std::string& spec, bool heldOutScene
     ReferenceProvider provider(sc);
     std::vector<EngineView> engineViews;
     int k = 0;
-    for (const auto& [name, cam] : viewpoints(defaultCamera(sc), o_.views)) {
+    for (const auto& [name, cam] : viewpoints(heldOutScene ? defaultCamera(sc) : startCamera(o_.camera, sc), o_.views)) {
         const Camera c = effectiveCamera(cam, sc.bounds); // the clip planes ssaolab's renderer fits
         ProgressBar bar("  reference " + sc.name + " " + name, !o_.quiet);
         ReferenceImage ref = provider.get(c, w_, h_, {radius, o_.referenceRays}, [&](double f) { bar.update(f); });
+        radius_.check(sc.name, name, ref, c, o_.radiusScene, 2.0 * sc.bounds.radius());
         const TuneRole role = heldOutScene ? TuneRole::HeldOutScene : k % 2 == 0 ? TuneRole::Train : TuneRole::HeldOutView;
         views_.push_back({si, k, name, role, c, std::move(ref), {}, radius, k == (heldOutScene ? 0 : 1)});
         engineViews.push_back({cameraToJson(cameraToFile(c, sc)), radius});
         ++k;
     }
     specs_.push_back(spec);
+    if (const std::string w = radius_.line(sc.name); !w.empty()) printWarnings({w});
     runners_.push_back(std::make_unique<EngineRunner>(tools_, table_, spec, w_, h_, std::move(engineViews)));
 }
 

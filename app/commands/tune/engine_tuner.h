@@ -3,6 +3,7 @@
 // engine's shape parameters only (each over a grid inside a bracket that halves every round, as
 // `tune` searches); a time budget picks the sample counts afterwards (chooseCost), never the error.
 #pragma once
+#include "cli/view_radius.h"
 #include "engines/engine_runner.h"
 #include "engines/engine_table.h"
 #include "commands/tune/tune_command.h"
@@ -109,6 +110,7 @@ class EngineTuner {
     std::vector<TuneView> views_;
     std::vector<std::unique_ptr<EngineRunner>> runners_;
     std::map<size_t, double> defaults_; // view -> MSE at the make-peers settings
+    SceneRadiusWarnings radius_;        // R against what each view spans
 };
 
 } // namespace ssao

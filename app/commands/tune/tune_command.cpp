@@ -10,6 +10,7 @@
 #include "cli/progress_bar.h"
 #include "reference/reference_cache.h"
 #include "cli/scene_options.h"
+#include "cli/view_radius.h"
 #include "settings/applicability.h"
 #include "settings/params.h"
 #include "settings/preset.h"
@@ -44,6 +45,7 @@ void addTuneOptions(CLI::App& cmd, TuneOptions& o) {
     cmd.add_option("--views", o.views, "viewpoints per scene; even ones train, odd ones are held out")
         ->capture_default_str()
         ->check(cliRange(2, 32));
+    addStartCameraOption(cmd, o.camera);
     cmd.add_option("--rounds", o.rounds, "search rounds (each halves every bracket)")
         ->capture_default_str()
         ->check(cliRange(1, 10));
@@ -166,14 +168,15 @@ class Tuner {
             const float radius = o_.radiusScene * 2.0f * sc.bounds.radius();
             r_->setScene(sc);
             int k = 0;
-            for (const auto& [name, cam] : viewpoints(defaultCamera(sc), o_.views)) {
+            const bool heldOutScene = si >= scenes_.size() - heldOut_;
+            for (const auto& [name, cam] : viewpoints(heldOutScene ? defaultCamera(sc) : startCamera(o_.camera, sc), o_.views)) {
                 r_->setCamera(cam);
                 r_->setSettings(withRadius(start_, radius));
                 r_->render();
                 ProgressBar bar("  reference " + sc.name + " " + name, !o_.quiet);
                 ReferenceImage ref = providers_.back()->get(r_->camera(), r_->width(), r_->height(),
                                                             {radius, o_.referenceRays}, [&](double f) { bar.update(f); });
-                const bool heldOutScene = si >= scenes_.size() - heldOut_;
+                radius_.check(sc.name, name, ref, r_->camera(), o_.radiusScene, 2.0 * sc.bounds.radius());
                 views_.push_back({si, name, r_->camera(), radius, std::move(ref),
                                   heldOutScene ? Role::HeldOutScene : k % 2 == 0 ? Role::Train : Role::HeldOutView});
                 if (o_.objective == "motion")
@@ -184,6 +187,7 @@ class Tuner {
         }
         current_ = size_t(-1);
         runner_.checkGl("while tracing the references");
+        printWarnings(radius_.lines());
     }
 
     Settings settingsWith(const std::vector<Knob>& ks, float radius) const {
@@ -282,6 +286,7 @@ class Tuner {
     std::unique_ptr<Renderer> planeRenderer_;
     std::vector<View> views_;
     std::vector<std::unique_ptr<ReferenceProvider>> providers_;
+    SceneRadiusWarnings radius_; // R against what each view spans
     size_t current_ = size_t(-1);
     double firstRmse_ = std::numeric_limits<double>::quiet_NaN();
 };

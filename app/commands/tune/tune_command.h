@@ -45,6 +45,7 @@ struct TuneOptions {
     // still: the mean geometry MSE of each view's still frame; motion: along each view's camera path
     // (measure/motion_measure.h), mean over its frames of the per-frame MSE + instability^2.
     std::string objective = "still";
+    std::string camera; // --camera: the training scenes' first viewpoint, file coordinates ("" = their own)
     CameraPathSpec motionPath;
     EngineTuneOptions engine; // --engine: a web engine's own settings instead (commands/tune/engine_tune.h)
     bool quiet = false;
