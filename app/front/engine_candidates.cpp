@@ -27,8 +27,15 @@ std::string engineShortTitle(const EngineTable& t) {
 
 std::vector<EngineCandidate> engineDefaultCandidates(const std::vector<std::string>& engines) {
     std::vector<EngineCandidate> out;
-    for (const std::string& e : engines)
-        out.push_back({e, engineShortTitle(findEngine(e)) + " defaults", "", {}, {}, {}});
+    for (const std::string& e : engines) {
+        const EngineTable t = findEngine(e);
+        out.push_back({e, engineShortTitle(t) + " defaults", "", {}, {}, {}});
+        // The engine as its package ships it: the lengths the harness sets from R at their defaults.
+        std::map<std::string, double> shipped;
+        for (const EngineParam& p : t.params)
+            if (p.role != EngineParam::Role::Fixed && p.row.contains("harness")) shipped[p.name] = p.defaultValue;
+        out.push_back({e, engineShortTitle(t) + " as shipped", "", {}, {}, std::move(shipped), true});
+    }
     return out;
 }
 

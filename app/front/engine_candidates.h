@@ -1,5 +1,5 @@
 // The web engines as Front tab candidates (engines/engine_table.h): each engine at its make-peers
-// settings (its defaults with every length from R), and each `ssaolab tune --engine --out` result
+// settings (its defaults with every length from R) and as its package ships it, and each `ssaolab tune --engine --out` result
 // found in the user's folder for them or added by path. A tuned result is its fit, as `tune`
 // applies it to its held-out views: a knob relative to the view's make-peers value is that factor
 // (the runner multiplies, as `bench --engine-settings` runs it), one per R is that multiple of this
@@ -22,13 +22,14 @@ struct EngineCandidate {
     std::map<std::string, double> scale;     // x the view's make-peers value (EngineJob::scale)
     std::map<std::string, std::pair<double, int>> perRadius; // factor x the view's R^exponent
     std::map<std::string, double> values;    // the engine's value
+    bool shipped = false;                    // the package's defaults verbatim (no length from R)
     bool tuned() const { return !file.empty(); }
 };
 
 // "N8AO" of "N8AO (N8AOPass)", "three.js SAOPass" as it is.
 std::string engineShortTitle(const EngineTable& t);
 
-// Each named engine's make-peers candidate, in the order given.
+// Each named engine's make-peers candidate and its as-shipped one, in the order given.
 std::vector<EngineCandidate> engineDefaultCandidates(const std::vector<std::string>& engines);
 
 // A `tune --engine --out` JSON file as a candidate (engines/engine_settings_file.h reads it); throws

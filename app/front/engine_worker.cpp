@@ -24,9 +24,9 @@ std::string viewSnippet(const EngineWorker::Job& job, const EngineTable& t, cons
             values.emplace_back(p.name, exportedValue(it->second));
     }
     const std::string what =
-        s.candidate.tuned()
-            ? "the fit named below (ssaolab tune --engine) on this view"
-            : "the engine's defaults with every length from R, as ssaolab's make peers sets them";
+        s.candidate.tuned()     ? "the fit named below (ssaolab tune --engine) on this view"
+        : s.candidate.shipped ? "the engine as its package ships it (its defaults verbatim)"
+                              : "the engine's defaults with every length from R, as ssaolab's make peers sets them";
     char b[320];
     std::snprintf(b, sizeof b, "the view below at %dx%d, R = %.4g scene units: geometry RMSE %.4f against the ray-traced reference (%d rays)",
                   job.width, job.height, double(job.radius), s.error.rmse, job.reference ? job.reference->samples : 0);

@@ -278,7 +278,7 @@ static std::string engineMarkdown(const BenchRun& run) {
     if (names.empty()) return "";
     return "\n### Web engines\n\n" + names + ": each engine run in Chromium on the same views, camera, size and R, "
            "its AO read back and scored against the same reference (defaults: the engine's own with every length set "
-           "from R). Their time is not a GPU timer query: it is the frame with the pass minus the frame without, each "
+           "from R; as shipped: the package's defaults verbatim). Their time is not a GPU timer query: it is the frame with the pass minus the frame without, each "
            "ended by a 1-pixel read, median over the timed frames after 3 warm-up frames, on Chromium's WebGL; their "
            "ratio to the baseline compares that with the baseline's GL timer query on the same view.\n";
 }

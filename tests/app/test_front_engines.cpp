@@ -89,11 +89,13 @@ TEST_F(FrontEnginesGl, ScoresWhatBenchEnginesScoresOnTheSameView) {
     EXPECT_NE(e.tunedErrors()[0].find("notes.json: not a `ssaolab tune --engine --out` file"), std::string::npos)
         << e.tunedErrors()[0];
     const auto defaults = e.sample("N8AO defaults"), fit = e.sample("N8AO tuned (n8ao-test)");
-    ASSERT_TRUE(defaults && fit);
+    const auto shipped = e.sample("N8AO as shipped");
+    ASSERT_TRUE(defaults && fit && shipped);
     // A point needs a time above zero on the log axis (engine_front.cpp); at 160x90 a pass can time at
     // or below the browser's clock under load, and then it is measured but has no point.
-    EXPECT_EQ(e.points().size(), size_t(defaults->aoMs > 0) + size_t(fit->aoMs > 0));
+    EXPECT_EQ(e.points().size(), size_t(defaults->aoMs > 0) + size_t(fit->aoMs > 0) + size_t(shipped->aoMs > 0));
     EXPECT_FLOAT_EQ(float(defaults->values.at("aoRadius")), radius); // make peers: the radius is R
+    EXPECT_EQ(shipped->values.at("aoRadius"), 5.0);                   // the package's own, whatever R
     EXPECT_EQ(fit->values.at("aoRadius"), defaults->values.at("aoRadius") * 1.5);
     EXPECT_EQ(fit->values.at("intensity"), 3.0);
     EXPECT_EQ(fit->values.at("aoSamples"), 8.0);

@@ -64,7 +64,7 @@ TEST(CliBenchEngines, AnEngineIsARowScoredAgainstTheSameReferenceInEveryReport) 
                              writeTuned("bench_engines_tuned.json") + " --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     const nlohmann::json j = nlohmann::json::parse(slurp(out + "/results.json"));
-    for (const std::string label : {"engine n8ao (defaults)", "engine n8ao (tuned)"}) {
+    for (const std::string label : {"engine n8ao (defaults)", "engine n8ao (as shipped)", "engine n8ao (tuned)"}) {
         const auto rows = rowsOf(j, label);
         ASSERT_EQ(rows.size(), 2u) << label << ": one row per view";
         for (const auto& [vp, row] : rows) {
@@ -88,6 +88,9 @@ TEST(CliBenchEngines, AnEngineIsARowScoredAgainstTheSameReferenceInEveryReport) 
             EXPECT_TRUE(c["rmse"].is_number());
         }
     EXPECT_TRUE(found);
+    // The engine as its package ships it: the lengths the harness sets from R at the table's defaults.
+    for (const auto& c : j["configurations"])
+        if (c["label"] == "engine n8ao (as shipped)") EXPECT_EQ(c["engine"]["values"]["aoRadius"], 5.0) << c.dump();
     EXPECT_NE(slurp(out + "/results.csv").find(",engine n8ao (defaults),n8ao,"), std::string::npos) << slurp(out + "/results.csv");
     EXPECT_NE(slurp(out + "/summary.csv").find("engine n8ao (tuned)"), std::string::npos);
     const std::string md = slurp(out + "/report.md");

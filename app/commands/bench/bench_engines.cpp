@@ -26,7 +26,8 @@ void addBenchEngineOptions(CLI::App& cmd, BenchEngineOptions& o) {
     cmd.add_option("--engines", o.names,
                    "web engines to add to the sweep, comma-separated (n8ao, pp-ssao, three-ssao, three-sao, three-gtao) or all: "
                    "each runs for real in Chromium on every view of every --scene glTF file at the bench's camera, "
-                   "size and R, as the row 'engine NAME (defaults)' (its defaults with every length set from R), "
+                   "size and R, as the rows 'engine NAME (defaults)' (its defaults with every length set from R) "
+                   "and 'engine NAME (as shipped)' (the package's defaults verbatim), "
                    "scored against the same reference; its time is the frame with the pass minus the frame without "
                    "in Chromium (median of --frames), not a GL timer query. A builtin scene is refused (three.js "
                    "loads glTF files); engines are not scored in motion and never chosen as a --budget answer")
@@ -71,6 +72,14 @@ BenchEngines::BenchEngines(const BenchEngineOptions& o, const std::vector<std::s
         r.config.label = "engine " + tables_[t].engine + " (defaults)";
         r.config.keys = {{"engine", tables_[t].engine}};
         rows_.push_back(std::move(r));
+        // Beside it, the engine as its package ships it: every row the harness sets from R at its
+        // default, verbatim (the rows that read the AO alone stay set).
+        Row shipped{t, {}, {}, {}};
+        for (const EngineParam& p : tables_[t].params)
+            if (p.role != EngineParam::Role::Fixed && p.row.contains("harness")) shipped.values[p.name] = p.defaultValue;
+        shipped.config.label = "engine " + tables_[t].engine + " (as shipped)";
+        shipped.config.keys = {{"engine", tables_[t].engine}, {"shipped", true}};
+        rows_.push_back(std::move(shipped));
     }
     std::vector<Row> tuned;
     for (const std::string& file : o.settings)
