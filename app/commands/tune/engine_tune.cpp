@@ -320,7 +320,7 @@ nlohmann::json costJson(const EngineTable& tab, const TuneView& v, const std::ve
 }
 
 void save(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& knobs, const std::vector<BudgetRung>& rungs,
-          const Outcome& r, double seconds, int w, int h) {
+          const Outcome& r, double seconds, int w, int h, const std::vector<std::string>& walls) {
     const EngineTable& tab = t.table();
     const TuneView& v = t.firstTrainView();
     const auto values = t.valuesFor(knobs, v);
@@ -351,6 +351,7 @@ void save(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& k
         {"view", {{"scene", std::filesystem::absolute(t.sceneSpec(v.scene), ec).string()}, {"viewpoint", v.viewpoint},
                   {"camera", cameraToJson(cameraToFile(v.camera, sc))}, {"size", {w, h}}, {"radius", o.radiusScene * 2.0 * sc.bounds.radius()}}},
         {"scores", scoresJson(o, r)}, {"per_scene", perSceneJson(t, r)}, {"tuning_seconds", seconds}, {"browser_sessions", t.sessions()},
+        {"at_range_edge", walls},
         {"snippet", std::filesystem::path(js).filename().string()}};
     parseTunedEngine(out, o.out); // what bench --engine-settings will accept, checked by the same reader
     writeFileAtomically(o.out, dumpJson(out) + "\n");
@@ -397,14 +398,15 @@ int runEngineTune(const TuneOptions& o) {
     t.prepare();
     t.measureDefaults();
     std::vector<Knob> knobs = t.chooseKnobs();
-    t.search(knobs, t.trainScore());
+    const std::vector<std::string> walls = t.search(knobs, t.trainScore());
     const std::vector<BudgetRung> rungs = t.chooseCost(knobs);
     const std::vector<std::vector<Sample>> final = t.finalMeasure(knobs);
     const Outcome r = judge(t, final);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     printOutcome(o, t, knobs, r, seconds);
+    printWarnings(walls);
     if (r.verdict.overfit && !o.saveOverfit) throw Error(refusalText(r.verdict, o.out)); // nothing written
-    save(o, t, knobs, rungs, r, seconds, w, h);
+    save(o, t, knobs, rungs, r, seconds, w, h, walls);
     writePage(o, t, knobs, r, final, seconds);
     if (r.verdict.overfit)
         printWarnings({overfitSavedText(r.verdict, o.out)});

@@ -1,5 +1,7 @@
 #include "commands/tune/engine_tuner.h"
 
+#include "commands/tune/box_search.h"
+
 #include "engines/engine_snippet.h"
 #include "measure/viewpoints.h"
 #include "cli/headless_runner.h"
@@ -97,28 +99,65 @@ double EngineTuner::trainScore() const {
     return meanOf(v);
 }
 
-void EngineTuner::search(std::vector<Knob>& knobs, double best) {
+std::pair<double, double> EngineTuner::allowedRange(const Knob& k) const {
+    double lo = k.p->log ? 1e-9 : -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+    if (!k.p->range) return {lo, hi};
+    lo = std::max(lo, 0.0);
+    for (const TuneView& v : views_) {
+        const double scale = k.p->relative ? v.base.at(k.p->name) : k.p->perRadius ? std::pow(v.radius, k.p->perRadius) : 1.0;
+        if (!(scale > 0)) continue;
+        lo = std::max(lo, k.p->range->first / scale), hi = std::min(hi, k.p->range->second / scale);
+    }
+    return {lo, hi};
+}
+
+std::vector<double> EngineTuner::trainScores(const std::vector<KnobSet>& cands) {
+    const auto samples = measure(cands, trainOnly, 0, false);
+    std::vector<double> out;
+    for (const auto& c : samples) {
+        std::vector<double> mse;
+        for (const Sample& s : c)
+            mse.push_back(s.mse);
+        out.push_back(meanOf(mse));
+    }
+    return out;
+}
+
+std::vector<std::string> EngineTuner::search(std::vector<Knob>& knobs, double best) {
+    std::vector<BoxDim> dims;
+    for (const Knob& k : knobs) {
+        const auto [lo, hi] = allowedRange(k); // every value the search tries is one the engine's table accepts
+        dims.push_back({std::max(k.p->searchLo, lo), std::min(k.p->searchHi, hi), k.p->log, lo, hi, k.value});
+    }
+    const BoxSearchOptions opt{o_.rounds, o_.grid};
     ProgressBar bar("  search " + std::to_string(knobs.size()) + " parameters of " + table_.title, !o_.quiet);
-    const int total = o_.rounds * int(knobs.size());
     int done = 0;
-    for (int round = 0; round < o_.rounds; ++round)
-        for (Knob& k : knobs) {
-            const size_t ki = size_t(&k - knobs.data());
-            std::vector<KnobSet> cands;
-            for (int i = 0; i < o_.grid; ++i) {
-                cands.push_back(knobs);
-                cands.back()[ki].value = gridValue(k, i);
-            }
-            const auto samples = measure(cands, trainOnly, 0, false);
-            for (size_t c = 0; c < cands.size(); ++c) {
-                std::vector<double> mse;
-                for (const Sample& s : samples[c])
-                    mse.push_back(s.mse);
-                if (const double m = meanOf(mse); m < best) best = m, k.value = cands[c][ki].value;
-            }
-            shrink(k);
-            bar.update(double(++done) / total);
+    const int total = boxSearchBatches(knobs.size(), opt);
+    const BatchScorer score = [&](const std::vector<std::vector<double>>& pts) {
+        std::vector<KnobSet> cands;
+        for (const auto& p : pts) {
+            cands.push_back(knobs);
+            for (size_t j = 0; j < knobs.size(); ++j)
+                cands.back()[j].value = p[j];
         }
+        return trainScores(cands);
+    };
+    const BoxResult r = boxSearch(dims, best, score, opt, [&] { bar.update(std::min(1.0, double(++done) / total)); });
+    bar.update(1);
+    for (size_t j = 0; j < knobs.size(); ++j)
+        knobs[j].value = r.x[j];
+    std::vector<std::string> walls;
+    const auto values = valuesFor(knobs, views_[firstTrain()]);
+    for (size_t j = 0; j < knobs.size(); ++j) {
+        if (r.walls[j] == 0) continue;
+        char b[240];
+        std::snprintf(b, sizeof b, "%s = %.4g ended at the %s of its search range, widened as far as the table's range %s "
+                                   "holds on every view: the optimum may lie beyond",
+                      knobs[j].p->name.c_str(), values.at(knobs[j].p->name), r.walls[j] < 0 ? "bottom" : "top",
+                      engineRangeText(*knobs[j].p).c_str());
+        walls.push_back(b);
+    }
+    return walls;
 }
 
 std::vector<BudgetRung> EngineTuner::chooseCost(std::vector<Knob>& knobs) {
@@ -230,23 +269,6 @@ double EngineTuner::scaledCost(const EngineParam& p, double f) const {
     double v = p.defaultValue * f;
     if (p.type == EngineParam::Type::Integer) v = std::max(1.0, std::round(v));
     return p.range ? std::clamp(v, p.range->first, p.range->second) : v;
-}
-
-double EngineTuner::gridValue(const Knob& k, int i) const {
-    const double t = i / double(o_.grid - 1);
-    return k.p->log ? std::exp(std::log(k.lo) + (std::log(k.hi) - std::log(k.lo)) * t) : k.lo + (k.hi - k.lo) * t;
-}
-
-void EngineTuner::shrink(Knob& k) const {
-    if (k.p->log) {
-        const double half = (std::log(k.hi) - std::log(k.lo)) / 4.0, c = std::log(k.value);
-        k.lo = std::max(k.p->searchLo, std::exp(c - half));
-        k.hi = std::min(k.p->searchHi, std::exp(c + half));
-    } else {
-        const double half = (k.hi - k.lo) / 4.0;
-        k.lo = std::max(k.p->searchLo, k.value - half);
-        k.hi = std::min(k.p->searchHi, k.value + half);
-    }
 }
 
 size_t EngineTuner::firstTrain() const {

@@ -1,7 +1,7 @@
 // `tune --engine`'s search (commands/tune/engine_tune.h): the scenes' views and references, one engine
-// runner per scene, and the measurements of candidate settings on them. Coordinate search over the
-// engine's shape parameters only (each over a grid inside a bracket that halves every round, as
-// `tune` searches); a time budget picks the sample counts afterwards (chooseCost), never the error.
+// runner per scene, and the measurements of candidate settings on them. A derivative-free search with
+// restarts over the engine's shape parameters only (commands/tune/box_search.h); a time budget picks
+// the sample counts afterwards (chooseCost), never the error.
 #pragma once
 #include "cli/view_radius.h"
 #include "engines/engine_runner.h"
@@ -67,8 +67,10 @@ class EngineTuner {
     void measureDefaults();
     std::vector<Knob> chooseKnobs() const;
     double trainScore() const;
-    // Coordinate search: each knob over a grid inside its bracket, which halves every round.
-    void search(std::vector<Knob>& knobs, double best);
+    // Derivative-free search with restarts over the shape knobs (commands/tune/box_search.h), log-
+    // spaced where the row says (lengths and intensities), a wall widened as far as the table's range
+    // holds on every view. Returns one line per knob that still ends at a wall ("may lie beyond").
+    std::vector<std::string> search(std::vector<Knob>& knobs, double best);
     // The time budget's choice of the cost rows that scale with it: each rung multiplies them all by
     // one factor; the training views' mean AO time of each rung (timed, with the fitted shape) picks
     // the largest that fits. Returns the rungs measured, the chosen one marked; none without a budget.
@@ -96,8 +98,10 @@ class EngineTuner {
     std::vector<std::vector<Sample>> measure(const std::vector<KnobSet>& cands, const std::function<bool(TuneRole)>& want,
                                              int frames, bool recordBase, bool keepImages = false);
     double scaledCost(const EngineParam& p, double f) const;
-    double gridValue(const Knob& k, int i) const;
-    void shrink(Knob& k) const;
+    // The training views' mean MSE of each candidate (one batch).
+    std::vector<double> trainScores(const std::vector<KnobSet>& cands);
+    // The widest range in the knob's unit whose values stay inside the table's range on every view.
+    std::pair<double, double> allowedRange(const Knob& k) const;
     size_t firstTrain() const;
     std::string shapeNames() const;
 

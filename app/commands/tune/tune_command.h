@@ -29,7 +29,7 @@ struct TuneOptions {
     std::vector<std::string> scenes;        // training scenes; default builtin:showcase
     std::vector<std::string> heldOutScenes; // judged only, every viewpoint: never fitted on
     std::string size = "640x360";
-    int views = 6;  // even-numbered viewpoints train, odd ones are held out
+    int views = 8;  // even-numbered viewpoints train, odd ones are held out
     int rounds = 3; // bracket halvings
     int grid = 7;   // values per parameter per round
     int referenceRays = 256;
