@@ -10,6 +10,7 @@
 #include "util/paths.h"
 #include "util/process.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
@@ -118,7 +119,29 @@ EngineRunner::~EngineRunner() {
 }
 
 std::vector<EngineResult> EngineRunner::run(const std::vector<EngineJob>& jobs) {
+    // One session runs one harness page: jobs of engines on different pages run in one session each.
+    std::vector<std::string> pages;
+    for (const EngineJob& j : jobs)
+        if (const std::string& p = (j.table ? *j.table : table_).page; std::find(pages.begin(), pages.end(), p) == pages.end())
+            pages.push_back(p);
+    if (pages.size() <= 1) return runPage(jobs, pages.empty() ? table_.page : pages[0]);
+    std::vector<EngineResult> out(jobs.size());
+    for (const std::string& page : pages) {
+        std::vector<EngineJob> part;
+        std::vector<size_t> at;
+        for (size_t i = 0; i < jobs.size(); ++i)
+            if ((jobs[i].table ? *jobs[i].table : table_).page == page) part.push_back(jobs[i]), at.push_back(i);
+        std::vector<EngineResult> got = runPage(part, page);
+        for (size_t k = 0; k < at.size(); ++k)
+            out[at[k]] = std::move(got[k]);
+    }
+    return out;
+}
+
+std::vector<EngineResult> EngineRunner::runPage(const std::vector<EngineJob>& jobs, const std::string& page) {
     const std::string tag = "s" + std::to_string(sessions_++), dir = work_ + "/" + tag;
+    // The session's own engine: the runner's when it is on this page, else the first job's.
+    const EngineTable& own = table_.page == page || jobs.empty() || !jobs[0].table ? table_ : *jobs[0].table;
     auto rows = [](const EngineTable& t) {
         nlohmann::json params = nlohmann::json::array();
         for (const EngineParam& p : t.params)
@@ -138,16 +161,16 @@ std::vector<EngineResult> EngineRunner::run(const std::vector<EngineJob>& jobs) 
         list.push_back({{"view", jobs[i].view}, {"values", values}, {"image", "j" + std::to_string(i) + ".pgm"},
                         {"frames", jobs[i].frames}});
         if (!scale.empty()) list.back()["scale"] = scale;
-        if (t.peer != table_.peer) list.back()["peer"] = t.peer, tables[t.peer] = rows(t);
+        if (t.peer != own.peer) list.back()["peer"] = t.peer, tables[t.peer] = rows(t);
     }
-    const nlohmann::json spec = {{"scene", scene_}, {"width", width_}, {"height", height_}, {"peer", table_.peer},
-                                 {"params", rows(table_)}, {"tables", tables}, {"views", views}, {"frames", 0},
-                                 {"jobs", list}};
+    const nlohmann::json spec = {{"scene", scene_}, {"width", width_}, {"height", height_}, {"page", page},
+                                 {"peer", own.peer}, {"params", rows(own)}, {"tables", tables}, {"views", views},
+                                 {"frames", 0}, {"jobs", list}};
     writeFileAtomically(dir + ".json", dumpJson(spec) + "\n");
     const ProgramRun r = runProgram({tools_.node, tools_.scripts + "/run_engine.mjs", "--modules", tools_.modules,
                                      "--jobs", dir + ".json", "--out", dir},
                                     ChildStream::Capture, ChildStream::Capture);
-    const std::string who = tables.empty() ? table_.title : "the web engines"; // several in one session
+    const std::string who = tables.empty() ? own.title : "the web engines"; // several in one session
     if (!r.started) throw Error("cannot start " + tools_.node + " for " + who);
     if (r.exitCode != 0) throw Error(who + " in Chromium failed: " + lastLine(r.out));
     const nlohmann::json res = readJsonFile(dir + "/results.json", "engine results");

@@ -68,6 +68,9 @@ class EngineRunner {
     int sessions() const { return sessions_; }
 
   private:
+    // One session of `page`'s engines.
+    std::vector<EngineResult> runPage(const std::vector<EngineJob>& jobs, const std::string& page);
+
     EngineTools tools_;
     EngineTable table_;
     std::string scene_, work_;

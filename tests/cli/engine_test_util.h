@@ -1,10 +1,12 @@
-// What the tests of the web engines share (test_cli_engines.cpp, test_cli_bench_engines.cpp): where
-// the peers' scripts and the pinned npm packages are, whether Node.js runs, and a small glTF corner.
+// What the tests of the web engines share (test_cli_engines.cpp, test_cli_bench_engines.cpp,
+// test_cli_engine_babylon.cpp): where the peers' scripts and the pinned npm packages are, whether
+// Node.js runs, a snippet run against a recording mock, and a small glTF corner.
 #pragma once
 #include "cli_run.h"
 #include "util/process.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <cstring>
@@ -19,8 +21,9 @@ inline const std::string kModules = std::string(SSAOLAB_BUILD_DIR) + "/peers/nod
 
 inline bool modulesInstalled() {
     namespace fs = std::filesystem;
-    return fs::is_regular_file(kModules + "/three/package.json") && fs::is_regular_file(kModules + "/n8ao/package.json") &&
-           fs::is_regular_file(kModules + "/postprocessing/package.json") && fs::is_regular_file(kModules + "/playwright-core/package.json");
+    for (const char* m : {"three", "n8ao", "postprocessing", "playwright-core", "babylonjs", "babylonjs-loaders"})
+        if (!fs::is_regular_file(kModules + "/" + m + "/package.json")) return false;
+    return true;
 }
 
 inline bool nodeRuns() {
@@ -32,6 +35,38 @@ inline bool nodeRuns() {
     ASSERT_TRUE(nodeRuns() && modulesInstalled())                                                                  \
         << "Node.js or the pinned npm packages are not installed in " << kModules                                 \
         << " (make engine-modules installs them from tools/peers/package-lock.json)"
+
+// Runs the snippet after a mock of the pass that records every assignment ("configuration.aoRadius")
+// and every update call's keys ("updateGtaoMaterial(radius)"); returns the record.
+inline nlohmann::json runSnippet(const std::string& variable, const std::string& snippet, const std::string& tag) {
+    const std::string mock =
+        "const recorded = {};\n"
+        "function mock(at) {\n"
+        "  return new Proxy(function () {}, {\n"
+        "    get: (t, k) => mock(at ? at + '.' + String(k) : String(k)),\n"
+        "    set: (t, k, v) => { recorded[at ? at + '.' + String(k) : String(k)] = v; return true; },\n"
+        "    apply: (t, self, args) => { for (const [k, v] of Object.entries(args[0])) recorded[at + '(' + k + ')'] = v; },\n"
+        "  });\n"
+        "}\n"
+        "const " + variable + " = mock('');\n";
+    // Nothing but the recorded writes may leave the snippet: a global it made is reported too.
+    const std::string tail = "\nconst extra = ['pwned', 'alert'].filter((k) => k in globalThis);\n"
+                             "if (extra.length) recorded['globals: ' + extra.join(',')] = 1;\n"
+                             "console.log(JSON.stringify(recorded));\n";
+    nlohmann::json got;
+    for (const char* ext : {".js", ".mjs"}) { // a script, then a module
+        const std::string file = writeTemp("snippet_" + tag + ext, mock + snippet + tail);
+        const ssao::ProgramRun r = ssao::runProgram({"node", file}, ssao::ChildStream::Capture, ssao::ChildStream::Capture);
+        EXPECT_EQ(r.exitCode, 0) << ext << ":\n" << snippet << r.out;
+        if (r.exitCode != 0) return nlohmann::json();
+        const nlohmann::json j = nlohmann::json::parse(r.out);
+        if (!got.is_null()) {
+            EXPECT_EQ(j, got) << "the script and the module set different values";
+        }
+        got = j;
+    }
+    return got;
+}
 
 // A corner: floor, back wall and left wall, 2 units a side, with normals; buffer as a data URI.
 inline std::string writeCornerGltf(const std::string& name) {

@@ -1,10 +1,11 @@
 // Each engine's own defaults, from the installed package itself: the pass is constructed in Node
-// (constructing needs no GL context) as its table's "class" says, and every parameter is read
+// (constructing needs no GL context; Babylon.js's through its NullEngine) as its table's "class" says, and every parameter is read
 // where its table's "read" path says. Prints {engine: {version, defaults: {name: value}}} as JSON;
 // tests/cli/test_cli_engines.cpp compares it with the tables.
 //
 // node engine_defaults.mjs --modules DIR --tables a.json,b.json
 import fs from 'node:fs';
+import { createRequire } from 'node:module';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { parseArgs } from './session.mjs';
@@ -13,13 +14,33 @@ const args = parseArgs(process.argv, ['modules', 'tables'], 'engine_defaults');
 const modules = path.resolve(args.modules);
 const load = (rel) => import(pathToFileURL(path.join(modules, rel)).href);
 const THREE = await load('three/build/three.module.js');
-const out = {};
-for (const file of args.tables.split(',')) {
-    const table = JSON.parse(fs.readFileSync(file, 'utf8'));
+async function threePass(table) {
     const Pass = (await load(table.class.module))[table.class.export];
     const given = { scene: new THREE.Scene(), camera: new THREE.PerspectiveCamera(), width: 64, height: 64,
                     resolution: new THREE.Vector2(64, 64) };
-    const pass = new Pass(...table.class.constructor.map((a) => given[a]));
+    return new Pass(...table.class.constructor.map((a) => given[a]));
+}
+
+// Babylon.js's pipelines need a scene and a camera: its NullEngine (no GL) builds them in Node, and
+// the constructor's ratio is the documented example's (the rows read from constructor arguments,
+// which a pipeline does not keep, are read from `ssaolabCtor` as the page records them).
+function babylonPipeline(table) {
+    const BABYLON = createRequire(import.meta.url)(path.join(modules, 'babylonjs'));
+    BABYLON.Logger.LogLevels = BABYLON.Logger.NoneLogLevel; // its log goes to stdout, which carries the JSON
+    const engine = new BABYLON.NullEngine();
+    const scene = new BABYLON.Scene(engine);
+    const camera = new BABYLON.TargetCamera('c', new BABYLON.Vector3(0, 0, -5), scene);
+    const ratio = { ssaoRatio: 0.5, blurRatio: 1 };
+    const given = { name: 'ssao', scene, ratio, cameras: [camera] };
+    const pass = new BABYLON[table.class.export](...table.class.constructor.map((a) => given[a]));
+    pass.ssaolabCtor = ratio;
+    return pass;
+}
+
+const out = {};
+for (const file of args.tables.split(',')) {
+    const table = JSON.parse(fs.readFileSync(file, 'utf8'));
+    const pass = table.class.module === 'babylonjs' ? babylonPipeline(table) : await threePass(table);
     const defaults = {};
     for (const p of table.parameters) {
         let v = pass;

@@ -3,7 +3,8 @@
 // its search, then scores in-process against its reference.
 //
 // node run_engine.mjs --modules DIR --jobs FILE --out DIR
-// FILE: { scene (.gltf/.glb), width, height, peer (peers.js's name), params (rows of the engine's
+// FILE: { scene (.gltf/.glb), width, height, page (peers.html, the default, or babylon.html: every
+//         engine of one session runs on one page), peer (the page's name), params (rows of the engine's
 //         table), views: [{ camera (metrics.json's), radius (R, scene units) }], frames,
 //         jobs: [{ view, values: { name: value }, scale: { name: factor } (optional), image (file name),
 //                  frames (optional), peer (optional: another engine, whose rows are tables[peer]) }],
@@ -20,7 +21,7 @@ const spec = JSON.parse(fs.readFileSync(args.jobs, 'utf8'));
 const { width, height } = spec;
 let session;
 try {
-    session = await openSession({ modules: args.modules, sceneFile: spec.scene, width, height,
+    session = await openSession({ modules: args.modules, sceneFile: spec.scene, width, height, page: spec.page,
                                   camera: spec.views[0].camera, radius: spec.views[0].radius, tool: 'run_engine' });
 } catch (e) {
     console.error(`run_engine: ${e.message.split('\n')[0]}`);

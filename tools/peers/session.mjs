@@ -101,16 +101,20 @@ async function launchBrowser(chromium) {
     });
 }
 
-// Opens the session; `camera` is ssaolab's metrics.json camera of the first view, `radius` R in
-// scene units; maxMib and maxSeconds override browserLimits' defaults. Returns { page, setup,
+// Opens the session on `page` (peers.html: the three.js family; babylon.html: Babylon.js); `camera`
+// is ssaolab's metrics.json camera of the first view, `radius` R in scene units; maxMib and
+// maxSeconds override browserLimits' defaults. Returns { page, setup,
 // evaluate(what, fn, arg) (page.evaluate within the time limit), failed(), close() }.
-export async function openSession({ modules, sceneFile, width, height, camera, radius, tool, maxMib, maxSeconds }) {
+export async function openSession({ modules, sceneFile, width, height, camera, radius, tool, maxMib, maxSeconds,
+                                    page: pageFile = 'peers.html' }) {
     const limits = browserLimits({ maxMib, maxSeconds });
     modules = path.resolve(modules);
     const { chromium } = await import(path.join(modules, 'playwright-core', 'index.mjs'));
-    const server = await startServer({ sceneFile: path.resolve(sceneFile), roots: {
-        three: path.join(modules, 'three'), n8ao: path.join(modules, 'n8ao'),
-        postprocessing: path.join(modules, 'postprocessing'), page: here } });
+    if (!['peers.html', 'babylon.html'].includes(pageFile)) throw new Error(`no page '${pageFile}' (peers.html, babylon.html)`);
+    const roots = { page: here };
+    for (const m of ['three', 'n8ao', 'postprocessing', 'babylonjs', 'babylonjs-loaders'])
+        if (fs.existsSync(path.join(modules, m))) roots[m] = path.join(modules, m);
+    const server = await startServer({ sceneFile: path.resolve(sceneFile), roots });
     const stop = (line) => stopSession(tool, line);
     let browser, endWatch = () => {};
     try {
@@ -140,7 +144,7 @@ export async function openSession({ modules, sceneFile, width, height, camera, r
         page = await context.newPage();
         page.on('pageerror', (e) => { console.error(`${tool}: page error: ${e.message}`); failed = true; });
         page.on('console', (m) => { if (m.type() === 'error') console.error(`${tool}: ${m.text()}`); });
-        await page.goto(`${origin}page/peers.html`);
+        await page.goto(`${origin}page/${pageFile}`);
         await page.waitForFunction(() => window.peersReady === true, null, { timeout: 60000 });
         const setup = await evaluate('setting up the scene', (c) => window.setupPeers(c),
                                      { scene: server.sceneUrl, width, height, radius, camera });

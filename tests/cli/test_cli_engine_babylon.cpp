@@ -1,0 +1,116 @@
+// Babylon.js's SSAO2RenderingPipeline, run for real in Chromium on its own harness page
+// (tools/peers/babylon.html): its make-peers settings from R, its AO alone read back and scored, a
+// time for a timed job, one image per setting in every session; tune writes a snippet in Babylon's
+// API; bench --engines runs it beside a three.js engine, one session per page.
+#include "engine_test_util.h"
+
+#include "cli/headless_runner.h"
+#include "engines/engine_runner.h"
+#include "engines/engine_table.h"
+#include "metrics/evaluate.h"
+#include "reference/reference_cache.h"
+#include "scene/scene.h"
+#include "settings/preset.h"
+#include "scene/view_fit.h"
+#include "util/json_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+using namespace ssaotest;
+namespace fs = std::filesystem;
+
+namespace {
+// SSAO2RenderingPipeline 9.28.0 on the corner at 96x54, R = 5 % of the diagonal, 64 reference rays:
+// its make-peers settings, and twice the radius (llvmpipe, Chromium 156); the tolerance is well
+// inside the difference between the two.
+constexpr double kBabylonRmse = 0.0898, kBabylonRmse2R = 0.0774, kBabylonTolerance = 0.003;
+} // namespace
+
+TEST(CliEngineBabylon, RunnerRoundTripReadsTheAoAloneAtTheMakePeersSettings) {
+    NEED_MODULES();
+    const ssao::EngineTable t = ssao::findEngine("babylon-ssao2");
+    EXPECT_EQ(t.page, "babylon.html");
+    const ssao::EngineTools tools = ssao::locateEngineTools(kModules, t);
+    const std::string file = writeCornerGltf("engine_babylon.gltf");
+    const ssao::Scene sc = ssao::loadNamedScene(file);
+    const ssao::Camera cam = ssao::effectiveCamera(ssao::defaultCamera(sc), sc.bounds);
+    const float radius = 0.05f * 2.0f * sc.bounds.radius();
+    const nlohmann::json camJson = ssao::cameraToJson(ssao::cameraToFile(cam, sc));
+    ssao::EngineRunner runner(tools, t, file, 96, 54, {{camJson, radius}});
+    const std::vector<ssao::EngineResult> res =
+        runner.run({{0, {}, 0}, {0, {}, 0, {{"radius", 2.0}}}, {0, {}, 2}, {0, {{"totalStrength", 0.0}}, 0}});
+    ASSERT_EQ(res.size(), 4u);
+    EXPECT_FLOAT_EQ(float(res[0].values.at("radius")), radius);               // lengths from R
+    EXPECT_FLOAT_EQ(float(res[0].values.at("epsilon")), 0.01f * radius);      // at the defaults' ratio
+    EXPECT_FLOAT_EQ(float(res[0].values.at("maxZ")), camJson["far"].get<float>() / 0.75f); // no fade inside the scene
+    EXPECT_EQ(res[0].values.at("samples"), 8.0);                               // the package's own
+    EXPECT_FLOAT_EQ(float(res[1].values.at("radius")), 2.0f * radius);
+    EXPECT_TRUE(std::isfinite(res[2].aoMs) && std::isfinite(res[2].aoMsMin) && std::isfinite(res[2].aoMsMax));
+    ssao::ReferenceProvider provider(sc, std::string(SSAOLAB_TEST_TMP) + "/cache");
+    const ssao::ReferenceImage ref = provider.get(cam, 96, 54, {radius, 64});
+    // What is read is the AO alone: with no strength every pixel is 1 (the white scene, unlit), and
+    // at the make-peers settings the corner darkens (the pipeline's shaders were ready).
+    long dark = 0;
+    for (size_t i = 0; i < res[0].ao.data.size(); ++i) {
+        EXPECT_EQ(res[3].ao.data[i], 1.0f) << "pixel " << i;
+        dark += res[0].ao.data[i] < 0.97f;
+        if (res[3].ao.data[i] != 1.0f) break;
+    }
+    EXPECT_GE(dark, 10) << "no darkening: the pipeline's shaders were not ready, or the scene's colour was read";
+    const double rmse = ssao::evaluate(res[0].ao, ref).metrics.rmse, rmse2 = ssao::evaluate(res[1].ao, ref).metrics.rmse;
+    std::printf("SSAO2RenderingPipeline on the corner at 96x54: RMSE %.4f (make peers), %.4f (2 R)\n", rmse, rmse2);
+    EXPECT_NEAR(rmse, kBabylonRmse, kBabylonTolerance) << "make-peers settings on the corner at 96x54";
+    EXPECT_NEAR(rmse2, kBabylonRmse2R, kBabylonTolerance) << "twice the radius";
+    EXPECT_EQ(ssao::evaluate(res[2].ao, ref).metrics.rmse, rmse); // the timed frames draw the same AO
+    // One image per setting in every session: the pipeline's noise is seeded.
+    const std::vector<ssao::EngineResult> again = runner.run({{0, {}, 0}});
+    EXPECT_EQ(again[0].ao.data, res[0].ao.data);
+    EXPECT_EQ(runner.sessions(), 2);
+}
+
+TEST(CliEngineBabylon, TuneWritesASnippetInBabylonsApi) {
+    NEED_MODULES();
+    const std::string scene = writeCornerGltf("engine_tune_babylon.gltf");
+    const std::string out = outDir("engine_tune_babylon") + ".json", js = outDir("engine_tune_babylon") + ".js";
+    fs::remove(out), fs::remove(js);
+    const CliRun r = ssaolab("tune --engine babylon-ssao2 --scene " + scene + " --size 96x54 --views 2 --rounds 1 --grid 3 "
+                             "--knob totalStrength --reference-rays 8 --timing-frames 2 --save-overfit --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("tuned Babylon.js SSAO2RenderingPipeline on 1 views"), std::string::npos) << r.out;
+    const nlohmann::json j = ssao::readJsonFile(out, "tuned");
+    EXPECT_EQ(j["version"], "9.28.0");
+    ASSERT_EQ(j["settings"].size(), 1u) << j.dump(1);
+    EXPECT_NE(slurp(js).find("new BABYLON.SSAO2RenderingPipeline("), std::string::npos) << slurp(js);
+    const nlohmann::json got = runSnippet("ssao", slurp(js), "tuned_babylon");
+    EXPECT_EQ(got, (nlohmann::json{{"totalStrength", j["settings"]["totalStrength"]}})) << slurp(js);
+    // A builtin scene: refused before the browser starts.
+    expectCleanFailure(ssaolab("tune --engine babylon-ssao2 --scene builtin:showcase --out " + out), "glTF");
+}
+
+// Two harness pages in one bench: the three.js engine and Babylon's run in one session each, and
+// both rows are scored against the same reference.
+TEST(CliEngineBabylon, BenchRunsEnginesOfTwoPagesBesideEachOther) {
+    NEED_MODULES();
+    const std::string scene = writeCornerGltf("bench_babylon.gltf"), out = outDir("bench_babylon");
+    fs::remove_all(out);
+    const std::string sweep = writeTemp("bench_babylon_sweep.json", R"({"name": "b", "groups": [{"name": "g", "set": {"ao.technique": "gtao"}}]})");
+    const CliRun r = ssaolab("bench --scene " + scene + " --size 96x54 --views 1 --frames 2 --warmup 0 --reference-rays 8 "
+                             "--no-plot --quiet --engines n8ao,babylon-ssao2 --sweep " + sweep + " --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    const nlohmann::json j = nlohmann::json::parse(slurp(out + "/results.json"));
+    int rows = 0;
+    for (const auto& v : j["results"]) {
+        const std::string label = j["configurations"][v["config"].get<size_t>()]["label"];
+        if (label.rfind("engine ", 0) != 0) continue;
+        ++rows;
+        EXPECT_TRUE(v["rmse"].is_number()) << label;
+        EXPECT_LE(v["rmse"].get<double>(), 1.0) << label;
+    }
+    EXPECT_EQ(rows, 4) << "n8ao and babylon-ssao2, each as make peers and as shipped";
+    expectCleanFailure(ssaolab("bench --scene " + scene + " --engines Babylon-SSAO2 --out " + out + "_x"),
+                       "did you mean babylon-ssao2");
+}

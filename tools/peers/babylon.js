@@ -1,0 +1,224 @@
+// Babylon.js's SSAO2RenderingPipeline on one glTF scene (run_engine.mjs drives this page through
+// Chromium), with the same window API as peers.js: setupPeers, setEngineView, runEngine.
+// The AO alone: the pipeline's last stage multiplies the scene's colour by the AO, so every surface
+// is drawn in one unlit white material (emissive 1, lighting off, both sides) on a white clear
+// colour, with image processing (tone mapping, gamma) off: the canvas holds 1 x AO, linear.
+// The scene keeps the glTF's right-handed coordinates (scene.useRightHandedSystem), so ssaolab's
+// camera, in the file's coordinates, is used as it is. Time: the median frame with the pipeline
+// minus the median frame without, each ended by a 1-pixel readPixels, as peers.js times its passes.
+/* global BABYLON */
+let engine, scene, camera, cfg, canvas;
+
+window.setupPeers = async (config) => {
+    cfg = config;
+    canvas = document.createElement('canvas');
+    canvas.width = cfg.width;
+    canvas.height = cfg.height;
+    canvas.style.width = `${cfg.width}px`;
+    canvas.style.height = `${cfg.height}px`;
+    document.body.appendChild(canvas);
+    engine = new BABYLON.Engine(canvas, false, { preserveDrawingBuffer: true, stencil: true, antialias: false }, false);
+    engine.setHardwareScalingLevel(1);
+    // Shaders compile as they are asked for: with parallel compilation Babylon skips a mesh or a
+    // post-process whose effect is not ready yet, and a frame would be timed and read without it.
+    engine.getCaps().parallelShaderCompile = undefined;
+    scene = new BABYLON.Scene(engine);
+    scene.useRightHandedSystem = true;
+    scene.clearColor = new BABYLON.Color4(1, 1, 1, 1);
+    scene.imageProcessingConfiguration.isEnabled = false;
+    await BABYLON.AppendSceneAsync(cfg.scene, scene);
+    // ssaolab skips BLEND and transmissive surfaces (README, "Transparent surfaces"); every other
+    // surface is drawn white, unlit, both sides.
+    const white = new BABYLON.StandardMaterial('ssaolab-white', scene);
+    white.disableLighting = true;
+    white.emissiveColor = new BABYLON.Color3(1, 1, 1);
+    white.diffuseColor = new BABYLON.Color3(0, 0, 0);
+    white.specularColor = new BABYLON.Color3(0, 0, 0);
+    white.backFaceCulling = false;
+    let meshes = 0, hidden = 0;
+    for (const m of scene.meshes) {
+        if (!m.getTotalVertices || m.getTotalVertices() === 0) continue;
+        ++meshes;
+        const mat = m.material;
+        const transmissive = mat && mat.subSurface && mat.subSurface.isRefractionEnabled;
+        if (mat && ((mat.needAlphaBlending && mat.needAlphaBlending()) || transmissive)) {
+            m.isVisible = false;
+            ++hidden;
+            continue;
+        }
+        m.material = white;
+        m.alwaysSelectAsActiveMesh = true; // no culling against the camera's frustum: ssaolab draws all
+    }
+    for (const l of scene.lights.slice()) l.dispose();
+    makeCamera();
+    await scene.whenReadyAsync();
+    const gl = engine._gl;
+    const info = gl.getExtension('WEBGL_debug_renderer_info');
+    return { renderer: info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER),
+             three: `babylon.js ${BABYLON.Engine.Version}`, meshes, hidden, flipped: 0 };
+};
+
+// Babylon's camera from cfg.camera (ssaolab's metrics.json camera, in the file's coordinates).
+function makeCamera() {
+    const c = cfg.camera, v = (a) => new BABYLON.Vector3(a[0], a[1], a[2]);
+    if (camera) camera.dispose();
+    camera = new BABYLON.TargetCamera('ssaolab-camera', v(c.eye), scene);
+    camera.upVector = v(c.up);
+    camera.setTarget(v(c.target));
+    camera.fovMode = BABYLON.Camera.FOVMODE_VERTICAL_FIXED;
+    camera.fov = c.fov_y_deg * Math.PI / 180;
+    camera.minZ = c.near;
+    camera.maxZ = c.far === 'inf' ? 1e7 : c.far;
+    scene.activeCamera = camera;
+}
+
+const far = () => (cfg.camera.far === 'inf' ? 1e7 : cfg.camera.far);
+
+// The pipeline at its defaults, with every length set from R ("make peers"): the radius R, the
+// self-occlusion epsilon at the defaults' ratio to it (0.02 : 2), and the depth fade (from 0.75
+// maxZ to maxZ; the default fades from 75 to 100 units) starting at the camera's far plane, so
+// nothing inside the scene fades.
+function makePipeline(ctor) {
+    Math.random = seededRandom(0x55a0); // its noise texture and sample sphere: one image per setting in every session
+    const ratio = { ssaoRatio: ctor.ssaoRatio ?? 0.5, blurRatio: ctor.blurRatio ?? 1 };
+    const p = new BABYLON.SSAO2RenderingPipeline(`ssao${++pipelines}`, scene, ratio, [camera]);
+    p.radius = cfg.radius;
+    p.epsilon = 0.01 * cfg.radius;
+    p.maxZ = far() / 0.75;
+    // The radius is clamped to minZAspect x depth / near "to save performance on close geometry":
+    // ssaolab's near plane is fitted to the scene, far larger than an application's, so the clamp
+    // would bite where it would not in the application: off.
+    p.minZAspect = 1e6;
+    return p;
+}
+let pipelines = 0;
+
+// A fixed sequence (mulberry32), restarted for every pipeline, as peers.js seeds three.js's passes.
+function seededRandom(seed) {
+    let s = seed >>> 0;
+    return () => {
+        s = (s + 0x6D2B79F5) >>> 0;
+        let t = Math.imul(s ^ (s >>> 15), s | 1);
+        t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+        return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+    };
+}
+
+function frameTimes(frames) {
+    const gl = engine._gl, px = new Uint8Array(4), times = [];
+    for (let i = 0; i < frames + 3; ++i) { // 3 warm-up frames: shader compiles, first uploads
+        const t0 = performance.now();
+        scene.render();
+        gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+        if (i >= 3) times.push(performance.now() - t0);
+    }
+    return times.sort((a, b) => a - b);
+}
+
+// The canvas's red channel (the AO), one byte per pixel, rows bottom-up as GL reads them, base64.
+function readAo() {
+    const gl = engine._gl, w = cfg.width, h = cfg.height, rgba = new Uint8Array(w * h * 4);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
+    const ao = new Uint8Array(w * h);
+    for (let i = 0; i < w * h; ++i) ao[i] = rgba[4 * i];
+    let s = '';
+    for (let i = 0; i < ao.length; i += 0x8000) s += String.fromCharCode.apply(null, ao.subarray(i, i + 0x8000));
+    return btoa(s);
+}
+
+function readPath(o, path) {
+    for (const k of path.split('.')) o = o?.[k];
+    return o;
+}
+
+function writePath(o, path, v) {
+    const keys = path.split('.'), last = keys.pop();
+    for (const k of keys) o = o[k];
+    o[last] = v;
+}
+
+function readParams(p, params) {
+    return Object.fromEntries(params.map((r) => {
+        const v = r.write.constructor_arg !== undefined ? p.ssaolabCtor[r.name] : readPath(p, r.read);
+        return [r.name, r.type === 'boolean' ? Boolean(v) : Number(v)];
+    }));
+}
+
+let engineView = -1, plainMs;
+const built = new Map(); // JSON of the constructor values -> { pipeline, base }
+
+function detachAll() {
+    for (const e of built.values()) scene.postProcessRenderPipelineManager.detachCamerasFromRenderPipeline(e.pipeline.name, camera);
+}
+
+window.setEngineView = (index, cam, radius) => {
+    if (index === engineView) return;
+    for (const e of built.values()) e.pipeline.dispose();
+    built.clear();
+    plainMs = undefined;
+    cfg.camera = cam;
+    cfg.radius = radius;
+    makeCamera();
+    engineView = index;
+};
+
+// Babylon loads a post-process's shaders asynchronously (a promise, even from the bundle): until
+// every one is ready the pipeline is skipped and the frame shows no AO. Renders until they are (at
+// most 30 s, then the job fails rather than read a frame without the AO).
+async function ready() {
+    const start = performance.now();
+    while (!camera._postProcesses.filter(Boolean).every((pp) => pp.isReady())) {
+        if (performance.now() - start > 30000) throw new Error('the SSAO2 pipeline\'s shaders were not ready after 30 s');
+        scene.render();
+        await new Promise((r) => setTimeout(r, 5));
+    }
+}
+
+// job: { peer, params, values, scale, frames }, as peers.js's runEngine takes it.
+window.runEngine = async (job) => {
+    if (job.peer !== 'babylon-ssao2') throw new Error(`babylon.html runs babylon-ssao2, not '${job.peer}'`);
+    const ctor = {};
+    for (const p of job.params)
+        if (p.write.constructor_arg !== undefined && job.values[p.name] !== undefined) ctor[p.name] = job.values[p.name];
+    if (job.frames > 0 && plainMs === undefined) { // the frame without any pipeline, once a view
+        for (const e of built.values()) e.pipeline.dispose();
+        built.clear();
+        const t = frameTimes(job.frames);
+        plainMs = t[Math.floor(t.length / 2)];
+    }
+    const key = JSON.stringify(ctor);
+    detachAll();
+    let e = built.get(key);
+    if (!e) {
+        const pipeline = makePipeline(ctor);
+        pipeline.ssaolabCtor = { ssaoRatio: ctor.ssaoRatio ?? 0.5, blurRatio: ctor.blurRatio ?? 1 };
+        e = { pipeline, base: readParams(pipeline, job.params) };
+        built.set(key, e);
+    } else {
+        scene.postProcessRenderPipelineManager.attachCamerasToRenderPipeline(e.pipeline.name, camera);
+    }
+    Math.random = seededRandom(0x55a1); // the samples setter draws a new sample sphere: the same one in every session
+    for (const p of job.params) {
+        if (p.write.constructor_arg !== undefined) continue;
+        const scale = job.scale?.[p.name];
+        const v = job.values[p.name] ?? (scale !== undefined ? e.base[p.name] * scale : e.base[p.name]);
+        writePath(e.pipeline, p.write.path, p.type === 'boolean' ? Boolean(v) : v);
+    }
+    await ready();
+    const out = { values: readParams(e.pipeline, job.params) };
+    if (job.frames > 0) {
+        const times = frameTimes(job.frames);
+        out.frame_ms = times[Math.floor(times.length / 2)];
+        out.plain_ms = plainMs;
+        out.ao_ms = out.frame_ms - plainMs;
+        out.ao_ms_min = times[0] - plainMs;
+        out.ao_ms_max = times[times.length - 1] - plainMs;
+    } else {
+        scene.render();
+        scene.render();
+    }
+    out.ao = readAo();
+    return out;
+};
+
+window.peersReady = true;
