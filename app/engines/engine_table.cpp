@@ -172,8 +172,8 @@ EngineTable loadEngineTable(const std::string& path) {
     t.version = textField(j, "version", path);
     t.peer = textField(j, "peer", path);
     t.page = j.contains("page") ? textField(j, "page", path) : "peers.html";
-    if (t.page != "peers.html" && t.page != "babylon.html")
-        throw Error(path + ": \"page\" is '" + t.page + "', not one of the harness's pages (peers.html, babylon.html)");
+    if (t.page != "peers.html" && t.page != "babylon.html" && t.page != "playcanvas.html")
+        throw Error(path + ": \"page\" is '" + t.page + "', not one of the harness's pages (peers.html, babylon.html, playcanvas.html)");
     textField(j, "docs", path);
     if (!j.contains("snippet") || !j["snippet"].is_object()) throw Error(path + ": no \"snippet\" object");
     t.variable = codeName(j["snippet"], "variable", path + " snippet");

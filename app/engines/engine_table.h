@@ -44,7 +44,7 @@ struct EngineParam {
 
 struct EngineTable {
     std::string engine, title, package, version, peer, file;
-    std::string page = "peers.html"; // the harness page that runs it (babylon.html: Babylon.js)
+    std::string page = "peers.html"; // the harness page that runs it (babylon.html, playcanvas.html)
     std::string variable;           // the snippet's name for the pass ("n8aopass")
     std::vector<std::string> setup; // the snippet's opening lines (import, construction)
     std::vector<EngineParam> params;

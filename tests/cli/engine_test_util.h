@@ -21,7 +21,7 @@ inline const std::string kModules = std::string(SSAOLAB_BUILD_DIR) + "/peers/nod
 
 inline bool modulesInstalled() {
     namespace fs = std::filesystem;
-    for (const char* m : {"three", "n8ao", "postprocessing", "playwright-core", "babylonjs", "babylonjs-loaders"})
+    for (const char* m : {"three", "n8ao", "postprocessing", "playwright-core", "babylonjs", "babylonjs-loaders", "playcanvas"})
         if (!fs::is_regular_file(kModules + "/" + m + "/package.json")) return false;
     return true;
 }

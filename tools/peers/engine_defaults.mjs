@@ -1,5 +1,5 @@
 // Each engine's own defaults, from the installed package itself: the pass is constructed in Node
-// (constructing needs no GL context; Babylon.js's through its NullEngine) as its table's "class" says, and every parameter is read
+// (constructing needs no GL context; Babylon.js's through its NullEngine, PlayCanvas's its NullGraphicsDevice) as its table's "class" says, and every parameter is read
 // where its table's "read" path says. Prints {engine: {version, defaults: {name: value}}} as JSON;
 // tests/cli/test_cli_engines.cpp compares it with the tables.
 //
@@ -37,10 +37,27 @@ function babylonPipeline(table) {
     return pass;
 }
 
+// PlayCanvas's CameraFrame needs an application and a camera component: its NullGraphicsDevice
+// (no GL) builds them in Node.
+async function playcanvasFrame(table) {
+    const pc = await load('playcanvas/build/playcanvas.mjs');
+    const opts = new pc.AppOptions();
+    opts.graphicsDevice = new pc.NullGraphicsDevice({});
+    opts.componentSystems = [pc.CameraComponentSystem];
+    const app = new pc.AppBase({});
+    app.init(opts);
+    const camera = new pc.Entity('c');
+    camera.addComponent('camera');
+    app.root.addChild(camera);
+    const given = { app, camera: camera.camera };
+    return new pc[table.class.export](...table.class.constructor.map((a) => given[a]));
+}
+
 const out = {};
 for (const file of args.tables.split(',')) {
     const table = JSON.parse(fs.readFileSync(file, 'utf8'));
-    const pass = table.class.module === 'babylonjs' ? babylonPipeline(table) : await threePass(table);
+    const pass = table.class.module === 'babylonjs' ? babylonPipeline(table)
+               : table.class.module === 'playcanvas' ? await playcanvasFrame(table) : await threePass(table);
     const defaults = {};
     for (const p of table.parameters) {
         let v = pass;

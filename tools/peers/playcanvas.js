@@ -1,0 +1,194 @@
+// PlayCanvas's CameraFrame SSAO (its pass follows Filament's scalable ambient obscurance) on one glTF scene
+// (run_engine.mjs drives this page through Chromium), with the same window API as peers.js:
+// setupPeers, setEngineView, runEngine. The AO alone: the frame's own debug output 'ssao' (the
+// compose pass shows the SSAO texture), tone mapping linear and gamma off, so the canvas holds the
+// AO, linear. PlayCanvas is right-handed like glTF: ssaolab's camera, in the file's coordinates, is
+// used as it is. Time: the median frame with the CameraFrame minus the median frame without it,
+// each ended by a 1-pixel readPixels, as peers.js times its passes.
+import * as pc from '/playcanvas/build/playcanvas.mjs';
+
+let app, device, cameraEntity, cfg;
+
+window.setupPeers = async (config) => {
+    cfg = config;
+    const canvas = document.createElement('canvas');
+    canvas.width = cfg.width;
+    canvas.height = cfg.height;
+    canvas.style.width = `${cfg.width}px`;
+    canvas.style.height = `${cfg.height}px`;
+    document.body.appendChild(canvas);
+    device = await pc.createGraphicsDevice(canvas, { deviceTypes: ['webgl2'], antialias: false, alpha: false,
+                                                      preserveDrawingBuffer: true });
+    device.maxPixelRatio = 1;
+    const opts = new pc.AppOptions();
+    opts.graphicsDevice = device;
+    opts.componentSystems = [pc.RenderComponentSystem, pc.CameraComponentSystem];
+    opts.resourceHandlers = [pc.TextureHandler, pc.ContainerHandler];
+    app = new pc.AppBase(canvas);
+    app.init(opts);
+    app.setCanvasFillMode(pc.FILLMODE_NONE, cfg.width, cfg.height);
+    app.setCanvasResolution(pc.RESOLUTION_FIXED, cfg.width, cfg.height);
+    const asset = await new Promise((resolve, reject) =>
+        app.assets.loadFromUrl(cfg.scene, 'container', (err, a) => (err ? reject(new Error(String(err))) : resolve(a))));
+    const root = asset.resource.instantiateRenderEntity();
+    app.root.addChild(root);
+    // ssaolab skips BLEND and transmissive surfaces (README, "Transparent surfaces") and draws
+    // every face: the same here.
+    let meshes = 0, hidden = 0;
+    for (const r of root.findComponents('render')) {
+        for (const mi of r.meshInstances) {
+            ++meshes;
+            const m = mi.material;
+            if (m.blendType !== pc.BLEND_NONE || (m.refraction ?? 0) > 0) { mi.visible = false; ++hidden; continue; }
+            m.cull = pc.CULLFACE_NONE;
+            m.update();
+        }
+    }
+    makeCamera();
+    return { renderer: device.gl.getParameter(device.gl.RENDERER), three: `playcanvas ${pc.version}`, meshes, hidden, flipped: 0 };
+};
+
+// PlayCanvas's camera from cfg.camera (ssaolab's metrics.json camera, in the file's coordinates).
+function makeCamera() {
+    const c = cfg.camera;
+    if (!cameraEntity) {
+        cameraEntity = new pc.Entity('ssaolab-camera');
+        cameraEntity.addComponent('camera', { clearColor: new pc.Color(1, 1, 1, 1) });
+        app.root.addChild(cameraEntity);
+    }
+    const cam = cameraEntity.camera;
+    cam.fov = c.fov_y_deg; // vertical (horizontalFov false)
+    cam.horizontalFov = false;
+    cam.nearClip = c.near;
+    cam.farClip = c.far === 'inf' ? 1e7 : c.far;
+    cam.gammaCorrection = pc.GAMMA_NONE;
+    cam.toneMapping = pc.TONEMAP_LINEAR;
+    cameraEntity.setPosition(c.eye[0], c.eye[1], c.eye[2]);
+    cameraEntity.lookAt(new pc.Vec3(c.target[0], c.target[1], c.target[2]), new pc.Vec3(c.up[0], c.up[1], c.up[2]));
+}
+
+// The CameraFrame with SSAO on (its default type is none: a user turns it on, every other setting
+// the package's) and every length set from R ("make peers"): the radius R.
+function makeFrame(ctor) {
+    Math.random = seededRandom(0x55a0);
+    const f = new pc.CameraFrame(app, cameraEntity.camera);
+    f.rendering.toneMapping = pc.TONEMAP_LINEAR;
+    f.ssao.type = pc.SSAOTYPE_COMBINE;
+    f.ssao.radius = cfg.radius;
+    if (ctor.scale !== undefined) f.ssao.scale = ctor.scale;
+    f.debug = 'ssao';
+    f.update();
+    return f;
+}
+
+// A fixed sequence (mulberry32), restarted for every frame setup, as peers.js seeds three.js's passes.
+function seededRandom(seed) {
+    let s = seed >>> 0;
+    return () => {
+        s = (s + 0x6D2B79F5) >>> 0;
+        let t = Math.imul(s ^ (s >>> 15), s | 1);
+        t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+        return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+    };
+}
+
+function frameTimes(frames) {
+    const gl = device.gl, px = new Uint8Array(4), times = [];
+    for (let i = 0; i < frames + 3; ++i) { // 3 warm-up frames: shader compiles, first uploads
+        const t0 = performance.now();
+        app.render();
+        gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+        if (i >= 3) times.push(performance.now() - t0);
+    }
+    return times.sort((a, b) => a - b);
+}
+
+// The canvas's red channel (the AO), one byte per pixel, rows bottom-up as GL reads them, base64.
+function readAo() {
+    const gl = device.gl, w = cfg.width, h = cfg.height, rgba = new Uint8Array(w * h * 4);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
+    const ao = new Uint8Array(w * h);
+    for (let i = 0; i < w * h; ++i) ao[i] = rgba[4 * i];
+    let s = '';
+    for (let i = 0; i < ao.length; i += 0x8000) s += String.fromCharCode.apply(null, ao.subarray(i, i + 0x8000));
+    return btoa(s);
+}
+
+function readPath(o, path) {
+    for (const k of path.split('.')) o = o?.[k];
+    return o;
+}
+
+function writePath(o, path, v) {
+    const keys = path.split('.'), last = keys.pop();
+    for (const k of keys) o = o[k];
+    o[last] = v;
+}
+
+function readParams(f, params) {
+    return Object.fromEntries(params.map((r) => {
+        const v = readPath(f, r.read);
+        return [r.name, r.type === 'boolean' ? Boolean(v) : Number(v)];
+    }));
+}
+
+let engineView = -1, plainMs, frame = null, frameKey = null;
+
+function dropFrame() {
+    if (frame) frame.destroy();
+    frame = null;
+    frameKey = null;
+}
+
+window.setEngineView = (index, cam, radius) => {
+    if (index === engineView) return;
+    dropFrame();
+    plainMs = undefined;
+    cfg.camera = cam;
+    cfg.radius = radius;
+    makeCamera();
+    engineView = index;
+};
+
+// job: { peer, params, values, scale, frames }, as peers.js's runEngine takes it.
+window.runEngine = (job) => {
+    if (job.peer !== 'playcanvas-ssao') throw new Error(`playcanvas.html runs playcanvas-ssao, not '${job.peer}'`);
+    const ctor = {};
+    for (const p of job.params)
+        if (p.write.constructor_arg !== undefined && job.values[p.name] !== undefined) ctor[p.name] = job.values[p.name];
+    if (job.frames > 0 && plainMs === undefined) { // the frame without the CameraFrame, once a view
+        dropFrame();
+        const t = frameTimes(job.frames);
+        plainMs = t[Math.floor(t.length / 2)];
+    }
+    const key = JSON.stringify(ctor);
+    if (frameKey !== key) {
+        dropFrame();
+        frame = makeFrame(ctor);
+        frame.ssaolabBase = readParams(frame, job.params);
+        frameKey = key;
+    }
+    for (const p of job.params) {
+        if (p.write.constructor_arg !== undefined) continue;
+        const scale = job.scale?.[p.name];
+        const v = job.values[p.name] ?? (scale !== undefined ? frame.ssaolabBase[p.name] * scale : frame.ssaolabBase[p.name]);
+        writePath(frame, p.write.path, p.type === 'boolean' ? Boolean(v) : v);
+    }
+    frame.update();
+    const out = { values: readParams(frame, job.params) };
+    if (job.frames > 0) {
+        const times = frameTimes(job.frames);
+        out.frame_ms = times[Math.floor(times.length / 2)];
+        out.plain_ms = plainMs;
+        out.ao_ms = out.frame_ms - plainMs;
+        out.ao_ms_min = times[0] - plainMs;
+        out.ao_ms_max = times[times.length - 1] - plainMs;
+    } else {
+        app.render();
+        app.render();
+    }
+    out.ao = readAo();
+    return out;
+};
+
+window.peersReady = true;
