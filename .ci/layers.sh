@@ -10,11 +10,8 @@ BUILD=${1:-build}
 SCENES=${2:-../shared/scenes}
 RUN="$BUILD/layers-run"
 rm -rf "$RUN"
-LIST=(CornellBox/cornellBox.gltf ShaderBall/shader_ball.gltf SciFiHelmet/SciFiHelmet.gltf FlightHelmet/FlightHelmet.gltf
-      Lantern/Lantern.gltf ReciprocatingSaw/ReciprocatingSaw.gltf 2CylinderEngine/2CylinderEngine.gltf
-      AntiqueCamera/AntiqueCamera.gltf)
-ARGS=()
-for s in "${LIST[@]}"; do ARGS+=(--scene "$SCENES/$s"); done
+source .ci/shared_scenes.sh
+ARGS=("${SCENE_ARGS[@]}")
 "$BUILD/app/ssaolab" bench "${ARGS[@]}" --size "${LAYERS_SIZE:-640x360}" --views 2 --frames "${LAYERS_FRAMES:-10}" \
   --warmup 2 --reference-rays "${LAYERS_RAYS:-128}" --sweep assets/bench/sweep_layers.json --no-plot --quiet --out "$RUN"
 /usr/bin/python3 tools/layers_page.py "$RUN/results.json" docs/bench/layers.md

@@ -9,11 +9,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
 SCENES=${2:-../shared/scenes}
-LIST=(CornellBox/cornellBox.gltf ShaderBall/shader_ball.gltf SciFiHelmet/SciFiHelmet.gltf FlightHelmet/FlightHelmet.gltf
-      Lantern/Lantern.gltf ReciprocatingSaw/ReciprocatingSaw.gltf 2CylinderEngine/2CylinderEngine.gltf
-      AntiqueCamera/AntiqueCamera.gltf)
-ARGS=()
-for s in "${LIST[@]}"; do ARGS+=(--scene "$SCENES/$s"); done
+source .ci/shared_scenes.sh
+ARGS=("${SCENE_ARGS[@]}")
 rm -rf "$BUILD/objective"
 "$BUILD/app/ssaolab" bench "${ARGS[@]}" --size "${OBJECTIVE_SIZE:-640x360}" --views 1 --frames "${OBJECTIVE_FRAMES:-5}" \
   --warmup 1 --reference-rays "${OBJECTIVE_RAYS:-128}" --objective motion --motion-frames 8 --motion-orbit 4 \

@@ -8,11 +8,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
 SCENES=${2:-../shared/scenes}
-LIST=(CornellBox/cornellBox.gltf ShaderBall/shader_ball.gltf SciFiHelmet/SciFiHelmet.gltf FlightHelmet/FlightHelmet.gltf
-      Lantern/Lantern.gltf ReciprocatingSaw/ReciprocatingSaw.gltf 2CylinderEngine/2CylinderEngine.gltf
-      AntiqueCamera/AntiqueCamera.gltf)
-ARGS=()
-for s in "${LIST[@]}"; do ARGS+=(--scene "$SCENES/$s"); done
+source .ci/shared_scenes.sh
+ARGS=("${SCENE_ARGS[@]}")
 for path in orbit dolly; do
   if [ "$path" = orbit ]; then MOVE=(--motion-orbit 4 --motion-dolly 0); else MOVE=(--motion-orbit 0 --motion-dolly 0.1); fi
   rm -rf "$BUILD/temporal-$path"

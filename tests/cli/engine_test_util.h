@@ -3,6 +3,11 @@
 // Node.js runs, a snippet run against a recording mock, and a small glTF corner.
 #pragma once
 #include "cli_run.h"
+#include "cli/headless_runner.h"
+#include "reference/reference_cache.h"
+#include "scene/scene.h"
+#include "scene/view_fit.h"
+#include "settings/preset.h"
 #include "util/process.h"
 
 #include <gtest/gtest.h>
@@ -97,6 +102,30 @@ inline std::string writeCornerGltf(const std::string& name) {
                {"bufferView": 1, "componentType": 5126, "count": 12, "type": "VEC3"},
                {"bufferView": 2, "componentType": 5123, "count": 18, "type": "SCALAR"}]})";
     return writeTemp(name, text);
+}
+
+// The corner as every engine's round trip sees it at 96x54: the scene, the camera ssaolab's renderer
+// fits, R (5 % of the diagonal), the camera as the runner takes it, and the reference (64 rays).
+struct CornerView {
+    std::string file;
+    ssao::Scene scene;
+    ssao::Camera camera;
+    float radius = 0;
+    nlohmann::json cameraJson;
+    ssao::ReferenceImage reference() const {
+        ssao::ReferenceProvider provider(scene, std::string(SSAOLAB_TEST_TMP) + "/cache");
+        return provider.get(camera, 96, 54, {radius, 64});
+    }
+};
+
+inline CornerView cornerView(const std::string& name) {
+    CornerView v;
+    v.file = writeCornerGltf(name);
+    v.scene = ssao::loadNamedScene(v.file);
+    v.camera = ssao::effectiveCamera(ssao::defaultCamera(v.scene), v.scene.bounds);
+    v.radius = 0.05f * 2.0f * v.scene.bounds.radius();
+    v.cameraJson = ssao::cameraToJson(ssao::cameraToFile(v.camera, v.scene));
+    return v;
 }
 
 } // namespace ssaotest

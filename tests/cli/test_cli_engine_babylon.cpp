@@ -35,12 +35,10 @@ TEST(CliEngineBabylon, RunnerRoundTripReadsTheAoAloneAtTheMakePeersSettings) {
     const ssao::EngineTable t = ssao::findEngine("babylon-ssao2");
     EXPECT_EQ(t.page, "babylon.html");
     const ssao::EngineTools tools = ssao::locateEngineTools(kModules, t);
-    const std::string file = writeCornerGltf("engine_babylon.gltf");
-    const ssao::Scene sc = ssao::loadNamedScene(file);
-    const ssao::Camera cam = ssao::effectiveCamera(ssao::defaultCamera(sc), sc.bounds);
-    const float radius = 0.05f * 2.0f * sc.bounds.radius();
-    const nlohmann::json camJson = ssao::cameraToJson(ssao::cameraToFile(cam, sc));
-    ssao::EngineRunner runner(tools, t, file, 96, 54, {{camJson, radius}});
+    const CornerView v = cornerView("engine_babylon.gltf");
+    const float radius = v.radius;
+    const nlohmann::json& camJson = v.cameraJson;
+    ssao::EngineRunner runner(tools, t, v.file, 96, 54, {{camJson, radius}});
     const std::vector<ssao::EngineResult> res =
         runner.run({{0, {}, 0}, {0, {}, 0, {{"radius", 2.0}}}, {0, {}, 2}, {0, {{"totalStrength", 0.0}}, 0}});
     ASSERT_EQ(res.size(), 4u);
@@ -50,8 +48,7 @@ TEST(CliEngineBabylon, RunnerRoundTripReadsTheAoAloneAtTheMakePeersSettings) {
     EXPECT_EQ(res[0].values.at("samples"), 8.0);                               // the package's own
     EXPECT_FLOAT_EQ(float(res[1].values.at("radius")), 2.0f * radius);
     EXPECT_TRUE(std::isfinite(res[2].aoMs) && std::isfinite(res[2].aoMsMin) && std::isfinite(res[2].aoMsMax));
-    ssao::ReferenceProvider provider(sc, std::string(SSAOLAB_TEST_TMP) + "/cache");
-    const ssao::ReferenceImage ref = provider.get(cam, 96, 54, {radius, 64});
+    const ssao::ReferenceImage ref = v.reference();
     // What is read is the AO alone: with no strength every pixel is 1 (the white scene, unlit), and
     // at the make-peers settings the corner darkens (the pipeline's shaders were ready).
     long dark = 0;

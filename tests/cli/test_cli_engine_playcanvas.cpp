@@ -34,12 +34,10 @@ TEST(CliEnginePlayCanvas, RunnerRoundTripReadsTheAoAloneAtTheMakePeersSettings) 
     const ssao::EngineTable t = ssao::findEngine("playcanvas-ssao");
     EXPECT_EQ(t.page, "playcanvas.html");
     const ssao::EngineTools tools = ssao::locateEngineTools(kModules, t);
-    const std::string file = writeCornerGltf("engine_playcanvas.gltf");
-    const ssao::Scene sc = ssao::loadNamedScene(file);
-    const ssao::Camera cam = ssao::effectiveCamera(ssao::defaultCamera(sc), sc.bounds);
-    const float radius = 0.05f * 2.0f * sc.bounds.radius();
-    const nlohmann::json camJson = ssao::cameraToJson(ssao::cameraToFile(cam, sc));
-    ssao::EngineRunner runner(tools, t, file, 96, 54, {{camJson, radius}});
+    const CornerView v = cornerView("engine_playcanvas.gltf");
+    const float radius = v.radius;
+    const nlohmann::json& camJson = v.cameraJson;
+    ssao::EngineRunner runner(tools, t, v.file, 96, 54, {{camJson, radius}});
     const std::vector<ssao::EngineResult> res =
         runner.run({{0, {}, 0}, {0, {}, 0, {{"radius", 2.0}}}, {0, {}, 2}, {0, {{"intensity", 0.0}}, 0}, {0, {{"intensity", 4.0}}, 0}});
     ASSERT_EQ(res.size(), 5u);
@@ -57,8 +55,7 @@ TEST(CliEnginePlayCanvas, RunnerRoundTripReadsTheAoAloneAtTheMakePeersSettings) 
         if (res[3].ao.data[i] != 1.0f) break;
     }
     EXPECT_GE(dark, 10) << "no darkening: the frame's SSAO did not run, or the scene's colour was read";
-    ssao::ReferenceProvider provider(sc, std::string(SSAOLAB_TEST_TMP) + "/cache");
-    const ssao::ReferenceImage ref = provider.get(cam, 96, 54, {radius, 64});
+    const ssao::ReferenceImage ref = v.reference();
     const double rmse = ssao::evaluate(res[0].ao, ref).metrics.rmse, rmse2 = ssao::evaluate(res[1].ao, ref).metrics.rmse;
     std::printf("PlayCanvas CameraFrame SSAO on the corner at 96x54: RMSE %.4f (make peers), %.4f (2 R)\n", rmse, rmse2);
     EXPECT_NEAR(rmse, kPlayCanvasRmse, kPlayCanvasTolerance) << "make-peers settings on the corner at 96x54";

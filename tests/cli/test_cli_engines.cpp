@@ -165,17 +165,15 @@ TEST(CliEngine, RunnerRoundTripMatchesTheStoredResult) {
     NEED_MODULES();
     const ssao::EngineTable t = ssao::findEngine("n8ao");
     const ssao::EngineTools tools = ssao::locateEngineTools(kModules, t);
-    const std::string file = writeCornerGltf("engine_roundtrip.gltf");
-    const ssao::Scene sc = ssao::loadNamedScene(file);
-    const ssao::Camera cam = ssao::effectiveCamera(ssao::defaultCamera(sc), sc.bounds);
-    const float radius = 0.05f * 2.0f * sc.bounds.radius();
-    ssao::EngineRunner runner(tools, t, file, 96, 54, {{ssao::cameraToJson(ssao::cameraToFile(cam, sc)), radius}});
+    const CornerView v = cornerView("engine_roundtrip.gltf");
+    const float radius = v.radius;
+    const nlohmann::json& camJson = v.cameraJson;
+    ssao::EngineRunner runner(tools, t, v.file, 96, 54, {{camJson, radius}});
     const std::vector<ssao::EngineResult> res = runner.run({{0, {}, 0}, {0, {{"aoRadius", 2.0 * radius}}, 0}});
     ASSERT_EQ(res.size(), 2u);
     EXPECT_FLOAT_EQ(float(res[0].values.at("aoRadius")), radius); // the make-peers setting
     EXPECT_FLOAT_EQ(float(res[1].values.at("aoRadius")), 2.0f * radius);
-    ssao::ReferenceProvider provider(sc, std::string(SSAOLAB_TEST_TMP) + "/cache");
-    const ssao::ReferenceImage ref = provider.get(cam, 96, 54, {radius, 64});
+    const ssao::ReferenceImage ref = v.reference();
     const double rmse = ssao::evaluate(res[0].ao, ref).metrics.rmse, rmse2 = ssao::evaluate(res[1].ao, ref).metrics.rmse;
     EXPECT_NEAR(rmse, kStoredRmse, kRoundTripTolerance) << "N8AO defaults on the corner at 96x54";
     EXPECT_NEAR(rmse2, kStoredRmse2R, kRoundTripTolerance) << "N8AO at 2 R";
@@ -190,12 +188,10 @@ TEST(CliEngine, PostprocessingRoundTripMatchesTheStoredResult) {
     NEED_MODULES();
     const ssao::EngineTable t = ssao::findEngine("pp-ssao");
     const ssao::EngineTools tools = ssao::locateEngineTools(kModules, t);
-    const std::string file = writeCornerGltf("engine_roundtrip_pp.gltf");
-    const ssao::Scene sc = ssao::loadNamedScene(file);
-    const ssao::Camera cam = ssao::effectiveCamera(ssao::defaultCamera(sc), sc.bounds);
-    const float radius = 0.05f * 2.0f * sc.bounds.radius();
-    const nlohmann::json camJson = ssao::cameraToJson(ssao::cameraToFile(cam, sc));
-    ssao::EngineRunner runner(tools, t, file, 96, 54, {{camJson, radius}});
+    const CornerView v = cornerView("engine_roundtrip_pp.gltf");
+    const float radius = v.radius;
+    const nlohmann::json& camJson = v.cameraJson;
+    ssao::EngineRunner runner(tools, t, v.file, 96, 54, {{camJson, radius}});
     const std::vector<ssao::EngineResult> res = runner.run({{0, {}, 0}, {0, {}, 0, {{"radius", 2.0}}}, {0, {}, 2}});
     ASSERT_EQ(res.size(), 3u);
     const double depth = camJson["far"].get<double>() - camJson["near"].get<double>();
@@ -204,8 +200,7 @@ TEST(CliEngine, PostprocessingRoundTripMatchesTheStoredResult) {
     EXPECT_DOUBLE_EQ(res[1].values.at("radius"), 2.0 * res[0].values.at("radius"));
     EXPECT_EQ(res[0].values.at("samples"), 9.0); // every other setting is the package's default
     EXPECT_TRUE(std::isfinite(res[2].aoMs) && std::isfinite(res[2].aoMsMin) && std::isfinite(res[2].aoMsMax));
-    ssao::ReferenceProvider provider(sc, std::string(SSAOLAB_TEST_TMP) + "/cache");
-    const ssao::ReferenceImage ref = provider.get(cam, 96, 54, {radius, 64});
+    const ssao::ReferenceImage ref = v.reference();
     const double rmse = ssao::evaluate(res[0].ao, ref).metrics.rmse, rmse2 = ssao::evaluate(res[1].ao, ref).metrics.rmse;
     EXPECT_NEAR(rmse, kPpStoredRmse, kRoundTripTolerance) << "SSAOEffect's make-peers settings on the corner at 96x54";
     EXPECT_NEAR(rmse2, kPpStoredRmse2x, kRoundTripTolerance) << "SSAOEffect at twice the radius";

@@ -7,6 +7,8 @@
 // camera, in the file's coordinates, is used as it is. Time: the median frame with the pipeline
 // minus the median frame without, each ended by a 1-pixel readPixels, as peers.js times its passes.
 /* global BABYLON */
+import { frameTimes as harnessFrameTimes, median, timedJob, readAo as harnessReadAo, readParams as readRows, seededRandom, writePath } from './harness.js';
+
 let engine, scene, camera, cfg, canvas;
 
 window.setupPeers = async (config) => {
@@ -93,56 +95,15 @@ function makePipeline(ctor) {
 }
 let pipelines = 0;
 
-// A fixed sequence (mulberry32), restarted for every pipeline, as peers.js seeds three.js's passes.
-function seededRandom(seed) {
-    let s = seed >>> 0;
-    return () => {
-        s = (s + 0x6D2B79F5) >>> 0;
-        let t = Math.imul(s ^ (s >>> 15), s | 1);
-        t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-        return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-    };
-}
-
-function frameTimes(frames) {
-    const gl = engine._gl, px = new Uint8Array(4), times = [];
-    for (let i = 0; i < frames + 3; ++i) { // 3 warm-up frames: shader compiles, first uploads
-        const t0 = performance.now();
-        scene.render();
-        gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
-        if (i >= 3) times.push(performance.now() - t0);
-    }
-    return times.sort((a, b) => a - b);
-}
-
-// The canvas's red channel (the AO), one byte per pixel, rows bottom-up as GL reads them, base64.
-function readAo() {
-    const gl = engine._gl, w = cfg.width, h = cfg.height, rgba = new Uint8Array(w * h * 4);
-    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
-    const ao = new Uint8Array(w * h);
-    for (let i = 0; i < w * h; ++i) ao[i] = rgba[4 * i];
-    let s = '';
-    for (let i = 0; i < ao.length; i += 0x8000) s += String.fromCharCode.apply(null, ao.subarray(i, i + 0x8000));
-    return btoa(s);
-}
-
-function readPath(o, path) {
-    for (const k of path.split('.')) o = o?.[k];
-    return o;
-}
-
-function writePath(o, path, v) {
-    const keys = path.split('.'), last = keys.pop();
-    for (const k of keys) o = o[k];
-    o[last] = v;
-}
-
+// The rows a pipeline keeps where their table reads them; the constructor's ratio as it was given.
 function readParams(p, params) {
-    return Object.fromEntries(params.map((r) => {
-        const v = r.write.constructor_arg !== undefined ? p.ssaolabCtor[r.name] : readPath(p, r.read);
-        return [r.name, r.type === 'boolean' ? Boolean(v) : Number(v)];
-    }));
+    const ctor = params.filter((r) => r.write.constructor_arg !== undefined);
+    return { ...readRows(p, params.filter((r) => r.write.constructor_arg === undefined)),
+             ...Object.fromEntries(ctor.map((r) => [r.name, Number(p.ssaolabCtor[r.name])])) };
 }
+
+const frameTimes = (frames) => harnessFrameTimes(engine._gl, () => scene.render(), frames);
+const readAo = () => harnessReadAo(engine._gl, cfg.width, cfg.height);
 
 let engineView = -1, plainMs;
 const built = new Map(); // JSON of the constructor values -> { pipeline, base }
@@ -183,8 +144,7 @@ window.runEngine = async (job) => {
     if (job.frames > 0 && plainMs === undefined) { // the frame without any pipeline, once a view
         for (const e of built.values()) e.pipeline.dispose();
         built.clear();
-        const t = frameTimes(job.frames);
-        plainMs = t[Math.floor(t.length / 2)];
+        plainMs = median(frameTimes(job.frames));
     }
     const key = JSON.stringify(ctor);
     detachAll();
@@ -207,12 +167,7 @@ window.runEngine = async (job) => {
     await ready();
     const out = { values: readParams(e.pipeline, job.params) };
     if (job.frames > 0) {
-        const times = frameTimes(job.frames);
-        out.frame_ms = times[Math.floor(times.length / 2)];
-        out.plain_ms = plainMs;
-        out.ao_ms = out.frame_ms - plainMs;
-        out.ao_ms_min = times[0] - plainMs;
-        out.ao_ms_max = times[times.length - 1] - plainMs;
+        Object.assign(out, timedJob(frameTimes(job.frames), plainMs));
     } else {
         scene.render();
         scene.render();

@@ -16,6 +16,11 @@ import { SSAOPass } from 'three/addons/postprocessing/SSAOPass.js';
 import { SAOPass } from 'three/addons/postprocessing/SAOPass.js';
 import { GTAOPass } from 'three/addons/postprocessing/GTAOPass.js';
 import { N8AOPass } from 'n8ao';
+import { frameTimes as harnessFrameTimes, timedJob, median, readAo as harnessReadAo, readParams, seededRandom, writePath } from './harness.js';
+
+// SSAOPass draws its kernel and noise, GTAOPass its denoiser's noise, from Math.random when built:
+// seededRandom (harness.js) restarts it for every pass.
+const readAo = () => harnessReadAo(renderer.getContext(), cfg.width, cfg.height);
 
 let renderer, scene, camera, cfg;
 let pp = null; // postprocessing, loaded in setupPeers (its effects run in its own EffectComposer)
@@ -101,19 +106,6 @@ function makePass(name, opts) {
     const p = makePeerPass(name, opts);
     if (p.normalMaterial) p.normalMaterial = viewFacingNormals();
     return p;
-}
-
-// SSAOPass draws its kernel and noise, GTAOPass its denoiser's noise, from Math.random when built:
-// a fixed sequence (mulberry32), restarted for every pass, so one setting gives one image in every
-// session (a tune compares settings measured in different sessions).
-function seededRandom(seed) {
-    let s = seed >>> 0;
-    return () => {
-        s = (s + 0x6D2B79F5) >>> 0;
-        let t = Math.imul(s ^ (s >>> 15), s | 1);
-        t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-        return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-    };
 }
 
 // The passes' normal pre-pass, as ssaolab's G-buffer writes normals: both sides drawn, the
@@ -250,21 +242,10 @@ function plainComposer(name) {
     return plain;
 }
 
-// Every timed frame's ms, sorted.
-function frameTimes(draw, frames) {
-    const gl = renderer.getContext(), px = new Uint8Array(4), times = [];
-    for (let i = 0; i < frames + 3; ++i) { // 3 warm-up frames: shader compiles, first uploads
-        const t0 = performance.now();
-        draw();
-        gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
-        if (i >= 3) times.push(performance.now() - t0);
-    }
-    return times.sort((a, b) => a - b);
-}
+const frameTimes = (draw, frames) => harnessFrameTimes(renderer.getContext(), draw, frames);
 
 function timeFrames(draw, frames) {
-    const times = frameTimes(draw, frames);
-    return times[Math.floor(times.length / 2)];
+    return median(frameTimes(draw, frames));
 }
 
 // Returns the median frame times (with the peer, and the RenderPass alone) and the AO read back
@@ -301,18 +282,6 @@ function newComposer() {
     return c;
 }
 
-// The canvas's red channel (the AO), one byte per pixel, rows bottom-up as GL reads them, base64.
-function readAo() {
-    const gl = renderer.getContext(), w = cfg.width, h = cfg.height;
-    const rgba = new Uint8Array(w * h * 4);
-    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
-    const ao = new Uint8Array(w * h);
-    for (let i = 0; i < w * h; ++i) ao[i] = rgba[4 * i];
-    let s = '';
-    for (let i = 0; i < ao.length; i += 0x8000) s += String.fromCharCode.apply(null, ao.subarray(i, i + 0x8000));
-    return btoa(s);
-}
-
 // ssaolab tune --engine (run_engine.mjs): one engine at many parameter sets over several views in
 // one session. `params` are rows of the engine's table (tools/peers/engines/*.json): each is
 // written as the table says (a property path, an update call, or a constructor argument) over the
@@ -322,24 +291,6 @@ function readAo() {
 let engineView = -1;
 const enginePlainMs = new Map(); // the composer's kind ('three', 'pp') -> its frame without a peer
 const engines = new Map(); // JSON of the constructor values -> { composer, pass, base }
-
-function readPath(o, path) {
-    for (const k of path.split('.')) o = o?.[k];
-    return o;
-}
-
-function writePath(o, path, v) {
-    const keys = path.split('.'), last = keys.pop();
-    for (const k of keys) o = o[k];
-    o[last] = v;
-}
-
-function readParams(pass, params) {
-    return Object.fromEntries(params.map((p) => {
-        const v = readPath(pass, p.read);
-        return [p.name, p.type === 'boolean' ? Boolean(v) : Number(v)];
-    }));
-}
 
 // The view every later job renders: ssaolab's metrics.json camera and R (scene units).
 window.setEngineView = (index, cam, radius) => {
@@ -392,12 +343,7 @@ window.runEngine = (job) => {
             plain.dispose();
         }
         const plainMs = enginePlainMs.get(kind);
-        const times = frameTimes(() => e.composer.render(), job.frames);
-        out.frame_ms = times[Math.floor(times.length / 2)];
-        out.plain_ms = plainMs;
-        out.ao_ms = out.frame_ms - plainMs;
-        out.ao_ms_min = times[0] - plainMs;
-        out.ao_ms_max = times[times.length - 1] - plainMs;
+        Object.assign(out, timedJob(frameTimes(() => e.composer.render(), job.frames), plainMs));
     } else {
         e.composer.render();
         e.composer.render();

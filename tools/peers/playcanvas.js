@@ -6,6 +6,7 @@
 // used as it is. Time: the median frame with the CameraFrame minus the median frame without it,
 // each ended by a 1-pixel readPixels, as peers.js times its passes.
 import * as pc from '/playcanvas/build/playcanvas.mjs';
+import { frameTimes as harnessFrameTimes, median, timedJob, readAo as harnessReadAo, readParams, seededRandom, writePath } from './harness.js';
 
 let app, device, cameraEntity, cfg;
 
@@ -81,56 +82,8 @@ function makeFrame(ctor) {
     return f;
 }
 
-// A fixed sequence (mulberry32), restarted for every frame setup, as peers.js seeds three.js's passes.
-function seededRandom(seed) {
-    let s = seed >>> 0;
-    return () => {
-        s = (s + 0x6D2B79F5) >>> 0;
-        let t = Math.imul(s ^ (s >>> 15), s | 1);
-        t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-        return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-    };
-}
-
-function frameTimes(frames) {
-    const gl = device.gl, px = new Uint8Array(4), times = [];
-    for (let i = 0; i < frames + 3; ++i) { // 3 warm-up frames: shader compiles, first uploads
-        const t0 = performance.now();
-        app.render();
-        gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
-        if (i >= 3) times.push(performance.now() - t0);
-    }
-    return times.sort((a, b) => a - b);
-}
-
-// The canvas's red channel (the AO), one byte per pixel, rows bottom-up as GL reads them, base64.
-function readAo() {
-    const gl = device.gl, w = cfg.width, h = cfg.height, rgba = new Uint8Array(w * h * 4);
-    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
-    const ao = new Uint8Array(w * h);
-    for (let i = 0; i < w * h; ++i) ao[i] = rgba[4 * i];
-    let s = '';
-    for (let i = 0; i < ao.length; i += 0x8000) s += String.fromCharCode.apply(null, ao.subarray(i, i + 0x8000));
-    return btoa(s);
-}
-
-function readPath(o, path) {
-    for (const k of path.split('.')) o = o?.[k];
-    return o;
-}
-
-function writePath(o, path, v) {
-    const keys = path.split('.'), last = keys.pop();
-    for (const k of keys) o = o[k];
-    o[last] = v;
-}
-
-function readParams(f, params) {
-    return Object.fromEntries(params.map((r) => {
-        const v = readPath(f, r.read);
-        return [r.name, r.type === 'boolean' ? Boolean(v) : Number(v)];
-    }));
-}
+const frameTimes = (frames) => harnessFrameTimes(device.gl, () => app.render(), frames);
+const readAo = () => harnessReadAo(device.gl, cfg.width, cfg.height);
 
 let engineView = -1, plainMs, frame = null, frameKey = null;
 
@@ -158,8 +111,7 @@ window.runEngine = (job) => {
         if (p.write.constructor_arg !== undefined && job.values[p.name] !== undefined) ctor[p.name] = job.values[p.name];
     if (job.frames > 0 && plainMs === undefined) { // the frame without the CameraFrame, once a view
         dropFrame();
-        const t = frameTimes(job.frames);
-        plainMs = t[Math.floor(t.length / 2)];
+        plainMs = median(frameTimes(job.frames));
     }
     const key = JSON.stringify(ctor);
     if (frameKey !== key) {
@@ -177,12 +129,7 @@ window.runEngine = (job) => {
     frame.update();
     const out = { values: readParams(frame, job.params) };
     if (job.frames > 0) {
-        const times = frameTimes(job.frames);
-        out.frame_ms = times[Math.floor(times.length / 2)];
-        out.plain_ms = plainMs;
-        out.ao_ms = out.frame_ms - plainMs;
-        out.ao_ms_min = times[0] - plainMs;
-        out.ao_ms_max = times[times.length - 1] - plainMs;
+        Object.assign(out, timedJob(frameTimes(job.frames), plainMs));
     } else {
         app.render();
         app.render();

@@ -1,0 +1,67 @@
+// What the harness pages share (peers.js, babylon.js, playcanvas.js): the seeded Math.random an
+// engine's noise is drawn from, the timed frames, the AO read back, and the table rows' paths.
+
+// A fixed sequence (mulberry32): restarted before an engine builds its noise, one setting gives one
+// image in every session (a tune compares settings measured in different sessions).
+export function seededRandom(seed) {
+    let s = seed >>> 0;
+    return () => {
+        s = (s + 0x6D2B79F5) >>> 0;
+        let t = Math.imul(s ^ (s >>> 15), s | 1);
+        t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+        return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+    };
+}
+
+// Every timed frame's ms, sorted: `draw` then a 1-pixel readPixels (WebGL has no GPU timer on
+// llvmpipe, and the read waits for the GPU process to finish the frame), after 3 warm-up frames.
+export function frameTimes(gl, draw, frames) {
+    const px = new Uint8Array(4), times = [];
+    for (let i = 0; i < frames + 3; ++i) {
+        const t0 = performance.now();
+        draw();
+        gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+        if (i >= 3) times.push(performance.now() - t0);
+    }
+    return times.sort((a, b) => a - b);
+}
+
+export const median = (sorted) => sorted[Math.floor(sorted.length / 2)];
+
+// A timed job's numbers: the median frame with the engine, the frame without, their difference
+// (the AO's time) and the fastest and slowest frame's.
+export function timedJob(times, plainMs) {
+    const frame = median(times);
+    return { frame_ms: frame, plain_ms: plainMs, ao_ms: frame - plainMs, ao_ms_min: times[0] - plainMs,
+             ao_ms_max: times[times.length - 1] - plainMs };
+}
+
+// The canvas's red channel (the AO), one byte per pixel, rows bottom-up as GL reads them, base64.
+export function readAo(gl, w, h) {
+    const rgba = new Uint8Array(w * h * 4);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
+    const ao = new Uint8Array(w * h);
+    for (let i = 0; i < w * h; ++i) ao[i] = rgba[4 * i];
+    let s = '';
+    for (let i = 0; i < ao.length; i += 0x8000) s += String.fromCharCode.apply(null, ao.subarray(i, i + 0x8000));
+    return btoa(s);
+}
+
+export function readPath(o, path) {
+    for (const k of path.split('.')) o = o?.[k];
+    return o;
+}
+
+export function writePath(o, path, v) {
+    const keys = path.split('.'), last = keys.pop();
+    for (const k of keys) o = o[k];
+    o[last] = v;
+}
+
+// Each row's value where its table reads it.
+export function readParams(o, params) {
+    return Object.fromEntries(params.map((p) => {
+        const v = readPath(o, p.read);
+        return [p.name, p.type === 'boolean' ? Boolean(v) : Number(v)];
+    }));
+}
