@@ -76,6 +76,8 @@ def read_rows(path, extra=(), error="rmse"):
     for n, r in enumerate(raw, start=2):
         ms, e = number(r.get("gpu_ms")), number(r.get(error))
         t = number(r.get("time_ratio")) if ratio else ms
+        if error != "rmse" and not (r.get(error) or "").strip():
+            continue  # not measured for this row (a web engine is not scored in motion): not plotted
         if t is None or e is None or t <= 0 or ms is None or ms <= 0:
             warn(f"{path}:{n}: skipping '{r.get('label')}': gpu_ms={r.get('gpu_ms')!r}, "
                  f"{error}={r.get(error)!r} (need finite numbers, gpu_ms > 0)")

@@ -189,9 +189,11 @@ TEST(CliMotion, TheMotionObjectiveDecidesTheAnswerAndTheFront) {
     const std::string sweep = writeTemp("objective_sweep.json", R"({"name": "objective", "groups": [
         {"name": "gtao", "set": {"ao.technique": "gtao"}},
         {"name": "gtao temporal", "set": {"ao.technique": "gtao", "temporal.enabled": true, "temporal.frames": 8}}]})");
-    CliRun r = ssaolab("bench " + kTiny + "--views 1 --frames 1 --warmup 0 --no-plot --motion-frames 4 "
+    CliRun r = ssaolab("bench " + kTiny + "--views 1 --frames 1 --warmup 0 --motion-frames 4 "
                        "--objective motion --budget-ratio 100 --sweep " + sweep + " --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(out + "/pareto.png")) << "the plot of time against the motion score: " << r.err;
+    EXPECT_EQ(r.err.find("plot_pareto: warning"), std::string::npos) << r.err;
     const nlohmann::json j = nlohmann::json::parse(slurp(out + "/results.json"));
     EXPECT_EQ(j["objective"], "motion");
     ASSERT_TRUE(j.contains("motion")) << "--objective motion implies --motion";
