@@ -13,10 +13,12 @@ namespace ssao {
 namespace {
 
 const char* const kEnginesHelp =
-    "three.js SSAOPass, SAOPass and GTAOPass and N8AO, run for real in Chromium (Node.js and the\n"
-    "npm packages `make engine-modules` pins) on this glTF file at this view's camera, size and\n"
-    "R, once ssaolab's candidates are measured. Each engine at its defaults with every length\n"
-    "from R (as `make peers` runs it), and each `ssaolab tune --engine NAME --out FILE.json`\n"
+    "three.js SSAOPass, SAOPass and GTAOPass, N8AO, postprocessing's SSAOEffect, Babylon.js's\n"
+    "SSAO2RenderingPipeline and PlayCanvas's CameraFrame SSAO, run for real in Chromium (Node.js\n"
+    "and the npm packages `make engine-modules` pins) on this glTF file at this view's camera,\n"
+    "size and R, once ssaolab's candidates are measured. Each engine as its package ships it,\n"
+    "at its defaults with every length from R (as `make peers` runs it), and each\n"
+    "`ssaolab tune --engine NAME --out FILE.json`\n"
     "result in the tuned folder below or added by path: its fit applied to this view (a knob\n"
     "tuned relative to R scales with this view's R), as tune scores its held-out views.\n"
     "The AO is scored against the same reference as every point. Time: the browser's frame\n"
