@@ -12,21 +12,25 @@ namespace ssao {
 
 namespace {
 
-// The fitted factor of a search entry ({"x_R": 1.5}): none when absent; else a finite number inside
-// the row's search range, the only factors a tune can fit.
+// The most a fitted factor may be: a tune starts inside the row's search range and widens a wall
+// only as far as the table's range holds on its views (commands/tune/box_search.h).
+constexpr double kMaxFactor = 1e6;
+
+// The fitted factor of a search entry ({"x_R": 1.5}): none when absent; else a finite number in
+// [0, kMaxFactor] (above 0 where the search is in log steps).
 std::optional<double> factorOf(const nlohmann::json& search, const EngineParam& p, const char* key, const std::string& where) {
     if (!search.is_object() || !search.contains(p.name) || !search[p.name].is_object() || !search[p.name].contains(key))
         return std::nullopt;
     const nlohmann::json& x = search[p.name][key];
     char range[96];
-    std::snprintf(range, sizeof range, "[%.9g, %.9g]", p.searchLo, p.searchHi);
+    std::snprintf(range, sizeof range, "%s0, %.9g]", p.log ? "(" : "[", kMaxFactor);
     const std::string field = where + ": search." + p.name + "." + key;
     if (!x.is_number() || !std::isfinite(x.get<double>())) throw Error(field + " must be a finite number in " + range);
     const double d = x.get<double>();
-    if (d < p.searchLo || d > p.searchHi) {
+    if (d < 0 || (p.log && d <= 0) || d > kMaxFactor) {
         char v[48];
         std::snprintf(v, sizeof v, "%.9g", d);
-        throw Error(field + " = " + v + " is outside the range a tune searches, " + range);
+        throw Error(field + " = " + v + " is outside what a tune can fit, " + range);
     }
     return d;
 }
@@ -51,7 +55,7 @@ TunedEngine parseTunedEngine(const nlohmann::json& j, const std::string& file) {
                 throw Error(what + ": " + field + "." + name + " is not a " + (role == EngineParam::Role::Cost ? "cost" : "shape or cost") +
                             " parameter of " + t.table.engine);
             const std::string where = what + ": " + field + "." + name;
-            // A fit relative to the view or per R is its factor (checked against the search range);
+            // A fit relative to the view or per R is its factor (checked as a tune can fit it);
             // the value beside it is the first training view's, which the engine's GUI range need not
             // hold (a length in a small scene's units): checked as a value of its type only.
             const auto x = p->relative ? factorOf(search, *p, "x_make_peers_value", what) : std::nullopt;

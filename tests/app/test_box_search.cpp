@@ -59,6 +59,12 @@ TEST(BoxSearch, AWallMovesAsFarAsAllowedAndOneThatCannotIsReported) {
     EXPECT_DOUBLE_EQ(capped.hi[0], 5.0);
     EXPECT_NEAR(capped.x[0], 5.0, 0.1);
     EXPECT_EQ(capped.walls[0], 1);
+    EXPECT_TRUE(capped.atLimit[0]);
+    EXPECT_FALSE(wide.atLimit[0]);
+    // Far past the range with room to widen: three widenings by the span reach it (x16 each in log).
+    auto far = [](const std::vector<double>& p) { return std::pow(std::log(p[0] / 500.0), 2); };
+    const BoxResult reach = boxSearch({{0.25, 4, true, 1e-6, 1e6, 1.0}}, far({1.0}), scorer(far, &points), {3, 7});
+    EXPECT_NEAR(reach.x[0], 500.0, 100.0);
     // Never worse than the start: a flat function keeps it.
     const BoxResult flat = boxSearch({{0, 1, false, 0, 1, 0.4}}, 1.0, scorer([](const std::vector<double>&) { return 1.0; }, &points),
                                      {2, 3});

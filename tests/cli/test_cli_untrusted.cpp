@@ -154,9 +154,13 @@ TEST(CliUntrusted, EngineSettingsAreCheckedAgainstTheirTable) {
     }
     nlohmann::json factor = tunedN8ao();
     factor["search"]["aoRadius"]["x_make_peers_value"] = 1e300;
-    EXPECT_NE(settingsRefusal(factor).find("search.aoRadius.x_make_peers_value = 1e+300 is outside the range a tune searches, [0.25, 4]"),
+    EXPECT_NE(settingsRefusal(factor).find("search.aoRadius.x_make_peers_value = 1e+300 is outside what a tune can fit, (0, 1000000]"),
               std::string::npos)
         << settingsRefusal(factor);
+    factor["search"]["aoRadius"]["x_make_peers_value"] = 0; // a log search never reaches 0
+    EXPECT_NE(settingsRefusal(factor).find("outside what a tune can fit"), std::string::npos) << settingsRefusal(factor);
+    factor["search"]["aoRadius"]["x_make_peers_value"] = 9; // past the search range [0.25, 4]: a widened wall
+    EXPECT_EQ(settingsRefusal(factor), "") << settingsRefusal(factor);
 
     // bench --engine-settings reads through the same function: one line, before any browser.
     nlohmann::json bad = tunedN8ao();

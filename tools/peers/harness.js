@@ -36,12 +36,19 @@ export function timedJob(times, plainMs) {
              ao_ms_max: times[times.length - 1] - plainMs };
 }
 
+// readAo's `decode` for an output written as pow(linear, 1 / gamma): byte -> the linear byte.
+export function gammaDecodeTable(gamma) {
+    return Uint8Array.from({ length: 256 }, (_, b) => Math.round(255 * Math.pow(b / 255, gamma)));
+}
+
 // The canvas's red channel (the AO), one byte per pixel, rows bottom-up as GL reads them, base64.
-export function readAo(gl, w, h) {
+// `decode` (optional): 256 bytes mapping what the canvas holds to linear AO, for an engine whose
+// last pass encodes its output.
+export function readAo(gl, w, h, decode) {
     const rgba = new Uint8Array(w * h * 4);
     gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
     const ao = new Uint8Array(w * h);
-    for (let i = 0; i < w * h; ++i) ao[i] = rgba[4 * i];
+    for (let i = 0; i < w * h; ++i) ao[i] = decode ? decode[rgba[4 * i]] : rgba[4 * i];
     let s = '';
     for (let i = 0; i < ao.length; i += 0x8000) s += String.fromCharCode.apply(null, ao.subarray(i, i + 0x8000));
     return btoa(s);

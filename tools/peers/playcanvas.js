@@ -1,12 +1,12 @@
 // PlayCanvas's CameraFrame SSAO (its pass follows Filament's scalable ambient obscurance) on one glTF scene
 // (run_engine.mjs drives this page through Chromium), with the same window API as peers.js:
 // setupPeers, setEngineView, runEngine. The AO alone: the frame's own debug output 'ssao' (the
-// compose pass shows the SSAO texture), tone mapping linear and gamma off, so the canvas holds the
-// AO, linear. PlayCanvas is right-handed like glTF: ssaolab's camera, in the file's coordinates, is
+// compose pass shows the SSAO texture), tone mapping linear; the compose pass gamma-encodes it for
+// the canvas, and readAo decodes it back to linear AO. PlayCanvas is right-handed like glTF: ssaolab's camera, in the file's coordinates, is
 // used as it is. Time: the median frame with the CameraFrame minus the median frame without it,
 // each ended by a 1-pixel readPixels, as peers.js times its passes.
 import * as pc from '/playcanvas/build/playcanvas.mjs';
-import { frameTimes as harnessFrameTimes, median, timedJob, readAo as harnessReadAo, readParams, seededRandom, writePath } from './harness.js';
+import { frameTimes as harnessFrameTimes, gammaDecodeTable, median, timedJob, readAo as harnessReadAo, readParams, seededRandom, writePath } from './harness.js';
 
 let app, device, cameraEntity, cfg;
 
@@ -62,7 +62,6 @@ function makeCamera() {
     cam.horizontalFov = false;
     cam.nearClip = c.near;
     cam.farClip = c.far === 'inf' ? 1e7 : c.far;
-    cam.gammaCorrection = pc.GAMMA_NONE;
     cam.toneMapping = pc.TONEMAP_LINEAR;
     cameraEntity.setPosition(c.eye[0], c.eye[1], c.eye[2]);
     cameraEntity.lookAt(new pc.Vec3(c.target[0], c.target[1], c.target[2]), new pc.Vec3(c.up[0], c.up[1], c.up[2]));
@@ -83,7 +82,10 @@ function makeFrame(ctor) {
 }
 
 const frameTimes = (frames) => harnessFrameTimes(device.gl, () => app.render(), frames);
-const readAo = () => harnessReadAo(device.gl, cfg.width, cfg.height);
+// The compose pass gamma-encodes whatever it writes to a non-sRGB target, the canvas included, its
+// 'ssao' debug output too: pow(ao, 1 / 2.2) (gamma.js's gammaCorrectOutput). Decoded back to linear.
+const linear = gammaDecodeTable(2.2);
+const readAo = () => harnessReadAo(device.gl, cfg.width, cfg.height, linear);
 
 let engineView = -1, plainMs, frame = null, frameKey = null;
 

@@ -27,7 +27,7 @@ void addBenchEngineOptions(CLI::App& cmd, BenchEngineOptions& o) {
                    "web engines to add to the sweep, comma-separated (n8ao, pp-ssao, three-ssao, three-sao, three-gtao, babylon-ssao2, playcanvas-ssao) or all: "
                    "each runs for real in Chromium on every view of every --scene glTF file at the bench's camera, "
                    "size and R, as the rows 'engine NAME (defaults)' (its defaults with every length set from R) "
-                   "and 'engine NAME (as shipped)' (the package's defaults verbatim), "
+                   "and 'engine NAME (as shipped)' (the package's defaults, but for the fixed rows that read the AO alone), "
                    "scored against the same reference; its time is the frame with the pass minus the frame without "
                    "in Chromium (median of --frames), not a GL timer query. A builtin scene is refused (three.js "
                    "loads glTF files); engines are not scored in motion and never chosen as a --budget answer")

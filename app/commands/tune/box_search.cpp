@@ -11,6 +11,7 @@ namespace {
 constexpr int kPrimes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37};
 constexpr double kWall = 0.02;  // a value within this share of its range's end sits at the wall
 constexpr double kBasin = 0.25; // a second start at least this far from the best (unit box, max norm)
+constexpr int kWidenings = 3;   // each by the range's span: up to 4x the span in all
 
 // The radical inverse of i in `base`, shifted by `offset` (a scrambled Halton coordinate).
 double halton(int i, int base, double offset) {
@@ -65,7 +66,7 @@ double coordinateSearch(const Box& box, std::vector<double>& x, double best, con
 } // namespace
 
 int boxSearchBatches(size_t dims, const BoxSearchOptions& o) {
-    return 1 + 2 * o.rounds * int(dims) + int(dims);
+    return 1 + 2 * o.rounds * int(dims) + kWidenings * int(dims);
 }
 
 BoxResult boxSearch(const std::vector<BoxDim>& dims, double startScore, const BatchScorer& score,
@@ -113,22 +114,27 @@ BoxResult boxSearch(const std::vector<BoxDim>& dims, double startScore, const Ba
         if (better(end, r.score) || (f == from[0] && !better(r.score, end))) r.score = end, r.x = x;
     }
     // 3: walls: widen the range of each dimension that ended at one (by its span, as far as allowed),
-    // and search once more.
-    bool widened = false;
-    for (size_t j = 0; j < n; ++j) {
-        BoxDim& b = box.d[j];
-        const double u = box.unit(j, r.x[j]);
-        const double span = b.log ? std::log(b.hi / b.lo) : b.hi - b.lo;
-        if (u <= kWall && b.allowLo < b.lo)
-            b.lo = std::max(b.allowLo, b.log ? b.lo * std::exp(-span) : b.lo - span), widened = true;
-        if (u >= 1 - kWall && b.allowHi > b.hi)
-            b.hi = std::min(b.allowHi, b.log ? b.hi * std::exp(span) : b.hi + span), widened = true;
+    // and search once more; up to kWidenings times while a wall holds the best point.
+    for (int w = 0; w < kWidenings; ++w) {
+        bool widened = false;
+        for (size_t j = 0; j < n; ++j) {
+            BoxDim& b = box.d[j];
+            const double u = box.unit(j, r.x[j]);
+            const double span = b.log ? std::log(b.hi / b.lo) : b.hi - b.lo;
+            if (u <= kWall && b.allowLo < b.lo)
+                b.lo = std::max(b.allowLo, b.log ? b.lo * std::exp(-span) : b.lo - span), widened = true;
+            if (u >= 1 - kWall && b.allowHi > b.hi)
+                b.hi = std::min(b.allowHi, b.log ? b.hi * std::exp(span) : b.hi + span), widened = true;
+        }
+        if (!widened) break;
+        r.score = coordinateSearch(box, r.x, r.score, score, o, 1, r.batches, tick);
     }
-    if (widened) r.score = coordinateSearch(box, r.x, r.score, score, o, 1, r.batches, tick);
     for (size_t j = 0; j < n; ++j) {
         const double u = box.unit(j, r.x[j]);
+        const BoxDim& b = box.d[j];
         r.walls.push_back(u <= kWall ? -1 : u >= 1 - kWall ? 1 : 0);
-        r.lo.push_back(box.d[j].lo), r.hi.push_back(box.d[j].hi);
+        r.atLimit.push_back((u <= kWall && !(b.allowLo < b.lo)) || (u >= 1 - kWall && !(b.allowHi > b.hi)));
+        r.lo.push_back(b.lo), r.hi.push_back(b.hi);
     }
     return r;
 }

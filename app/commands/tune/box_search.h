@@ -3,7 +3,8 @@
 // call scores many points: one browser session per scene), and the best point. A scrambled Halton
 // sample of the box; a coordinate search (each parameter on a grid inside a bracket that halves
 // every round) from the best start and from the best start of another basin; a parameter that ends
-// at a wall of its range has it widened, as far as its allowed range goes, and one more round.
+// at a wall of its range has it widened by its span, up to 3 times within its allowed range, each
+// followed by one more round.
 #pragma once
 #include <functional>
 #include <string>
@@ -29,6 +30,7 @@ struct BoxResult {
     std::vector<double> x;      // the best point found (the start when nothing beat it)
     double score = 0;           // its score
     std::vector<int> walls;     // per dimension: -1 at the bottom of its final range, +1 at the top, 0 inside
+    std::vector<bool> atLimit;  // per dimension: at a wall its allowed range does not let it move past
     std::vector<double> lo, hi; // the final ranges (widened where a wall moved)
     int batches = 0;            // scorer calls
 };

@@ -190,6 +190,11 @@ nlohmann::json scoresJson(const TuneOptions& o, const Outcome& r) {
 std::string timeText(const Outcome& r) {
     const double ratio = r.ms[kTuned] / r.ms[kShipped], noise = std::max(0.02, 2.0 * r.timeNoise);
     char b[160];
+    if (!(r.ms[kShipped] > 0) || !(r.ms[kTuned] > 0) || !std::isfinite(ratio)) { // a tiny frame times at or below 0
+        std::snprintf(b, sizeof b, "no AO time to compare (shipped %.1f ms, tuned %.1f ms: below the browser's clock)",
+                      r.ms[kShipped], r.ms[kTuned]);
+        return b;
+    }
     if (std::abs(std::log(ratio)) <= noise)
         std::snprintf(b, sizeof b, "the shipped AO time within its timing's spread (x%.3f, %.1f -> %.1f ms; +-%.0f %%)", ratio,
                       r.ms[kShipped], r.ms[kTuned], 100.0 * noise);
@@ -300,7 +305,8 @@ void writePage(const TuneOptions& o, const EngineTuner& t, const std::vector<Kno
     const EngineTable& tab = t.table();
     EnginePage p{tab.title, tab.package, tab.version, o.size, scoresJson(o, r)["metric"].get<std::string>(),
                  runFacts("Chromium (WebGL 2) for the engine; EGL for ssaolab"), settingRows(t, knobs),
-                 r.verdict.before, r.verdict.after, r.ms[kTuned] / r.ms[kShipped], r.verdict.baseline, radiusLine(o, t),
+                 r.verdict.before, r.verdict.after, r.ms[kShipped] > 0 ? r.ms[kTuned] / r.ms[kShipped] : NAN, r.verdict.baseline,
+                 radiusLine(o, t),
                  seconds, pageRows(o, t, r, s)};
     writeFileAtomically(pagePath(o), engineTunePageHtml(p));
     if (!o.quiet) std::printf("saved %s\n", pagePath(o).c_str());

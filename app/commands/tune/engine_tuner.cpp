@@ -127,7 +127,12 @@ std::vector<std::string> EngineTuner::search(std::vector<Knob>& knobs, double be
     std::vector<BoxDim> dims;
     for (const Knob& k : knobs) {
         const auto [lo, hi] = allowedRange(k); // every value the search tries is one the engine's table accepts
-        dims.push_back({std::max(k.p->searchLo, lo), std::min(k.p->searchHi, hi), k.p->log, lo, hi, k.value});
+        double a = std::max(k.p->searchLo, lo), b = std::min(k.p->searchHi, hi);
+        if (!(a <= b)) { // the search range lies outside what the table accepts on these views: search that
+            a = lo, b = hi;
+            if (!(a <= b)) a = b = k.value; // nothing accepted on every view: the knob stays where it is
+        }
+        dims.push_back({a, b, k.p->log, lo, hi, k.value});
     }
     const BoxSearchOptions opt{o_.rounds, o_.grid};
     ProgressBar bar("  search " + std::to_string(knobs.size()) + " parameters of " + table_.title, !o_.quiet);
@@ -150,11 +155,16 @@ std::vector<std::string> EngineTuner::search(std::vector<Knob>& knobs, double be
     const auto values = valuesFor(knobs, views_[firstTrain()]);
     for (size_t j = 0; j < knobs.size(); ++j) {
         if (r.walls[j] == 0) continue;
-        char b[240];
-        std::snprintf(b, sizeof b, "%s = %.4g ended at the %s of its search range, widened as far as the table's range %s "
-                                   "holds on every view: the optimum may lie beyond",
-                      knobs[j].p->name.c_str(), values.at(knobs[j].p->name), r.walls[j] < 0 ? "bottom" : "top",
-                      engineRangeText(*knobs[j].p).c_str());
+        char b[280];
+        if (r.atLimit[j])
+            std::snprintf(b, sizeof b, "%s = %.4g ended at the %s of what the table's range %s allows on every view: the "
+                                       "optimum may lie beyond",
+                          knobs[j].p->name.c_str(), values.at(knobs[j].p->name), r.walls[j] < 0 ? "bottom" : "top",
+                          engineRangeText(*knobs[j].p).c_str());
+        else
+            std::snprintf(b, sizeof b, "%s = %.4g ended at the %s of its search range, widened 3 times by its span: the "
+                                       "optimum may lie beyond",
+                          knobs[j].p->name.c_str(), values.at(knobs[j].p->name), r.walls[j] < 0 ? "bottom" : "top");
         walls.push_back(b);
     }
     return walls;
