@@ -201,6 +201,13 @@ EngineTable findEngine(const std::string& name) {
     return loadEngineTable(enginePeersDir() + "/engines/" + name + ".json");
 }
 
+std::map<std::string, double> shippedValues(const EngineTable& t) {
+    std::map<std::string, double> out;
+    for (const EngineParam& p : t.params)
+        if (p.role != EngineParam::Role::Fixed && p.row.contains("harness")) out[p.name] = p.defaultValue;
+    return out;
+}
+
 std::string engineRangeText(const EngineParam& p) {
     if (p.type == EngineParam::Type::Boolean) return "true or false";
     if (!p.range) return "any";

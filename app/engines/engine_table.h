@@ -8,6 +8,7 @@
 #pragma once
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -67,6 +68,9 @@ nlohmann::json engineValueJson(const EngineParam& p, double v);
 // integer), inside the row's range. Throws one line "WHERE must be ..." naming the range. Every
 // engine value read from a file goes through it, and tune's own output before it is written.
 double checkedEngineValue(const EngineParam& p, const nlohmann::json& v, const std::string& where);
+// The engine as its package ships it: each row the harness sets from R (a shape or cost row with a
+// "harness" value) at the table's default; the fixed rows that read the AO alone stay the harness's.
+std::map<std::string, double> shippedValues(const EngineTable& t);
 // The row's range as text: "[lo, hi]" ("any" when it documents none).
 std::string engineRangeText(const EngineParam& p);
 

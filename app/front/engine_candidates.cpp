@@ -30,11 +30,7 @@ std::vector<EngineCandidate> engineDefaultCandidates(const std::vector<std::stri
     for (const std::string& e : engines) {
         const EngineTable t = findEngine(e);
         out.push_back({e, engineShortTitle(t) + " defaults", "", {}, {}, {}});
-        // The engine as its package ships it: the lengths the harness sets from R at their defaults.
-        std::map<std::string, double> shipped;
-        for (const EngineParam& p : t.params)
-            if (p.role != EngineParam::Role::Fixed && p.row.contains("harness")) shipped[p.name] = p.defaultValue;
-        out.push_back({e, engineShortTitle(t) + " as shipped", "", {}, {}, std::move(shipped), true});
+        out.push_back({e, engineShortTitle(t) + " as shipped", "", {}, {}, shippedValues(t), true});
     }
     return out;
 }

@@ -74,9 +74,7 @@ BenchEngines::BenchEngines(const BenchEngineOptions& o, const std::vector<std::s
         rows_.push_back(std::move(r));
         // Beside it, the engine as its package ships it: every row the harness sets from R at its
         // default, verbatim (the rows that read the AO alone stay set).
-        Row shipped{t, {}, {}, {}};
-        for (const EngineParam& p : tables_[t].params)
-            if (p.role != EngineParam::Role::Fixed && p.row.contains("harness")) shipped.values[p.name] = p.defaultValue;
+        Row shipped{t, {}, shippedValues(tables_[t]), {}};
         shipped.config.label = "engine " + tables_[t].engine + " (as shipped)";
         shipped.config.keys = {{"engine", tables_[t].engine}, {"shipped", true}};
         rows_.push_back(std::move(shipped));

@@ -199,8 +199,8 @@ std::vector<BudgetRung> EngineTuner::chooseCost(std::vector<Knob>& knobs) {
 
 KnobSet EngineTuner::shippedKnobs() const {
     KnobSet out;
-    for (const EngineParam& p : table_.params)
-        if (p.role != EngineParam::Role::Fixed && p.row.contains("harness")) out.push_back({&p, 0, 0, p.defaultValue, true});
+    for (const auto& [name, v] : shippedValues(table_))
+        out.push_back({table_.find(name), 0, 0, v, true});
     return out;
 }
 
