@@ -52,7 +52,7 @@ void expectTimeRatioWhereTheDefaultsTookTime(const nlohmann::json& j) {
 
 TEST(EngineTables, EveryTableParsesWithEachDefaultInsideItsRange) {
     const std::vector<std::string> names = ssao::engineNames();
-    EXPECT_EQ(names, (std::vector<std::string>{"babylon-ssao2", "n8ao", "playcanvas-ssao", "pp-ssao", "three-gtao", "three-sao", "three-ssao"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"babylon-ssao", "babylon-ssao2", "n8ao", "playcanvas-ssao", "pp-ssao", "three-gtao", "three-sao", "three-ssao"}));
     for (const std::string& n : names) {
         const ssao::EngineTable t = ssao::findEngine(n);
         EXPECT_EQ(t.engine, n);

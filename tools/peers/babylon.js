@@ -1,5 +1,6 @@
-// Babylon.js's SSAO2RenderingPipeline on one glTF scene (run_engine.mjs drives this page through
-// Chromium), with the same window API as peers.js: setupPeers, setEngineView, runEngine.
+// Babylon.js's SSAO2RenderingPipeline and its older SSAORenderingPipeline on one glTF scene
+// (run_engine.mjs drives this page through Chromium), with the same window API as peers.js:
+// setupPeers, setEngineView, runEngine.
 // The AO alone: the pipeline's last stage multiplies the scene's colour by the AO, so every surface
 // is drawn in one unlit white material (emissive 1, lighting off, both sides) on a white clear
 // colour, with image processing (tone mapping, gamma) off: the canvas holds 1 x AO, linear.
@@ -76,13 +77,11 @@ function makeCamera() {
 
 const far = () => (cfg.camera.far === 'inf' ? 1e7 : cfg.camera.far);
 
-// The pipeline at its defaults, with every length set from R ("make peers"): the radius R, the
-// self-occlusion epsilon at the defaults' ratio to it (0.02 : 2), and the depth fade (from 0.75
+// SSAO2RenderingPipeline at its defaults, with every length set from R ("make peers"): the radius R,
+// the self-occlusion epsilon at the defaults' ratio to it (0.02 : 2), and the depth fade (from 0.75
 // maxZ to maxZ; the default fades from 75 to 100 units) starting at the camera's far plane, so
 // nothing inside the scene fades.
-function makePipeline(ctor) {
-    Math.random = seededRandom(0x55a0); // its noise texture and sample sphere: one image per setting in every session
-    const ratio = { ssaoRatio: ctor.ssaoRatio ?? 0.5, blurRatio: ctor.blurRatio ?? 1 };
+function makeSsao2(ratio) {
     const p = new BABYLON.SSAO2RenderingPipeline(`ssao${++pipelines}`, scene, ratio, [camera]);
     p.radius = cfg.radius;
     p.epsilon = 0.01 * cfg.radius;
@@ -91,6 +90,33 @@ function makePipeline(ctor) {
     // ssaolab's near plane is fitted to the scene, far larger than an application's, so the clamp
     // would bite where it would not in the application: off.
     p.minZAspect = 1e6;
+    return p;
+}
+
+// SSAORenderingPipeline reads the depth renderer's d = (z - near) / (far - near) and reaches radius
+// / d of the screen (UV) at view depth z. Its radius from R: R projected at the camera's target
+// (depth zt), R / (2 tan(fov_y / 2) zt) of the screen, so radius = that x (zt - near) / (far -
+// near). Its occluding depth difference ends at area = R / (far - near), and starts at fallOff, at
+// the defaults' ratio to area (1e-6 : 0.0075).
+function makeSsao(ratio) {
+    const p = new BABYLON.SSAORenderingPipeline(`ssao${++pipelines}`, scene, ratio, [camera]);
+    const c = cfg.camera, span = far() - c.near;
+    const zt = Math.max(Math.hypot(...c.target.map((t, i) => t - c.eye[i])), c.near * (1 + 1e-6));
+    p.radius = cfg.radius / (2 * Math.tan(c.fov_y_deg * Math.PI / 360) * zt) * (zt - c.near) / span;
+    p.area = cfg.radius / span;
+    p.fallOff = p.area * (1e-6 / 0.0075);
+    return p;
+}
+
+const PIPELINES = {
+    'babylon-ssao2': (ctor) => makeSsao2({ ssaoRatio: ctor.ssaoRatio ?? 0.5, blurRatio: ctor.blurRatio ?? 1 }),
+    'babylon-ssao': (ctor) => makeSsao({ ssaoRatio: ctor.ssaoRatio ?? 0.5, combineRatio: ctor.combineRatio ?? 1 }),
+};
+
+function makePipeline(peer, ctor) {
+    Math.random = seededRandom(0x55a0); // its noise texture and sample sphere: one image per setting in every session
+    const p = PIPELINES[peer](ctor);
+    p.ssaolabCtor = { ssaoRatio: ctor.ssaoRatio ?? 0.5 };
     return p;
 }
 let pipelines = 0;
@@ -105,8 +131,16 @@ function readParams(p, params) {
 const frameTimes = (frames) => harnessFrameTimes(engine._gl, () => scene.render(), frames);
 const readAo = () => harnessReadAo(engine._gl, cfg.width, cfg.height);
 
-let engineView = -1, plainMs;
-const built = new Map(); // JSON of the constructor values -> { pipeline, base }
+let engineView = -1, plainMs, lastPeer;
+const built = new Map(); // JSON of the peer and its constructor values -> { pipeline, base }
+
+// Every pipeline disposed, and the depth renderer SSAORenderingPipeline turned on with it: a frame
+// without any pipeline draws the scene alone.
+function disposeAll() {
+    for (const e of built.values()) e.pipeline.dispose();
+    built.clear();
+    scene.disableDepthRenderer();
+}
 
 function detachAll() {
     for (const e of built.values()) scene.postProcessRenderPipelineManager.detachCamerasFromRenderPipeline(e.pipeline.name, camera);
@@ -114,8 +148,7 @@ function detachAll() {
 
 window.setEngineView = (index, cam, radius) => {
     if (index === engineView) return;
-    for (const e of built.values()) e.pipeline.dispose();
-    built.clear();
+    disposeAll();
     plainMs = undefined;
     cfg.camera = cam;
     cfg.radius = radius;
@@ -137,21 +170,21 @@ async function ready() {
 
 // job: { peer, params, values, scale, frames }, as peers.js's runEngine takes it.
 window.runEngine = async (job) => {
-    if (job.peer !== 'babylon-ssao2') throw new Error(`babylon.html runs babylon-ssao2, not '${job.peer}'`);
+    if (!Object.hasOwn(PIPELINES, job.peer)) throw new Error(`babylon.html runs ${Object.keys(PIPELINES).join(' and ')}, not '${job.peer}'`);
+    if (job.peer !== lastPeer) disposeAll(); // one pipeline's depth renderer never runs beside the other
+    lastPeer = job.peer;
     const ctor = {};
     for (const p of job.params)
         if (p.write.constructor_arg !== undefined && job.values[p.name] !== undefined) ctor[p.name] = job.values[p.name];
     if (job.frames > 0 && plainMs === undefined) { // the frame without any pipeline, once a view
-        for (const e of built.values()) e.pipeline.dispose();
-        built.clear();
+        disposeAll();
         plainMs = median(frameTimes(job.frames));
     }
-    const key = JSON.stringify(ctor);
+    const key = JSON.stringify([job.peer, ctor]);
     detachAll();
     let e = built.get(key);
     if (!e) {
-        const pipeline = makePipeline(ctor);
-        pipeline.ssaolabCtor = { ssaoRatio: ctor.ssaoRatio ?? 0.5, blurRatio: ctor.blurRatio ?? 1 };
+        const pipeline = makePipeline(job.peer, ctor);
         e = { pipeline, base: readParams(pipeline, job.params) };
         built.set(key, e);
     } else {

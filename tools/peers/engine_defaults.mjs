@@ -22,7 +22,7 @@ async function threePass(table) {
 }
 
 // Babylon.js's pipelines need a scene and a camera: its NullEngine (no GL) builds them in Node, and
-// the constructor's ratio is the documented example's (the rows read from constructor arguments,
+// the constructor's ratio is the documented examples' (SSAO2's blurRatio, SSAO's combineRatio; the rows read from constructor arguments,
 // which a pipeline does not keep, are read from `ssaolabCtor` as the page records them).
 function babylonPipeline(table) {
     const BABYLON = createRequire(import.meta.url)(path.join(modules, 'babylonjs'));
@@ -30,10 +30,10 @@ function babylonPipeline(table) {
     const engine = new BABYLON.NullEngine();
     const scene = new BABYLON.Scene(engine);
     const camera = new BABYLON.TargetCamera('c', new BABYLON.Vector3(0, 0, -5), scene);
-    const ratio = { ssaoRatio: 0.5, blurRatio: 1 };
+    const ratio = { ssaoRatio: 0.5, blurRatio: 1, combineRatio: 1 };
     const given = { name: 'ssao', scene, ratio, cameras: [camera] };
     const pass = new BABYLON[table.class.export](...table.class.constructor.map((a) => given[a]));
-    pass.ssaolabCtor = ratio;
+    pass.ssaolabCtor = { ssaoRatio: ratio.ssaoRatio };
     return pass;
 }
 
