@@ -4,7 +4,7 @@ JOBS  ?= $(shell nproc)
 SCENE ?= builtin:showcase
 OUT   ?= out
 
-.PHONY: deps configure build engine-modules run test docs screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column user-twins layers temporal objective
+.PHONY: deps configure build engine-modules run test docs screenshot goldens bench skips presets stress fuzz test-sanitize clean screen scaling peers explorer gpu-column user-twins layers temporal objective engines
 
 deps:
 	@bash .ci/install-deps.sh
@@ -111,6 +111,12 @@ temporal: build
 # time among the shipped presets with and without temporal accumulation (~45 minutes on llvmpipe).
 objective: build
 	@bash .ci/objective.sh $(BUILD) $(SCENES)
+
+# docs/bench/engines.md: every web engine tuned on every shared scene and a close-up city, at the
+# view's radius: as shipped, lengths from R and tuned on held-out views, with time ratios (hours on
+# llvmpipe; ENGINES=a,b and ENGINES_SIZE narrow it).
+engines: build
+	@bash .ci/engines.sh $(BUILD) $(SCENES)
 
 # docs/stability.md: every technique under extreme projections, scales, placements, precisions and
 # parameter limits (`ssaolab stress`).

@@ -45,6 +45,12 @@ nlohmann::json frameStatistics(const FrameCapture& c) {
                    {"pixels_at_centre", c.radius.pixels},
                    {"centre_depth", c.radius.depth},
                    {"scene_diagonal", c.radius.sceneDiagonal}};
+    // What the view spans at its median depth, and the world radius that gives it the scene mode's
+    // share of a framed scene (the view-radius check's suggestion, metrics/radius_check.h).
+    if (const ViewRadiusCheck vr = checkViewRadius(c); vr.viewExtent > 0) {
+        j["radius"]["view_extent"] = vr.viewExtent;
+        j["radius"]["for_view"] = vr.suggested;
+    }
     return j;
 }
 

@@ -251,6 +251,12 @@ TEST(CliEngine, TuneWritesTheSettingsAndASnippetThatSetsThem) {
     EXPECT_NE(r.out.find("as shipped / lengths from R -> tuned"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("the engine " + better + " (the better baseline)"), std::string::npos) << r.out;
     EXPECT_TRUE(j["scores"]["time_noise"].is_number()) << j.dump(1);
+    // The floor beside them: the screen-space oracle on the same held-out views. On the corner every
+    // occluder is on screen, so it is far below any engine's error.
+    ASSERT_TRUE(held["screen_oracle"].is_number()) << j.dump(1);
+    EXPECT_GE(held["screen_oracle"].get<double>(), 0.0);
+    EXPECT_LT(held["screen_oracle"].get<double>(), 0.5 * std::min(held["shipped"].get<double>(), held["defaults"].get<double>())) << j.dump(1);
+    EXPECT_NE(r.out.find("the screen-space oracle (a perfect estimator on this G-buffer) on the held-out views: "), std::string::npos) << r.out;
     expectTimeRatioWhereTheDefaultsTookTime(j);
     const nlohmann::json got = runSnippet("n8aopass", slurp(js), "tuned");
     EXPECT_EQ(got, (nlohmann::json{{"configuration.aoRadius", j["settings"]["aoRadius"]}})) << slurp(js);

@@ -76,6 +76,7 @@ struct SceneScore {
 struct Outcome {
     double train[kSides], heldViews[kSides], heldScenes[kSides], ms[kSides]; // per side: MSE means, AO ms
     double heldAll[kSides];  // MSE mean over every held-out view
+    double heldOracle = NAN; // the screen-space oracle's MSE mean over the same views
     double timeNoise = 0;    // RMS over views of log(ms repeat / ms shipped): the timing's own spread
     FitVerdict verdict; // against the better baseline (tune_guard.h judgeAgainstBetter)
     int better = kShipped; // which baseline that is
@@ -123,6 +124,10 @@ Outcome judge(const EngineTuner& t, const std::vector<std::vector<Sample>>& s) {
         o.train[side] = meanOf(byRole[0]), o.heldViews[side] = meanOf(byRole[1]), o.heldScenes[side] = meanOf(byRole[2]);
         o.ms[side] = meanOf(ms), o.heldAll[side] = meanOf(heldAll);
     }
+    std::vector<double> oracle;
+    for (const TuneView& v : t.views())
+        if (v.role != TuneRole::Train) oracle.push_back(v.oracleMse);
+    o.heldOracle = meanOf(oracle);
     std::vector<HeldOutScore> lists[2];
     for (int b = 0; b < 2; ++b)
         for (auto& [scene, h] : held[b]) {
@@ -177,7 +182,8 @@ nlohmann::json scoresJson(const TuneOptions& o, const Outcome& r) {
             {"defaults", side(kFromR)},
             {"tuned", side(kTuned)},
             {"held_out", {{"shipped", rmseJson(r.heldAll[kShipped])}, {"defaults", rmseJson(r.heldAll[kFromR])},
-                          {"tuned", r.verdict.after}, {"baseline", r.verdict.baseline}}},
+                          {"tuned", r.verdict.after}, {"baseline", r.verdict.baseline},
+                          {"screen_oracle", rmseJson(r.heldOracle)}}},
             {"held_out_rmse_ratio", r.verdict.before > 0 ? nlohmann::json(r.verdict.after / r.verdict.before) : nlohmann::json()},
             {"time_ratio", r.ms[kShipped] > 0 ? nlohmann::json(r.ms[kTuned] / r.ms[kShipped]) : nlohmann::json()},
             {"time_ratio_vs_defaults", r.ms[kFromR] > 0 ? nlohmann::json(r.ms[kTuned] / r.ms[kFromR]) : nlohmann::json()},
@@ -223,6 +229,7 @@ void printOutcome(const TuneOptions& o, const EngineTuner& t, const std::vector<
     std::printf("\ngeometry RMSE, as shipped / lengths from R -> tuned: training %s, held-out views %s",
                 three(r.train).c_str(), three(r.heldViews).c_str());
     if (n[2]) std::printf(", held-out scenes %s", three(r.heldScenes).c_str());
+    std::printf("\nthe screen-space oracle (a perfect estimator on this G-buffer) on the held-out views: %.4f", std::sqrt(r.heldOracle));
     std::printf("\nheld-out RMSE x%.3f the engine %s (the better baseline), %s; tuning took %.0f s in %d browser sessions\n",
                 r.verdict.after / r.verdict.before, r.verdict.baseline.c_str(), timeText(r).c_str(), seconds, t.sessions());
     std::fflush(stdout); // before any warning on stderr

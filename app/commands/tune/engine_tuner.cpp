@@ -4,6 +4,7 @@
 
 #include "engines/engine_snippet.h"
 #include "measure/viewpoints.h"
+#include "metrics/evaluate.h"
 #include "cli/headless_runner.h"
 #include "cli/progress_bar.h"
 #include "reference/reference_cache.h"
@@ -239,7 +240,15 @@ void EngineTuner::addViews(size_t si, const std::string& spec, bool heldOutScene
         ReferenceImage ref = provider.get(c, w_, h_, {radius, o_.referenceRays}, [&](double f) { bar.update(f); });
         radius_.check(sc.name, name, ref, c, o_.radiusScene, 2.0 * sc.bounds.radius());
         const TuneRole role = heldOutScene ? TuneRole::HeldOutScene : k % 2 == 0 ? TuneRole::Train : TuneRole::HeldOutView;
-        views_.push_back({si, k, name, role, c, std::move(ref), {}, radius, k == (heldOutScene ? 0 : 1)});
+        double oracleMse = std::numeric_limits<double>::quiet_NaN();
+        if (role != TuneRole::Train) {
+            ReferenceSettings os{radius, o_.referenceRays};
+            os.visibility = ReferenceVisibility::Screen;
+            ProgressBar ob("  oracle " + sc.name + " " + name, !o_.quiet);
+            const ReferenceImage oracle = provider.get(c, w_, h_, os, [&](double f) { ob.update(f); });
+            oracleMse = std::pow(evaluate(Image{oracle.width, oracle.height, 1, oracle.ao}, ref).metrics.rmse, 2);
+        }
+        views_.push_back({si, k, name, role, c, std::move(ref), {}, radius, k == (heldOutScene ? 0 : 1), oracleMse});
         engineViews.push_back({cameraToJson(cameraToFile(c, sc)), radius});
         ++k;
     }

@@ -12,6 +12,7 @@
 #include "scene/scene.h"
 
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -32,6 +33,9 @@ struct TuneView {
     std::map<std::string, double> base; // what the engine ran with at its make-peers settings here
     float radius = 0;                   // R, scene units
     bool shown = false; // the scene's first held-out view: its images are kept for the report page
+    // Held-out views: the screen-space oracle's MSE against ref (reference_ao.h: the same integral
+    // over what one G-buffer holds), the error no screen-space AO can remove; NaN on training views.
+    double oracleMse = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct Knob {
