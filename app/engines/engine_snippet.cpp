@@ -63,6 +63,11 @@ std::string engineSnippet(const EngineTable& t, const std::vector<std::pair<std:
         out += commentLine(line);
     std::vector<std::string> callOrder;
     std::map<std::string, std::string> calls; // setter -> "key: value, ..."
+    for (const auto& [call, args] : t.callAlways) {
+        callOrder.push_back(call);
+        for (const auto& [key, literal] : args)
+            calls[call] += (calls[call].empty() ? "" : ", ") + key + ": " + literal;
+    }
     std::string body;
     for (const auto& [name, v] : values) {
         const EngineParam* p = t.find(name);

@@ -42,6 +42,28 @@ std::string codeName(const nlohmann::json& j, const char* key, const std::string
     return s;
 }
 
+// "call_always": { "setter": { "key": true | number } }: what the setter's call always carries.
+// Keys are identifiers and values JSON booleans or finite numbers, so the snippet writes them as code.
+std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>> readCallAlways(const nlohmann::json& s,
+                                                                                                  const std::string& where) {
+    std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>> out;
+    if (!s.contains("call_always")) return out;
+    if (!s["call_always"].is_object()) throw Error(where + ": \"call_always\" must be an object");
+    for (const auto& [call, args] : s["call_always"].items()) {
+        codeName(nlohmann::json{{"call", call}}, "call", where + " call_always");
+        if (!args.is_object()) throw Error(where + ": call_always " + call + " must be an object");
+        std::vector<std::pair<std::string, std::string>> kv;
+        for (const auto& [key, v] : args.items()) {
+            codeName(nlohmann::json{{"key", key}}, "key", where + " call_always " + call);
+            if (v.is_boolean()) kv.emplace_back(key, v.get<bool>() ? "true" : "false");
+            else if (v.is_number() && std::isfinite(v.get<double>())) kv.emplace_back(key, v.dump());
+            else throw Error(where + ": call_always " + call + "." + key + " must be a boolean or a finite number");
+        }
+        out.emplace_back(call, std::move(kv));
+    }
+    return out;
+}
+
 double numberOf(const nlohmann::json& v, EngineParam::Type type, const std::string& where) {
     if (type == EngineParam::Type::Boolean) {
         if (!v.is_boolean()) throw Error(where + " must be true or false");
@@ -172,14 +194,16 @@ EngineTable loadEngineTable(const std::string& path) {
     t.version = textField(j, "version", path);
     t.peer = textField(j, "peer", path);
     t.page = j.contains("page") ? textField(j, "page", path) : "peers.html";
-    if (t.page != "peers.html" && t.page != "babylon.html" && t.page != "playcanvas.html")
-        throw Error(path + ": \"page\" is '" + t.page + "', not one of the harness's pages (peers.html, babylon.html, playcanvas.html)");
+    if (t.page != "peers.html" && t.page != "babylon.html" && t.page != "playcanvas.html" && t.page != "filament.html")
+        throw Error(path + ": \"page\" is '" + t.page +
+                    "', not one of the harness's pages (peers.html, babylon.html, playcanvas.html, filament.html)");
     textField(j, "docs", path);
     if (!j.contains("snippet") || !j["snippet"].is_object()) throw Error(path + ": no \"snippet\" object");
     t.variable = codeName(j["snippet"], "variable", path + " snippet");
     if (j["snippet"].contains("setup") && j["snippet"]["setup"].is_array())
         for (const auto& line : j["snippet"]["setup"])
             if (line.is_string()) t.setup.push_back(line.get<std::string>());
+    t.callAlways = readCallAlways(j["snippet"], path + " snippet");
     if (!j.contains("parameters") || !j["parameters"].is_array() || j["parameters"].empty())
         throw Error(path + ": \"parameters\" must be a non-empty array");
     std::set<std::string> seen;

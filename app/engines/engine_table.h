@@ -48,6 +48,9 @@ struct EngineTable {
     std::string page = "peers.html"; // the harness page that runs it (babylon.html, playcanvas.html)
     std::string variable;           // the snippet's name for the pass ("n8aopass")
     std::vector<std::string> setup; // the snippet's opening lines (import, construction)
+    // Arguments a setter's call always carries, beside the tuned values (Filament's
+    // setAmbientOcclusionOptions falls back to enabled: false): setter -> (key, JavaScript literal).
+    std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>> callAlways;
     std::vector<EngineParam> params;
 
     const EngineParam* find(const std::string& name) const;

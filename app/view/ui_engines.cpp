@@ -14,8 +14,8 @@ namespace {
 
 const char* const kEnginesHelp =
     "three.js SSAOPass, SAOPass and GTAOPass, N8AO, postprocessing's SSAOEffect, Babylon.js's\n"
-    "SSAO2RenderingPipeline and SSAORenderingPipeline and PlayCanvas's CameraFrame SSAO, run for\n"
-    "real in Chromium (Node.js\n"
+    "SSAO2RenderingPipeline and SSAORenderingPipeline, PlayCanvas's CameraFrame SSAO and\n"
+    "Filament's AO (web build), run for real in Chromium (Node.js\n"
     "and the npm packages `make engine-modules` pins) on this glTF file at this view's camera,\n"
     "size and R, once ssaolab's candidates are measured. Each engine as its package ships it,\n"
     "at its defaults with every length from R (as `make peers` runs it), and each\n"

@@ -1,5 +1,5 @@
 // What the tests of the web engines share (test_cli_engines.cpp, test_cli_bench_engines.cpp,
-// test_cli_engine_babylon.cpp): where the peers' scripts and the pinned npm packages are, whether
+// test_cli_engine_babylon.cpp, test_cli_engine_filament.cpp): where the peers' scripts and the pinned npm packages are, whether
 // Node.js runs, a snippet run against a recording mock, and a small glTF corner.
 #pragma once
 #include "cli_run.h"
@@ -26,7 +26,7 @@ inline const std::string kModules = std::string(SSAOLAB_BUILD_DIR) + "/peers/nod
 
 inline bool modulesInstalled() {
     namespace fs = std::filesystem;
-    for (const char* m : {"three", "n8ao", "postprocessing", "playwright-core", "babylonjs", "babylonjs-loaders", "playcanvas"})
+    for (const char* m : {"three", "n8ao", "postprocessing", "playwright-core", "babylonjs", "babylonjs-loaders", "playcanvas", "filament"})
         if (!fs::is_regular_file(kModules + "/" + m + "/package.json")) return false;
     return true;
 }

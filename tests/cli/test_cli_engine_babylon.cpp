@@ -139,15 +139,15 @@ TEST(CliEngineBabylon, TuneWritesASnippetInBabylonsApi) {
     expectCleanFailure(ssaolab("tune --engine babylon-ssao --scene builtin:showcase --out " + out), "glTF");
 }
 
-// Two harness pages in one bench: the three.js engine and Babylon's two pipelines run in one
-// session a page, and every row is scored against the same reference.
+// Three harness pages in one bench: the three.js engine, Babylon's two pipelines and Filament run
+// in one session a page, and every row is scored against the same reference.
 TEST(CliEngineBabylon, BenchRunsEnginesOfTwoPagesBesideEachOther) {
     NEED_MODULES();
     const std::string scene = writeCornerGltf("bench_babylon.gltf"), out = outDir("bench_babylon");
     fs::remove_all(out);
     const std::string sweep = writeTemp("bench_babylon_sweep.json", R"({"name": "b", "groups": [{"name": "g", "set": {"ao.technique": "gtao"}}]})");
     const CliRun r = ssaolab("bench --scene " + scene + " --size 96x54 --views 1 --frames 2 --warmup 0 --reference-rays 8 "
-                             "--no-plot --quiet --engines n8ao,babylon-ssao2,babylon-ssao --sweep " + sweep + " --out " + out);
+                             "--no-plot --quiet --engines n8ao,babylon-ssao2,babylon-ssao,filament-ssao --sweep " + sweep + " --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     const nlohmann::json j = nlohmann::json::parse(slurp(out + "/results.json"));
     int rows = 0;
@@ -158,7 +158,7 @@ TEST(CliEngineBabylon, BenchRunsEnginesOfTwoPagesBesideEachOther) {
         EXPECT_TRUE(v["rmse"].is_number()) << label;
         EXPECT_LE(v["rmse"].get<double>(), 1.0) << label;
     }
-    EXPECT_EQ(rows, 6) << "n8ao, babylon-ssao2 and babylon-ssao, each as make peers and as shipped";
+    EXPECT_EQ(rows, 8) << "n8ao, babylon-ssao2, babylon-ssao and filament-ssao, each as make peers and as shipped";
     expectCleanFailure(ssaolab("bench --scene " + scene + " --engines Babylon-SSAO2 --out " + out + "_x"),
                        "did you mean babylon-ssao2");
 }

@@ -52,7 +52,7 @@ void expectTimeRatioWhereTheDefaultsTookTime(const nlohmann::json& j) {
 
 TEST(EngineTables, EveryTableParsesWithEachDefaultInsideItsRange) {
     const std::vector<std::string> names = ssao::engineNames();
-    EXPECT_EQ(names, (std::vector<std::string>{"babylon-ssao", "babylon-ssao2", "n8ao", "playcanvas-ssao", "pp-ssao", "three-gtao", "three-sao", "three-ssao"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"babylon-ssao", "babylon-ssao2", "filament-ssao", "n8ao", "playcanvas-ssao", "pp-ssao", "three-gtao", "three-sao", "three-ssao"}));
     for (const std::string& n : names) {
         const ssao::EngineTable t = ssao::findEngine(n);
         EXPECT_EQ(t.engine, n);
@@ -125,6 +125,10 @@ TEST(EngineSnippet, HostileNamesParseAsScriptAndModuleAndSetOnlyTheTunedValues) 
                 values.emplace_back(p.name, v);
                 want[p.writeCall.empty() ? p.writePath : p.writeCall + "(" + p.writeKey + ")"] = v;
             }
+        // What a setter's call always carries (Filament: enabled), beside the tuned values.
+        for (const auto& [call, args] : t.callAlways)
+            for (const auto& [key, literal] : args)
+                want[call + "(" + key + ")"] = literal == "true" ? 1.0 : literal == "false" ? 0.0 : std::stod(literal);
         // Names that end a // comment (U+2028, U+2029, CR), hide the rest of a line (<!--), close a
         // string or a <script>, and bytes that are not UTF-8: none may run or set anything.
         const std::string live = "globalThis.pwned=2;<!--";
@@ -143,8 +147,10 @@ TEST(EngineSnippet, HostileNamesParseAsScriptAndModuleAndSetOnlyTheTunedValues) 
         for (unsigned char c : snippet) EXPECT_TRUE(c == '\n' || (c >= 0x20 && c < 0x7f)) << n << ": byte " << int(c);
         const nlohmann::json got = runSnippet(t.variable, snippet, n);
         ASSERT_EQ(got.size(), want.size()) << n << ":\n" << snippet << got.dump();
-        for (const auto& [key, v] : want)
-            EXPECT_EQ(got.value(key, -1e300), v) << n << " " << key << ":\n" << snippet;
+        for (const auto& [key, v] : want) {
+            const nlohmann::json& g = got.contains(key) ? got[key] : nlohmann::json(-1e300);
+            EXPECT_EQ(g.is_boolean() ? double(g.get<bool>()) : g.get<double>(), v) << n << " " << key << ":\n" << snippet;
+        }
     }
 }
 

@@ -1,5 +1,7 @@
 // Each engine's own defaults, from the installed package itself: the pass is constructed in Node
-// (constructing needs no GL context; Babylon.js's through its NullEngine, PlayCanvas's its NullGraphicsDevice) as its table's "class" says, and every parameter is read
+// (constructing needs no GL context; Babylon.js's through its NullEngine, PlayCanvas's its
+// NullGraphicsDevice; Filament's options are the defaults its JavaScript binding fills in, read from
+// its wasm module without an engine) as its table's "class" says, and every parameter is read
 // where its table's "read" path says. Prints {engine: {version, defaults: {name: value}}} as JSON;
 // tests/cli/test_cli_engines.cpp compares it with the tables.
 //
@@ -7,6 +9,7 @@
 import fs from 'node:fs';
 import { createRequire } from 'node:module';
 import path from 'node:path';
+import vm from 'node:vm';
 import { pathToFileURL } from 'node:url';
 import { parseArgs } from './session.mjs';
 
@@ -53,11 +56,26 @@ async function playcanvasFrame(table) {
     return new pc[table.class.export](...table.class.constructor.map((a) => given[a]));
 }
 
+// Filament's web build is an Emscripten module that replaces its global on init: it runs in a
+// context of its own, where that global is visible once ready. Enum members read as their numbers.
+async function filamentOptions() {
+    const file = path.join(modules, 'filament', 'filament.js');
+    const ctx = { require: createRequire(file), __dirname: path.dirname(file), __filename: file, process, console,
+                  WebAssembly, TextDecoder, setTimeout, clearTimeout, performance, URL, module: { exports: {} } };
+    ctx.exports = ctx.module.exports;
+    vm.createContext(ctx);
+    vm.runInContext(fs.readFileSync(file, 'utf8'), ctx, { filename: file });
+    await new Promise((resolve) => ctx.Filament.init([], resolve));
+    const o = ctx.Filament.View.prototype.setAmbientOcclusionOptionsDefaults({});
+    return Object.fromEntries(Object.entries(o).map(([k, v]) => [k, typeof v?.value === 'number' ? v.value : v]));
+}
+
 const out = {};
 for (const file of args.tables.split(',')) {
     const table = JSON.parse(fs.readFileSync(file, 'utf8'));
     const pass = table.class.module === 'babylonjs' ? babylonPipeline(table)
-               : table.class.module === 'playcanvas' ? await playcanvasFrame(table) : await threePass(table);
+               : table.class.module === 'playcanvas' ? await playcanvasFrame(table)
+               : table.class.module === 'filament' ? await filamentOptions() : await threePass(table);
     const defaults = {};
     for (const p of table.parameters) {
         let v = pass;

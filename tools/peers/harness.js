@@ -1,4 +1,4 @@
-// What the harness pages share (peers.js, babylon.js, playcanvas.js): the seeded Math.random an
+// What the harness pages share (peers.js, babylon.js, playcanvas.js, filament.js): the seeded Math.random an
 // engine's noise is drawn from, the timed frames, the AO read back, and the table rows' paths.
 
 // A fixed sequence (mulberry32): restarted before an engine builds its noise, one setting gives one
@@ -49,6 +49,11 @@ export function readAo(gl, w, h, decode) {
     gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
     const ao = new Uint8Array(w * h);
     for (let i = 0; i < w * h; ++i) ao[i] = decode ? decode[rgba[4 * i]] : rgba[4 * i];
+    return aoBase64(ao);
+}
+
+// One byte per pixel (the AO x 255, rows bottom-up) as the base64 runEngine returns.
+export function aoBase64(ao) {
     let s = '';
     for (let i = 0; i < ao.length; i += 0x8000) s += String.fromCharCode.apply(null, ao.subarray(i, i + 0x8000));
     return btoa(s);

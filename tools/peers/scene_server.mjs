@@ -9,7 +9,7 @@ import path from 'node:path';
 const types = { '.js': 'text/javascript', '.mjs': 'text/javascript', '.html': 'text/html', '.json': 'application/json',
                 '.gltf': 'model/gltf+json', '.glb': 'model/gltf-binary', '.bin': 'application/octet-stream',
                 '.png': 'image/png', '.jpg': 'image/jpeg', '.jpeg': 'image/jpeg', '.ktx2': 'image/ktx2',
-                '.webp': 'image/webp' };
+                '.webp': 'image/webp', '.wasm': 'application/wasm' };
 const maxJsonBytes = 64 * 1024 * 1024; // a glTF's JSON past this is refused unread
 const glbMagic = 0x46546c67, glbJsonChunk = 0x4e4f534a; // 'glTF', 'JSON' (little-endian)
 

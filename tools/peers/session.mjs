@@ -102,7 +102,7 @@ async function launchBrowser(chromium) {
 }
 
 // Opens the session on `page` (peers.html: the three.js family; babylon.html: Babylon.js;
-// playcanvas.html: PlayCanvas); `camera`
+// playcanvas.html: PlayCanvas; filament.html: Filament); `camera`
 // is ssaolab's metrics.json camera of the first view, `radius` R in scene units; maxMib and
 // maxSeconds override browserLimits' defaults. Returns { page, setup,
 // evaluate(what, fn, arg) (page.evaluate within the time limit), failed(), close() }.
@@ -111,10 +111,10 @@ export async function openSession({ modules, sceneFile, width, height, camera, r
     const limits = browserLimits({ maxMib, maxSeconds });
     modules = path.resolve(modules);
     const { chromium } = await import(path.join(modules, 'playwright-core', 'index.mjs'));
-    const pages = ['peers.html', 'babylon.html', 'playcanvas.html'];
+    const pages = ['peers.html', 'babylon.html', 'playcanvas.html', 'filament.html'];
     if (!pages.includes(pageFile)) throw new Error(`no page '${pageFile}' (${pages.join(', ')})`);
     const roots = { page: here };
-    for (const m of ['three', 'n8ao', 'postprocessing', 'babylonjs', 'babylonjs-loaders', 'playcanvas'])
+    for (const m of ['three', 'n8ao', 'postprocessing', 'babylonjs', 'babylonjs-loaders', 'playcanvas', 'filament'])
         if (fs.existsSync(path.join(modules, m))) roots[m] = path.join(modules, m);
     const server = await startServer({ sceneFile: path.resolve(sceneFile), roots });
     const stop = (line) => stopSession(tool, line);

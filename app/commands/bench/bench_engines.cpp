@@ -24,7 +24,7 @@ namespace ssao {
 
 void addBenchEngineOptions(CLI::App& cmd, BenchEngineOptions& o) {
     cmd.add_option("--engines", o.names,
-                   "web engines to add to the sweep, comma-separated (n8ao, pp-ssao, three-ssao, three-sao, three-gtao, babylon-ssao2, babylon-ssao, playcanvas-ssao) or all: "
+                   "web engines to add to the sweep, comma-separated (n8ao, pp-ssao, three-ssao, three-sao, three-gtao, babylon-ssao2, babylon-ssao, playcanvas-ssao, filament-ssao) or all: "
                    "each runs for real in Chromium on every view of every --scene glTF file at the bench's camera, "
                    "size and R, as the rows 'engine NAME (defaults)' (its defaults with every length set from R) "
                    "and 'engine NAME (as shipped)' (the package's defaults, but for the fixed rows that read the AO alone), "

@@ -39,7 +39,7 @@ namespace ssao {
 void addEngineTuneOptions(CLI::App& cmd, EngineTuneOptions& o) {
     cmd.add_option("--engine", o.engine,
                    "tune a web engine's own AO settings instead of a technique (n8ao, three-ssao, three-sao, "
-                   "three-gtao, pp-ssao, babylon-ssao2, babylon-ssao, playcanvas-ssao), run for real in Chromium on the --scene glTF files; writes --out (JSON) and --snippet")
+                   "three-gtao, pp-ssao, babylon-ssao2, babylon-ssao, playcanvas-ssao, filament-ssao), run for real in Chromium on the --scene glTF files; writes --out (JSON) and --snippet")
         ->type_name("NAME");
     cmd.add_option("--engine-modules", o.modules,
                    "the engines' npm packages (default: the build folder's peers/node_modules, from make engine-modules)")
