@@ -48,8 +48,12 @@ def view_radius(ssaolab, scene, size, work):
     return 0.05, "5 % of the diagonal", m
 
 
-def tune(ssaolab, engine, scene, size, radius_scene, out):
+def tune(ssaolab, engine, scene, size, radius_scene, out, resume):
     os.makedirs(os.path.dirname(out), exist_ok=True)
+    if resume and os.path.isfile(out):
+        j = json.load(open(out))
+        j["wall"] = j["tuning_seconds"]
+        return j
     args = [ssaolab, "tune", "--engine", engine, "--scene", scene, "--size", size, "--radius-scene", "%.6g" % radius_scene,
             "--save-overfit", "--quiet", "--out", out]
     start = time.monotonic()
@@ -73,6 +77,7 @@ def row(engine, scene, radius_text, j):
     h = s["held_out"]
     better = min(h["shipped"], h["defaults"])
     ratio = h["tuned"] / better if better else None
+    refused = " (refused: the guard)" if s.get("overfit") else ""
     t, noise = s.get("time_ratio"), s.get("time_noise") or 0.0
     within = t is not None and abs(math.log(t)) <= max(noise, 0.02)
     time_text = "–" if t is None else ("%.2fx (within +-%.0f %%)" % (t, 100 * max(noise, 0.02)) if within else "%.2fx" % t)
@@ -82,7 +87,7 @@ def row(engine, scene, radius_text, j):
     floor = oracle / better if oracle is not None and better else None
     return "| %s | %s | %s | %s | %s | %s | %s | %s (%s) | %s | %s | %.0f | %s |" % (
         cell(engine), cell(scene), cell(radius_text), fmt(h["shipped"]), fmt(h["defaults"]), fmt(h["tuned"]),
-        fmt(ratio, "%.3fx"), fmt(oracle), fmt(floor, "%.2fx"), time_text, fmt(r_time, "%.2fx"), j["tuning_seconds"],
+        fmt(ratio, "%.3fx") + refused, fmt(oracle), fmt(floor, "%.2fx"), time_text, fmt(r_time, "%.2fx"), j["tuning_seconds"],
         "yes" if met else "no")
 
 
@@ -101,7 +106,8 @@ def page(rows, size, facts, engines, scenes):
            "How to read it: each row is one engine tuned on one scene. *as shipped* is the package's defaults verbatim, "
            "*lengths from R* its defaults with every length the harness derives from R, *tuned* what `tune --engine` "
            "saved; all three are geometry RMSE against the ray-traced reference on the held-out views only. *x better* "
-           "is tuned over the better of the two baselines (the target is %.1fx or less); *screen oracle* is the error a "
+           "is tuned over the better of the two baselines (the target is %.1fx or less; *refused* where the fit raised "
+           "the held-out error, which `tune` does not save without `--save-overfit`); *screen oracle* is the error a "
            "perfect estimator still has on the same views, seeing only what one G-buffer holds - where it is close to "
            "the baseline, no screen-space setting of any engine can reach the target, and its ratio says how close one "
            "could get. *time* is the tuned AO time over the shipped one, measured in the same run (within the timing's "
@@ -123,6 +129,7 @@ def main():
     ap.add_argument("--page", required=True)
     ap.add_argument("--size", default="320x180")
     ap.add_argument("--engines", default="")
+    ap.add_argument("--resume", action="store_true", help="keep the tunes already in --work")
     ap.add_argument("scenes", nargs="*")
     a = ap.parse_args()
     os.makedirs(a.work, exist_ok=True)
@@ -142,7 +149,7 @@ def main():
             continue
         radius_text = "%.4g (%s)" % (radius_scene * m["radius"]["scene_diagonal"], source)
         for e in engines:
-            j = tune(a.ssaolab, e, scene, a.size, radius_scene, os.path.join(a.work, "tune", e, name + ".json"))
+            j = tune(a.ssaolab, e, scene, a.size, radius_scene, os.path.join(a.work, "tune", e, name + ".json"), a.resume)
             rows.append(row(e, name, radius_text, j))
             sys.stdout.write(rows[-1] + "\n")
             sys.stdout.flush()

@@ -2,6 +2,7 @@
 
 #include "measure/motion_measure.h"
 #include "results/report_html.h"
+#include "results/place_report.h"
 #include "results/split_report.h"
 #include "metrics/error_split.h"
 #include "output/escape.h"
@@ -343,6 +344,7 @@ std::string benchMarkdown(const BenchRun& run, const std::string& plotFile, cons
     table(true);
     md << passMarkdown(run);
     md << splitMarkdown(run);
+    md << placeMarkdown(run);
     md << motionMarkdown(run);
     md << engineMarkdown(run);
     md << "\n### Every configuration\n\n";

@@ -97,6 +97,7 @@ nlohmann::json viewJson(const ViewResult& v, const std::string& label) {
               v.hasSplit ? SplitSummary{v.screen.rmse, v.screen.bias, v.screen.rmseEdge, v.screen.rmseInterior} : none);
     sharesFields(j, v.error.rmse, v.hasSplit ? v.vsOracle.rmse : nan, v.hasSplit ? v.screen.rmse : nan);
     motionJson(j, v.hasMotion ? v.motion : MotionSummary{}, true);
+    j["error_by_place"] = v.hasPlaces ? placeSumsJson(v.places) : nlohmann::json();
     return j;
 }
 
@@ -243,6 +244,15 @@ ViewResult readView(const Reader& rd, const nlohmann::json& j, const std::string
         v.screen.bias = rd.number(j, "bias_screen", where);
         v.screen.rmseEdge = rd.number(j, "rmse_edge_screen", where);
         v.screen.rmseInterior = rd.number(j, "rmse_interior_screen", where);
+    }
+    // The error by place, when the run kept it (null for engine rows; absent in older runs).
+    if (j.contains("error_by_place") && !j["error_by_place"].is_null()) {
+        try {
+            v.places = placeSumsFromJson(j["error_by_place"]);
+        } catch (const std::invalid_argument& e) {
+            rd.fail(where + ".error_by_place: " + e.what());
+        }
+        v.hasPlaces = true;
     }
     // Error in motion, when the run scored it (bench --motion; null without).
     if (j.contains("motion_rmse_mean") && !j["motion_rmse_mean"].is_null()) {

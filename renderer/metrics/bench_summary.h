@@ -6,6 +6,7 @@
 // are ranked by those ratios, so rows measured on different machines can be merged.
 #pragma once
 #include "metrics/error_metrics.h"
+#include "metrics/error_places.h"
 
 #include <cstddef>
 #include <limits>
@@ -55,6 +56,10 @@ struct ViewResult {
     // not hold, the same for every configuration of a view. Without an oracle, hasSplit is false.
     bool hasSplit = false;
     ErrorMetrics vsOracle, screen;
+    // The error by place (error_places.h) of the judged image; hasPlaces false for rows measured
+    // without it (web engines, runs before it was kept).
+    bool hasPlaces = false;
+    ErrorByPlace places;
     bool hasMotion = false; // bench --motion measured this row along its view's camera path
     MotionSummary motion;
 };

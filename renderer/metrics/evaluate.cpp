@@ -47,6 +47,21 @@ ErrorShares splitShares(const Evaluation& technique, const ReferenceImage& oracl
     return errorShares(in);
 }
 
+PlaceMap placesOf(const ReferenceImage& ref, const Camera& camera, double radius) {
+    PlaceView v{ref.width, ref.height, ref.depth.data(), ref.geometry.data(),
+                std::tan(0.5 * double(camera.fovYDeg) * 3.14159265358979323846 / 180.0), radius};
+    if (camera.orthographic()) v.orthoHalfHeight = camera.orthoHalfHeight();
+    return classifyPlaces(v);
+}
+
+ErrorByPlace errorByPlace(const Evaluation& e, const ReferenceImage& ref, const PlaceMap& places, const ReferenceImage* oracle) {
+    if (e.test.width != ref.width || e.test.height != ref.height || places.width != ref.width ||
+        (oracle && (oracle->width != ref.width || oracle->height != ref.height)))
+        throw std::invalid_argument("errorByPlace: the AO, the places, the oracle and the truth are of different sizes");
+    return errorByPlace(places, e.test.data.data(), ref.ao.data(), oracle ? oracle->ao.data() : nullptr,
+                        ref.ambiguous.size() == ref.ao.size() ? ref.ambiguous.data() : nullptr);
+}
+
 Image errorHeatmap(const Image& error, const std::vector<float>& geometry, float range) {
     Image out{error.width, error.height, 3, std::vector<float>(size_t(error.width) * error.height * 3)};
     for (size_t i = 0; i < size_t(error.width) * error.height; ++i) {

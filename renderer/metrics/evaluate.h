@@ -3,8 +3,10 @@
 #pragma once
 #include "base/image.h"
 #include "metrics/error_metrics.h"
+#include "metrics/error_places.h"
 #include "metrics/error_split.h"
 #include "reference/reference_ao.h"
+#include "scene/camera.h"
 
 #include <nlohmann/json.hpp>
 
@@ -22,6 +24,13 @@ Evaluation evaluate(const Image& ao, const ReferenceImage& ref, const MetricsOpt
 // The additive split (error_split.h) of one view: `technique` is the AO judged against `oracle`
 // (its test image at the oracle's size), `truth` the reference of the same view and size.
 ErrorShares splitShares(const Evaluation& technique, const ReferenceImage& oracle, const ReferenceImage& truth);
+
+// Where each pixel of `ref`'s view is (error_places.h): `camera` gives its projection, `radius` R.
+PlaceMap placesOf(const ReferenceImage& ref, const Camera& camera, double radius);
+
+// The error of `e` (its test image, at ref's size) by place; `oracle` (the same size) may be null.
+ErrorByPlace errorByPlace(const Evaluation& e, const ReferenceImage& ref, const PlaceMap& places,
+                          const ReferenceImage* oracle = nullptr);
 
 // Diverging heat map of a signed error: blue where the AO is too dark (over-occlusion), red where
 // it is too bright, white at 0; saturates at ±range. Sky (mask 0) is mid grey.

@@ -291,6 +291,16 @@ TEST(CliBench, TwoShardsMergedGiveOneRunsErrorsAndFront) {
         for (const char* f : {"rmse", "bias", "mae", "p99_abs", "ssim", "rmse_edge", "psnr_full_srgb"})
             EXPECT_EQ(rm.at(k)[f], row[f]) << k << " " << f; // identical, not close
         EXPECT_GT(rm.at(k)["time_ratio"].get<double>(), 0.0) << k;
+        // The error by place travels through the merge, and its five places add up to the row.
+        EXPECT_EQ(rm.at(k)["error_by_place"], row["error_by_place"]) << k;
+        const nlohmann::json& p = row["error_by_place"];
+        double sq = 0;
+        long px = 0;
+        for (const char* place : {"border", "silhouette", "crease", "convex", "open"})
+            sq += p[place][1].get<double>(), px += p[place][0].get<long>();
+        EXPECT_EQ(px, p["all"][0].get<long>()) << k;
+        EXPECT_NEAR(sq, p["all"][1].get<double>(), 1e-9 * (1.0 + sq)) << k;
+        EXPECT_NEAR(std::sqrt(sq / double(px)), row["rmse"].get<double>(), 1e-6) << k; // the row's own RMSE
     }
     // The same rows in the same order.
     std::vector<std::string> oa, om;
@@ -339,6 +349,15 @@ TEST(CliBench, TwoShardsMergedGiveOneRunsErrorsAndFront) {
     expectCleanFailure(ssaolab("bench merge " + s1 + " " + s1 + " --out " + merged + "_x"), "is also in");
     expectCleanFailure(ssaolab("bench merge " + s1 + " " + whole + " --out " + merged + "_x"), "another split");
     expectCleanFailure(ssaolab("bench --shard 3/2"), "K/N");
+    // A shard whose error by place was tampered with: refused, naming the row and the field.
+    nlohmann::json bad = p1;
+    bad["results"][0]["error_by_place"]["border"] = {1, -1.0, 0.0, 0.0};
+    const std::string badDir = outDir("shard_bad");
+    std::filesystem::remove_all(badDir);
+    std::filesystem::copy(s1, badDir, std::filesystem::copy_options::recursive);
+    { std::ofstream(badDir + "/results.json") << bad.dump(); }
+    expectCleanFailure(ssaolab("bench merge " + badDir + " " + s2 + " --out " + merged + "_y"), "error_by_place: 'border' is negative");
+    EXPECT_NE(md.find("### Where the error lives"), std::string::npos);
 }
 
 TEST(CliBench, ABudgetGetsOneLineAPresetAndTheSameNumbersFromRender) {

@@ -182,6 +182,8 @@ class SceneBench {
             deep = traceOracle(provider, ref, radius, 2, scene.name + " " + vname + " (two layers)", deepScreen_);
         oracle_ = oracle ? &*oracle : nullptr;
         deepOracle_ = deep ? &*deep : nullptr;
+        const PlaceMap places = placesOf(ref, r_.camera(), radius); // where each pixel is (error_places.h)
+        places_ = &places;
         const ErrorMetrics screen = screen_;
         std::optional<MotionTruth> motion; // the path's references, when rows are scored in motion
         if (o_.motion) {
@@ -254,6 +256,8 @@ class SceneBench {
         runner_.checkGl("measuring " + cfg.label + " on " + scene + " " + vname);
         if (!thumbs.empty()) writeThumbnails(thumbs, c, m.evaluation(), ref);
         ViewResult v = m.result();
+        v.places = errorByPlace(m.evaluation(), ref, *places_, deep ? deepOracle_ : oracle_);
+        v.hasPlaces = true;
         if (v.hasSplit) v.screen = deep ? deepScreen_ : screen_;
         if (motion_) {
             const MotionMetrics mm = measureMotion(r_, withRadius(cfg.settings, radius), *motion_);
@@ -274,6 +278,7 @@ class SceneBench {
     BenchRun& run_;
     ReferenceVariant variant_;
     const ReferenceImage* oracle_ = nullptr; // of the view being measured
+    const PlaceMap* places_ = nullptr;       // its places
     ErrorMetrics screen_;                    // its oracle against the truth
     const ReferenceImage* deepOracle_ = nullptr; // its two-layer oracle, for the two-layer rows
     ErrorMetrics deepScreen_;

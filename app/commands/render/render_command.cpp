@@ -234,6 +234,28 @@ int oracleLayersFor(const RenderOptions& o, const Settings& s) {
     return s.gbuffer.secondLayer ? std::max(2, o.oracleLayers) : o.oracleLayers;
 }
 
+// The error by place (metrics/error_places.h) of the final AO and of the raw AO before the denoiser
+// and the upsample (the stages), against the truth and, with an oracle, the technique's part:
+// metrics.json "error_by_place", and places.png (border yellow, silhouette magenta, crease red,
+// convex blue, open grey, sky black); returns the final AO's line.
+std::string errorByPlaceText(const std::string& out, const Renderer& r, const FrameCapture& frame, const ReferenceImage& ref,
+                             const ReferenceSettings& rs, const ReferenceImage* oracle, nlohmann::json& m) {
+    const PlaceMap places = placesOf(ref, r.camera(), rs.radius);
+    static const float kColour[kPlaces][3] = {{1, 0.85f, 0}, {0.9f, 0, 0.9f}, {0.95f, 0.1f, 0.1f}, {0.2f, 0.4f, 1}, {0.6f, 0.6f, 0.6f}};
+    Image map{places.width, places.height, 3, std::vector<float>(places.place.size() * 3, 0.0f)};
+    for (size_t i = 0; i < places.place.size(); ++i)
+        if (places.place[i] < kPlaces)
+            for (int c = 0; c < 3; ++c) map.data[3 * i + size_t(c)] = kColour[places.place[i]][c];
+    writePng(map, (std::filesystem::path(out) / "places.png").string());
+    const ErrorByPlace final = errorByPlace(evaluate(frame.get("ao.denoised").values, ref), ref, places, oracle);
+    const ErrorByPlace raw = errorByPlace(evaluate(frame.get("ao.raw").values, ref), ref, places, oracle);
+    m["error_by_place"] = {{"ao.denoised", errorByPlaceJson(final)}, {"ao.raw", errorByPlaceJson(raw)},
+                           {"note", "ao.raw: the AO before the denoiser and the upsample, read at the frame's size "
+                                    "(nearest texel); ao.denoised: the final AO"},
+                           {"files", {"places.png"}}};
+    return "\n" + errorByPlaceLine(final);
+}
+
 // --reference: traces (or loads) the reference, writes its files and the error blocks into `m`;
 // returns the summary line.
 std::string judgeAgainstReference(const RenderOptions& o, const Renderer& r, const FrameCapture& frame,
@@ -292,6 +314,7 @@ std::string judgeAgainstReference(const RenderOptions& o, const Renderer& r, con
         split = b;
         oracleKept = std::move(oracle);
     }
+    split += errorByPlaceText(o.out, r, frame, ref, rs, oracleKept ? &*oracleKept : nullptr, m);
     split += scoreImages(o, ref, rs, oracleKept ? &*oracleKept : nullptr, m);
     writeFileAtomically((std::filesystem::path(o.out) / "metrics.json").string(), dumpJson(m) + "\n");
     const auto& j = m["error"];
