@@ -138,7 +138,7 @@ std::vector<EngineResult> EngineRunner::run(const std::vector<EngineJob>& jobs) 
     return out;
 }
 
-std::vector<EngineResult> EngineRunner::runPage(const std::vector<EngineJob>& jobs, const std::string& page) {
+std::vector<EngineResult> EngineRunner::runPage(const std::vector<EngineJob>& jobs, const std::string& page, int hung) {
     const std::string tag = "s" + std::to_string(sessions_++), dir = work_ + "/" + tag;
     // The session's own engine: the runner's when it is on this page, else the first job's.
     const EngineTable& own = table_.page == page || jobs.empty() || !jobs[0].table ? table_ : *jobs[0].table;
@@ -172,25 +172,56 @@ std::vector<EngineResult> EngineRunner::runPage(const std::vector<EngineJob>& jo
                                     ChildStream::Capture, ChildStream::Capture);
     const std::string who = tables.empty() ? own.title : "the web engines"; // several in one session
     if (!r.started) throw Error("cannot start " + tools_.node + " for " + who);
-    if (r.exitCode != 0) throw Error(who + " in Chromium failed: " + lastLine(r.out));
+    if (r.exitCode != 0) return afterHang(jobs, page, hung, dir, who + " in Chromium failed: " + lastLine(r.out));
     const nlohmann::json res = readJsonFile(dir + "/results.json", "engine results");
     if (!res.contains("jobs") || !res["jobs"].is_array() || res["jobs"].size() != jobs.size())
         throw Error(who + " in Chromium returned " + dir + "/results.json without one entry per job");
     std::vector<EngineResult> out;
-    for (size_t i = 0; i < jobs.size(); ++i) {
-        const nlohmann::json& j = res["jobs"][i];
-        EngineResult e;
-        e.ao = readEngineAo(dir + "/j" + std::to_string(i) + ".pgm", width_, height_);
-        if (j.contains("values") && j["values"].is_object())
-            for (const auto& [name, v] : j["values"].items())
-                if (v.is_number() || v.is_boolean()) e.values[name] = v.is_boolean() ? double(v.get<bool>()) : v.get<double>();
-        if (j.contains("ao_ms") && j["ao_ms"].is_number()) e.aoMs = j["ao_ms"].get<double>();
-        if (j.contains("ao_ms_min") && j["ao_ms_min"].is_number()) e.aoMsMin = j["ao_ms_min"].get<double>();
-        if (j.contains("ao_ms_max") && j["ao_ms_max"].is_number()) e.aoMsMax = j["ao_ms_max"].get<double>();
-        out.push_back(std::move(e));
-    }
+    for (size_t i = 0; i < jobs.size(); ++i)
+        out.push_back(readResult(dir, i, res["jobs"][i]));
     std::error_code ec;
     fs::remove_all(dir, ec);
+    return out;
+}
+
+EngineResult EngineRunner::readResult(const std::string& dir, size_t i, const nlohmann::json& j) const {
+    EngineResult e;
+    e.ao = readEngineAo(dir + "/j" + std::to_string(i) + ".pgm", width_, height_);
+    if (j.contains("values") && j["values"].is_object())
+        for (const auto& [name, v] : j["values"].items())
+            if (v.is_number() || v.is_boolean()) e.values[name] = v.is_boolean() ? double(v.get<bool>()) : v.get<double>();
+    if (j.contains("ao_ms") && j["ao_ms"].is_number()) e.aoMs = j["ao_ms"].get<double>();
+    if (j.contains("ao_ms_min") && j["ao_ms_min"].is_number()) e.aoMsMin = j["ao_ms_min"].get<double>();
+    if (j.contains("ao_ms_max") && j["ao_ms_max"].is_number()) e.aoMsMax = j["ao_ms_max"].get<double>();
+    return e;
+}
+
+// A session that failed: when the page hung on one job past its time limit (run_engine.mjs wrote
+// DIR/hung.json), the jobs it finished are kept, that job comes back `hung` and the rest run in a
+// new session; any other failure, or one hang too many, throws `failure`.
+std::vector<EngineResult> EngineRunner::afterHang(const std::vector<EngineJob>& jobs, const std::string& page, int hung,
+                                                  const std::string& dir, const std::string& failure) {
+    std::error_code ec;
+    if (hung >= kMaxHungJobs || !fs::is_regular_file(dir + "/hung.json", ec)) throw Error(failure);
+    const nlohmann::json h = readJsonFile(dir + "/hung.json", "engine session");
+    if (!h.contains("job") || !h["job"].is_number_integer() || h["job"].get<long>() < 0 || size_t(h["job"].get<long>()) >= jobs.size())
+        throw Error(failure);
+    const size_t stuck = size_t(h["job"].get<long>());
+    std::vector<EngineResult> out(jobs.size());
+    std::vector<EngineJob> rest;
+    std::vector<size_t> at;
+    for (size_t i = 0; i < jobs.size(); ++i) {
+        const std::string done = dir + "/j" + std::to_string(i) + ".json";
+        if (i == stuck) out[i].hung = true;
+        else if (fs::is_regular_file(done, ec)) out[i] = readResult(dir, i, readJsonFile(done, "engine result"));
+        else rest.push_back(jobs[i]), at.push_back(i);
+    }
+    fs::remove_all(dir, ec);
+    if (!rest.empty()) {
+        std::vector<EngineResult> more = runPage(rest, page, hung + 1);
+        for (size_t k = 0; k < at.size(); ++k)
+            out[at[k]] = std::move(more[k]);
+    }
     return out;
 }
 

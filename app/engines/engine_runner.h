@@ -52,6 +52,9 @@ struct EngineResult {
     double aoMs = std::numeric_limits<double>::quiet_NaN(); // frame with the pass - frame without (frames > 0)
     // The fastest and slowest timed frame with the pass, less the same frame without (frames > 0).
     double aoMsMin = std::numeric_limits<double>::quiet_NaN(), aoMsMax = std::numeric_limits<double>::quiet_NaN();
+    // The browser hung on this job past its time limit (a setting some GL driver never finishes):
+    // no image; the session went on without it in a new browser.
+    bool hung = false;
 };
 
 class EngineRunner {
@@ -63,13 +66,20 @@ class EngineRunner {
     EngineRunner(const EngineRunner&) = delete;
     EngineRunner& operator=(const EngineRunner&) = delete;
 
-    // One browser session for every job; throws with the runner's last message when it fails.
+    // One browser session for every job; throws with the runner's last message when it fails. A job
+    // the page hangs on past SSAOLAB_BROWSER_MAX_SECONDS comes back `hung` and the jobs after it run
+    // in a new session, up to kMaxHungJobs in one call (then it throws).
     std::vector<EngineResult> run(const std::vector<EngineJob>& jobs);
+    static constexpr int kMaxHungJobs = 3;
     int sessions() const { return sessions_; }
 
   private:
     // One session of `page`'s engines.
-    std::vector<EngineResult> runPage(const std::vector<EngineJob>& jobs, const std::string& page);
+    std::vector<EngineResult> runPage(const std::vector<EngineJob>& jobs, const std::string& page, int hung = 0);
+    std::vector<EngineResult> afterHang(const std::vector<EngineJob>& jobs, const std::string& page, int hung,
+                                        const std::string& dir, const std::string& failure);
+    // One job's result as run_engine.mjs wrote it (DIR/jN.json and DIR/jN.pgm).
+    EngineResult readResult(const std::string& dir, size_t i, const nlohmann::json& j) const;
 
     EngineTools tools_;
     EngineTable table_;

@@ -117,8 +117,10 @@ void EngineWorker::measureEngine(const Job& job, const std::vector<const EngineC
     for (const EngineCandidate* c : cands)
         jobs.push_back({0, engineJobValues(*c, t, job.radius), job.frames, c->scale, nullptr});
     const std::vector<EngineResult> res = runner.run(jobs);
-    for (size_t i = 0; i < cands.size(); ++i)
+    for (size_t i = 0; i < cands.size(); ++i) {
+        if (res[i].hung) throw Error("the browser hung on " + cands[i]->label + " past its time limit");
         if (!add(*cands[i], res[i])) return;
+    }
 }
 
 } // namespace ssao

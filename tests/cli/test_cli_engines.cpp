@@ -186,6 +186,36 @@ TEST(CliEngine, RunnerRoundTripMatchesTheStoredResult) {
     EXPECT_EQ(runner.sessions(), 1);
 }
 
+// A job the page never finishes within the browser's time limit (here: 100 000 timed frames under a
+// 3 s limit, as a GL driver that hangs on one setting) comes back hung; the jobs before it keep
+// their results and the ones after it run in a new session, the same images as without the hang.
+TEST(CliEngine, AJobThatHangsTheBrowserIsDroppedAndTheRestRunAnew) {
+    NEED_MODULES();
+    const ssao::EngineTable t = ssao::findEngine("n8ao");
+    const CornerView v = cornerView("engine_hang.gltf");
+    ssao::EngineRunner runner(ssao::locateEngineTools(kModules, t), t, v.file, 96, 54, {{v.cameraJson, v.radius}});
+    const std::vector<ssao::EngineJob> jobs = {{0, {}, 0}, {0, {}, 100000}, {0, {{"aoRadius", 2.0 * v.radius}}, 0}};
+    setenv("SSAOLAB_BROWSER_MAX_SECONDS", "3", 1);
+    std::vector<ssao::EngineResult> res;
+    try {
+        res = runner.run(jobs);
+    } catch (...) {
+        unsetenv("SSAOLAB_BROWSER_MAX_SECONDS");
+        throw;
+    }
+    unsetenv("SSAOLAB_BROWSER_MAX_SECONDS");
+    ASSERT_EQ(res.size(), 3u);
+    EXPECT_FALSE(res[0].hung);
+    EXPECT_TRUE(res[1].hung);
+    EXPECT_TRUE(res[1].ao.data.empty());
+    EXPECT_FALSE(res[2].hung);
+    EXPECT_EQ(runner.sessions(), 2); // the hung session, and one for the job after it
+    const std::vector<ssao::EngineResult> again = runner.run({jobs[0], jobs[2]});
+    EXPECT_EQ(res[0].ao.data, again[0].ao.data);
+    EXPECT_EQ(res[2].ao.data, again[1].ao.data);
+    EXPECT_FLOAT_EQ(float(res[2].values.at("aoRadius")), 2.0f * v.radius);
+}
+
 // postprocessing's SSAOEffect runs in that library's own composer (RenderPass, NormalPass, EffectPass)
 // in the same session harness: its make-peers settings put the sampling disc at R projected at the
 // target and the proximity cutoff at R in depth, its AO alone is read back and scored, and a timed

@@ -104,10 +104,11 @@ async function launchBrowser(chromium) {
 // Opens the session on `page` (peers.html: the three.js family; babylon.html: Babylon.js;
 // playcanvas.html: PlayCanvas; filament.html: Filament); `camera`
 // is ssaolab's metrics.json camera of the first view, `radius` R in scene units; maxMib and
-// maxSeconds override browserLimits' defaults. Returns { page, setup,
+// maxSeconds override browserLimits' defaults; onLate(what), when given, is called before a page
+// call past maxSeconds stops the session. Returns { page, setup,
 // evaluate(what, fn, arg) (page.evaluate within the time limit), failed(), close() }.
 export async function openSession({ modules, sceneFile, width, height, camera, radius, tool, maxMib, maxSeconds,
-                                    page: pageFile = 'peers.html' }) {
+                                    page: pageFile = 'peers.html', onLate }) {
     const limits = browserLimits({ maxMib, maxSeconds });
     modules = path.resolve(modules);
     const { chromium } = await import(path.join(modules, 'playwright-core', 'index.mjs'));
@@ -129,7 +130,10 @@ export async function openSession({ modules, sceneFile, width, height, camera, r
     let failed = false;
     const close = async () => { endWatch(); await browser.close(); await server.close(); };
     const evaluate = async (what, fn, arg) => {
-        const late = () => stop(`the page took over ${limits.maxSeconds} s (${what}) - stopped`);
+        const late = () => {
+            onLate?.(what); // the caller's record of what hung, before the browser is stopped
+            stop(`the page took over ${limits.maxSeconds} s (${what}) - stopped`);
+        };
         const timer = setTimeout(late, limits.maxSeconds * 1000);
         try { return await page.evaluate(fn, arg); } finally { clearTimeout(timer); }
     };

@@ -152,6 +152,9 @@ void BenchEngines::runScene(const std::string& spec, const Scene& scene, float r
     const std::vector<EngineResult> res = runner.run(jobs);
     for (size_t j = 0; j < jobs.size(); ++j) {
         const EngineViewWork& w = pending_[of[j].first];
+        if (res[j].hung)
+            throw Error("bench --engines: " + run.sweep.configs[of[j].second].label + " hung the browser on " + scene.name + " " +
+                        w.viewpoint + " past its time limit (SSAOLAB_BROWSER_MAX_SECONDS)");
         const Evaluation e = evaluate(res[j].ao, w.ref);
         ViewResult v;
         v.scene = scene.name;

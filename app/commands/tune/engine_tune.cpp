@@ -232,6 +232,8 @@ void printOutcome(const TuneOptions& o, const EngineTuner& t, const std::vector<
     std::printf("\nthe screen-space oracle (a perfect estimator on this G-buffer) on the held-out views: %.4f", std::sqrt(r.heldOracle));
     std::printf("\nheld-out RMSE x%.3f the engine %s (the better baseline), %s; tuning took %.0f s in %d browser sessions\n",
                 r.verdict.after / r.verdict.before, r.verdict.baseline.c_str(), timeText(r).c_str(), seconds, t.sessions());
+    if (t.hungJobs())
+        std::printf("the browser hung on %d candidate setting(s) past its time limit: each was dropped from the search\n", t.hungJobs());
     std::fflush(stdout); // before any warning on stderr
 }
 
@@ -364,6 +366,7 @@ void save(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& k
         {"view", {{"scene", std::filesystem::absolute(t.sceneSpec(v.scene), ec).string()}, {"viewpoint", v.viewpoint},
                   {"camera", cameraToJson(cameraToFile(v.camera, sc))}, {"size", {w, h}}, {"radius", o.radiusScene * 2.0 * sc.bounds.radius()}}},
         {"scores", scoresJson(o, r)}, {"per_scene", perSceneJson(t, r)}, {"tuning_seconds", seconds}, {"browser_sessions", t.sessions()},
+        {"hung_candidates", t.hungJobs()},
         {"at_range_edge", walls},
         {"snippet", std::filesystem::path(js).filename().string()}};
     parseTunedEngine(out, o.out); // what bench --engine-settings will accept, checked by the same reader

@@ -273,6 +273,13 @@ std::vector<std::vector<Sample>> EngineTuner::measure(const std::vector<KnobSet>
         const std::vector<EngineResult> res = runners_[si]->run(jobs);
         for (size_t j = 0; j < jobs.size(); ++j) {
             TuneView& view = views_[of[j].second];
+            if (res[j].hung) { // a candidate the browser never finished: never the best; the baselines must finish
+                if (recordBase || frames > 0)
+                    throw Error(table_.title + " hung on " + scenes_[si].name + " " + view.viewpoint + " at settings the tune must measure");
+                out[of[j].first].push_back({of[j].second, std::numeric_limits<double>::infinity(), NAN, nullptr});
+                ++hungJobs_;
+                continue;
+            }
             auto e = std::make_shared<Evaluation>(evaluate(res[j].ao, view.ref));
             if (e->metrics.nonFinite > 0) throw Error(table_.title + " returned non-finite AO on " + scenes_[si].name);
             if (recordBase) view.base = res[j].values;

@@ -93,6 +93,8 @@ class EngineTuner {
     const std::vector<Scene>& scenes() const { return scenes_; }
     const EngineTable& table() const { return table_; }
     int sessions() const;
+    // Candidates the browser hung on (EngineResult::hung): scored as never the best.
+    int hungJobs() const { return hungJobs_; }
     std::string sceneSpec(size_t i) const { return specs_[i]; }
 
   private:
@@ -119,6 +121,7 @@ class EngineTuner {
     std::vector<std::unique_ptr<EngineRunner>> runners_;
     std::map<size_t, double> defaults_; // view -> MSE at the make-peers settings
     SceneRadiusWarnings radius_;        // R against what each view spans
+    int hungJobs_ = 0;
 };
 
 } // namespace ssao
