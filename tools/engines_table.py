@@ -66,6 +66,13 @@ def tune(ssaolab, engine, scene, size, radius_scene, out, resume):
     return j
 
 
+def not_run(engines, scenes, rows):
+    """The engine-scene pairs a stopped run left out, in one line ("" when none)."""
+    done = {(r.split(" | ")[0][2:], r.split(" | ")[1]) for r in rows}
+    missing = ["%s on %s" % (e, s) for s in scenes for e in engines if (cell(e), cell(s)) not in done]
+    return "Not run: %s." % ", ".join(missing) if missing else ""
+
+
 def fmt(x, f="%.4f"):
     return "–" if x is None or (isinstance(x, float) and not math.isfinite(x)) else f % x
 
@@ -130,6 +137,7 @@ def main():
     ap.add_argument("--size", default="320x180")
     ap.add_argument("--engines", default="")
     ap.add_argument("--resume", action="store_true", help="keep the tunes already in --work")
+    ap.add_argument("--page-only", action="store_true", help="no tune: the page from what --work holds")
     ap.add_argument("scenes", nargs="*")
     a = ap.parse_args()
     os.makedirs(a.work, exist_ok=True)
@@ -138,7 +146,7 @@ def main():
     subprocess.run([sys.executable, os.path.join(os.path.dirname(__file__), "city_gltf.py"), city], check=True)
     tables = os.path.join(os.path.dirname(os.path.abspath(__file__)), "peers", "engines")
     engines = [e for e in a.engines.split(",") if e] or sorted(f[:-5] for f in os.listdir(tables) if f.endswith(".json"))
-    scenes = a.scenes + [city]
+    scenes = [city] + a.scenes
     rows, metrics = [], None
     for scene in scenes:
         name = os.path.splitext(os.path.basename(scene))[0]
@@ -149,11 +157,17 @@ def main():
             continue
         radius_text = "%.4g (%s)" % (radius_scene * m["radius"]["scene_diagonal"], source)
         for e in engines:
+            out = os.path.join(a.work, "tune", e, name + ".json")
+            if a.page_only and not os.path.isfile(out):
+                continue
             j = tune(a.ssaolab, e, scene, a.size, radius_scene, os.path.join(a.work, "tune", e, name + ".json"), a.resume)
             rows.append(row(e, name, radius_text, j))
             sys.stdout.write(rows[-1] + "\n")
             sys.stdout.flush()
+    names = [os.path.splitext(os.path.basename(s))[0] for s in scenes]
     text = page(rows, a.size, machine(a.ssaolab, metrics), engines, scenes)
+    if not_run(engines, names, rows):
+        text += "\n" + not_run(engines, names, rows) + "\n"
     open(a.page, "w").write(text)
     sys.stdout.write(text)
 

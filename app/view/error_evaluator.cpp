@@ -50,6 +50,10 @@ void ErrorEvaluator::run() {
         lock.unlock();
         Result out{evaluate(r.ao, *r.reference), std::move(r.reference), r.tag, std::move(r.oracle), {}, {}};
         if (!r.aoB.data.empty()) out.metricsB = evaluate(r.aoB, *out.reference).metrics;
+        const bool sameSize = out.oracle && out.oracle->width == out.reference->width && out.oracle->height == out.reference->height;
+        if (r.radius > 0)
+            out.places = errorByPlace(out.evaluation, *out.reference, placesOf(*out.reference, r.camera, r.radius),
+                                      sameSize ? out.oracle.get() : nullptr);
         if (out.oracle) {
             const Evaluation technique = evaluate(r.ao, *out.oracle);
             out.technique = technique.metrics;

@@ -26,6 +26,10 @@ class ErrorEvaluator {
         std::shared_ptr<const ReferenceImage> oracle;
         // Chain B's ao.denoised in the split view (empty: none, or B shares A's): judged the same way.
         Image aoB;
+        // The camera the reference traced and its R (scene units): the error by place (error_places.h);
+        // R 0: none.
+        Camera camera;
+        double radius = 0;
     };
     struct Result {
         Evaluation evaluation;
@@ -35,6 +39,7 @@ class ErrorEvaluator {
         std::optional<ErrorMetrics> technique, screen; // with an oracle
         std::optional<ErrorShares> shares;             // with an oracle: the parts that add up
         std::optional<ErrorMetrics> metricsB;          // of Request::aoB, when given
+        std::optional<ErrorByPlace> places;            // with Request::radius: where the error lives
     };
 
     // `wake` (may be empty) is called from the evaluator's thread when a result is ready.

@@ -32,6 +32,7 @@ void LiveReference::clear() {
     metrics_.reset();
     metricsB_.reset();
     split_.reset();
+    places_.reset();
     // Bumped only when the buffers held something: while the camera moves this runs every frame,
     // and the upload pass must not run with it.
     if (!buffers_ || buffers_->width > 0) {
@@ -52,6 +53,7 @@ void LiveReference::publish(const ErrorEvaluator::Result& r) {
     buffers_ = std::move(b);
     metrics_ = r.evaluation.metrics;
     metricsB_ = r.metricsB;
+    places_ = r.places;
     if (r.technique && r.screen)
         split_ = Split{*r.technique, *r.screen, r.shares.value_or(ErrorShares{})};
     else
@@ -124,7 +126,8 @@ void LiveReference::submitEvaluation(const Renderer& r) {
     if (snapshot_ && ao &&
         (snapshot_ != submitted_ || oracle_ != submittedOracle_ || ao->version != submittedAo_ ||
          ao->generation != submittedAoGeneration_ || bKey != submittedB_)) {
-        evaluator_.submit({readBack(ao->texture, 1), snapshot_, ++tag_, oracle_, aoB ? readBack(aoB->texture, 1) : Image{}});
+        evaluator_.submit({readBack(ao->texture, 1), snapshot_, ++tag_, oracle_, aoB ? readBack(aoB->texture, 1) : Image{},
+                           key_ ? key_->camera : Camera{}, key_ ? radius_ : 0.0});
         submittedB_ = bKey;
         submitted_ = snapshot_;
         submittedOracle_ = oracle_;

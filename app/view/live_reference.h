@@ -76,6 +76,9 @@ class LiveReference {
         ErrorShares shares; // of the total squared error: technique + screen + interaction = 1
     };
     const std::optional<Split>& split() const { return split_; }
+    // The error of ao.denoised by where its pixels are (metrics/error_places.h); nullopt before the
+    // first evaluation.
+    const std::optional<ErrorByPlace>& places() const { return places_; }
     // Where the oracle is: 0 not started, in (0, 1) tracing, 1 done.
     double oracleFraction() const;
     // The finished reference of the view (every ray traced), null while it is not; with the key it
@@ -125,6 +128,7 @@ class LiveReference {
     std::shared_ptr<const ReferenceImage> oracle_;          // of the current view, once done
     std::shared_ptr<const ReferenceImage> submittedOracle_; // sent with the last request
     std::optional<Split> split_;
+    std::optional<ErrorByPlace> places_;
     uint64_t version_ = 0;
     uint64_t seenTrace_ = 0, seenOracle_ = 0, seenEvaluation_ = 0;
 };

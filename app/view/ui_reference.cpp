@@ -2,8 +2,10 @@
 // so far, or why it waits) and the error of ao.denoised against it, next to the timings.
 #include "view/ui_panels.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace ssao {
 
@@ -147,6 +149,38 @@ void splitSection(const LiveReference& ref) {
     }
 }
 
+// Where the error lives (metrics/error_places.h): the two places with the largest share of the
+// squared error on one line, every place and R-in-pixels bin on hover.
+void placesSection(const LiveReference& ref) {
+    const auto& e = ref.places();
+    if (!e || e->all.sumSq <= 0) return;
+    int order[kPlaces] = {0, 1, 2, 3, 4};
+    std::sort(order, order + kPlaces, [&](int a, int b) { return e->place[size_t(a)].sumSq > e->place[size_t(b)].sumSq; });
+    char line[128];
+    std::snprintf(line, sizeof line, "where: %s %.0f%%, %s %.0f%%", placeName(Place(order[0])),
+                  100 * e->place[size_t(order[0])].sumSq / e->all.sumSq, placeName(Place(order[1])),
+                  100 * e->place[size_t(order[1])].sumSq / e->all.sumSq);
+    wrappedText(line);
+    if (!ImGui::IsItemHovered()) return;
+    std::string tip = "Where ao.denoised's squared error lives (share of it, RMSE, share of the pixels):\n";
+    char b[128];
+    for (int i = 0; i < kPlaces; ++i) {
+        const PlaceStats& s = e->place[size_t(i)];
+        std::snprintf(b, sizeof b, "  %-10s %3.0f%%  %.4f  (%3.0f%% of the pixels)\n", placeName(Place(i)),
+                      100 * s.sumSq / e->all.sumSq, s.pixels ? std::sqrt(s.sumSq / double(s.pixels)) : 0.0,
+                      100.0 * double(s.pixels) / double(std::max(1L, e->all.pixels)));
+        tip += b;
+    }
+    const char* bins[kRadiusBins] = {"R < 8 px", "R 8-16 px", "R > 16 px"};
+    for (int i = 0; i < kRadiusBins; ++i) {
+        std::snprintf(b, sizeof b, "  %-10s %3.0f%%\n", bins[i], 100 * e->radius[size_t(i)].sumSq / e->all.sumSq);
+        tip += b;
+    }
+    tip += "Places by priority: border (nearer the frame's edge than R in pixels), silhouette (2 px of a\n"
+           "depth discontinuity), crease (2 px of a concave normal discontinuity), convex edge, open.";
+    ImGui::SetTooltip("%s", tip.c_str());
+}
+
 } // namespace
 
 std::string referenceTag(const FrameDriver& frames) {
@@ -197,6 +231,7 @@ void drawReferenceSection(FrameDriver& frames, ViewState& view) {
     std::snprintf(about, sizeof about, "R %.4g units, %.1f s, %.1f Mrays/s", s.radius, s.seconds, s.mraysPerSecond);
     wrappedText(about, true);
     splitSection(frames.reference());
+    placesSection(frames.reference());
     rememberRect(view, "reference#split"); // the shares' line, the last of the section
 }
 

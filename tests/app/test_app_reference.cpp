@@ -286,6 +286,24 @@ TEST_F(AppReference, AnAoChangeUpdatesTheErrorAndKeepsTheReference) {
     EXPECT_NE(read("reference.error").data, error.data) << "the error follows ao.denoised";
 }
 
+// The info strip's "where" line: the error of the same frame by place (metrics/error_places.h),
+// whose places add up to the error shown beside it.
+TEST_F(AppReference, TheErrorByPlaceAddsUpToTheErrorShown) {
+    framesUntilDone();
+    ASSERT_TRUE(eventually([&] {
+        ui_->frame();
+        return app().frames().reference().places().has_value();
+    }));
+    const ErrorByPlace& e = *app().frames().reference().places();
+    long pixels = 0;
+    double sq = 0;
+    for (const PlaceStats& p : e.place) pixels += p.pixels, sq += p.sumSq;
+    EXPECT_EQ(pixels, e.all.pixels);
+    EXPECT_NEAR(sq, e.all.sumSq, 1e-9 * (1 + sq));
+    ASSERT_GT(e.all.pixels, 0);
+    EXPECT_NEAR(std::sqrt(e.all.sumSq / double(e.all.pixels)), app().frames().reference().metrics()->rmse, 1e-6);
+}
+
 TEST_F(AppReference, ACameraOrRadiusChangeCancelsAndRestarts) {
     framesUntilDone();
     const Image before = read("reference.ao");
