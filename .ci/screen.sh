@@ -35,8 +35,11 @@ done
 import json, os, sys
 run, out = sys.argv[1:]
 md = open(os.path.join(run, "split", "report.md")).read()
-at = md.find("### What the screen cannot see")
-split = md[at:md.find("\n### ", at + 10) if md.find("\n### ", at + 10) > 0 else len(md)].strip()
+def section(title):
+    at = md.find(title)
+    end = md.find("\n### ", at + 10)
+    return "" if at < 0 else md[at:end if end > 0 else len(md)].strip()
+split, places = section("### What the screen cannot see"), section("### Where the error lives")
 rows, data = [], {}
 for d in sorted(os.listdir(os.path.join(run, "remedy"))):
     m = json.load(open(os.path.join(run, "remedy", d, "metrics.json")))
@@ -53,7 +56,7 @@ for scene, v in data.items():
 json.dump({s: {"%d layer(s), %d px" % k: e["rmse"] for k, e in v.items()} for s, v in data.items()},
           open(os.path.join(out, "screen.json"), "w"), indent=1)
 with open(os.path.join(out, "screen.md"), "w") as f:
-    f.write(split + "\n\n")
+    f.write(split + "\n\n" + (places + "\n\n" if places else ""))
     f.write("#### What each remedy could close at best\n\n"
             "The screen share (the oracle against the truth) when the oracle's G-buffer also holds a 64 px guard "
             "band beyond each edge, a deep G-buffer's second layer (the nearest surface at least a separation "

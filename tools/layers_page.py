@@ -7,6 +7,7 @@ the best candidates and whether any two-layer row is worse than its one-layer tw
 given and prints it."""
 import json
 import math
+import os
 import sys
 
 from markdown_cell import cell
@@ -61,6 +62,19 @@ def summarise(run):
 
 def fmt(x, spec):
     return "–" if x is None or (isinstance(x, float) and math.isnan(x)) else spec % x
+
+
+def places_section(results_json):
+    """The run's report.md section "Where the error lives" (the error by place), or ""."""
+    report = os.path.join(os.path.dirname(results_json), "report.md")
+    if not os.path.isfile(report):
+        return ""
+    md = open(report).read()
+    at = md.find("### Where the error lives")
+    if at < 0:
+        return ""
+    end = md.find("\n### ", at + 10)
+    return "\n" + md[at:end if end > 0 else len(md)].strip() + "\n"
 
 
 def main(results_json, page):
@@ -120,7 +134,7 @@ def main(results_json, page):
                     worst, worst_name = two["rmse"] - one["rmse"], "%s, %s" % (fam, build)
         summary.append("| %s | %s | %s | %s | %+.4f (%s) |" % (cell(sc), best(False, 1.0), best(True, 1.0),
                                                              best(True, None), worst, cell(worst_name)))
-    text = "\n".join(out[:6] + summary + [""] + out[6:])
+    text = "\n".join(out[:6] + summary + [""] + out[6:]) + places_section(results_json)
     open(page, "w").write(text)
     print(text)
 
