@@ -8,18 +8,13 @@
 // camera, in the file's coordinates, is used as it is. Time: the median frame with the pipeline
 // minus the median frame without, each ended by a 1-pixel readPixels, as peers.js times its passes.
 /* global BABYLON */
-import { frameTimes as harnessFrameTimes, median, timedJob, readAo as harnessReadAo, readParams as readRows, seededRandom, writePath } from './harness.js';
+import { frameTimes as harnessFrameTimes, median, pageCanvas, timedJob, readAo as harnessReadAo, readParams as readRows, seededRandom, writePath } from './harness.js';
 
 let engine, scene, camera, cfg, canvas;
 
 window.setupPeers = async (config) => {
     cfg = config;
-    canvas = document.createElement('canvas');
-    canvas.width = cfg.width;
-    canvas.height = cfg.height;
-    canvas.style.width = `${cfg.width}px`;
-    canvas.style.height = `${cfg.height}px`;
-    document.body.appendChild(canvas);
+    canvas = pageCanvas(cfg.width, cfg.height);
     engine = new BABYLON.Engine(canvas, false, { preserveDrawingBuffer: true, stencil: true, antialias: false }, false);
     engine.setHardwareScalingLevel(1);
     // Shaders compile as they are asked for: with parallel compilation Babylon skips a mesh or a

@@ -10,7 +10,7 @@
 // Time: the median frame with the AO minus the median frame without, each ended by a 1-pixel
 // readPixels, as peers.js times its passes.
 /* global Filament */
-import { aoBase64, median, readParams, timedJob } from './harness.js';
+import { aoBase64, median, pageCanvas, readParams, timedJob } from './harness.js';
 
 const ALBEDO = 0.02, LIGHT = 45; // the frame without AO near 0.9 of the canvas's range, never clipped
 
@@ -18,12 +18,7 @@ let engine, scene, view, camera, renderer, swapChain, gl, cfg, defaults, quality
 
 window.setupPeers = async (config) => {
     cfg = config;
-    const canvas = document.createElement('canvas');
-    canvas.width = cfg.width;
-    canvas.height = cfg.height;
-    canvas.style.width = `${cfg.width}px`;
-    canvas.style.height = `${cfg.height}px`;
-    document.body.appendChild(canvas);
+    const canvas = pageCanvas(cfg.width, cfg.height);
     await new Promise((resolve) => Filament.init([], resolve));
     engine = Filament.Engine.create(canvas, { preserveDrawingBuffer: true, antialias: false });
     gl = canvas.getContext('webgl2'); // the context Filament created

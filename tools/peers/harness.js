@@ -1,6 +1,17 @@
 // What the harness pages share (peers.js, babylon.js, playcanvas.js, filament.js): the seeded Math.random an
 // engine's noise is drawn from, the timed frames, the AO read back, and the table rows' paths.
 
+// The page's canvas, w x h pixels at one CSS pixel each (no device scaling), in the body.
+export function pageCanvas(w, h) {
+    const canvas = document.createElement('canvas');
+    canvas.width = w;
+    canvas.height = h;
+    canvas.style.width = `${w}px`;
+    canvas.style.height = `${h}px`;
+    document.body.appendChild(canvas);
+    return canvas;
+}
+
 // A fixed sequence (mulberry32): restarted before an engine builds its noise, one setting gives one
 // image in every session (a tune compares settings measured in different sessions).
 export function seededRandom(seed) {

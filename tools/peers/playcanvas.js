@@ -6,18 +6,13 @@
 // used as it is. Time: the median frame with the CameraFrame minus the median frame without it,
 // each ended by a 1-pixel readPixels, as peers.js times its passes.
 import * as pc from '/playcanvas/build/playcanvas.mjs';
-import { frameTimes as harnessFrameTimes, gammaDecodeTable, median, timedJob, readAo as harnessReadAo, readParams, seededRandom, writePath } from './harness.js';
+import { frameTimes as harnessFrameTimes, gammaDecodeTable, median, pageCanvas, timedJob, readAo as harnessReadAo, readParams, seededRandom, writePath } from './harness.js';
 
 let app, device, cameraEntity, cfg;
 
 window.setupPeers = async (config) => {
     cfg = config;
-    const canvas = document.createElement('canvas');
-    canvas.width = cfg.width;
-    canvas.height = cfg.height;
-    canvas.style.width = `${cfg.width}px`;
-    canvas.style.height = `${cfg.height}px`;
-    document.body.appendChild(canvas);
+    const canvas = pageCanvas(cfg.width, cfg.height);
     device = await pc.createGraphicsDevice(canvas, { deviceTypes: ['webgl2'], antialias: false, alpha: false,
                                                       preserveDrawingBuffer: true });
     device.maxPixelRatio = 1;
