@@ -34,12 +34,14 @@ def run(args, what):
     return 0, ""
 
 
-def view_radius(ssaolab, scene, size, work):
-    """(--radius-scene, where it comes from, render's metrics) for the scene's own camera."""
+def view_radius(ssaolab, scene, size, work, reuse=False):
+    """(--radius-scene, where it comes from, render's metrics) for the scene's own camera; reuse: the
+    render an earlier run left in `work`, when there is one."""
     out = os.path.join(work, "render", os.path.splitext(os.path.basename(scene))[0])
-    code, err = run([ssaolab, "render", "--scene", scene, "--size", size, "--out", out, "--quiet"], "render " + scene)
-    if code:
-        return None, err, None
+    if not (reuse and os.path.isfile(os.path.join(out, "metrics.json"))):
+        code, err = run([ssaolab, "render", "--scene", scene, "--size", size, "--out", out, "--quiet"], "render " + scene)
+        if code:
+            return None, err, None
     m = json.load(open(os.path.join(out, "metrics.json")))
     r = m["radius"]
     extent, suggested, diagonal = r.get("view_extent"), r.get("for_view"), r["scene_diagonal"]
@@ -125,7 +127,8 @@ def page(rows, size, facts, engines, scenes):
            "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
     out += rows
     met = sum(r.endswith("| yes |") for r in rows)
-    out += ["", "%d of %d engine-scene pairs reach the target (%d engines, %d scenes)." % (met, len(rows), len(engines), len(scenes))]
+    ran = lambda k: len({r.split(" | ")[k] for r in rows})
+    out += ["", "%d of %d engine-scene pairs reach the target (%d engine(s), %d scene(s))." % (met, len(rows), ran(0), ran(1))]
     return "\n".join(out) + "\n"
 
 
@@ -143,14 +146,15 @@ def main():
     os.makedirs(a.work, exist_ok=True)
     city = os.path.join(a.work, "city", "city.gltf")
     os.makedirs(os.path.dirname(city), exist_ok=True)
-    subprocess.run([sys.executable, os.path.join(os.path.dirname(__file__), "city_gltf.py"), city], check=True)
+    if not (a.page_only and os.path.isfile(city)):
+        subprocess.run([sys.executable, os.path.join(os.path.dirname(__file__), "city_gltf.py"), city], check=True)
     tables = os.path.join(os.path.dirname(os.path.abspath(__file__)), "peers", "engines")
     engines = [e for e in a.engines.split(",") if e] or sorted(f[:-5] for f in os.listdir(tables) if f.endswith(".json"))
     scenes = [city] + a.scenes
     rows, metrics = [], None
     for scene in scenes:
         name = os.path.splitext(os.path.basename(scene))[0]
-        radius_scene, source, m = view_radius(a.ssaolab, scene, a.size, a.work)
+        radius_scene, source, m = view_radius(a.ssaolab, scene, a.size, a.work, a.page_only)
         metrics = metrics or m
         if radius_scene is None:
             rows += ["| %s | %s | failed: %s | | | | | | | | | |" % (cell(e), cell(name), cell(source)) for e in engines]
@@ -160,7 +164,7 @@ def main():
             out = os.path.join(a.work, "tune", e, name + ".json")
             if a.page_only and not os.path.isfile(out):
                 continue
-            j = tune(a.ssaolab, e, scene, a.size, radius_scene, os.path.join(a.work, "tune", e, name + ".json"), a.resume)
+            j = tune(a.ssaolab, e, scene, a.size, radius_scene, out, a.resume or a.page_only)
             rows.append(row(e, name, radius_text, j))
             sys.stdout.write(rows[-1] + "\n")
             sys.stdout.flush()
