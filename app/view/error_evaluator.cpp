@@ -51,9 +51,14 @@ void ErrorEvaluator::run() {
         Result out{evaluate(r.ao, *r.reference), std::move(r.reference), r.tag, std::move(r.oracle), {}, {}};
         if (!r.aoB.data.empty()) out.metricsB = evaluate(r.aoB, *out.reference).metrics;
         const bool sameSize = out.oracle && out.oracle->width == out.reference->width && out.oracle->height == out.reference->height;
-        if (r.radius > 0)
-            out.places = errorByPlace(out.evaluation, *out.reference, placesOf(*out.reference, r.camera, r.radius),
-                                      sameSize ? out.oracle.get() : nullptr);
+        if (r.radius > 0) {
+            // The places depend on the reference's view alone: kept while the AO changes under it.
+            if (placesOf_ != out.reference || placesRadius_ != r.radius || !(placesCamera_ == r.camera)) {
+                places_ = placesOf(*out.reference, r.camera, r.radius);
+                placesOf_ = out.reference, placesRadius_ = r.radius, placesCamera_ = r.camera;
+            }
+            out.places = errorByPlace(out.evaluation, *out.reference, places_, sameSize ? out.oracle.get() : nullptr);
+        }
         if (out.oracle) {
             const Evaluation technique = evaluate(r.ao, *out.oracle);
             out.technique = technique.metrics;

@@ -66,6 +66,11 @@ class ErrorEvaluator {
     std::optional<Result> result_;
     bool working_ = false, quit_ = false;
     std::atomic<uint64_t> serial_{0};
+    // The last reference's places (evaluator thread only).
+    PlaceMap places_;
+    std::shared_ptr<const ReferenceImage> placesOf_;
+    double placesRadius_ = 0;
+    Camera placesCamera_;
     std::thread thread_; // last: started once everything above exists
 };
 
