@@ -1,6 +1,7 @@
 // ssaolab command line: `view` (window), `render` (headless), `params` (the parameter table).
 // Without a subcommand: the window when there is a display, else a headless render into out/.
 #include "cli/cli_util.h"
+#include "cli/shared_options.h"
 #include "cli/compile_gate.h"
 #include "cli/headless_runner.h"
 #include "cli/scene_options.h"
@@ -168,7 +169,7 @@ struct Commands {
         CLI::App* probe = app.add_subcommand("probe-technique", "render a user technique's file in two frames (the explorer's test)")
                               ->group(""); // hidden: app/view/technique_watch.h runs it
         probe->add_option("file", probeFile, "NAME.ao.glsl")->required()->type_name(ssao::kInFile);
-        probe->add_option("--size", probeSize, "the frames' size WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
+        ssao::addSizeOption(*probe, probeSize);
         CLI::App* compile = app.add_subcommand("compile-glsl", "compile one program of an untrusted fragment shader (the compile gate's test)")
                                 ->group(""); // hidden: app/cli/compile_gate.h runs it
         compile->add_option("name", probeFile, "the name the shader's errors carry")->required()->type_name("NAME");
@@ -190,17 +191,14 @@ struct Commands {
 
     void addView(CLI::App& view) {
         ssao::WindowOptions& wo = window;
-        view.add_option("--scene", wo.app.scene, "builtin:NAME or a .gltf/.glb file (default: the preset's, else showcase)")->type_name(ssao::kInFile);
+        ssao::addSceneOption(view, wo.app.scene, {"", "default: the preset's scene, else builtin:showcase"});
         wo.app.preset = ssao::kStartPreset; // a new user's first frame: a point of the front (settings/preset.h)
         view.add_option("--preset", wo.app.preset, "preset name or JSON file")->type_name(ssao::kInFile)->capture_default_str();
-        view.add_option("--shaders", wo.app.shaderDir, "shader folder (edits are hot-reloaded)")->type_name(ssao::kInDir);
-        view.add_option("--preset-dir", wo.app.userPresetDir,
-                        "folder for saved presets (default $XDG_CONFIG_HOME/ssaolab/presets)")->type_name(ssao::kInDir);
-        view.add_option("--size", windowSize, "window size WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
+        ssao::addShadersOption(view, wo.app.shaderDir, {"", "edits are hot-reloaded"});
+        ssao::addPresetDirOption(view, wo.app.userPresetDir, {"", "the explorer's: $XDG_CONFIG_HOME/ssaolab/presets"});
+        ssao::addSizeOption(view, windowSize, {"", "the window's, at least 200x150"});
         ssao::addLensOptions(view, viewProjection, viewDepth);
-        view.add_option("--engine-modules", wo.app.engineModules,
-                        "the web engines' npm packages for the Front tab (default: the build folder's peers/node_modules, from make engine-modules)")
-            ->type_name(ssao::kInDir);
+        ssao::addEngineModulesOption(view, wo.app.engineModules, {"", "for the Front tab"});
         view.add_option("--frames", wo.frames, "draw N frames then exit (for tests and screenshots)")
             ->check(ssao::cliRange(0, 1000000));
         view.add_option("--screenshot", wo.screenshot, "with --frames: save the last frame as PNG")->type_name(ssao::kOutFile);

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <regex>
+#include <sstream>
 
 using namespace ssaotest;
 namespace fs = std::filesystem;
@@ -46,4 +48,35 @@ TEST(Docs, TheReadmeIsAManualOfAtMost250Lines) {
     EXPECT_LE(std::count(readme.begin(), readme.end(), '\n'), 250);
     for (const char* diary : {"latest run", "this session", "earlier runs", "run of 20"})
         EXPECT_EQ(readme.find(diary), std::string::npos) << "the README tells a story: '" << diary << "'";
+}
+
+// An option several commands take is declared once (app/cli/shared_options.h): its value type and
+// range read the same in every command of the manual. Two names stay apart on purpose: --out is each
+// command's own output (a folder, or tune's JSON file), and the explorer's --frames counts frames
+// drawn before it exits, not timed ones.
+TEST(Docs, ASharedOptionReadsTheSameInEveryCommand) {
+    const CliRun r = ssaolab("docs commands");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::regex heading(R"(^## `ssaolab ([a-z -]+)`)"), row(R"(^\| `(--[a-z0-9-]+)` \| ([^|]*) \|)");
+    std::map<std::string, std::map<std::string, std::string>> seen; // option -> command -> value column
+    std::string command, line;
+    std::istringstream in(r.out);
+    while (std::getline(in, line)) {
+        std::smatch m;
+        if (std::regex_search(line, m, heading)) command = m[1];
+        else if (!command.empty() && std::regex_search(line, m, row)) seen[m[1]][command] = m[2];
+    }
+    int shared = 0;
+    for (const auto& [option, commands] : seen) {
+        if (commands.size() < 2 || option == "--out") continue;
+        ++shared;
+        std::string first;
+        for (const auto& [cmd, value] : commands) {
+            if (option == "--frames" && cmd == "view") continue;
+            if (first.empty()) first = value;
+            EXPECT_EQ(value, first) << option << " in `ssaolab " << cmd << "`";
+        }
+    }
+    EXPECT_GE(shared, 20) << "the shared options the manual lists";
+    EXPECT_EQ(seen["--oracle-guard"]["bench"], seen["--oracle-guard"]["render"]);
 }

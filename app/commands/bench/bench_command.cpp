@@ -21,6 +21,7 @@
 #include "util/paths.h"
 
 #include "cli/cli_util.h"
+#include "cli/shared_options.h"
 
 #include <CLI/CLI.hpp>
 
@@ -37,79 +38,44 @@
 namespace ssao {
 
 void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
-    cmd.add_option("--scene", o.scenes,
-                   "scene to measure (repeatable): builtin:NAME or a .gltf file "
-                   "(default builtin:showcase)")->type_name(kInFile);
+    addSceneOption(cmd, o.scenes, {"scene to measure: ", "default builtin:showcase"});
     cmd.add_option("--sweep", o.sweep, "builtin, or a sweep JSON file (see assets/bench/sweep_builtin.json)")->type_name(kInFile)
         ->capture_default_str();
-    cmd.add_option("--size", o.size, "render size WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
-    cmd.add_option("--views", o.views, "viewpoints per scene: its camera, then orbits around it")
-        ->capture_default_str()
-        ->check(cliRange(1, 32));
+    addSizeOption(cmd, o.size);
+    addViewsOption(cmd, o.views);
     addStartCameraOption(cmd, o.camera);
-    cmd.add_option("--frames", o.frames, "timed frames per configuration and view (median, min, max)")
-        ->capture_default_str()
-        ->check(cliRange(1, 10000));
+    addTimedFramesOption(cmd, o.frames, {"", "per configuration and view; min and max too"});
     cmd.add_option("--warmup", o.warmup, "untimed frames before timing")
         ->capture_default_str()
         ->check(cliRange(0, 1000));
-    cmd.add_option("--reference-rays", o.referenceRays, "reference rays per pixel")
-        ->capture_default_str()
-        ->check(cliRange(1, 1 << 16));
-    cmd.add_option("--reference-variant", o.referenceVariant, "visibility (XeGTAO's) or obscurance")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"visibility", "obscurance"}));
-    cmd.add_option(
-           "--radius-scene", o.radiusScene,
-           "the AO radius R of every configuration and of the reference, as a fraction of the scene's "
-           "bounding-box diagonal")
-        ->capture_default_str()
-        ->check(cliRange(0.0001, 0.5));
+    addReferenceRaysOption(cmd, o.referenceRays);
+    addReferenceVariantOption(cmd, o.referenceVariant);
+    addRadiusSceneOption(cmd, o.radiusScene, {"", "every configuration's and the reference's"});
     cmd.add_option("--out", o.out, "output folder")->type_name(kOutDir)->capture_default_str();
-    cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)")->type_name(kInDir);
-    cmd.add_option("--shaders", o.shaderDir, "shader folder (default: the installed or source tree's shaders/)")
-        ->type_name(kInDir);
+    addPresetDirOption(cmd, o.presetDir);
+    addShadersOption(cmd, o.shaderDir);
     cmd.add_option("--baseline", o.baseline, "the preset every row is compared with")->type_name("PRESET")->capture_default_str();
     cmd.add_flag(
         "--no-oracle", [&o](int64_t) { o.oracle = false; },
         "skip the screen-space oracle (no split of the error into the technique's and the screen's)");
-    cmd.add_option("--oracle-layers", o.oracleLayers, "depth layers the oracle's G-buffer holds (2: a deep G-buffer)")
-        ->capture_default_str()
-        ->check(cliRange(1, 2));
-    cmd.add_option("--oracle-thickness", o.oracleThickness,
-                   "thickness of the oracle's surfaces, x R (inf: a height field, GTAO's assumption)")
-        ->check(cliRange(1e-3, INFINITY));
-    cmd.add_option("--oracle-guard", o.oracleGuard, "pixels the oracle's G-buffer holds beyond each edge of the frame")
-        ->capture_default_str()
-        ->check(cliRange(0, 1024));
+    addOracleOptions(cmd, o.oracleLayers, o.oracleThickness, o.oracleGuard);
     cmd.add_option("--shard", o.shard,
                    "K/N: run the K-th of N equal parts of the work (scenes x views x configurations); join "
                    "the parts with `ssaolab bench merge`")->type_name("K/N")
         ->capture_default_str();
-    cmd.add_option("--budget-ms", o.budgetMs,
-                   "answer: the most accurate configuration whose AO + denoise time is at most this (ms)")
-        ->check(cliRange(1e-6, 1e6));
-    cmd.add_option("--budget-ratio", o.budgetRatio,
-                   "answer: the most accurate configuration whose time is at most this many times the baseline's "
-                   "(the plot's axis: 0.5 = half the baseline's time)")
-        ->check(cliRange(1e-6, 1e6));
-    cmd.add_option("--max-error", o.maxError,
-                   "answer: the fastest configuration whose error (RMSE, or the motion score with --objective motion) "
-                   "is at most this")
-        ->check(cliRange(1e-9, 1.0));
-    cmd.add_option("--objective", o.objective,
-                   "what the front, the answers and 'fastest at most the baseline's error' rank by: still (the still "
-                   "frame's RMSE) or motion (the motion score along each view's camera path; implies --motion)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"still", "motion"}));
+    addBudgetMsOption(cmd, o.budgetMs, {"answer: the most accurate configuration within ", "its AO + denoise time"});
+    addBudgetRatioOption(cmd, o.budgetRatio,
+                         {"answer: the most accurate configuration within ", "the plot's axis: 0.5 = half the baseline's time"});
+    addMaxErrorOption(cmd, o.maxError);
+    addObjectiveOption(cmd, o.objective,
+                       {"what the front, the answers and 'fastest at most the baseline's error' rank by: ", "motion implies --motion"});
     cmd.add_flag("--motion", o.motion,
                  "also score every configuration in motion along a camera path from each view (a reference per "
                  "frame): motion RMSE, instability, ghosting columns");
     addMotionPathOptions(cmd, o.motionPath);
     addBenchEngineOptions(cmd, o.engines);
-    cmd.add_flag(
-        "--no-plot", [&o](int64_t) { o.plot = false; }, "skip the matplotlib plot");
-    cmd.add_flag("--quiet", o.quiet, "no progress output");
+    addNoPlotFlag(cmd, o.plot);
+    addQuietFlag(cmd, o.quiet);
 }
 
 namespace {

@@ -5,6 +5,7 @@
 
 #include "measure/thumbnails.h"
 #include "cli/cli_util.h"
+#include "cli/shared_options.h"
 #include "metrics/evaluate.h"
 #include "cli/progress_bar.h"
 #include "scene/browser_assets.h"
@@ -37,9 +38,7 @@ void addBenchEngineOptions(CLI::App& cmd, BenchEngineOptions& o) {
                    "with or without --engines: a `tune --engine` result (its --out JSON; repeatable) as the row "
                    "'engine NAME (tuned)': its settings, each relative one at the same multiple of the view's R")
         ->type_name(kInFile);
-    cmd.add_option("--engine-modules", o.modules,
-                   "the engines' npm packages (default: the build folder's peers/node_modules, from make engine-modules)")
-        ->type_name(kInDir);
+    addEngineModulesOption(cmd, o.modules);
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #include "results/results_check.h"
 #include "results/shard.h"
 #include "cli/cli_util.h"
+#include "cli/shared_options.h"
 #include "settings/params.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -29,21 +30,12 @@ namespace ssao {
 void addBenchMergeOptions(CLI::App& cmd, BenchMergeOptions& o) {
     cmd.add_option("dirs", o.dirs, "output folders of `bench --shard K/N` runs")->type_name(kInDirs)->required();
     cmd.add_option("--out", o.out, "output folder of the merged results")->type_name(kOutDir)->capture_default_str();
-    cmd.add_option("--budget-ms", o.budgetMs, "answer: the most accurate configuration within this time (ms)")
-        ->check(cliRange(1e-6, 1e6));
-    cmd.add_option("--budget-ratio", o.budgetRatio,
-                   "answer: the most accurate configuration whose time is at most this many times the baseline's")
-        ->check(cliRange(1e-6, 1e6));
-    cmd.add_option("--max-error", o.maxError,
-                   "answer: the fastest configuration whose error (RMSE, or the motion score with --objective motion) "
-                   "is at most this")
-        ->check(cliRange(1e-9, 1.0));
-    cmd.add_option("--objective", o.objective,
-                   "what the front and the answers rank by: still or motion (default: what the shards ran with)")
-        ->check(CLI::IsMember({"still", "motion"}));
-    cmd.add_flag(
-        "--no-plot", [&o](int64_t) { o.plot = false; }, "skip the matplotlib plot");
-    cmd.add_flag("--quiet", o.quiet, "no progress output");
+    addBudgetMsOption(cmd, o.budgetMs, {"answer: the most accurate configuration within ", "its AO + denoise time"});
+    addBudgetRatioOption(cmd, o.budgetRatio, {"answer: the most accurate configuration within ", ""});
+    addMaxErrorOption(cmd, o.maxError);
+    addObjectiveOption(cmd, o.objective, {"what the front and the answers rank by: ", "default: what the shards ran with"});
+    addNoPlotFlag(cmd, o.plot);
+    addQuietFlag(cmd, o.quiet);
 }
 
 namespace {

@@ -24,6 +24,7 @@
 #include "util/paths.h"
 
 #include "cli/cli_util.h"
+#include "cli/shared_options.h"
 #include "cli/scene_options.h"
 
 #include <CLI/CLI.hpp>
@@ -36,51 +37,32 @@
 namespace ssao {
 
 void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
-    cmd.add_option("--scene", o.scene,
-                   "builtin:NAME (showcase, plane, corner, slabs, hidden), or a .gltf/.glb file (default: the preset's "
-                   "scene, else builtin:showcase)")->type_name(kInFile);
+    addSceneOption(cmd, o.scene, {"", "default: the preset's scene, else builtin:showcase"});
     o.preset = kStartPreset; // one default everywhere: the window's first frame (settings/preset.h)
     cmd.add_option(
         "--preset", o.preset,
         "preset JSON file, or a name: the seed presets (e.g. learnopengl), then the ones saved in the app")
         ->type_name(kInFile)
         ->capture_default_str();
-    cmd.add_option("--set", o.sets, "override one parameter, key=value (repeatable; see `ssaolab params`)")->type_name("KEY=VALUE");
-    cmd.add_option("--size", o.size, "output size WIDTHxHEIGHT (default: the preset's size, else 1280x720)")->type_name("WxH");
+    addSetOption(cmd, o.sets);
+    addSizeOption(cmd, o.size, {"", "default: the preset's size, else 1280x720"});
     cmd.add_option("--camera", o.camera, "eye,target[,up[,fov_deg[,near,far]]] as comma-separated numbers")->type_name("EYE,TARGET...");
     cmd.add_option("--clip", o.clip,
                    "clip planes: fit (to the scene, default) or fixed (the camera's own near/far)")
         ->check(CLI::IsMember({"fit", "fixed"}));
     addLensOptions(cmd, o.projection, o.depth);
     cmd.add_option("--out", o.out, "output folder (EXR, PNG, metrics.json)")->type_name(kOutDir)->capture_default_str();
-    cmd.add_option("--timing-frames", o.timingFrames, "extra frames, every pass forced, averaged into gpu_ms")
-        ->capture_default_str()
-        ->check(cliRange(1, 100));
+    addTimingFramesOption(cmd, o.timingFrames, {"", "extra frames, every pass forced, averaged into gpu_ms"});
     cmd.add_flag("--fit-range", o.fitRange,
                  "PNG previews: fit every buffer's range (as the app's 'fit range')");
     cmd.add_flag("--false-colour", o.falseColor, "PNG previews: scalar buffers in false colour");
     cmd.add_flag("--reference", o.reference,
                  "also ray trace the reference AO (Embree, cached) and write ao_reference, error.exr/png and "
                  "the error metrics");
-    cmd.add_option("--reference-rays", o.referenceRays, "reference rays per pixel")
-        ->capture_default_str()
-        ->check(cliRange(1, 1 << 16));
-    cmd.add_option("--reference-variant", o.referenceVariant,
-                   "visibility (XeGTAO's: binary within R) or obscurance (linear falloff 1 - t/R)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"visibility", "obscurance"}));
+    addReferenceRaysOption(cmd, o.referenceRays);
+    addReferenceVariantOption(cmd, o.referenceVariant);
     cmd.add_flag("--no-cache", o.noCache, "trace the reference even if the cache holds it");
-    cmd.add_option("--oracle-layers", o.oracleLayers,
-                   "with --reference: depth layers of the screen-space oracle's G-buffer (2: a deep G-buffer; at least 2 when the settings read gbuffer.second_layer)")
-        ->capture_default_str()
-        ->check(cliRange(1, 2));
-    cmd.add_option("--oracle-thickness", o.oracleThickness,
-                   "with --reference: thickness of the oracle's surfaces, x R (inf: a height field)")
-        ->capture_default_str()
-        ->check(cliRange(1e-3, INFINITY));
-    cmd.add_option("--oracle-guard", o.oracleGuard, "with --reference: pixels the oracle's G-buffer holds beyond each edge")
-        ->capture_default_str()
-        ->check(cliRange(0, 4096));
+    addOracleOptions(cmd, o.oracleLayers, o.oracleThickness, o.oracleGuard, {"with --reference: ", ""});
     cmd.add_option("--score", o.score,
                    "with --reference: also judge this AO image of the same view and size (PNG, PGM or EXR; "
                    "channel 0, 1 = open), e.g. another renderer's; repeatable")->type_name(kInFiles);
@@ -89,11 +71,10 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
                  "and a dolly toward it), each against its own reference (--reference-rays): per-frame RMSE, "
                  "instability, ghosting (metrics.json \"motion\")");
     addMotionPathOptions(cmd, o.motionPath);
-    cmd.add_option("--shaders", o.shaderDir,
-                   "shader folder (default: the installed or source tree's shaders/)")->type_name(kInDir);
-    cmd.add_option("--preset-dir", o.presetDir, "folder of user presets (default: as the app)")->type_name(kInDir);
+    addShadersOption(cmd, o.shaderDir);
+    addPresetDirOption(cmd, o.presetDir);
     cmd.add_flag("--verbose-gl", o.verboseGl, "log every KHR_debug message");
-    cmd.add_flag("--quiet", o.quiet, "print nothing on success");
+    addQuietFlag(cmd, o.quiet, {"", "nothing printed on success"});
 }
 
 namespace {

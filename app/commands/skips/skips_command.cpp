@@ -19,6 +19,7 @@
 #include "util/paths.h"
 
 #include "cli/cli_util.h"
+#include "cli/shared_options.h"
 
 #include <CLI/CLI.hpp>
 
@@ -33,16 +34,12 @@
 namespace ssao {
 
 void addSkipsOptions(CLI::App& cmd, SkipsOptions& o) {
-    cmd.add_option("--scene", o.scenes, "scene (repeatable): builtin:NAME or a .gltf file (default builtin:showcase)")->type_name(kInFile);
-    cmd.add_option("--size", o.size, "render size WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
-    cmd.add_option("--frames", o.frames, "timed frames per variant (median)")
-        ->capture_default_str()
-        ->check(cliRange(1, 1000));
-    cmd.add_option("--reference-rays", o.referenceRays, "reference rays per pixel (adaptive rows' error)")
-        ->capture_default_str()
-        ->check(cliRange(1, 1 << 16));
+    addSceneOption(cmd, o.scenes, {"", "default builtin:showcase"});
+    addSizeOption(cmd, o.size);
+    addTimedFramesOption(cmd, o.frames, {"", "per variant"});
+    addReferenceRaysOption(cmd, o.referenceRays, {"", "the adaptive rows' error"});
     cmd.add_option("--out", o.out, "output folder (skips.json, skips.md)")->type_name(kOutDir)->capture_default_str();
-    cmd.add_flag("--quiet", o.quiet, "no progress output");
+    addQuietFlag(cmd, o.quiet);
 }
 
 namespace {

@@ -15,6 +15,7 @@
 #include "util/paths.h"
 
 #include "cli/cli_util.h"
+#include "cli/shared_options.h"
 
 #include <CLI/CLI.hpp>
 
@@ -26,15 +27,15 @@
 namespace ssao {
 
 void addStressOptions(CLI::App& cmd, StressOptions& o) {
-    cmd.add_option("--scene", o.scenes, "scene (repeatable; default builtin:showcase)")->type_name(kInFile);
+    addSceneOption(cmd, o.scenes, {"", "default builtin:showcase"});
     cmd.add_option("--technique", o.techniques, "technique (repeatable; default every one)")->type_name("TECHNIQUE");
-    cmd.add_option("--size", o.size, "render size")->type_name("WxH")->capture_default_str();
+    addSizeOption(cmd, o.size);
     cmd.add_option("--tolerance", o.tolerance,
                    "largest RMSE against the benign render allowed where AO must not change (scale, translation)")
         ->capture_default_str()
         ->check(cliRange(0.0, 1.0));
     cmd.add_option("--out", o.out, "output folder (stress.json, stability.md)")->type_name(kOutDir)->capture_default_str();
-    cmd.add_flag("--quiet", o.quiet, "no progress output");
+    addQuietFlag(cmd, o.quiet);
 }
 
 namespace {

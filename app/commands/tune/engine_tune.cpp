@@ -11,6 +11,7 @@
 #include "commands/tune/tune_guard.h"
 #include "measure/viewpoints.h"
 #include "cli/cli_util.h"
+#include "cli/shared_options.h"
 #include "cli/headless_runner.h"
 #include "metrics/evaluate.h"
 #include "cli/progress_bar.h"
@@ -41,23 +42,15 @@ void addEngineTuneOptions(CLI::App& cmd, EngineTuneOptions& o) {
                    "tune a web engine's own AO settings instead of a technique (n8ao, three-ssao, three-sao, "
                    "three-gtao, pp-ssao, babylon-ssao2, babylon-ssao, playcanvas-ssao, filament-ssao), run for real in Chromium on the --scene glTF files; writes --out (JSON) and --snippet")
         ->type_name("NAME");
-    cmd.add_option("--engine-modules", o.modules,
-                   "the engines' npm packages (default: the build folder's peers/node_modules, from make engine-modules)")
-        ->type_name(kInDir);
+    addEngineModulesOption(cmd, o.modules);
     cmd.add_option("--snippet", o.snippet, "with --engine: the settings as JavaScript for the engine's API (default: --out with .js)")
         ->type_name(kOutFile);
-    cmd.add_option("--budget-ms", o.budgetMs,
-                   "with --engine: the AO time (ms, training views' mean) that chooses the sample counts: the largest "
-                   "that fits, after the shape is fitted (default: the engine's own counts)")
-        ->type_name("MS")
-        ->check(cliRange(1e-6, 1e6));
-    cmd.add_option("--budget-ratio", o.budgetRatio,
-                   "with --engine: the budget as a multiple of the defaults' AO time, measured in the same run")
-        ->type_name("X")
-        ->check(cliRange(1e-6, 1000.0));
-    cmd.add_option("--timing-frames", o.timingFrames, "with --engine: frames whose median times the defaults and the tuned settings")
-        ->capture_default_str()
-        ->check(cliRange(1, 1000));
+    addBudgetMsOption(cmd, o.budgetMs,
+                      {"with --engine: the sample counts, the largest that fit after the shape is fitted, within ",
+                       "the training views' mean AO time; default: the engine's own counts"});
+    addBudgetRatioOption(cmd, o.budgetRatio,
+                         {"with --engine: the sample counts within ", "the baseline: the defaults, measured in the same run"});
+    addTimingFramesOption(cmd, o.timingFrames, {"with --engine: ", "their median times the defaults and the tuned settings"});
 }
 
 namespace {

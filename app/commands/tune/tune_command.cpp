@@ -21,6 +21,7 @@
 #include "util/paths.h"
 
 #include "cli/cli_util.h"
+#include "cli/shared_options.h"
 
 #include <CLI/CLI.hpp>
 
@@ -38,13 +39,11 @@ namespace ssao {
 void addTuneOptions(CLI::App& cmd, TuneOptions& o) {
     cmd.add_option("--technique", o.technique, "the technique to tune (ao.technique)")->type_name("TECHNIQUE")->capture_default_str();
     cmd.add_option("--preset", o.preset, "starting preset (default: the technique's defaults)")->type_name(kInFile);
-    cmd.add_option("--scene", o.scenes, "training scene (repeatable; default builtin:showcase)")->type_name(kInFile);
+    addSceneOption(cmd, o.scenes, {"training scene: ", "default builtin:showcase"});
     cmd.add_option("--held-out-scene", o.heldOutScenes,
                    "scene judged but never fitted on (repeatable; every viewpoint is held out)")->type_name(kInFile);
-    cmd.add_option("--size", o.size, "render size")->type_name("WxH")->capture_default_str();
-    cmd.add_option("--views", o.views, "viewpoints per scene; even ones train, odd ones are held out")
-        ->capture_default_str()
-        ->check(cliRange(2, 32));
+    addSizeOption(cmd, o.size);
+    addViewsOption(cmd, o.views, {"", "even ones train, odd ones are held out: at least 2"});
     addStartCameraOption(cmd, o.camera);
     cmd.add_option("--rounds", o.rounds, "search rounds (each halves every bracket)")
         ->capture_default_str()
@@ -52,33 +51,26 @@ void addTuneOptions(CLI::App& cmd, TuneOptions& o) {
     cmd.add_option("--grid", o.grid, "values per parameter per round")
         ->capture_default_str()
         ->check(cliRange(3, 33));
-    cmd.add_option("--reference-rays", o.referenceRays, "reference rays per pixel")
-        ->capture_default_str()
-        ->check(cliRange(1, 1 << 16));
-    cmd.add_option("--radius-scene", o.radiusScene, "the reference's R as a fraction of the scene diagonal")
-        ->capture_default_str()
-        ->check(cliRange(0.0001, 0.5));
-    cmd.add_option("--set", o.sets, "KEY=VALUE applied to the start, e.g. TECHNIQUE.steps=4 (repeatable)")->type_name("KEY=VALUE");
+    addReferenceRaysOption(cmd, o.referenceRays);
+    addRadiusSceneOption(cmd, o.radiusScene);
+    addSetOption(cmd, o.sets, {"", "applied to the start"});
     cmd.add_option("--knob", o.knobs,
                    "fit only this knob (repeatable: a float parameter key of the technique, or radius_multiplier "
                    "or ao.power; these two and a technique's own radius multiplier (gtao.radius_multiplier) are "
                    "never fitted unless named; default: the technique's other float rows)")->type_name("KEY");
     cmd.add_option("--out", o.out, "where to save the tuned preset (JSON)")->type_name(kOutFile)->capture_default_str();
-    cmd.add_option("--preset-dir", o.presetDir, "folder of user presets")->type_name(kInDir);
-    cmd.add_option("--shaders", o.shaderDir, "shader folder (default: the installed or source tree's shaders/)")
-        ->type_name(kInDir);
+    addPresetDirOption(cmd, o.presetDir);
+    addShadersOption(cmd, o.shaderDir);
     cmd.add_flag("--save-overfit", o.saveOverfit,
                  "save the preset even when the fit raised the held-out error (by default: refused, exit 1)");
-    cmd.add_option("--objective", o.objective,
-                   "what the search minimises over the training views: still (the geometry MSE of a still frame) "
-                   "or motion (along each view's camera path, see --motion-*: the mean per-frame RMSE^2 + "
-                   "instability^2, instability = the RMS of the AO's frame-to-frame change minus the "
-                   "reference's at the same surface points); the scores printed are its square root")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"still", "motion"}));
+    addObjectiveOption(cmd, o.objective,
+                       {"what the search minimises over the training views: ",
+                        "see --motion-*; the motion score: the mean per-frame RMSE^2 + instability^2, instability = the "
+                        "RMS of the AO's frame-to-frame change minus the reference's at the same surface points; the "
+                        "scores printed are its square root"});
     addMotionPathOptions(cmd, o.motionPath);
     addEngineTuneOptions(cmd, o.engine);
-    cmd.add_flag("--quiet", o.quiet, "no progress output");
+    addQuietFlag(cmd, o.quiet);
 }
 
 namespace {
@@ -425,6 +417,8 @@ void saveTuned(const TuneOptions& o, const Tuner& t, const std::vector<Knob>& kn
 } // namespace
 
 int runTune(const TuneOptions& o) {
+    if (o.views < 2) // --views is declared once for bench and tune (cli/shared_options.h): tune's own floor
+        throw Error("--views " + std::to_string(o.views) + ": tune needs at least 2 viewpoints a scene, one fitted and one held out");
     if (!o.engine.engine.empty()) return runEngineTune(o);
     if (!o.engine.snippet.empty()) throw Error("--snippet writes an engine's settings as JavaScript: add --engine NAME");
     if (o.engine.budgetMs > 0 || o.engine.budgetRatio > 0)
