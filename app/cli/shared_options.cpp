@@ -44,7 +44,7 @@ CLI::Option* addTimedFramesOption(CLI::App& cmd, int& frames, const OptionWords&
 CLI::Option* addTimingFramesOption(CLI::App& cmd, int& frames, const OptionWords& w) {
     return cmd.add_option("--timing-frames", frames, words(w, "frames a time is measured over"))
         ->capture_default_str()
-        ->check(cliRange(1, 1000));
+        ->check(cliRange(1, 100)); // each may be a whole frame with every pass forced: minutes past 100
 }
 
 CLI::Option* addRadiusSceneOption(CLI::App& cmd, float& radius, const OptionWords& w) {

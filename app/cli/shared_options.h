@@ -27,7 +27,7 @@ CLI::Option* addSizeOption(CLI::App& cmd, std::string& size, const OptionWords& 
 CLI::Option* addViewsOption(CLI::App& cmd, int& views, const OptionWords& w = {});
 // --frames: timed frames (median), [1, 10000].
 CLI::Option* addTimedFramesOption(CLI::App& cmd, int& frames, const OptionWords& w = {});
-// --timing-frames: frames a time is measured over, [1, 1000].
+// --timing-frames: frames a time is measured over, [1, 100].
 CLI::Option* addTimingFramesOption(CLI::App& cmd, int& frames, const OptionWords& w = {});
 // --radius-scene: R as a fraction of the scene's diagonal, [0.0001, 0.5].
 CLI::Option* addRadiusSceneOption(CLI::App& cmd, float& radius, const OptionWords& w = {});

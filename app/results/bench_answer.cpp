@@ -5,6 +5,7 @@
 #include "output/escape.h"
 #include "settings/params.h"
 #include "settings/preset.h"
+#include "util/number_text.h"
 
 #include <cmath>
 #include <cstdio>
@@ -53,9 +54,7 @@ std::vector<std::string> assignments(const Settings& s) {
 
 namespace {
 std::string num(double v, int digits) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.*g", digits, v);
-    return b;
+    return numberText(v, "%.*g", digits);
 }
 
 std::string questionText(const Question& q) {

@@ -6,6 +6,7 @@
 #include "results/split_report.h"
 #include "metrics/error_split.h"
 #include "output/escape.h"
+#include "util/number_text.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/files.h"
@@ -27,11 +28,13 @@ namespace ssao {
 
 namespace {
 
+// A CSV cell (missing: empty) and a Markdown number (missing: a dash).
+std::string cell(double v, int digits = 6) {
+    return numberText(v, "%.*g", digits, Missing::EmptyCell);
+}
+
 std::string num(double v, int digits = 6) {
-    if (!std::isfinite(v)) return "";
-    char b[32];
-    std::snprintf(b, sizeof b, "%.*g", digits, v);
-    return b;
+    return numberText(v, "%.*g", digits, Missing::Dash);
 }
 
 const char* kMetricHeader =
@@ -42,17 +45,17 @@ const char* kMetricHeader =
 std::string passCells(const PassTimes& t) {
     std::string out;
     for (int k = 0; k < PassTimes::kParts; ++k)
-        out += (k ? "," : "") + num(t.ms[k], 6);
+        out += (k ? "," : "") + cell(t.ms[k], 6);
     return out;
 }
 
 std::string metricCells(const ViewResult& v) {
     const ErrorMetrics& e = v.error;
-    return num(v.gpuMs) + "," + num(v.gpuMsMin) + "," + num(v.gpuMsMax) + "," + num(e.rmse) + "," +
-           num(e.mae) + "," + num(e.bias) + "," + num(e.p99Abs) + "," + num(e.maxAbs) + "," +
-           num(e.psnrGeometrySrgb) + "," + num(e.psnrFullSrgb) + "," + num(e.rmseEdge) + "," +
-           num(e.rmseInterior) + "," + num(e.ssim) + "," + std::to_string(e.nonFinite) + "," +
-           num(e.referenceNoise) + "," + std::to_string(v.frames) + "," + num(v.rmseFirstFrame) + "," +
+    return cell(v.gpuMs) + "," + cell(v.gpuMsMin) + "," + cell(v.gpuMsMax) + "," + cell(e.rmse) + "," +
+           cell(e.mae) + "," + cell(e.bias) + "," + cell(e.p99Abs) + "," + cell(e.maxAbs) + "," +
+           cell(e.psnrGeometrySrgb) + "," + cell(e.psnrFullSrgb) + "," + cell(e.rmseEdge) + "," +
+           cell(e.rmseInterior) + "," + cell(e.ssim) + "," + std::to_string(e.nonFinite) + "," +
+           cell(e.referenceNoise) + "," + std::to_string(v.frames) + "," + cell(v.rmseFirstFrame) + "," +
            passCells(v.passMs);
 }
 
@@ -106,7 +109,7 @@ namespace {
 std::string shareCells(bool split, double total, double technique, double screen) {
     if (!split) return ",,";
     const ErrorShares s = sharesOfMse(total * total, technique * technique, screen * screen);
-    return num(s.technique) + "," + num(s.screen) + "," + num(s.interaction);
+    return cell(s.technique) + "," + cell(s.screen) + "," + cell(s.interaction);
 }
 
 // results.csv: one row per scene, viewpoint and configuration.
@@ -122,11 +125,11 @@ std::string resultsCsv(const BenchRun& run) {
         const std::string shard = run.shards.size() > size_t(v.shard) ? run.shards[v.shard].value("shard", "1/1") : "1/1";
         f << csvField(v.scene) << "," << csvField(v.viewpoint) << "," << csvField(c.label) << ","
           << csvField(c.technique()) << "," << c.baseline << "," << run.summary[v.config].pareto << ","
-          << metricCells(v) << "," << num(v.baselineMs) << "," << num(v.timeRatio) << "," << csvField(shard) << ","
-          << (v.hasSplit ? num(v.vsOracle.rmse) : "") << "," << (v.hasSplit ? num(v.screen.rmse) : "") << ","
+          << metricCells(v) << "," << cell(v.baselineMs) << "," << cell(v.timeRatio) << "," << csvField(shard) << ","
+          << (v.hasSplit ? cell(v.vsOracle.rmse) : "") << "," << (v.hasSplit ? cell(v.screen.rmse) : "") << ","
           << shareCells(v.hasSplit, v.error.rmse, v.vsOracle.rmse, v.screen.rmse) << ","
-          << num(v.motion.rmseMean) << "," << num(v.motion.rmseMax) << "," << num(v.motion.instability) << ","
-          << num(v.motion.ghosting) << "," << (v.hasMotion ? num(motionScore(v.motion.rmseMean, v.motion.instability)) : "")
+          << cell(v.motion.rmseMean) << "," << cell(v.motion.rmseMax) << "," << cell(v.motion.instability) << ","
+          << cell(v.motion.ghosting) << "," << (v.hasMotion ? cell(motionScore(v.motion.rmseMean, v.motion.instability)) : "")
           << "," << csvField(c.keys.dump()) << "\n";
     }
     return f.str();
@@ -144,17 +147,17 @@ std::string summaryCsv(const BenchRun& run) {
     for (const auto& s : run.summary) {
         const BenchConfig& c = cfgs[s.config];
         f << csvField(c.label) << "," << csvField(c.technique()) << "," << c.baseline << "," << s.pareto
-          << "," << s.views << "," << num(s.gpuMs) << "," << num(s.gpuMsMin) << "," << num(s.gpuMsMax)
-          << "," << num(s.rmse) << "," << num(s.mae) << "," << num(s.bias) << ","
-          << num(s.psnrGeometrySrgb) << "," << num(s.psnrFullSrgb) << "," << num(s.rmseEdge) << ","
-          << num(s.rmseInterior) << "," << num(s.ssim) << "," << s.nonFinite << "," << num(s.timeRatio)
-          << "," << num(s.rmseRatio) << "," << num(s.rmseFirstFrame) << "," << num(s.technique.rmse) << ","
-          << num(s.technique.rmseEdge) << "," << num(s.technique.rmseInterior) << "," << num(s.screen.rmse) << ","
-          << num(s.screen.rmseEdge) << "," << num(s.screen.rmseInterior) << ","
+          << "," << s.views << "," << cell(s.gpuMs) << "," << cell(s.gpuMsMin) << "," << cell(s.gpuMsMax)
+          << "," << cell(s.rmse) << "," << cell(s.mae) << "," << cell(s.bias) << ","
+          << cell(s.psnrGeometrySrgb) << "," << cell(s.psnrFullSrgb) << "," << cell(s.rmseEdge) << ","
+          << cell(s.rmseInterior) << "," << cell(s.ssim) << "," << s.nonFinite << "," << cell(s.timeRatio)
+          << "," << cell(s.rmseRatio) << "," << cell(s.rmseFirstFrame) << "," << cell(s.technique.rmse) << ","
+          << cell(s.technique.rmseEdge) << "," << cell(s.technique.rmseInterior) << "," << cell(s.screen.rmse) << ","
+          << cell(s.screen.rmseEdge) << "," << cell(s.screen.rmseInterior) << ","
           << shareCells(std::isfinite(s.technique.rmse), s.rmse, s.technique.rmse, s.screen.rmse) << ","
           << passCells(s.passMs) << ","
-          << num(s.motion.rmseMean) << "," << num(s.motion.instability) << "," << num(s.motion.ghosting) << ","
-          << num(s.motionScore) << "," << num(s.motionRatio) << "," << csvField(c.keys.dump())
+          << cell(s.motion.rmseMean) << "," << cell(s.motion.instability) << "," << cell(s.motion.ghosting) << ","
+          << cell(s.motionScore) << "," << cell(s.motionRatio) << "," << csvField(c.keys.dump())
           << "\n";
     }
     return f.str();
@@ -231,7 +234,7 @@ std::string passMarkdown(const BenchRun& run) {
         const PassTimes& t = s->passMs;
         md << "| " << markdownCell(run.sweep.configs[s->config].label);
         for (int k = 0; k < 4; ++k)
-            md << " | " << (std::isfinite(t.ms[k]) ? num(t.ms[k], 3) : std::string("-"));
+            md << " | " << num(t.ms[k], 3);
         md << " |\n";
     }
     return md.str();

@@ -2,6 +2,7 @@
 
 #include "results/shard.h"
 #include "cli/scene_options.h"
+#include "util/number_text.h"
 #include "util/error.h"
 #include "util/json_file.h"
 
@@ -51,9 +52,7 @@ struct Facts {
 };
 
 std::string num(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", v);
-    return b;
+    return numberText(v, "%g", Missing::Spelled); // a message names the value it refuses
 }
 
 // A measured value: finite and within [lo, hi], or (when `missingOk`) NaN, written as null.

@@ -3,6 +3,7 @@
 #include "metrics/error_split.h"
 #include "output/escape.h"
 #include "techniques/technique.h"
+#include "util/number_text.h"
 
 #include <cmath>
 #include <cstdio>
@@ -14,10 +15,7 @@ namespace ssao {
 namespace {
 
 std::string num(double v, int digits = 3) {
-    if (!std::isfinite(v)) return "–";
-    char b[32];
-    std::snprintf(b, sizeof b, "%.*f", digits, v);
-    return b;
+    return numberText(v, "%.*f", digits);
 }
 
 std::string signedNum(double v) {

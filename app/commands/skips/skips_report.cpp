@@ -1,6 +1,7 @@
 #include "commands/skips/skips_report.h"
 
 #include "output/escape.h"
+#include "util/number_text.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/files.h"
@@ -14,9 +15,7 @@ namespace ssao {
 
 namespace {
 std::string num(double v, const char* fmt = "%.2f") {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, fmt, v);
-    return buf;
+    return numberText(v, fmt);
 }
 // "left of total" for a counter pair of the G-buffer: `left` (culled, occluded) out of what was
 // drawn plus it, e.g. draws / draws_culled.

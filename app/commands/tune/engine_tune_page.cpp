@@ -4,6 +4,7 @@
 #include "results/report_html.h"
 #include "measure/thumbnails.h"
 #include "output/escape.h"
+#include "util/number_text.h"
 
 #include <cmath>
 #include <cstdio>
@@ -23,10 +24,7 @@ th{background:#f4f4f4}td.n{text-align:right;font-variant-numeric:tabular-nums}
 </style>)";
 
 std::string num(double v, const char* fmt = "%.4f") {
-    if (!std::isfinite(v)) return "n/a";
-    char b[48];
-    std::snprintf(b, sizeof b, fmt, v);
-    return b;
+    return numberText(v, fmt);
 }
 
 std::string ratio(double a, double b) {
