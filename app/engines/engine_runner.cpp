@@ -114,11 +114,13 @@ EngineRunner::EngineRunner(EngineTools tools, EngineTable table, std::string sce
 }
 
 EngineRunner::~EngineRunner() {
+    live_.clear(); // every session ends (its browser closes) before its folder goes
     std::error_code ec;
     fs::remove_all(work_, ec);
 }
 
 std::vector<EngineResult> EngineRunner::run(const std::vector<EngineJob>& jobs) {
+    hungAllowed_ = std::max(kMaxHungJobs, int(jobs.size() / 4));
     // One session runs one harness page: jobs of engines on different pages run in one session each.
     std::vector<std::string> pages;
     for (const EngineJob& j : jobs)
@@ -139,7 +141,7 @@ std::vector<EngineResult> EngineRunner::run(const std::vector<EngineJob>& jobs) 
 }
 
 std::vector<EngineResult> EngineRunner::runPage(const std::vector<EngineJob>& jobs, const std::string& page, int hung) {
-    const std::string tag = "s" + std::to_string(sessions_++), dir = work_ + "/" + tag;
+    const std::string tag = "b" + std::to_string(batches_++), dir = work_ + "/" + tag;
     // The session's own engine: the runner's when it is on this page, else the first job's.
     const EngineTable& own = table_.page == page || jobs.empty() || !jobs[0].table ? table_ : *jobs[0].table;
     auto rows = [](const EngineTable& t) {
@@ -161,31 +163,58 @@ std::vector<EngineResult> EngineRunner::runPage(const std::vector<EngineJob>& jo
         list.push_back({{"view", jobs[i].view}, {"values", values}, {"image", "j" + std::to_string(i) + ".pgm"},
                         {"frames", jobs[i].frames}});
         if (!scale.empty()) list.back()["scale"] = scale;
+        if (jobs[i].droppable) list.back()["droppable"] = true;
         if (t.peer != own.peer) list.back()["peer"] = t.peer, tables[t.peer] = rows(t);
     }
+    nlohmann::json seconds = nlohmann::json::object();
+    for (const auto& [frames, s] : jobSeconds_)
+        seconds[std::to_string(frames)] = s;
     const nlohmann::json spec = {{"scene", scene_}, {"width", width_}, {"height", height_}, {"page", page},
                                  {"peer", own.peer}, {"params", rows(own)}, {"tables", tables}, {"views", views},
-                                 {"frames", 0}, {"jobs", list}};
+                                 {"frames", 0}, {"jobs", list}, {"job_seconds", seconds}};
     writeFileAtomically(dir + ".json", dumpJson(spec) + "\n");
-    const ProgramRun r = runProgram({tools_.node, tools_.scripts + "/run_engine.mjs", "--modules", tools_.modules,
-                                     "--jobs", dir + ".json", "--out", dir},
-                                    ChildStream::Capture, ChildStream::Capture);
     const std::string who = tables.empty() ? own.title : "the web engines"; // several in one session
-    if (!r.started) throw Error("cannot start " + tools_.node + " for " + who);
-    if (r.exitCode != 0) return afterHang(jobs, page, hung, dir, who + " in Chromium failed: " + lastLine(r.out));
+    if (const std::string failure = serve(page, dir, who); !failure.empty()) return afterHang(jobs, page, hung, dir, failure);
     const nlohmann::json res = readJsonFile(dir + "/results.json", "engine results");
     if (!res.contains("jobs") || !res["jobs"].is_array() || res["jobs"].size() != jobs.size())
         throw Error(who + " in Chromium returned " + dir + "/results.json without one entry per job");
     std::vector<EngineResult> out;
     for (size_t i = 0; i < jobs.size(); ++i)
-        out.push_back(readResult(dir, i, res["jobs"][i]));
+        out.push_back(readResult(dir, i, res["jobs"][i], jobs[i].frames));
     std::error_code ec;
     fs::remove_all(dir, ec);
     return out;
 }
 
-EngineResult EngineRunner::readResult(const std::string& dir, size_t i, const nlohmann::json& j) const {
+// One batch (DIR.json) in the page's session, started on the first batch: "" when it ran, else what
+// failed (the session is gone then, and the next batch starts a new one).
+std::string EngineRunner::serve(const std::string& page, const std::string& dir, const std::string& who) {
+    auto& child = live_[page];
+    if (!child) {
+        child = std::make_unique<ChildProcess>(std::vector<std::string>{tools_.node, tools_.scripts + "/run_engine.mjs",
+                                                                        "--modules", tools_.modules, "--serve", "stdin"});
+        if (!child->started()) {
+            live_.erase(page);
+            throw Error("cannot start " + tools_.node + " for " + who);
+        }
+        ++sessions_;
+    }
+    if (child->writeLine(dumpJson(nlohmann::json{{"jobs", dir + ".json"}, {"out", dir}}, -1)))
+        while (const auto line = child->readLine())
+            if (*line == "ssaolab-batch-done") return "";
+    child->finish();
+    const std::string failure = who + " in Chromium failed: " + lastLine(child->output());
+    live_.erase(page);
+    return failure;
+}
+
+EngineResult EngineRunner::readResult(const std::string& dir, size_t i, const nlohmann::json& j, int frames) {
     EngineResult e;
+    if (j.contains("seconds") && j["seconds"].is_number()) { // what a job takes, for the next session's time limit
+        std::vector<double>& s = jobSeconds_[frames];
+        s.push_back(j["seconds"].get<double>());
+        if (s.size() > 64) s.erase(s.begin());
+    }
     e.ao = readEngineAo(dir + "/j" + std::to_string(i) + ".pgm", width_, height_);
     if (j.contains("values") && j["values"].is_object())
         for (const auto& [name, v] : j["values"].items())
@@ -202,7 +231,7 @@ EngineResult EngineRunner::readResult(const std::string& dir, size_t i, const nl
 std::vector<EngineResult> EngineRunner::afterHang(const std::vector<EngineJob>& jobs, const std::string& page, int hung,
                                                   const std::string& dir, const std::string& failure) {
     std::error_code ec;
-    if (hung >= kMaxHungJobs || !fs::is_regular_file(dir + "/hung.json", ec)) throw Error(failure);
+    if (hung >= hungAllowed_ || !fs::is_regular_file(dir + "/hung.json", ec)) throw Error(failure);
     const nlohmann::json h = readJsonFile(dir + "/hung.json", "engine session");
     if (!h.contains("job") || !h["job"].is_number_integer() || h["job"].get<long>() < 0 || size_t(h["job"].get<long>()) >= jobs.size())
         throw Error(failure);
@@ -213,7 +242,7 @@ std::vector<EngineResult> EngineRunner::afterHang(const std::vector<EngineJob>& 
     for (size_t i = 0; i < jobs.size(); ++i) {
         const std::string done = dir + "/j" + std::to_string(i) + ".json";
         if (i == stuck) out[i].hung = true;
-        else if (fs::is_regular_file(done, ec)) out[i] = readResult(dir, i, readJsonFile(done, "engine result"));
+        else if (fs::is_regular_file(done, ec)) out[i] = readResult(dir, i, readJsonFile(done, "engine result"), jobs[i].frames);
         else rest.push_back(jobs[i]), at.push_back(i);
     }
     fs::remove_all(dir, ec);

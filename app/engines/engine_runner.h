@@ -1,17 +1,20 @@
 // A web engine's AO, rendered for real: Node.js runs tools/peers/run_engine.mjs, which drives
 // Debian's Chromium (playwright-core from the npm packages tools/peers/package-lock.json pins,
-// installed by `make engine-modules` into the build folder) through one session per batch of jobs:
-// one scene, several views (ssaolab's camera and R), many parameter sets (of one engine, or of
-// several: bench --engines). Each job's AO comes back as a PGM, read here as AO in [0, 1] at the
+// installed by `make engine-modules` into the build folder) through one browser session a harness
+// page, kept for the runner's life and fed batch after batch of jobs (a tune's search steps): one
+// scene, several views (ssaolab's camera and R), many parameter sets (of one engine, or of several:
+// bench --engines). Each job's AO comes back as a PGM, read here as AO in [0, 1] at the
 // view's pixels, to be scored in-process with metrics/evaluate.h, as `render --score` scores it.
 #pragma once
 #include "base/image.h"
 #include "engines/engine_table.h"
+#include "util/process.h"
 
 #include <nlohmann/json.hpp>
 
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -44,6 +47,9 @@ struct EngineJob {
     int frames = 0;                       // 0: one image, no timing; else the median of this many frames
     std::map<std::string, double> scale;  // rows set to the make-peers value times this (a tune's relative settings)
     const EngineTable* table = nullptr;   // another engine than the runner's, in the same session (bench --engines)
+    // A search's candidate, dropped (hung) once it takes 30 times what the runner's jobs took
+    // (run_engine.mjs); any other job has the browser's whole time limit.
+    bool droppable = false;
 };
 
 struct EngineResult {
@@ -66,27 +72,32 @@ class EngineRunner {
     EngineRunner(const EngineRunner&) = delete;
     EngineRunner& operator=(const EngineRunner&) = delete;
 
-    // One browser session for every job; throws with the runner's last message when it fails. A job
-    // the page hangs on past SSAOLAB_BROWSER_MAX_SECONDS comes back `hung` and the jobs after it run
-    // in a new session, up to kMaxHungJobs in one call (then it throws).
+    // Every job in the runner's session of its page; throws with the runner's last message when it
+    // fails. A job the page hangs on past SSAOLAB_BROWSER_MAX_SECONDS comes back `hung` and the jobs after it run
+    // in a new session, up to kMaxHungJobs in one call or a quarter of its jobs when that is more
+    // (then it throws).
     std::vector<EngineResult> run(const std::vector<EngineJob>& jobs);
     static constexpr int kMaxHungJobs = 3;
     int sessions() const { return sessions_; }
+    int batches() const { return batches_; } // run() calls, one per page each
 
   private:
     // One session of `page`'s engines.
     std::vector<EngineResult> runPage(const std::vector<EngineJob>& jobs, const std::string& page, int hung = 0);
     std::vector<EngineResult> afterHang(const std::vector<EngineJob>& jobs, const std::string& page, int hung,
                                         const std::string& dir, const std::string& failure);
+    std::string serve(const std::string& page, const std::string& dir, const std::string& who);
     // One job's result as run_engine.mjs wrote it (DIR/jN.json and DIR/jN.pgm).
-    EngineResult readResult(const std::string& dir, size_t i, const nlohmann::json& j) const;
+    EngineResult readResult(const std::string& dir, size_t i, const nlohmann::json& j, int frames);
 
     EngineTools tools_;
     EngineTable table_;
     std::string scene_, work_;
     int width_, height_;
     std::vector<EngineView> views_;
-    int sessions_ = 0;
+    int sessions_ = 0, batches_ = 0, hungAllowed_ = kMaxHungJobs;
+    std::map<std::string, std::unique_ptr<ChildProcess>> live_; // page -> its browser session
+    std::map<int, std::vector<double>> jobSeconds_; // timed frames -> the last jobs' seconds (run_engine.mjs's limit)
 };
 
 // A PGM (or any image decodeImage reads) as AO: channel 0, width x height, every value in [0, 1].

@@ -13,6 +13,7 @@
 #include <poll.h>
 #include <spawn.h>
 #include <sys/resource.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -110,6 +111,119 @@ ProgramRun runProgram(const std::vector<std::string>& argv, ChildStream out, Chi
     }
     if (capture) ::close(fds[0]);
     return run;
+}
+
+ChildProcess::ChildProcess(const std::vector<std::string>& argv, double exitSeconds) : exitSeconds_(exitSeconds) {
+    if (argv.empty()) return;
+    int in[2] = {-1, -1}, out[2] = {-1, -1};
+    if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, in) != 0) return;
+    if (::pipe2(out, O_CLOEXEC) != 0) {
+        ::close(in[0]), ::close(in[1]);
+        return;
+    }
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_adddup2(&fa, in[1], 0);
+    posix_spawn_file_actions_adddup2(&fa, out[1], 1);
+    posix_spawn_file_actions_adddup2(&fa, out[1], 2);
+    std::vector<char*> args;
+    for (const auto& a : argv)
+        args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    pid_t pid = -1;
+    const int rc = posix_spawnp(&pid, args[0], &fa, nullptr, args.data(), environ);
+    posix_spawn_file_actions_destroy(&fa);
+    ::close(in[1]), ::close(out[1]);
+    if (rc != 0) {
+        ::close(in[0]), ::close(out[0]);
+        return;
+    }
+    pid_ = pid, in_ = in[0], outFd_ = out[0];
+}
+
+ChildProcess::~ChildProcess() {
+    finish();
+    if (outFd_ >= 0) ::close(outFd_);
+}
+
+bool ChildProcess::writeLine(const std::string& line) {
+    if (in_ < 0) return false;
+    const std::string text = line + "\n";
+    for (size_t done = 0; done < text.size();) {
+        const ssize_t n = ::send(in_, text.data() + done, text.size() - done, MSG_NOSIGNAL);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        done += size_t(n);
+    }
+    return true;
+}
+
+std::optional<std::string> ChildProcess::readLine() {
+    for (;;) {
+        if (const size_t nl = pending_.find('\n'); nl != std::string::npos) {
+            std::string line = pending_.substr(0, nl);
+            pending_.erase(0, nl + 1);
+            return line;
+        }
+        if (outFd_ < 0) return std::nullopt;
+        char buf[4096];
+        const ssize_t n = ::read(outFd_, buf, sizeof buf);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) { // closed: a last line without its newline still comes back
+            ::close(outFd_);
+            outFd_ = -1;
+            if (pending_.empty()) return std::nullopt;
+            std::string line;
+            line.swap(pending_);
+            return line;
+        }
+        keep(buf, size_t(n));
+    }
+}
+
+int ChildProcess::finish() {
+    if (in_ >= 0) ::close(in_), in_ = -1; // a serving child ends with its input
+    if (pid_ > 0 && !reaped_) {
+        const auto deadline = Clock::now() + std::chrono::milliseconds(static_cast<long long>(exitSeconds_ * 1e3));
+        int status = 0;
+        bool killed = false;
+        for (;;) { // read what it still writes while it ends, so a full pipe never holds it
+            const pid_t r = ::waitpid(pid_, &status, WNOHANG);
+            if (r == pid_ || (r < 0 && errno != EINTR)) break;
+            if (!killed && Clock::now() >= deadline) ::kill(pid_, SIGKILL), killed = true;
+            drain(20);
+        }
+        exitCode_ = !killed && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        reaped_ = true;
+    }
+    drain(0);
+    return exitCode_;
+}
+
+// Whatever the child wrote that is ready within `ms` (a descendant may keep the pipe open: never
+// read until it closes).
+void ChildProcess::drain(int ms) {
+    if (outFd_ < 0) {
+        if (ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(ms));
+        return;
+    }
+    pollfd p{outFd_, POLLIN, 0};
+    if (::poll(&p, 1, ms) <= 0) return;
+    char buf[4096];
+    const ssize_t n = ::read(outFd_, buf, sizeof buf);
+    if (n <= 0) {
+        ::close(outFd_);
+        outFd_ = -1;
+        return;
+    }
+    keep(buf, size_t(n));
+}
+
+void ChildProcess::keep(const char* data, size_t n) {
+    constexpr size_t kKept = size_t(64) << 10;
+    pending_.append(data, n);
+    out_.append(data, n);
+    if (out_.size() > kKept) out_.erase(0, out_.size() - kKept);
 }
 
 // A sanitizer's shadow memory takes terabytes of address space: no rlimit can hold it.

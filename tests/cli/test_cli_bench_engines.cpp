@@ -89,8 +89,11 @@ TEST(CliBenchEngines, AnEngineIsARowScoredAgainstTheSameReferenceInEveryReport) 
         }
     EXPECT_TRUE(found);
     // The engine as its package ships it: the lengths the harness sets from R at the table's defaults.
-    for (const auto& c : j["configurations"])
-        if (c["label"] == "engine n8ao (as shipped)") EXPECT_EQ(c["engine"]["values"]["aoRadius"], 5.0) << c.dump();
+    for (const auto& c : j["configurations"]) {
+        if (c["label"] == "engine n8ao (as shipped)") {
+            EXPECT_EQ(c["engine"]["values"]["aoRadius"], 5.0) << c.dump();
+        }
+    }
     EXPECT_NE(slurp(out + "/results.csv").find(",engine n8ao (defaults),n8ao,"), std::string::npos) << slurp(out + "/results.csv");
     EXPECT_NE(slurp(out + "/summary.csv").find("engine n8ao (tuned)"), std::string::npos);
     const std::string md = slurp(out + "/report.md");

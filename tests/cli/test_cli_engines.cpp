@@ -275,9 +275,10 @@ TEST(CliEngine, TuneWritesTheSettingsAndASnippetThatSetsThem) {
     ASSERT_EQ(j["settings"].size(), 1u) << j.dump(1); // --knob aoRadius: the one value fitted
     EXPECT_EQ(j["snippet"], fs::path(js).filename().string());
     // The defaults; the box's sample; one round from each of two starts (another round where the
-    // fit ends at a wall it can widen); the timed comparison.
-    EXPECT_GE(j["browser_sessions"].get<int>(), 5) << j.dump(1);
-    EXPECT_LE(j["browser_sessions"].get<int>(), 6) << j.dump(1);
+    // fit ends at a wall it can widen); the timed comparison: batches of one browser session.
+    EXPECT_GE(j["browser_batches"].get<int>(), 5) << j.dump(1);
+    EXPECT_LE(j["browser_batches"].get<int>(), 6) << j.dump(1);
+    EXPECT_EQ(j["browser_sessions"].get<int>(), 1) << j.dump(1);
     EXPECT_TRUE(j["scores"]["defaults"]["held_out_views"].is_number());
     // Both baselines, and the better one named as what the guard judged against.
     EXPECT_TRUE(j["scores"]["shipped"]["held_out_views"].is_number()) << j.dump(1);

@@ -146,6 +146,33 @@ TEST(FileGate, AProgramGetsItsArgumentsVerbatimAndNoShellRunsThem) {
     EXPECT_EQ(runProgram({"false"}, ChildStream::Discard, ChildStream::Discard).exitCode, 1);
 }
 
+// A child that serves many requests (the engines' browser session): lines in, lines out, in turn;
+// one that is gone fails a write instead of killing this process with SIGPIPE; one that never ends
+// is killed at the end of its grace period.
+TEST(Process, AServingChildAnswersLineByLineAndEndsWithItsInput) {
+    ChildProcess cat({"cat"});
+    ASSERT_TRUE(cat.started());
+    for (const std::string line : {"first", "'; touch x; '", "third"}) {
+        ASSERT_TRUE(cat.writeLine(line));
+        EXPECT_EQ(cat.readLine().value_or("(closed)"), line);
+    }
+    EXPECT_EQ(cat.finish(), 0);
+    EXPECT_FALSE(cat.readLine().has_value());
+    EXPECT_FALSE(cat.writeLine("after the end"));
+
+    ChildProcess gone({"printf", "bye\\n"});
+    EXPECT_EQ(gone.readLine().value_or(""), "bye");
+    EXPECT_FALSE(gone.readLine().has_value()); // it closed its output
+    for (int i = 0; i < 100; ++i)
+        gone.writeLine(std::string(4096, 'x')); // no SIGPIPE, whatever it returns
+    EXPECT_EQ(gone.finish(), 0);
+    EXPECT_NE(gone.output().find("bye"), std::string::npos);
+
+    ChildProcess stuck({"sleep", "600"}, 0.2);
+    EXPECT_EQ(stuck.finish(), -1); // killed after 0.2 s
+    EXPECT_FALSE(ChildProcess({"ssaolab-no-such-program"}).started());
+}
+
 TEST(Process, AChildPastItsTimeLimitIsKilledAndSaidToHaveTimedOut) {
     // Captured (the pipe stays open while it runs) and not: both end at the limit, not with the child.
     const ProgramRun captured = runProgram({"tail", "-f", "/dev/null"}, ChildStream::Capture, ChildStream::Discard, 0.2);

@@ -56,11 +56,12 @@ window.setupPeers = async (config) => {
              three: `babylon.js ${BABYLON.Engine.Version}`, meshes, hidden, flipped: 0 };
 };
 
-// Babylon's camera from cfg.camera (ssaolab's metrics.json camera, in the file's coordinates).
+// Babylon's camera from cfg.camera (ssaolab's metrics.json camera, in the file's coordinates), made
+// once and moved for each view: the pipelines attached to it stay, with their compiled shaders.
 function makeCamera() {
     const c = cfg.camera, v = (a) => new BABYLON.Vector3(a[0], a[1], a[2]);
-    if (camera) camera.dispose();
-    camera = new BABYLON.TargetCamera('ssaolab-camera', v(c.eye), scene);
+    if (!camera) camera = new BABYLON.TargetCamera('ssaolab-camera', v(c.eye), scene);
+    camera.position = v(c.eye);
     camera.upVector = v(c.up);
     camera.setTarget(v(c.target));
     camera.fovMode = BABYLON.Camera.FOVMODE_VERTICAL_FIXED;
@@ -72,15 +73,14 @@ function makeCamera() {
 
 const far = () => (cfg.camera.far === 'inf' ? 1e7 : cfg.camera.far);
 
-// SSAO2RenderingPipeline at its defaults, with every length set from R ("make peers"): the radius R,
-// the self-occlusion epsilon at the defaults' ratio to it (0.02 : 2), and the depth fade (from 0.75
-// maxZ to maxZ; the default fades from 75 to 100 units) starting at the camera's far plane, so
-// nothing inside the scene fades.
+// SSAO2RenderingPipeline's lengths from R ("make peers"): the radius R, the self-occlusion epsilon
+// at the defaults' ratio to it (0.02 : 2), and the depth fade (from 0.75 maxZ to maxZ; the default
+// fades from 75 to 100 units) starting at the camera's far plane, so nothing inside the scene fades.
+const ssao2Lengths = () => ({ radius: cfg.radius, epsilon: 0.01 * cfg.radius, maxZ: far() / 0.75 });
+
 function makeSsao2(ratio) {
     const p = new BABYLON.SSAO2RenderingPipeline(`ssao${++pipelines}`, scene, ratio, [camera]);
-    p.radius = cfg.radius;
-    p.epsilon = 0.01 * cfg.radius;
-    p.maxZ = far() / 0.75;
+    Object.assign(p, ssao2Lengths());
     // The radius is clamped to minZAspect x depth / near "to save performance on close geometry":
     // ssaolab's near plane is fitted to the scene, far larger than an application's, so the clamp
     // would bite where it would not in the application: off.
@@ -93,13 +93,17 @@ function makeSsao2(ratio) {
 // (depth zt), R / (2 tan(fov_y / 2) zt) of the screen, so radius = that x (zt - near) / (far -
 // near). Its occluding depth difference ends at area = R / (far - near), and starts at fallOff, at
 // the defaults' ratio to area (1e-6 : 0.0075).
-function makeSsao(ratio) {
-    const p = new BABYLON.SSAORenderingPipeline(`ssao${++pipelines}`, scene, ratio, [camera]);
+function ssaoLengths() {
     const c = cfg.camera, span = far() - c.near;
     const zt = Math.max(Math.hypot(...c.target.map((t, i) => t - c.eye[i])), c.near * (1 + 1e-6));
-    p.radius = cfg.radius / (2 * Math.tan(c.fov_y_deg * Math.PI / 360) * zt) * (zt - c.near) / span;
-    p.area = cfg.radius / span;
-    p.fallOff = p.area * (1e-6 / 0.0075);
+    const area = cfg.radius / span;
+    return { radius: cfg.radius / (2 * Math.tan(c.fov_y_deg * Math.PI / 360) * zt) * (zt - c.near) / span,
+             area, fallOff: area * (1e-6 / 0.0075) };
+}
+
+function makeSsao(ratio) {
+    const p = new BABYLON.SSAORenderingPipeline(`ssao${++pipelines}`, scene, ratio, [camera]);
+    Object.assign(p, ssaoLengths());
     return p;
 }
 
@@ -107,6 +111,7 @@ const PIPELINES = {
     'babylon-ssao2': (ctor) => makeSsao2({ ssaoRatio: ctor.ssaoRatio ?? 0.5, blurRatio: ctor.blurRatio ?? 1 }),
     'babylon-ssao': (ctor) => makeSsao({ ssaoRatio: ctor.ssaoRatio ?? 0.5, combineRatio: ctor.combineRatio ?? 1 }),
 };
+const LENGTHS = { 'babylon-ssao2': ssao2Lengths, 'babylon-ssao': ssaoLengths };
 
 function makePipeline(peer, ctor) {
     Math.random = seededRandom(0x55a0); // its noise texture and sample sphere: one image per setting in every session
@@ -127,7 +132,7 @@ const frameTimes = (frames) => harnessFrameTimes(engine._gl, () => scene.render(
 const readAo = () => harnessReadAo(engine._gl, cfg.width, cfg.height);
 
 let engineView = -1, plainMs, lastPeer;
-const built = new Map(); // JSON of the peer and its constructor values -> { pipeline, base }
+const built = new Map(); // JSON of the peer and its constructor values -> { pipeline, peer, base }
 
 // Every pipeline disposed, and the depth renderer SSAORenderingPipeline turned on with it: a frame
 // without any pipeline draws the scene alone.
@@ -141,13 +146,15 @@ function detachAll() {
     for (const e of built.values()) scene.postProcessRenderPipelineManager.detachCamerasFromRenderPipeline(e.pipeline.name, camera);
 }
 
+// A new view moves the camera; every pipeline built stays (a shader Babylon compiled for one view
+// serves the next), its baseline's lengths set from the new view's R and camera.
 window.setEngineView = (index, cam, radius) => {
     if (index === engineView) return;
-    disposeAll();
     plainMs = undefined;
     cfg.camera = cam;
     cfg.radius = radius;
     makeCamera();
+    for (const e of built.values()) Object.assign(e.base, LENGTHS[e.peer]());
     engineView = index;
 };
 
@@ -178,9 +185,10 @@ window.runEngine = async (job) => {
     const key = JSON.stringify([job.peer, ctor]);
     detachAll();
     let e = built.get(key);
+    const fresh = !e;
     if (!e) {
         const pipeline = makePipeline(job.peer, ctor);
-        e = { pipeline, base: readParams(pipeline, job.params) };
+        e = { pipeline, peer: job.peer, base: readParams(pipeline, job.params) };
         built.set(key, e);
     } else {
         scene.postProcessRenderPipelineManager.attachCamerasToRenderPipeline(e.pipeline.name, camera);
@@ -198,7 +206,7 @@ window.runEngine = async (job) => {
         Object.assign(out, timedJob(frameTimes(job.frames), plainMs));
     } else {
         scene.render();
-        scene.render();
+        if (fresh) scene.render(); // a new pipeline's first frame fills its textures; one it already ran draws once
     }
     out.ao = readAo();
     return out;

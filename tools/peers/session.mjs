@@ -105,8 +105,8 @@ async function launchBrowser(chromium) {
 // playcanvas.html: PlayCanvas; filament.html: Filament); `camera`
 // is ssaolab's metrics.json camera of the first view, `radius` R in scene units; maxMib and
 // maxSeconds override browserLimits' defaults; onLate(what), when given, is called before a page
-// call past maxSeconds stops the session. Returns { page, setup,
-// evaluate(what, fn, arg) (page.evaluate within the time limit), failed(), close() }.
+// call past its time limit stops the session. Returns { page, setup, evaluate(what, fn, arg,
+// seconds) (page.evaluate within `seconds`, at most maxSeconds), failed(), close() }.
 export async function openSession({ modules, sceneFile, width, height, camera, radius, tool, maxMib, maxSeconds,
                                     page: pageFile = 'peers.html', onLate }) {
     const limits = browserLimits({ maxMib, maxSeconds });
@@ -129,12 +129,13 @@ export async function openSession({ modules, sceneFile, width, height, camera, r
     }
     let failed = false;
     const close = async () => { endWatch(); await browser.close(); await server.close(); };
-    const evaluate = async (what, fn, arg) => {
+    const evaluate = async (what, fn, arg, seconds = limits.maxSeconds) => {
+        const limit = Math.min(seconds, limits.maxSeconds);
         const late = () => {
             onLate?.(what); // the caller's record of what hung, before the browser is stopped
-            stop(`the page took over ${limits.maxSeconds} s (${what}) - stopped`);
+            stop(`the page took over ${Math.round(limit)} s (${what}) - stopped`);
         };
-        const timer = setTimeout(late, limits.maxSeconds * 1000);
+        const timer = setTimeout(late, limit * 1000);
         try { return await page.evaluate(fn, arg); } finally { clearTimeout(timer); }
     };
     let page;

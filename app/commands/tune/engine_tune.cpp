@@ -223,8 +223,9 @@ void printOutcome(const TuneOptions& o, const EngineTuner& t, const std::vector<
                 three(r.train).c_str(), three(r.heldViews).c_str());
     if (n[2]) std::printf(", held-out scenes %s", three(r.heldScenes).c_str());
     std::printf("\nthe screen-space oracle (a perfect estimator on this G-buffer) on the held-out views: %.4f", std::sqrt(r.heldOracle));
-    std::printf("\nheld-out RMSE x%.3f the engine %s (the better baseline), %s; tuning took %.0f s in %d browser sessions\n",
-                r.verdict.after / r.verdict.before, r.verdict.baseline.c_str(), timeText(r).c_str(), seconds, t.sessions());
+    std::printf("\nheld-out RMSE x%.3f the engine %s (the better baseline), %s; tuning took %.0f s, %d batches in %d browser session(s)\n",
+                r.verdict.after / r.verdict.before, r.verdict.baseline.c_str(), timeText(r).c_str(), seconds, t.batches(),
+                t.sessions());
     if (t.hungJobs())
         std::printf("the browser hung on %d candidate setting(s) past its time limit: each was dropped from the search\n", t.hungJobs());
     std::fflush(stdout); // before any warning on stderr
@@ -358,7 +359,7 @@ void save(const TuneOptions& o, const EngineTuner& t, const std::vector<Knob>& k
         {"cost_settings", costJson(tab, v, knobs, rungs)},
         {"view", {{"scene", std::filesystem::absolute(t.sceneSpec(v.scene), ec).string()}, {"viewpoint", v.viewpoint},
                   {"camera", cameraToJson(cameraToFile(v.camera, sc))}, {"size", {w, h}}, {"radius", o.radiusScene * 2.0 * sc.bounds.radius()}}},
-        {"scores", scoresJson(o, r)}, {"per_scene", perSceneJson(t, r)}, {"tuning_seconds", seconds}, {"browser_sessions", t.sessions()},
+        {"scores", scoresJson(o, r)}, {"per_scene", perSceneJson(t, r)}, {"tuning_seconds", seconds}, {"browser_sessions", t.sessions()}, {"browser_batches", t.batches()},
         {"hung_candidates", t.hungJobs()},
         {"at_range_edge", walls},
         {"snippet", std::filesystem::path(js).filename().string()}};

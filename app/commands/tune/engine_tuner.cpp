@@ -113,7 +113,9 @@ std::pair<double, double> EngineTuner::allowedRange(const Knob& k) const {
 }
 
 std::vector<double> EngineTuner::trainScores(const std::vector<KnobSet>& cands) {
+    searching_ = true; // a candidate the browser takes far too long on is dropped, not waited for
     const auto samples = measure(cands, trainOnly, 0, false);
+    searching_ = false;
     std::vector<double> out;
     for (const auto& c : samples) {
         std::vector<double> mse;
@@ -228,6 +230,13 @@ int EngineTuner::sessions() const {
     return n;
 }
 
+int EngineTuner::batches() const {
+    int n = 0;
+    for (const auto& r : runners_)
+        n += r->batches();
+    return n;
+}
+
 void EngineTuner::addViews(size_t si, const std::string& spec, bool heldOutScene) {
     const Scene& sc = scenes_.back();
     const float radius = o_.radiusScene * 2.0f * sc.bounds.radius();
@@ -267,6 +276,7 @@ std::vector<std::vector<Sample>> EngineTuner::measure(const std::vector<KnobSet>
             for (size_t v = 0; v < views_.size(); ++v)
                 if (views_[v].scene == si && want(views_[v].role)) {
                     jobs.push_back({views_[v].index, valuesFor(cands[c], views_[v]), frames});
+                    jobs.back().droppable = searching_;
                     of.emplace_back(c, v);
                 }
         if (jobs.empty()) continue;

@@ -93,6 +93,7 @@ class EngineTuner {
     const std::vector<Scene>& scenes() const { return scenes_; }
     const EngineTable& table() const { return table_; }
     int sessions() const;
+    int batches() const; // the browser's batches of jobs (the search's steps)
     // Candidates the browser hung on (EngineResult::hung): scored as never the best.
     int hungJobs() const { return hungJobs_; }
     std::string sceneSpec(size_t i) const { return specs_[i]; }
@@ -106,6 +107,7 @@ class EngineTuner {
     double scaledCost(const EngineParam& p, double f) const;
     // The training views' mean MSE of each candidate (one batch).
     std::vector<double> trainScores(const std::vector<KnobSet>& cands);
+    bool searching_ = false; // measure()'s jobs are the search's candidates
     // The widest range in the knob's unit whose values stay inside the table's range on every view.
     std::pair<double, double> allowedRange(const Knob& k) const;
     size_t firstTrain() const;
