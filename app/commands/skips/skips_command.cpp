@@ -393,14 +393,22 @@ void unusedTargetRows(Context& c, const std::string& view) {
 }
 
 // The second depth layer in the G-buffer's own pass (gbuffer.second_layer_build = previous) against
-// its second geometry pass (peel): the G-buffer and the layer's passes, the bitmask at its
-// defaults. Each build's frames in a row - the single pass reprojects its own previous frame - and
-// the same still frame from both.
+// its second geometry pass (peel): the G-buffer and the layer's passes, and the AO of the start
+// preset's technique where it reads the layer (TechniqueInfo::secondLayer), else of the first that
+// does, at its defaults. Each build's frames in a row - the single pass reprojects its own previous
+// frame - and the same still frame from both.
 void secondLayerRow(Context& c, const std::string& view) {
     Renderer& r = c.r;
     r.setWanted(std::set<std::string>{"ao.denoised"});
     Settings peel = defaultSettings();
-    applyAssignment(peel, "ao.technique=vbao");
+    std::string reader = PresetStore::standard().open(kStartPreset).settings.ao.technique;
+    if (!findTechnique(reader).secondLayer) {
+        const auto& all = techniques();
+        const auto first = std::find_if(all.begin(), all.end(), [](const TechniqueInfo& t) { return t.secondLayer; });
+        if (first == all.end()) return; // no technique reads a second layer: nothing to compare
+        reader = first->id;
+    }
+    applyAssignment(peel, "ao.technique=" + reader);
     applyAssignment(peel, "gbuffer.second_layer=true");
     Settings single = peel;
     applyAssignment(single, "gbuffer.second_layer_build=previous");
