@@ -59,6 +59,19 @@ int reap(pid_t pid, const std::optional<Clock::time_point>& deadline, bool& time
     }
 }
 
+// Starts argv[0] (on PATH when it holds no '/') with `fa`'s streams, which it then frees: its pid,
+// or -1. glibc's posix_spawnp returns the exec's failure (a missing program) as its own result.
+pid_t spawn(const std::vector<std::string>& argv, posix_spawn_file_actions_t& fa) {
+    std::vector<char*> args;
+    for (const auto& a : argv)
+        args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    pid_t pid = -1;
+    const int rc = posix_spawnp(&pid, args[0], &fa, nullptr, args.data(), environ);
+    posix_spawn_file_actions_destroy(&fa);
+    return rc == 0 ? pid : -1;
+}
+
 } // namespace
 
 ProgramRun runProgram(const std::vector<std::string>& argv, ChildStream out, ChildStream err, double timeoutSeconds) {
@@ -72,16 +85,9 @@ ProgramRun runProgram(const std::vector<std::string>& argv, ChildStream out, Chi
     posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
     redirect(fa, out, 1, fds);
     redirect(fa, err, 2, fds);
-    std::vector<char*> args;
-    for (const auto& a : argv)
-        args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    pid_t pid = -1;
-    // glibc's posix_spawnp returns the exec's failure (a missing program) as its own result.
-    const int rc = posix_spawnp(&pid, args[0], &fa, nullptr, args.data(), environ);
-    posix_spawn_file_actions_destroy(&fa);
+    const pid_t pid = spawn(argv, fa);
     if (capture) ::close(fds[1]);
-    if (rc == 0) {
+    if (pid > 0) {
         run.started = true;
         std::optional<Clock::time_point> deadline;
         if (timeoutSeconds > 0)
@@ -126,15 +132,9 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, double exitSeco
     posix_spawn_file_actions_adddup2(&fa, in[1], 0);
     posix_spawn_file_actions_adddup2(&fa, out[1], 1);
     posix_spawn_file_actions_adddup2(&fa, out[1], 2);
-    std::vector<char*> args;
-    for (const auto& a : argv)
-        args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    pid_t pid = -1;
-    const int rc = posix_spawnp(&pid, args[0], &fa, nullptr, args.data(), environ);
-    posix_spawn_file_actions_destroy(&fa);
+    const pid_t pid = spawn(argv, fa);
     ::close(in[1]), ::close(out[1]);
-    if (rc != 0) {
+    if (pid <= 0) {
         ::close(in[0]), ::close(out[0]);
         return;
     }
