@@ -120,7 +120,6 @@ EngineRunner::~EngineRunner() {
 }
 
 std::vector<EngineResult> EngineRunner::run(const std::vector<EngineJob>& jobs) {
-    hungAllowed_ = std::max(kMaxHungJobs, int(jobs.size() / 4));
     // One session runs one harness page: jobs of engines on different pages run in one session each.
     std::vector<std::string> pages;
     for (const EngineJob& j : jobs)
@@ -192,7 +191,7 @@ std::string EngineRunner::serve(const std::string& page, const std::string& dir,
     auto& child = live_[page];
     if (!child) {
         child = std::make_unique<ChildProcess>(std::vector<std::string>{tools_.node, tools_.scripts + "/run_engine.mjs",
-                                                                        "--modules", tools_.modules, "--serve", "stdin"});
+                                                                        "--modules", tools_.modules});
         if (!child->started()) {
             live_.erase(page);
             throw Error("cannot start " + tools_.node + " for " + who);
@@ -231,11 +230,12 @@ EngineResult EngineRunner::readResult(const std::string& dir, size_t i, const nl
 std::vector<EngineResult> EngineRunner::afterHang(const std::vector<EngineJob>& jobs, const std::string& page, int hung,
                                                   const std::string& dir, const std::string& failure) {
     std::error_code ec;
-    if (hung >= hungAllowed_ || !fs::is_regular_file(dir + "/hung.json", ec)) throw Error(failure);
+    if (!fs::is_regular_file(dir + "/hung.json", ec)) throw Error(failure);
     const nlohmann::json h = readJsonFile(dir + "/hung.json", "engine session");
     if (!h.contains("job") || !h["job"].is_number_integer() || h["job"].get<long>() < 0 || size_t(h["job"].get<long>()) >= jobs.size())
         throw Error(failure);
     const size_t stuck = size_t(h["job"].get<long>());
+    if (!jobs[stuck].droppable && hung >= kMaxHungJobs) throw Error(failure); // a search's candidates never count
     std::vector<EngineResult> out(jobs.size());
     std::vector<EngineJob> rest;
     std::vector<size_t> at;
@@ -247,7 +247,7 @@ std::vector<EngineResult> EngineRunner::afterHang(const std::vector<EngineJob>& 
     }
     fs::remove_all(dir, ec);
     if (!rest.empty()) {
-        std::vector<EngineResult> more = runPage(rest, page, hung + 1);
+        std::vector<EngineResult> more = runPage(rest, page, hung + (jobs[stuck].droppable ? 0 : 1));
         for (size_t k = 0; k < at.size(); ++k)
             out[at[k]] = std::move(more[k]);
     }

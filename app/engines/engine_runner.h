@@ -74,8 +74,8 @@ class EngineRunner {
 
     // Every job in the runner's session of its page; throws with the runner's last message when it
     // fails. A job the page hangs on past SSAOLAB_BROWSER_MAX_SECONDS comes back `hung` and the jobs after it run
-    // in a new session, up to kMaxHungJobs in one call or a quarter of its jobs when that is more
-    // (then it throws).
+    // in a new session, up to kMaxHungJobs in one call (then it throws); a droppable job's hang
+    // (a search's candidate) never counts against that.
     std::vector<EngineResult> run(const std::vector<EngineJob>& jobs);
     static constexpr int kMaxHungJobs = 3;
     int sessions() const { return sessions_; }
@@ -95,7 +95,7 @@ class EngineRunner {
     std::string scene_, work_;
     int width_, height_;
     std::vector<EngineView> views_;
-    int sessions_ = 0, batches_ = 0, hungAllowed_ = kMaxHungJobs;
+    int sessions_ = 0, batches_ = 0;
     std::map<std::string, std::unique_ptr<ChildProcess>> live_; // page -> its browser session
     std::map<int, std::vector<double>> jobSeconds_; // timed frames -> the last jobs' seconds (run_engine.mjs's limit)
 };

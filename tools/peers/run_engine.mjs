@@ -2,9 +2,8 @@
 // session (session.mjs, peers.js runEngine): what `ssaolab tune --engine` asks for each step of
 // its search, then scores in-process against its reference.
 //
-// node run_engine.mjs --modules DIR --jobs FILE --out DIR     one batch, then the browser closes
-// node run_engine.mjs --modules DIR --serve stdin             batches read from stdin, one JSON line
-//     each, { "jobs": FILE, "out": DIR }, in one browser session; after each one the line
+// node run_engine.mjs --modules DIR    batches read from stdin, one JSON line each,
+//     { "jobs": FILE, "out": DIR }, in one browser session; after each one the line
 //     "ssaolab-batch-done" on stdout; the session ends with stdin. Every batch of a session has the
 //     scene, size, page and views of its first (engine_runner.cpp keeps one session a runner).
 // FILE: { scene (.gltf/.glb), width, height, page (peers.html, the default, or babylon.html: every
@@ -26,10 +25,6 @@ import readline from 'node:readline';
 import { openSession, parseArgs, pgmBytes } from './session.mjs';
 
 const args = parseArgs(process.argv, ['modules'], 'run_engine');
-if (!args.serve && !(args.jobs && args.out)) {
-    console.error('run_engine: give --jobs FILE --out DIR, or --serve stdin');
-    process.exit(2);
-}
 let session, first, current = -1, out = '';
 const onLate = () => { if (current >= 0) fs.writeFileSync(path.join(out, 'hung.json'), JSON.stringify({ job: current })); };
 const readSpec = (file) => JSON.parse(fs.readFileSync(file, 'utf8'));
@@ -105,7 +100,7 @@ async function serve() {
 
 let failed = false;
 try {
-    await (args.serve ? serve() : runBatch(readSpec(args.jobs), args.out));
+    await serve();
 } catch (e) {
     console.error(`run_engine: ${String(e.message ?? e).split('\n')[0]}`);
     failed = true;
