@@ -221,6 +221,8 @@ EngineResult EngineRunner::readResult(const std::string& dir, size_t i, const nl
     if (j.contains("ao_ms") && j["ao_ms"].is_number()) e.aoMs = j["ao_ms"].get<double>();
     if (j.contains("ao_ms_min") && j["ao_ms_min"].is_number()) e.aoMsMin = j["ao_ms_min"].get<double>();
     if (j.contains("ao_ms_max") && j["ao_ms_max"].is_number()) e.aoMsMax = j["ao_ms_max"].get<double>();
+    if (j.contains("timed_frames") && j["timed_frames"].is_number_integer())
+        e.timedFrames = int(std::clamp<long long>(j["timed_frames"].get<long long>(), 0, 1 << 20));
     return e;
 }
 

@@ -58,6 +58,8 @@ struct EngineResult {
     double aoMs = std::numeric_limits<double>::quiet_NaN(); // frame with the pass - frame without (frames > 0)
     // The fastest and slowest timed frame with the pass, less the same frame without (frames > 0).
     double aoMsMin = std::numeric_limits<double>::quiet_NaN(), aoMsMax = std::numeric_limits<double>::quiet_NaN();
+    // Frames timed: the job's frames, or fewer once they took 20 s in all (harness.js framesDone).
+    int timedFrames = 0;
     // The browser hung on this job past its time limit (a setting some GL driver never finishes):
     // no image; the session went on without it in a new browser.
     bool hung = false;

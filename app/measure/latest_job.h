@@ -66,6 +66,13 @@ class LatestJob {
         if (wake_) wake_();
         return true;
     }
+    // The state's version alone (cheap to poll every frame).
+    unsigned version() const {
+        std::lock_guard<std::mutex> lock(m_);
+        return state_.version;
+    }
+    // True while the thread works on a job (a cancelled one included, until its work returns).
+    bool running() const { return running_.load(); }
     // Set when the running job should stop (for work that polls an atomic flag).
     const std::atomic<bool>& cancelled() const { return cancel_; }
 
@@ -80,8 +87,10 @@ class LatestJob {
                 job = std::move(*pending_);
                 pending_.reset();
                 cancel_ = false;
+                running_ = true;
             }
             work_(job);
+            running_ = false;
         }
     }
 
@@ -93,7 +102,7 @@ class LatestJob {
     State state_;
     unsigned version_ = 0;
     bool quit_ = false;
-    std::atomic<bool> cancel_{false};
+    std::atomic<bool> cancel_{false}, running_{false};
     std::thread thread_; // last: started once everything above exists
 };
 

@@ -38,120 +38,56 @@ std::vector<int> ReferenceWorker::batches(int target) {
     return out;
 }
 
-ReferenceWorker::ReferenceWorker(std::function<void()> wake) : wake_(std::move(wake)) {
-    thread_ = std::thread([this] { run(); });
-}
-
-ReferenceWorker::~ReferenceWorker() {
-    {
-        std::lock_guard<std::mutex> lock(m_);
-        quit_ = true;
-        pending_.reset();
-        cancel_ = true;
-    }
-    cv_.notify_all();
-    thread_.join();
-}
+ReferenceWorker::ReferenceWorker(std::function<void()> wake)
+    : jobs_([this](const Queued& q) { trace(q); }, std::move(wake)) {}
 
 uint64_t ReferenceWorker::start(Job job) {
-    uint64_t id;
-    {
-        std::lock_guard<std::mutex> lock(m_);
-        id = ++lastId_;
-        pending_ = std::move(job);
-        pendingId_ = id;
-        cancel_ = true; // the running job stops at its next row; run() clears this for the new one
-        progress_ = Progress{id, Phase::Building, 0, pending_->settings.samples, 0.0, {}};
-        snapshot_ = Snapshot{id, nullptr};
-    }
-    ++serial_;
-    cv_.notify_all();
+    const uint64_t id = ++lastId_;
+    State fresh;
+    fresh.progress = Progress{id, Phase::Building, 0, job.settings.samples, 0.0, {}};
+    fresh.snapshot = Snapshot{id, nullptr};
+    jobs_.start(Queued{std::to_string(id), std::move(job), id}, std::move(fresh));
     return id;
 }
 
-void ReferenceWorker::cancel() {
-    {
-        std::lock_guard<std::mutex> lock(m_);
-        pending_.reset();
-        cancel_ = true;
-        progress_ = Progress{};
-        snapshot_ = Snapshot{};
-    }
-    ++serial_;
+void ReferenceWorker::setProgress(const Queued& q, const std::function<void(Progress&)>& change) {
+    jobs_.publish(q, [&](State& s) { change(s.progress); }); // cancelled or superseded: not ours to report
 }
 
-ReferenceWorker::Snapshot ReferenceWorker::latest() const {
-    std::lock_guard<std::mutex> lock(m_);
-    return snapshot_;
-}
-
-ReferenceWorker::Progress ReferenceWorker::progress() const {
-    std::lock_guard<std::mutex> lock(m_);
-    return progress_;
-}
-
-void ReferenceWorker::setProgress(uint64_t id, const std::function<void(Progress&)>& change) {
-    {
-        std::lock_guard<std::mutex> lock(m_);
-        if (progress_.job != id) return; // cancelled or superseded meanwhile: not ours to report
-        change(progress_);
-    }
-    ++serial_;
-    if (wake_) wake_();
-}
-
-void ReferenceWorker::run() {
-    lowerThisThreadsPriority();
-    std::unique_lock<std::mutex> lock(m_);
-    for (;;) {
-        cv_.wait(lock, [&] { return quit_ || pending_.has_value(); });
-        if (quit_) return;
-        const Job job = std::move(*pending_);
-        const uint64_t id = pendingId_;
-        pending_.reset();
-        cancel_ = false; // under the lock: a start() after this point cancels this job again
-        running_ = true;
-        lock.unlock();
-        trace(job, id);
-        lock.lock();
-        running_ = false;
-    }
-}
-
-void ReferenceWorker::trace(const Job& job, uint64_t id) {
+void ReferenceWorker::trace(const Queued& q) {
+    lowerThisThreadsPriority(); // the tracer's row threads inherit it
+    const Job& job = q.job;
+    const std::atomic<bool>& cancel = jobs_.cancelled();
     try {
         if (job.scene != bvhScene_) {
             bvh_.reset(); // before its scene goes
             bvhScene_ = job.scene;
             bvh_ = std::make_unique<EmbreeScene>(*bvhScene_);
         }
-        if (cancel_) return;
+        if (cancel) return;
         ReferenceTracer tracer(*bvh_, job.camera, job.width, job.height, job.settings); // primary rays
         const int target = job.settings.samples;
-        setProgress(id, [](Progress& p) { p.phase = Phase::Tracing; });
+        setProgress(q, [](Progress& p) { p.phase = Phase::Tracing; });
         int done = 0;
         for (const int n : batches(target)) {
             const auto onProgress = [&](double f) {
-                setProgress(id, [&](Progress& p) { p.fraction = (double(done) + f * n) / double(target); });
+                setProgress(q, [&](Progress& p) { p.fraction = (double(done) + f * n) / double(target); });
             };
-            if (!tracer.addSamples(n, &cancel_, onProgress)) return; // cancelled: the tracer is spent
+            if (!tracer.addSamples(n, &cancel, onProgress)) return; // cancelled: the tracer is spent
             done += n;
             auto image = std::make_shared<const ReferenceImage>(tracer.image());
-            {
-                std::lock_guard<std::mutex> lock(m_);
-                if (progress_.job != id) return;
-                snapshot_ = Snapshot{id, std::move(image)};
-                progress_.samples = done;
-                progress_.fraction = double(done) / double(target);
-                if (done >= target) progress_.phase = Phase::Done;
-            }
-            ++serial_;
-            if (wake_) wake_();
+            const bool ours = jobs_.publish(q, [&](State& s) {
+                s.snapshot = Snapshot{q.id, std::move(image)};
+                s.progress.samples = done;
+                s.progress.fraction = double(done) / double(target);
+                if (done >= target) s.progress.phase = Phase::Done;
+            });
+            if (!ours) return; // cancelled or superseded
         }
     } catch (const std::exception& e) {
         // Embree failures (out of memory, a degenerate scene) end this job, not the app.
         const std::string what = e.what();
-        setProgress(id, [&](Progress& p) { p.phase = Phase::Failed, p.error = what; });
+        setProgress(q, [&](Progress& p) { p.phase = Phase::Failed, p.error = what; });
     }
 }
 

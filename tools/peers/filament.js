@@ -10,7 +10,7 @@
 // Time: the median frame with the AO minus the median frame without, each ended by a 1-pixel
 // readPixels, as peers.js times its passes.
 /* global Filament */
-import { aoBase64, median, pageCanvas, readParams, timedJob } from './harness.js';
+import { aoBase64, framesDone, median, pageCanvas, readParams, timedFrames, timedJob } from './harness.js';
 
 const ALBEDO = 0.02, LIGHT = 45; // the frame without AO near 0.9 of the canvas's range, never clipped
 
@@ -172,13 +172,11 @@ async function frame() {
     throw new Error(`Filament skipped 100 frames in a row (its renderer made anew ${renewed} times)`);
 }
 
-async function frameTimes(frames) {
-    const times = [];
-    for (let i = 0; i < frames + 3; ++i) {
-        const ms = await frame();
-        if (i >= 3) times.push(ms);
-    }
-    return times.sort((a, b) => a - b);
+async function frameTimes(frames) { // harness.js framesDone: when they stop
+    const all = [];
+    while (!framesDone(all, frames))
+        all.push(await frame());
+    return timedFrames(all);
 }
 
 async function readFrame() {

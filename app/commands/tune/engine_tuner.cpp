@@ -44,11 +44,11 @@ double meanMs(const std::vector<Sample>& v) {
     return meanOf(ms);
 }
 
-bool trainOnly(TuneRole r) {
-    return r == TuneRole::Train;
+bool trainOnly(const TuneView& v) {
+    return v.role == TuneRole::Train;
 }
 
-bool every(TuneRole) {
+bool every(const TuneView&) {
     return true;
 }
 
@@ -208,7 +208,13 @@ KnobSet EngineTuner::shippedKnobs() const {
 }
 
 std::vector<std::vector<Sample>> EngineTuner::finalMeasure(const std::vector<Knob>& tuned) {
-    return measure({KnobSet{}, tuned, shippedKnobs(), shippedKnobs()}, every, o_.engine.timingFrames, false, true);
+    const int frames = o_.engine.timingFrames;
+    auto out = measure({KnobSet{}, tuned, shippedKnobs()}, every, frames, false, true);
+    std::vector<bool> full(views_.size(), false); // a frame that took 20 s is its own spread's measure
+    for (const Sample& x : out[2])
+        full[x.view] = x.timedFrames >= frames;
+    out.push_back(measure({shippedKnobs()}, [&](const TuneView& v) { return full[size_t(&v - views_.data())]; }, frames, false)[0]);
+    return out;
 }
 
 std::map<std::string, double> EngineTuner::valuesFor(const KnobSet& c, const TuneView& v) const {
@@ -266,7 +272,7 @@ void EngineTuner::addViews(size_t si, const std::string& spec, bool heldOutScene
     runners_.push_back(std::make_unique<EngineRunner>(tools_, table_, spec, w_, h_, std::move(engineViews)));
 }
 
-std::vector<std::vector<Sample>> EngineTuner::measure(const std::vector<KnobSet>& cands, const std::function<bool(TuneRole)>& want,
+std::vector<std::vector<Sample>> EngineTuner::measure(const std::vector<KnobSet>& cands, const std::function<bool(const TuneView&)>& want,
                                                       int frames, bool recordBase, bool keepImages) {
     std::vector<std::vector<Sample>> out(cands.size());
     for (size_t si = 0; si < runners_.size(); ++si) {
@@ -274,7 +280,7 @@ std::vector<std::vector<Sample>> EngineTuner::measure(const std::vector<KnobSet>
         std::vector<std::pair<size_t, size_t>> of; // (candidate, view) of each job
         for (size_t c = 0; c < cands.size(); ++c)
             for (size_t v = 0; v < views_.size(); ++v)
-                if (views_[v].scene == si && want(views_[v].role)) {
+                if (views_[v].scene == si && want(views_[v])) {
                     jobs.push_back({views_[v].index, valuesFor(cands[c], views_[v]), frames});
                     jobs.back().droppable = searching_;
                     of.emplace_back(c, v);
@@ -295,7 +301,7 @@ std::vector<std::vector<Sample>> EngineTuner::measure(const std::vector<KnobSet>
             if (recordBase) view.base = res[j].values;
             const double rmse = e->metrics.rmse;
             if (!(keepImages && view.shown)) e.reset();
-            out[of[j].first].push_back({of[j].second, rmse * rmse, res[j].aoMs, std::move(e)});
+            out[of[j].first].push_back({of[j].second, rmse * rmse, res[j].aoMs, std::move(e), res[j].timedFrames});
         }
     }
     return out;

@@ -56,6 +56,7 @@ struct Sample {
     size_t view;
     double mse, ms;
     std::shared_ptr<const Evaluation> eval; // the AO judged, on shown views when kept
+    int timedFrames = 0;                    // EngineResult::timedFrames
 };
 
 double meanOf(const std::vector<double>& v);
@@ -83,7 +84,8 @@ class EngineTuner {
     // on them) back at the table's default, verbatim; the rows that read the AO alone stay set.
     KnobSet shippedKnobs() const;
     // Every view, timed: [0] the defaults with lengths from R, [1] the tuned settings, [2] the engine
-    // as shipped (the shown views' images kept), [3] as shipped again: the timing's own noise.
+    // as shipped (the shown views' images kept), [3] as shipped again, on the views where [2] timed
+    // every frame asked for (harness.js framesDone): the timing's own noise.
     std::vector<std::vector<Sample>> finalMeasure(const std::vector<Knob>& tuned);
     // The engine's value of each knob on a view.
     std::map<std::string, double> valuesFor(const KnobSet& c, const TuneView& v) const;
@@ -102,7 +104,7 @@ class EngineTuner {
     void addViews(size_t si, const std::string& spec, bool heldOutScene);
     // Every candidate on every view `want` keeps, one browser session per scene; recordBase: each
     // view's base becomes what the engine ran with.
-    std::vector<std::vector<Sample>> measure(const std::vector<KnobSet>& cands, const std::function<bool(TuneRole)>& want,
+    std::vector<std::vector<Sample>> measure(const std::vector<KnobSet>& cands, const std::function<bool(const TuneView&)>& want,
                                              int frames, bool recordBase, bool keepImages = false);
     double scaledCost(const EngineParam& p, double f) const;
     // The training views' mean MSE of each candidate (one batch).
