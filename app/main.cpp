@@ -22,7 +22,7 @@
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/paths.h"
-#include "view/window_app.h"
+#include "view/app/window_app.h"
 
 #include <CLI/CLI.hpp>
 
@@ -167,7 +167,7 @@ struct Commands {
         techs->add_flag("--levels", techniqueLevels, "the quality levels make presets tunes: ID LEVEL ROWS TUNED");
         techs->add_flag("--derived", techniqueDerived, "the presets that follow tuned ones: ID NAME FROM ROWS");
         CLI::App* probe = app.add_subcommand("probe-technique", "render a user technique's file in two frames (the explorer's test)")
-                              ->group(""); // hidden: app/view/technique_watch.h runs it
+                              ->group(""); // hidden: app/view/live/technique_watch.h runs it
         probe->add_option("file", probeFile, "NAME.ao.glsl")->required()->type_name(ssao::kInFile);
         ssao::addSizeOption(*probe, probeSize);
         CLI::App* compile = app.add_subcommand("compile-glsl", "compile one program of an untrusted fragment shader (the compile gate's test)")

@@ -6,7 +6,7 @@
 #include "ui_driver.h"
 
 #include "settings/preset_store.h"
-#include "view/ui_layout.h"
+#include "view/panels/ui_layout.h"
 
 #include <chrono>
 #include <functional>

@@ -3,7 +3,7 @@
 #include "settings/params.h"
 #include "settings/preset_store.h"
 #include "util/error.h"
-#include "view/camera_controller.h"
+#include "view/frame/camera_controller.h"
 
 #include <gtest/gtest.h>
 

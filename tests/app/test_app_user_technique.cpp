@@ -1,4 +1,4 @@
-// A user technique in the explorer (app/view/technique_watch.h): its rows are widgets like the
+// A user technique in the explorer (app/view/live/technique_watch.h): its rows are widgets like the
 // built-ins'; a new version of its file is probed in a child process and adopted only when it
 // passed; a compile error or a shader that never ends is named (FILE:LINE, or the time limit)
 // while the last good version keeps running.

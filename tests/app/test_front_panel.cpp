@@ -9,7 +9,7 @@
 
 #include "measure/bench_run.h"
 #include "measure/motion_measure.h"
-#include "view/front_panel.h"
+#include "view/frame/front_panel.h"
 #include "front/front_measurer.h"
 #include "cli/headless_runner.h"
 #include "reference/reference_cache.h"

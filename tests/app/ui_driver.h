@@ -2,7 +2,7 @@
 // frames are drawn into an offscreen framebuffer, input is injected through ImGuiIO.
 #pragma once
 #include "gl/resources.h"
-#include "view/app_core.h"
+#include "view/app/app_core.h"
 
 #include <memory>
 #include <string>

@@ -4,7 +4,7 @@
 // user's file again, so a link swapped in meanwhile is never followed.
 //
 // `ssaolab probe-technique FILE --size WxH --source BYTES`: the explorer's test of a new version of
-// a user technique before it adopts it (app/view/technique_watch.h). Under the per-frame time limit
+// a user technique before it adopts it (app/view/live/technique_watch.h). Under the per-frame time limit
 // it renders two frames of builtin:showcase with it at its defaults (the second with the
 // inspector's variant) at `width` x `height` - the explorer's render size, so a shader too slow for
 // the explorer's frames is refused here - and prints "ok HASH" (the hash of the text it tested) or

@@ -1,4 +1,4 @@
-#include "view/inspector.h"
+#include "view/frame/inspector.h"
 
 #include "base/image.h"
 

@@ -3,7 +3,7 @@
 // every frame and moving the view does not re-run the probe.
 #pragma once
 #include "renderer.h"
-#include "view/view_state.h"
+#include "view/frame/view_state.h"
 
 #include <map>
 #include <optional>

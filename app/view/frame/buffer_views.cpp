@@ -1,4 +1,4 @@
-#include "view/buffer_views.h"
+#include "view/frame/buffer_views.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,6 +1,6 @@
 // The "vs reference" block of the info strip: the ray-traced reference's progress (rays per pixel
 // so far, or why it waits) and the error of ao.denoised against it, next to the timings.
-#include "view/ui_panels.h"
+#include "view/panels/ui_panels.h"
 
 #include <algorithm>
 #include <cmath>

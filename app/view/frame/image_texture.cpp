@@ -1,4 +1,4 @@
-#include "view/image_texture.h"
+#include "view/frame/image_texture.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,5 +1,5 @@
 // AppCore's actions: scenes, presets, camera, status.
-#include "view/app_core.h"
+#include "view/app/app_core.h"
 
 #include "scene/builtin_scenes.h"
 #include "settings/params.h"

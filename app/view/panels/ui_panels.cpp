@@ -1,8 +1,8 @@
 // The left panel: status, then tabs for the parameters (generated from the table), the scene and
 // camera, presets and the front. Timing and the inspector live in the info strip under the image.
 #include "scene/builtin_scenes.h"
-#include "view/ui_panels.h"
-#include "view/ui_layout.h"
+#include "view/panels/ui_panels.h"
+#include "view/panels/ui_layout.h"
 
 #include <algorithm>
 #include <cstring>

@@ -1,7 +1,7 @@
 // The strip under the image, always in view: per-pass GPU times (at full resolution and while
 // moving, in graph order) with the frame-time plot, the error against the ray-traced reference
 // (ui_reference.cpp), and the pixel / sample inspector.
-#include "view/ui_panels.h"
+#include "view/panels/ui_panels.h"
 
 #include <algorithm>
 #include <cfloat>

@@ -1,4 +1,4 @@
-#include "view/ui_layout.h"
+#include "view/panels/ui_layout.h"
 
 #include <algorithm>
 #include <cmath>

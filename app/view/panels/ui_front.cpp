@@ -1,4 +1,4 @@
-// The "Front" tab: the time-against-error front of the view on screen (view/front_panel.h).
+// The "Front" tab: the time-against-error front of the view on screen (view/frame/front_panel.h).
 // A plot drawn with ImGui's draw list - GPU time on a log axis, RMSE against the finished live
 // reference or the motion score along the camera path through the view ("still | motion"; the axis
 // clipped above the bulk, outliers as triangles on its top edge), the front as
@@ -6,8 +6,8 @@
 // grey band - where hovering names a point, a click applies it and a shift+click compares it with
 // the current setting in Split A|B. Under it the two one-click answers and the budget box.
 #include "techniques/technique.h"
-#include "view/ui_panels.h"
-#include "view/ui_layout.h"
+#include "view/panels/ui_panels.h"
+#include "view/panels/ui_layout.h"
 
 #include <algorithm>
 #include <cmath>

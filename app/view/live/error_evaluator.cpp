@@ -1,4 +1,4 @@
-#include "view/error_evaluator.h"
+#include "view/live/error_evaluator.h"
 
 #include "measure/reference_worker.h"
 

@@ -3,12 +3,12 @@
 #pragma once
 #include "settings/preset.h"
 #include "settings/preset_store.h"
-#include "view/camera_controller.h"
-#include "view/frame_driver.h"
-#include "view/front_panel.h"
-#include "view/inspector.h"
-#include "view/ui_actions.h"
-#include "view/view_state.h"
+#include "view/frame/camera_controller.h"
+#include "view/frame/frame_driver.h"
+#include "view/frame/front_panel.h"
+#include "view/frame/inspector.h"
+#include "view/panels/ui_actions.h"
+#include "view/frame/view_state.h"
 
 #include <imgui.h>
 

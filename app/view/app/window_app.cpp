@@ -1,4 +1,4 @@
-#include "view/window_app.h"
+#include "view/app/window_app.h"
 
 #include "base/image.h"
 #include "gl/context.h"

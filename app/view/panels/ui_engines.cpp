@@ -2,8 +2,8 @@
 // are, or why they are off), a row per engine point - its AO time and error against the current
 // setting's, "A|B" (its AO frame in Split B) and "copy snippet" (its settings for this view as
 // JavaScript for the engine's API) - and where tuned settings come from.
-#include "view/ui_panels.h"
-#include "view/ui_layout.h"
+#include "view/panels/ui_panels.h"
+#include "view/panels/ui_layout.h"
 
 #include <cstdio>
 #include <cstring>

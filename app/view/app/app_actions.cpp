@@ -2,7 +2,7 @@
 // panel returns (ui_actions.h), panel by panel, so the next panel (and the render in the main view)
 // sees them in the same frame.
 #include "settings/params.h"
-#include "view/app_core.h"
+#include "view/app/app_core.h"
 
 #include <algorithm>
 #include <variant>

@@ -1,4 +1,4 @@
-#include "view/front_panel.h"
+#include "view/frame/front_panel.h"
 
 #include "metrics/bench_summary.h"
 #include "settings/params.h"

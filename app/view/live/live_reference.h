@@ -7,7 +7,7 @@
 #include "metrics/evaluate.h"
 #include "passes/reference_pass.h"
 #include "renderer.h"
-#include "view/error_evaluator.h"
+#include "view/live/error_evaluator.h"
 #include "measure/reference_worker.h"
 
 #include <functional>

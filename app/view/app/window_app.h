@@ -1,6 +1,6 @@
 // The interactive explorer in a GLFW window (OpenGL 4.5 core + Dear ImGui).
 #pragma once
-#include "view/app_core.h"
+#include "view/app/app_core.h"
 
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "view/frame_driver.h"
+#include "view/frame/frame_driver.h"
 #include "gl/readback.h"
 
 #include <imgui.h>

@@ -1,4 +1,4 @@
-// The explorer's "Front" tab as state and answers, without drawing (view/ui_front.cpp draws it):
+// The explorer's "Front" tab as state and answers, without drawing (view/panels/ui_front.cpp draws it):
 // when the live reference of the view is finished, measure the candidates on it in the background
 // (front/front_measurer.h); answer "cheapest at <= this error" and "most accurate at <= this time"
 // relative to the current setting, and the budget box's "best within X ms / at most E". The y axis
@@ -11,7 +11,7 @@
 #include "front/front_measurer.h"
 #include "front/front_motion.h"
 #include "settings/preset_store.h"
-#include "view/frame_driver.h"
+#include "view/frame/frame_driver.h"
 
 #include <string>
 

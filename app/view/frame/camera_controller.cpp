@@ -1,4 +1,4 @@
-#include "view/camera_controller.h"
+#include "view/frame/camera_controller.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,7 +1,7 @@
 // The main view's toolbar: the view mode, the render scales and the display style, and under them
 // the enlarged buffer (Single) or what B is and what A | B compares (Split). The rows after a choice
 // follow it in the same frame: they draw from the toolbar's own copies of the fields it edits.
-#include "view/ui_panels.h"
+#include "view/panels/ui_panels.h"
 
 namespace ssao {
 

@@ -2,8 +2,8 @@
 // buffer with the sample inspector drawn over it, and a split A | B comparison (drag the divider)
 // or their signed difference. Dragging orbits (left) or pans (right/middle); the wheel zooms;
 // WASD/QE fly in fly mode.
-#include "view/ui_panels.h"
-#include "view/ui_layout.h"
+#include "view/panels/ui_panels.h"
+#include "view/panels/ui_layout.h"
 
 #include <epoxy/gl.h>
 

@@ -4,7 +4,7 @@
 // the AO group.
 #include "settings/params.h"
 #include "techniques/technique.h"
-#include "view/ui_panels.h"
+#include "view/panels/ui_panels.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,8 +4,8 @@
 #pragma once
 #include "front/candidates.h"
 #include "scene/scene.h"
-#include "view/camera_controller.h"
-#include "view/view_state.h"
+#include "view/frame/camera_controller.h"
+#include "view/frame/view_state.h"
 
 #include <imgui.h>
 

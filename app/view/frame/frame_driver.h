@@ -4,9 +4,9 @@
 #pragma once
 #include "metrics/radius_check.h"
 #include "renderer.h"
-#include "view/buffer_views.h"
-#include "view/live_reference.h"
-#include "view/view_state.h"
+#include "view/frame/buffer_views.h"
+#include "view/live/live_reference.h"
+#include "view/frame/view_state.h"
 
 #include <atomic>
 #include <deque>

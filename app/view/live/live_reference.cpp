@@ -1,4 +1,4 @@
-#include "view/live_reference.h"
+#include "view/live/live_reference.h"
 #include "gl/readback.h"
 
 #include "base/image.h"

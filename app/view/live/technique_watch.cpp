@@ -1,4 +1,4 @@
-#include "view/technique_watch.h"
+#include "view/live/technique_watch.h"
 
 #include "techniques/technique.h"
 #include "techniques/user/user_folder.h"
