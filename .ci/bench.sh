@@ -58,7 +58,10 @@ MD
   echo "given error. A ratio below 1 is better on both axes. Per scene, the held-out scenes are the ones"
   echo "the tuned presets never saw: a preset that wins only on the training scenes has not won."
   echo
-  sed -e 's#](pareto.png)#](bench/pareto.png)#' "$OUT/report.md"
+  echo "The page: [report.md](bench/report.md) (the front, where the time goes, what the screen cannot see, every"
+  echo "configuration), its plot:"
+  echo
+  echo "![time against error](bench/pareto.png)"
   echo
   echo "### Per scene: training and held-out scenes"
   echo
@@ -70,18 +73,17 @@ MD
   echo "hover, the AO, signed error and reference of every front configuration and the baseline, a sortable table)."
   echo
   echo "Raw data: [results.csv](bench/results.csv), [summary.csv](bench/summary.csv), [results.json](bench/results.json)."
-  # A section made by its own make target: title, target, how to read it, the data.
-  section() { # TITLE TARGET SCRIPT HOW_TO_READ DATA_MD RAW
+  # A section made by its own make target: title, target, how to read it, its page (stored once,
+  # in docs/bench/, and linked from here), the raw data.
+  section() { # TITLE TARGET SCRIPT HOW_TO_READ PAGE_MD RAW
     [ -f "$5" ] || return 0
     echo
     echo "## $1"
     echo
     echo "Regenerate this section alone with \`make $2\` (it runs \`.ci/$3\`). $4"
     echo
-    # the section's page links its images beside itself (docs/bench/); this page is one folder up
-    sed -e 's/^### What the screen cannot see$/### The split per scene/' -e 's#](\([a-z_]*\.png\))#](bench/\1)#g' "$5"
-    echo
-    echo "Raw data: [$6](bench/$6)."
+    if [ "$(basename "$5")" = "$6" ]; then echo "The page: [$6](bench/$6)."
+    else echo "The page: [$(basename "$5")](bench/$(basename "$5")). Raw data: [$6](bench/$6)."; fi
   }
   section "What the screen cannot see (\`make screen\`)" screen screen.sh \
     "How to read it: the screen share is what no technique reading one depth layer can fix; a remedy's column is what it closes of that share." \

@@ -14,7 +14,7 @@
 #include "commands/skips/skips_command.h"
 #include "commands/stress/stress_command.h"
 #include "commands/tune/tune_command.h"
-#include "scene/builtin_scenes.h"
+#include "scene/load/builtin_scenes.h"
 #include "scene/scene.h"
 #include "settings/params.h"
 #include "settings/preset_store.h"

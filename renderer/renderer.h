@@ -7,7 +7,7 @@
 #include "graph/frame_graph.h"
 #include "passes/reference_pass.h"
 #include "scene/camera.h"
-#include "scene/gpu_scene.h"
+#include "scene/gpu/gpu_scene.h"
 #include "techniques/ao_common.h"
 
 #include "../shaders/include/bindings.h"
@@ -52,7 +52,7 @@ class Renderer {
     void setDisplayWidth(int px);
     // Frames drawn while the camera moves (the app; false headless): with skip.motion_lod the
     // G-buffer draws the scene's clustered copy where one cell of it covers at most a pixel of the
-    // frame (scene/motion_lod.h). The still frame after it draws the full mesh.
+    // frame (scene/gpu/motion_lod.h). The still frame after it draws the full mesh.
     void setMoving(bool moving) { moving_ = moving; }
     // The clustered level the last render() drew (-1: the scene's own triangles).
     int drewLod() const { return frame_.lod; }

@@ -1,4 +1,5 @@
 #include "cli/headless_runner.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 
 #include "scene/view_fit.h"

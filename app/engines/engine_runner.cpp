@@ -1,6 +1,6 @@
 #include "engines/engine_runner.h"
 
-#include "scene/browser_assets.h"
+#include "scene/load/browser_assets.h"
 #include "scene/scene.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -241,10 +241,13 @@ std::vector<EngineResult> EngineRunner::afterHang(const std::vector<EngineJob>& 
     std::vector<EngineResult> out(jobs.size());
     std::vector<EngineJob> rest;
     std::vector<size_t> at;
+    const auto dropped = [&](size_t i) { // the stuck job, or an unrun one of its group
+        return i == stuck || (jobs[stuck].droppable && jobs[i].droppable && jobs[i].group >= 0 && jobs[i].group == jobs[stuck].group);
+    };
     for (size_t i = 0; i < jobs.size(); ++i) {
         const std::string done = dir + "/j" + std::to_string(i) + ".json";
-        if (i == stuck) out[i].hung = true;
-        else if (fs::is_regular_file(done, ec)) out[i] = readResult(dir, i, readJsonFile(done, "engine result"), jobs[i].frames);
+        if (fs::is_regular_file(done, ec) && i != stuck) out[i] = readResult(dir, i, readJsonFile(done, "engine result"), jobs[i].frames);
+        else if (dropped(i)) out[i].hung = true;
         else rest.push_back(jobs[i]), at.push_back(i);
     }
     fs::remove_all(dir, ec);

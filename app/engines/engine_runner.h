@@ -50,6 +50,9 @@ struct EngineJob {
     // A search's candidate, dropped (hung) once it takes 30 times what the runner's jobs took
     // (run_engine.mjs); any other job has the browser's whole time limit.
     bool droppable = false;
+    // Droppable jobs of one group (a candidate on each of its views): once one is dropped the rest
+    // come back hung without running - a candidate missing one view is never the best. -1: none.
+    int group = -1;
 };
 
 struct EngineResult {
@@ -58,7 +61,7 @@ struct EngineResult {
     double aoMs = std::numeric_limits<double>::quiet_NaN(); // frame with the pass - frame without (frames > 0)
     // The fastest and slowest timed frame with the pass, less the same frame without (frames > 0).
     double aoMsMin = std::numeric_limits<double>::quiet_NaN(), aoMsMax = std::numeric_limits<double>::quiet_NaN();
-    // Frames timed: the job's frames, or fewer once they took 20 s in all (harness.js framesDone).
+    // Frames timed: the job's frames, or fewer once they took the harness's cap (harness.js kTimedMs).
     int timedFrames = 0;
     // The browser hung on this job past its time limit (a setting some GL driver never finishes):
     // no image; the session went on without it in a new browser.
@@ -67,7 +70,7 @@ struct EngineResult {
 
 class EngineRunner {
   public:
-    // Refuses a scene whose buffers or images the browser must not load (scene/browser_assets.h).
+    // Refuses a scene whose buffers or images the browser must not load (scene/load/browser_assets.h).
     EngineRunner(EngineTools tools, EngineTable table, std::string sceneFile, int width, int height,
                  std::vector<EngineView> views);
     ~EngineRunner(); // removes its work folder

@@ -41,21 +41,4 @@ struct Param {
     Param& onlyWhen(const std::string& key, std::vector<std::string> values);
 };
 
-// What the parameter table needs of the AO techniques, supplied by their registry
-// (techniques/registry.cpp).
-struct TechniqueRows {
-    std::string id;          // the value of ao.technique
-    std::vector<Param> rows; // its rows ("id.*"); the table adds "applies while ao.technique = id"
-    bool adaptive = false;   // it takes ao.adaptive (a march or tap count the rule cuts)
-    bool deinterleave = false; // it takes ao.deinterleave (TechniqueInfo::deinterleave)
-    bool secondLayer = false;  // it reads gbuffer.second_layer (TechniqueInfo::secondLayer)
-    std::string file, version; // a user technique's file and its hash; "" for a built-in
-};
-const std::vector<TechniqueRows>& registeredTechniques();
-// Which set of techniques registeredTechniques() holds: it changes when the user techniques do
-// (techniques/technique.h setUserTechniques), and the parameter table is rebuilt from it.
-unsigned techniquesGeneration();
-// Why the user technique `id` is not registered (its file was refused: "FILE:LINE: ..."), or "".
-std::string refusedTechniqueReason(const std::string& id);
-
 } // namespace ssao

@@ -105,13 +105,13 @@ struct SkipSettings {
     bool cull = true;          // G-buffer: meshes whose bounds lie outside the view are not drawn
     bool unusedTargets = true; // G-buffer: targets no pass or view reads are not written
     bool hiddenFaces = true;   // G-buffer: the hidden side of closed shells is culled (scene/closed_shells.h)
-    bool occluded = true;      // G-buffer: draws the scene hides are not drawn (scene/occlusion_culler.h)
+    bool occluded = true;      // G-buffer: draws the scene hides are not drawn (scene/gpu/occlusion_culler.h)
     // Reduced AO: the composite does the joint upsample itself where nothing else reads the
     // full-resolution AO (passes/composite_pass.h). Off by default: on llvmpipe it saves nothing
     // (docs/bench/skips.md).
     bool fusedUpsample = false;
     // While the camera moves (the app), the G-buffer draws a copy of a large scene with its
-    // vertices clustered into cells of at most a pixel of the moving frame (scene/motion_lod.h).
+    // vertices clustered into cells of at most a pixel of the moving frame (scene/gpu/motion_lod.h).
     bool motionLod = true;
 };
 

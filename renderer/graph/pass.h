@@ -71,7 +71,7 @@ struct FrameInfo {
     bool temporalReset = true;
     // The frame constant block bound at SSAO_UBO_FRAME for every pass (Renderer::render).
     gpu::FrameConstants constants{};
-    // The level of the scene's clustered copies the G-buffer draws (scene/motion_lod.h; -1: the
+    // The level of the scene's clustered copies the G-buffer draws (scene/gpu/motion_lod.h; -1: the
     // scene): the camera is moving, skip.motion_lod is on, and it is the coarsest level whose cell
     // covers at most a pixel of this frame (Renderer::setMoving) at the nearest depth of any draw;
     // each draw may take a coarser one at its own (DrawOptions::lod).

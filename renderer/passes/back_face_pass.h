@@ -8,7 +8,7 @@
 #pragma once
 #include "graph/gbuffer_layers.h"
 #include "graph/pass.h"
-#include "scene/gpu_scene.h"
+#include "scene/gpu/gpu_scene.h"
 #include "settings/settings.h"
 
 namespace ssao {

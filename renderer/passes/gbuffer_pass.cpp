@@ -2,7 +2,7 @@
 
 #include "gl/shader_library.h"
 #include "passes/second_layer_pass.h"
-#include "scene/gpu_scene.h"
+#include "scene/gpu/gpu_scene.h"
 
 #include <glm/gtc/type_ptr.hpp>
 

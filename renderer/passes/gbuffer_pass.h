@@ -4,8 +4,8 @@
 #include "gl/resources.h"
 #include "gl/shader_library.h"
 #include "graph/pass.h"
-#include "scene/gpu_scene.h"
-#include "scene/occlusion_culler.h"
+#include "scene/gpu/gpu_scene.h"
+#include "scene/gpu/occlusion_culler.h"
 #include "settings/settings.h"
 
 namespace ssao {
@@ -19,7 +19,7 @@ struct GBufferConfig {
     int32_t hiddenFaces;       // skip.hidden_faces: closed shells' hidden sides are culled
     uint32_t sceneVersion;     // what it draws
     int32_t lod;               // skip.motion_lod while the camera moves: the clustered level drawn, -1 none (FrameInfo::lod)
-    int32_t occluded;          // skip.occluded: draws the scene hides are not drawn (scene/occlusion_culler.h)
+    int32_t occluded;          // skip.occluded: draws the scene hides are not drawn (scene/gpu/occlusion_culler.h)
     int32_t secondLayer;       // gbuffer.second_layer_build = previous: this pass keeps the second layer too
     float separation;          // its minimum separation, scene units
 };

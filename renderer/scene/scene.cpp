@@ -2,8 +2,6 @@
 
 #include "util/error.h"
 
-#include "scene/builtin_scenes.h"
-#include "scene/gltf_loader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -67,12 +65,6 @@ Camera cameraToFile(const Camera& c, const Scene& s) {
     out.eye = glm::vec3(s.toWorld(c.eye));
     out.target = glm::vec3(s.toWorld(c.target));
     return out;
-}
-
-Scene loadScene(const std::string& spec) {
-    const std::string prefix = "builtin:";
-    if (spec.rfind(prefix, 0) == 0) return makeBuiltinScene(spec.substr(prefix.size()));
-    return loadGltf(spec);
 }
 
 } // namespace ssao

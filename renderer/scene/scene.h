@@ -34,7 +34,7 @@ struct Draw {
     int alphaTexture = -1;
 };
 
-// The alpha channel of a MASK material's base-colour texture, decoded (scene/mask_textures.h),
+// The alpha channel of a MASK material's base-colour texture, decoded (scene/load/mask_textures.h),
 // with its sampler's wrap modes. Row 0 is the image's top row, at v = 0 (glTF's UV convention).
 enum class Wrap : int32_t { Repeat = 0, Clamp = 1, Mirror = 2 }; // the shader's codes (alpha_mask.glsl)
 struct AlphaTexture {
@@ -124,8 +124,5 @@ enum class Transparent { Skip, Opaque };
 void setTransparentMode(Transparent t);
 Transparent transparentMode();
 Transparent parseTransparent(const std::string& s); // "skip" | "opaque", else throws naming both
-
-// "builtin:NAME" → procedural scene, anything else → glTF file. Throws ssao::Error.
-Scene loadScene(const std::string& spec);
 
 } // namespace ssao

@@ -4,6 +4,7 @@
 #include "settings/core_rows.h"
 
 #include "base/param_rows.h"
+#include "techniques/registry.h"
 #include "settings/settings.h"
 
 namespace ssao {

@@ -2,6 +2,7 @@
 
 #include "settings/core_rows.h"
 #include "settings/preset.h"
+#include "techniques/registry.h"
 #include "util/closest_name.h"
 #include "util/error.h"
 

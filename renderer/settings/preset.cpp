@@ -1,6 +1,7 @@
 #include "settings/preset.h"
 
 #include "settings/applicability.h"
+#include "techniques/registry.h"
 #include "settings/params.h"
 #include "util/atomic_file.h"
 #include "util/error.h"

@@ -1,5 +1,7 @@
 // The list of AO techniques: the built-ins, then the user's (techniques/user/). Adding a built-in:
 // its folder, one member in technique_settings.h and one entry in builtins().
+#include "techniques/registry.h"
+
 #include "techniques/gtao/technique.h"
 #include "techniques/hbao/technique.h"
 #include "techniques/kernel/technique.h"
@@ -122,7 +124,7 @@ const std::vector<std::pair<std::string, std::string>>& refusedUserTechniques() 
     return current().refused;
 }
 
-// What the settings need of the techniques (base/param.h), from the modules.
+// What the settings need of the techniques (techniques/registry.h), from the modules.
 const std::vector<TechniqueRows>& registeredTechniques() {
     return current().rows;
 }

@@ -4,6 +4,7 @@
 // registry (registry.cpp) lists the modules; nothing else outside a technique's folders names it.
 #pragma once
 #include "base/param.h"
+#include "techniques/registry.h"
 
 #include <functional>
 #include <memory>
@@ -108,7 +109,7 @@ std::vector<std::string> userTechniqueIds(); // "user.NAME", in the order they w
 // starts a new generation: techniques(), the parameter table and the renderer's passes follow it.
 void setUserTechniques(const std::vector<std::shared_ptr<const UserTechnique>>& loaded,
                        const std::vector<std::pair<std::string, std::string>>& refused = {});
-// techniquesGeneration() (base/param.h) is 0 until the first call.
+// techniquesGeneration() (techniques/registry.h) is 0 until the first call.
 const std::vector<std::pair<std::string, std::string>>& refusedUserTechniques();
 
 // The capabilities of `s`'s technique.

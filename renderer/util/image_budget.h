@@ -2,7 +2,7 @@
 // pixels against a budget, and the work a decoder would do beyond the pixels - a progressive JPEG's
 // scans (each a pass over the whole image), a PNG's compressed rows (inflated until they end, not
 // until the header's size). The one check every image ssaolab decodes goes through: MASK textures
-// (scene/mask_textures.h), --score images and cached references (base/image.h).
+// (scene/load/mask_textures.h), --score images and cached references (base/image.h).
 #pragma once
 #include <cstddef>
 #include <cstdint>

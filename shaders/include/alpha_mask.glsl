@@ -1,6 +1,6 @@
 // The MASK alpha test of the scene passes, texel for texel the C++ of renderer/scene/alpha_mask.h
 // (the reference's Embree filter): nearest texel, no MIP maps, the sampler's wrap modes. Built in
-// only with ALPHA_MASK (renderer/scene/gpu_scene.h ScenePrograms): a shader that may discard loses
+// only with ALPHA_MASK (renderer/scene/gpu/gpu_scene.h ScenePrograms): a shader that may discard loses
 // the early depth test, so opaque draws use the variant without it.
 #ifndef SSAO_ALPHA_MASK_GLSL
 #define SSAO_ALPHA_MASK_GLSL

@@ -1,6 +1,6 @@
 // The 36 corner indices of a box's 12 triangles, counter-clockwise seen from outside; corner c
 // picks max x where bit 0 is set, max y for bit 1, max z for bit 2. Shared by C++
-// (scene/occlusion_culler.h) and GLSL (passes/occlusion_box.vert), so the box the occlusion test
+// (scene/gpu/occlusion_culler.h) and GLSL (passes/occlusion_box.vert), so the box the occlusion test
 // draws faces the way its face culling assumes in both.
 #ifndef SSAOLAB_BOX_CORNERS_H
 #define SSAOLAB_BOX_CORNERS_H

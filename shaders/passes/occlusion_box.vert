@@ -1,5 +1,5 @@
 #version 450 core
-// A draw's bounding box for the G-buffer's occlusion test (renderer/scene/occlusion_culler.h):
+// A draw's bounding box for the G-buffer's occlusion test (renderer/scene/gpu/occlusion_culler.h):
 // 12 triangles from gl_VertexID, counter-clockwise seen from outside (include/box_corners.h).
 // Transformed as gbuffer.vert transforms the scene (proj * (view * p), the frame block), so the
 // box and the meshes it stands for round alike.

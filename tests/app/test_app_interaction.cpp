@@ -314,7 +314,7 @@ double gbufferTriangles(const FrameReport& report) {
 } // namespace
 
 TEST_F(AppUse, WhileMovingALargeSceneDrawsItsClusteredCopyAndStillFramesTheFullMesh) {
-    // skip.motion_lod (scene/motion_lod.h): ReciprocatingSaw's 198 470 triangles cost the moving
+    // skip.motion_lod (scene/gpu/motion_lod.h): ReciprocatingSaw's 198 470 triangles cost the moving
     // G-buffer ~30 ms on llvmpipe; its clustered copy with cells of at most a moving pixel, fewer.
     start(1600, 900, 1.0f);
     ASSERT_TRUE(ui_->app().openScene(scene("ReciprocatingSaw/ReciprocatingSaw.gltf")));

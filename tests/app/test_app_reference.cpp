@@ -3,10 +3,11 @@
 // buffers, refine to the target, follow the AO, restart when the view changes, stop when turned
 // off, and never hold up the app's destruction. Waits are bounded loops of frames, never timings.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 #include "ui_driver.h"
 
-#include "scene/builtin_scenes.h"
+#include "scene/load/builtin_scenes.h"
 #include "scene/view_fit.h"
 #include "measure/reference_worker.h"
 

@@ -1,5 +1,6 @@
 // The explorer's UI code, driven through Dear ImGui with the real renderer (llvmpipe in CI).
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 #include "ui_driver.h"
 

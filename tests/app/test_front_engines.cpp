@@ -4,6 +4,7 @@
 // Split B and copies its settings as JavaScript; missing packages are one line and no engine
 // point, the rest of the tab unchanged; a built-in scene is one line. Waits are bounded loops.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 #include "ui_driver.h"
 
 #include "measure/bench_run.h"

@@ -5,6 +5,7 @@
 // loops of frames, never timings.
 #include <cstdio>
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 #include "ui_driver.h"
 
 #include "measure/bench_run.h"

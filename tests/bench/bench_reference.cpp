@@ -3,6 +3,7 @@
 // issue asks for is items_per_second of BM_ReferenceRays/threads:0 (0 = all cores).
 //   ./build/tests/bench_reference --benchmark_min_time=2
 #include "reference/reference_ao.h"
+#include "scene/load/load_scene.h"
 #include "scene/scene.h"
 
 #include <benchmark/benchmark.h>

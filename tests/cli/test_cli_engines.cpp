@@ -188,13 +188,17 @@ TEST(CliEngine, RunnerRoundTripMatchesTheStoredResult) {
 
 // A job the page never finishes within the browser's time limit (here: 100 000 timed frames under a
 // 3 s limit, as a GL driver that hangs on one setting) comes back hung; the jobs before it keep
-// their results and the ones after it run in a new session, the same images as without the hang.
+// their results and the ones after it run in a new session, the same images as without the hang -
+// but for a search candidate's other jobs (its group), which come back hung unrun.
 TEST(CliEngine, AJobThatHangsTheBrowserIsDroppedAndTheRestRunAnew) {
     NEED_MODULES();
     const ssao::EngineTable t = ssao::findEngine("n8ao");
     const CornerView v = cornerView("engine_hang.gltf");
     ssao::EngineRunner runner(ssao::locateEngineTools(kModules, t), t, v.file, 96, 54, {{v.cameraJson, v.radius}});
-    const std::vector<ssao::EngineJob> jobs = {{0, {}, 0}, {0, {}, 100000}, {0, {{"aoRadius", 2.0 * v.radius}}, 0}};
+    std::vector<ssao::EngineJob> jobs = {{0, {}, 0}, {0, {}, 100000}, {0, {{"aoRadius", 2.0 * v.radius}}, 0},
+                                         {0, {{"aoRadius", 3.0 * v.radius}}, 0}};
+    for (size_t i : {1, 3}) // one candidate: the second job never runs once the first hung
+        jobs[i].droppable = true, jobs[i].group = 7;
     setenv("SSAOLAB_BROWSER_MAX_SECONDS", "3", 1);
     std::vector<ssao::EngineResult> res;
     try {
@@ -204,11 +208,13 @@ TEST(CliEngine, AJobThatHangsTheBrowserIsDroppedAndTheRestRunAnew) {
         throw;
     }
     unsetenv("SSAOLAB_BROWSER_MAX_SECONDS");
-    ASSERT_EQ(res.size(), 3u);
+    ASSERT_EQ(res.size(), 4u);
     EXPECT_FALSE(res[0].hung);
     EXPECT_TRUE(res[1].hung);
     EXPECT_TRUE(res[1].ao.data.empty());
     EXPECT_FALSE(res[2].hung);
+    EXPECT_TRUE(res[3].hung);
+    EXPECT_TRUE(res[3].ao.data.empty());
     EXPECT_EQ(runner.sessions(), 2); // the hung session, and one for the job after it
     const std::vector<ssao::EngineResult> again = runner.run({jobs[0], jobs[2]});
     EXPECT_EQ(res[0].ao.data, again[0].ao.data);

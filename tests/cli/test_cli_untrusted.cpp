@@ -6,7 +6,7 @@
 #include "cli_run.h"
 #include "engine_test_util.h"
 #include "engines/engine_settings_file.h"
-#include "scene/browser_assets.h"
+#include "scene/load/browser_assets.h"
 #include "util/error.h"
 
 #include <gtest/gtest.h>

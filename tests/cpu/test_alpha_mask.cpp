@@ -5,8 +5,8 @@
 #include "reference/embree_scene.h"
 #include "reference/reference_ao.h"
 #include "scene/alpha_mask.h"
-#include "scene/gltf_loader.h"
-#include "scene/mask_textures.h"
+#include "scene/load/gltf_loader.h"
+#include "scene/load/mask_textures.h"
 #include "test_util.h"
 
 #include <gtest/gtest.h>

@@ -2,6 +2,7 @@
 // user makes - a typo in a key or a preset name, an image given as a scene or a preset - get a
 // message that says what was given and what was expected (issue 42, items 1 and 8).
 #include "scene/scene.h"
+#include "scene/load/load_scene.h"
 #include "settings/applicability.h"
 #include "settings/params.h"
 #include "settings/preset.h"

@@ -5,7 +5,7 @@
 #include "lid_scene.h"
 #include "reference/screen_layers.h"
 #include "scene/closed_shells.h"
-#include "scene/gltf_loader.h"
+#include "scene/load/gltf_loader.h"
 #include "scene/scene.h"
 #include "settings/preset_store.h"
 #include "test_util.h"

@@ -1,5 +1,5 @@
-#include "scene/builtin_scenes.h"
-#include "scene/gltf_loader.h"
+#include "scene/load/builtin_scenes.h"
+#include "scene/load/gltf_loader.h"
 #include "scene/scene.h"
 #include "util/error.h"
 

@@ -1,10 +1,11 @@
 // Hostile input, round two (issue 16): files, caches and command lines that crashed, hung, misled
 // or overwrote. Each test is one example of a class, and failed before its fix.
 #include "measure/sweep.h"
+#include "scene/load/load_scene.h"
 #include "gl/shader_library.h"
 #include "scene/camera.h"
-#include "scene/gltf_guard.h"
-#include "scene/gltf_loader.h"
+#include "scene/load/gltf_guard.h"
+#include "scene/load/gltf_loader.h"
 #include "settings/preset.h"
 #include "util/error.h"
 #include "util/json_file.h"

@@ -1,8 +1,8 @@
-// EXT_mesh_gpu_instancing (scene/gltf_instancing.h): instances expanded into triangles within the
+// EXT_mesh_gpu_instancing (scene/load/gltf_instancing.h): instances expanded into triangles within the
 // budget, with each instance's T x R x S applied in the node's frame; required extensions that
 // cannot be honoured refused by name, those that change no geometry accepted.
 #include "lid_scene.h"
-#include "scene/gltf_loader.h"
+#include "scene/load/gltf_loader.h"
 #include "scene/scene.h"
 #include "test_util.h"
 

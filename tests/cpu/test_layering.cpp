@@ -191,12 +191,12 @@ TEST(Layering, ImagesMetricsReferenceAndReportsIncludeNoGlAndNoRenderer) {
 
 TEST(Layering, SettingsIncludeNoTechniqueCode) {
     // The settings see the techniques only through their settings structs (the one aggregate,
-    // techniques/technique_settings.h) and what the registry supplies (base/param.h).
+    // techniques/technique_settings.h) and what the registry supplies (techniques/registry.h).
     for (const auto& f : programSources()) {
         if (f.rfind("renderer/settings/", 0) != 0) continue;
         for (const auto& h : includeClosure(f)) {
             const bool technique = h.rfind("renderer/techniques/", 0) == 0;
-            const bool settingsOnly = h == "renderer/techniques/technique_settings.h" ||
+            const bool settingsOnly = h == "renderer/techniques/technique_settings.h" || h == "renderer/techniques/registry.h" ||
                                       h.find("/settings.h") != std::string::npos ||
                                       h == "renderer/techniques/noise/noise.h";
             EXPECT_FALSE(technique && !settingsOnly) << f << " includes " << h;
@@ -212,7 +212,8 @@ const std::vector<std::vector<std::string>> kRendererFloors = {
     {"util"},               // files, processes, errors, paths
     {"base"},               // GL-free value types: the CPU image, the shared settings blocks, a parameter row
     {"gl"},                 // the context, RAII handles, shaders, read-back
-    {"scene"},              // meshes, cameras, the GPU scene
+    {"scene"},              // meshes, cameras, view fitting, closed shells
+    {"scene/load", "scene/gpu"}, // a scene from glTF or built in; the GPU scene, its culling and LOD
     {"graph", "reference"}, // the frame graph; the ray-traced reference (CPU)
     {"techniques"},         // the AO modules and the whole Settings (one member per technique)
     {"settings"},           // the parameter table and presets over Settings
@@ -221,10 +222,14 @@ const std::vector<std::vector<std::string>> kRendererFloors = {
     {"display"},            // a frame read back from the Renderer and mapped for the eye
 };
 
-// The renderer/ folder of a path relative to renderer/ ("renderer" for its top-level files).
+// The renderer/ folder of a path relative to renderer/ ("renderer" for its top-level files;
+// scene/NAME for a folder inside scene/).
 std::string rendererFolder(const std::string& rel) {
     const size_t slash = rel.find('/');
-    return slash == std::string::npos ? "renderer" : rel.substr(0, slash);
+    if (slash == std::string::npos) return "renderer";
+    const size_t second = rel.find('/', slash + 1);
+    if (rel.compare(0, slash, "scene") == 0 && second != std::string::npos) return rel.substr(0, second);
+    return rel.substr(0, slash);
 }
 
 // Each include arrow between two folders under `top` (renderer or app), resolved as the compiler
@@ -319,7 +324,10 @@ std::string appFolder(const std::string& rel) {
 } // namespace
 
 TEST(Layering, RendererFloorsPointDown) {
-    EXPECT_GT(checkFloors("renderer", kRendererFloors, rendererFolder, foldersUnder("renderer")), 20);
+    std::vector<std::string> folders = foldersUnder("renderer");
+    for (const auto& f : foldersUnder("renderer/scene", "scene/"))
+        folders.push_back(f);
+    EXPECT_GT(checkFloors("renderer", kRendererFloors, rendererFolder, folders), 20);
 }
 
 TEST(Layering, AppFloorsPointDown) {
@@ -387,4 +395,28 @@ TEST(Layering, PanelsTakeWhatTheyDrawAndReturnActions) {
         EXPECT_FALSE(std::regex_search(rest, mutableRef)) << fn << "(" << params << ") takes a mutable reference";
     }
     EXPECT_GE(entries, 7);
+}
+
+TEST(Layering, AFunctionAFolderDeclaresItDefines) {
+    // A free function declared in a renderer/ header is defined in the same folder: one declared
+    // below and defined above (base/ declaring what techniques/ defines) is an arrow back up that
+    // no include shows.
+    const fs::path root = fs::path(SSAOLAB_SOURCE_DIR) / "renderer";
+    const std::regex decl(R"re((?:^|\n)(?!return|typedef|using|template|friend|static_assert)[A-Za-z_][\w:<>,*& ]*?[\s*&]([A-Za-z_]\w*)\(([^;{}]*)\)\s*(?:const)?\s*;)re");
+    int declared = 0;
+    for (const auto& e : fs::recursive_directory_iterator(root)) {
+        if (!e.is_regular_file() || e.path().extension() != ".h") continue;
+        const std::string text = slurp(e.path());
+        std::string here; // the folder's own sources, headers included (inline and template definitions)
+        for (const auto& f : fs::directory_iterator(e.path().parent_path()))
+            if (f.is_regular_file() && (f.path().extension() == ".cpp" || f.path().extension() == ".h")) here += slurp(f.path());
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), decl); it != std::sregex_iterator(); ++it) {
+            const std::string name = (*it)[1];
+            ++declared;
+            const std::regex def("\\b" + name + R"re(\([^;{}]*\)\s*(const\s*)?(noexcept\s*)?\{)re");
+            EXPECT_TRUE(std::regex_search(here, def))
+                << fs::relative(e.path(), root).generic_string() << " declares " << name << " but its folder does not define it";
+        }
+    }
+    EXPECT_GT(declared, 200);
 }

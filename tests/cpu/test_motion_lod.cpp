@@ -1,7 +1,7 @@
-// The clustered mesh drawn while the camera moves (scene/motion_lod.h): fewer triangles, only the
+// The clustered mesh drawn while the camera moves (scene/gpu/motion_lod.h): fewer triangles, only the
 // scene's own vertices, both sides of thin walls, cut-outs whole, and the pixel test of a cell.
-#include "scene/gltf_loader.h"
-#include "scene/motion_lod.h"
+#include "scene/load/gltf_loader.h"
+#include "scene/gpu/motion_lod.h"
 #include "test_util.h"
 
 #include <gtest/gtest.h>

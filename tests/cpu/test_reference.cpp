@@ -1,11 +1,12 @@
 // The ray-traced reference against closed forms (XeGTAO's definition: cosine-weighted binary
 // visibility within R), its determinism across threads and batches, and its disk cache.
 #include "base/image.h"
+#include "scene/load/load_scene.h"
 #include "metrics/error_metrics.h"
 #include "reference/reference_cache.h"
 #include "reference/sampling.h"
 #include "reference_scenes.h"
-#include "scene/builtin_scenes.h"
+#include "scene/load/builtin_scenes.h"
 #include "scene/scene.h"
 #include "test_util.h"
 #include "util/error.h"

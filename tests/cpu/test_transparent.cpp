@@ -4,7 +4,7 @@
 // BLEND.
 #include "reference/embree_scene.h"
 #include "reference/reference_ao.h"
-#include "scene/gltf_loader.h"
+#include "scene/load/gltf_loader.h"
 #include "scene/scene.h"
 #include "util/error.h"
 

@@ -1,6 +1,7 @@
 // Fitting the view to real scenes: clip planes from the bounds, and the orbit target of a glTF
 // camera on its view ray inside the scene (CornellBox, the millimetre engine).
 #include "scene/camera.h"
+#include "scene/load/load_scene.h"
 #include "scene/view_fit.h"
 #include "util/error.h"
 

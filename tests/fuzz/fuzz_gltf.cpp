@@ -1,7 +1,7 @@
 // libFuzzer target: the glTF loader on arbitrary bytes, as .gltf text or .glb binary (by the first
 // byte), from a file in a private folder (the loader reads paths: buffer URIs resolve beside it).
 // Any ssao::Error is a correct answer; a crash, a sanitizer report, a hang or an escape is not.
-#include "scene/gltf_loader.h"
+#include "scene/load/gltf_loader.h"
 #include "util/error.h"
 
 #include <cstdint>

@@ -1,4 +1,5 @@
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 
 #include "scene/scene.h"

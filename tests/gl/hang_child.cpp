@@ -2,6 +2,7 @@
 // whose shader never ends, with the per-frame time limit given as its argument (0: none). Its own
 // program with its own EGL context, because a context stuck in such a frame cannot be torn down.
 #include "gl/context.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 #include "renderer.h"
 #include "scene/scene.h"

@@ -9,7 +9,7 @@
 #include "passes/back_face_pass.h"
 #include "reference/embree_scene.h"
 #include "reference/reference_ao.h"
-#include "scene/gltf_loader.h"
+#include "scene/load/gltf_loader.h"
 
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,7 @@
 // The back-face layer (gbuffer.back_faces, passes/back_face_pass.h): the far side of closed
 // objects as a linear depth; the bitmask's solids then reach at least as deep as they are.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 
 #include "gl/readback.h"
 #include "passes/back_face_pass.h"

@@ -2,6 +2,7 @@
 // mapping says, ao.raw gets each layer's result at its own pixel, the AO stays the technique's
 // (its physics at every level: test_physics_limits.cpp), and the setting is inert where it does not apply.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 
 #include "scene/scene.h"
 #include "techniques/deinterleave.h"

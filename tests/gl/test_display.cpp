@@ -1,6 +1,7 @@
 // The one display mapping, on the GPU: depth and position views are readable on real scenes,
 // AO keeps its physical [0,1], NaN shows magenta, false colour is viridis.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 
 #include "display/view_painter.h"

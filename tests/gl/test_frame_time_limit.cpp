@@ -3,6 +3,7 @@
 // a frame that ends renders as without the limit. The hanging frame runs in a child process
 // (tests/gl/hang_child.cpp) with its own EGL context: the stuck context cannot be torn down.
 #include "gl/readback.h"
+#include "scene/load/load_scene.h"
 #include "gl_fixture.h"
 
 #include "scene/scene.h"

@@ -4,6 +4,7 @@
 // while every technique runs at each of its rows' limits, with every shared mode, the inspector's
 // INSPECT replay and the display mapping of the previews.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 
 #include "display/capture.h"
 #include "scene/scene.h"

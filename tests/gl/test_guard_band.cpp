@@ -4,6 +4,7 @@
 // truth (the closed form beside a wall, closed_form.h); without a band every technique reads it
 // open, with one the darkening comes back; far from the edge nothing changes, bit for bit.
 #include "closed_form.h"
+#include "scene/load/load_scene.h"
 #include "gl_fixture.h"
 
 #include "gl/readback.h"

@@ -2,6 +2,7 @@
 // and sees the same surfaces - on the shared scenes, with the camera inside a closed room, and
 // with the near plane cutting a closed box open (where nothing may be culled).
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 
 #include "scene/scene.h"

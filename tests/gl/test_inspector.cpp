@@ -1,6 +1,7 @@
 // The sample inspector shows what the GPU did: the AO shader itself, compiled with INSPECT and run
 // for one pixel, records its taps. The record must reproduce the value the pass wrote.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 
 #include "techniques/gtao/settings.h"

@@ -1,6 +1,7 @@
 // Reversed-Z and orthographic cameras through the whole pipeline: the G-buffer, every technique,
 // depth reconstruction, and the z-fighting reversed depth exists to remove.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 
 #include "scene/scene.h"
 #include "techniques/technique.h"

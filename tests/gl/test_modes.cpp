@@ -2,6 +2,7 @@
 // (a mode with no effect is a bug) - except the skip switches, which must change nothing. The list comes from the parameter table, so a new row is
 // swept without editing this file.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 
 #include "scene/scene.h"

@@ -1,10 +1,10 @@
 // skip.motion_lod on the GPU: the moving frame of a large shared scene draws a clustered level
-// (scene/motion_lod.h) and sees the same surfaces as the full mesh to within its cells - the same
+// (scene/gpu/motion_lod.h) and sees the same surfaces as the full mesh to within its cells - the same
 // pixels covered but for a sliver of silhouette, depths within a cell, the same AO to within a
 // hundredth on average - and a still frame draws the full mesh.
 #include "gl_fixture.h"
 
-#include "scene/gltf_loader.h"
+#include "scene/load/gltf_loader.h"
 #include "test_util.h"
 
 #include <algorithm>

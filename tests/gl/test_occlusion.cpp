@@ -1,9 +1,10 @@
-// skip.occluded: the G-buffer leaves out draws the scene hides (scene/occlusion_culler.h) and sees
+// skip.occluded: the G-buffer leaves out draws the scene hides (scene/gpu/occlusion_culler.h) and sees
 // the same surfaces - on the shared scenes while the camera orbits (the visible set of one frame
 // used by the next), for a part that comes out from behind a wall, and with the eye inside a box.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 
-#include "scene/occlusion_culler.h"
+#include "scene/gpu/occlusion_culler.h"
 #include "scene/scene.h"
 
 #include <glm/gtc/matrix_transform.hpp>

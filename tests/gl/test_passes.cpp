@@ -1,6 +1,7 @@
 // The frame graph on the GPU: it re-runs exactly the passes an input change invalidates, shares
 // the G-buffer (and any identical work) between chains A and B, and carries resolution scales.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 
 #include "scene/scene.h"

@@ -1,5 +1,6 @@
 // Physical invariants of the SSAO output, not only pixels.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 
 #include "base/image.h"
 

@@ -2,6 +2,7 @@
 // G-buffer's do (same pixels covered, same linear depth on interior pixels), and judging a frame
 // against it gives physically sensible numbers.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 
 #include "metrics/evaluate.h"

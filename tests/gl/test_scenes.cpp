@@ -2,6 +2,7 @@
 // visible (the radius follows each scene's size), finite, in [0,1]; the millimetre engine must not
 // z-fight.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 
 #include "scene/scene.h"
 #include "test_util.h"

@@ -3,6 +3,7 @@
 // the corner's closed form; the layer never brightens the AO; a scene of nested parts (a part
 // inside a part) is never worse against the reference with it; the inspector shows its taps.
 #include "closed_form.h"
+#include "scene/load/load_scene.h"
 #include "gl_fixture.h"
 
 #include "gl/readback.h"

@@ -1,9 +1,10 @@
 // Work a frame does not need is skipped, and skipping it changes nothing (skip.* rows): sky pixels,
 // meshes outside the view, G-buffer targets nobody reads, and passes whose inputs did not change.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 
-#include "scene/gpu_scene.h"
+#include "scene/gpu/gpu_scene.h"
 #include "scene/scene.h"
 #include "techniques/technique.h"
 

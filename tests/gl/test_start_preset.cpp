@@ -4,6 +4,7 @@
 // than the learnopengl seed's AO + denoise on the same frame (GPU timer queries: the comparison is
 // printed; asserted only as "not several times slower", timings being no test).
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 
 #include "base/image.h"
 #include "reference/embree_scene.h"

@@ -2,6 +2,7 @@
 // and a floor beside a wall against the closed form of cosine-weighted visibility within R,
 //   AO(d) = 1 - (acos a - a sqrt(1 - a^2)) / pi,  a = min(d / R, 1).
 #include "closed_form.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 #include "gl_fixture.h"
 

@@ -1,6 +1,7 @@
 // Temporal accumulation: frames with new noise blend into a lower-error image, then nothing
 // re-runs; the result is deterministic; moving the camera reprojects the history without ghosts.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 
 #include "metrics/evaluate.h"

@@ -6,7 +6,7 @@
 
 #include "reference/embree_scene.h"
 #include "reference/reference_ao.h"
-#include "scene/gltf_loader.h"
+#include "scene/load/gltf_loader.h"
 
 #include <nlohmann/json.hpp>
 

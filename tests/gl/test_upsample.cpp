@@ -1,6 +1,7 @@
 // Reduced-resolution AO back to full size (denoise.upsample): joint filters at the AO's resolution
 // and upsamples with passes/upsample_joint.frag; filter lets the filter's last pass upsample.
 #include "gl_fixture.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 
 #include "scene/scene.h"

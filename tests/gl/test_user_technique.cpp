@@ -2,6 +2,7 @@
 // twins' ao.raw, a compile error names the user's file and line, and a parameter's value reaches
 // the shader.
 #include "closed_form.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 #include "gl_fixture.h"
 

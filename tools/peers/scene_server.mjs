@@ -38,7 +38,7 @@ export function requestComponents(rawUrl) {
 // '/', decoded per component, '.' components dropped as the browser drops them; null otherwise
 // (data:, http:, file:, '//host', a '..' anywhere, a malformed escape, and '?', '#', '+' or a
 // control character, which the browser, tinygltf and ssaolab's own check would each read differently:
-// scene/browser_assets.cpp refuses the same).
+// scene/load/browser_assets.cpp refuses the same).
 export function uriKey(uri) {
     if (typeof uri !== 'string' || /^[a-z][a-z0-9+.-]*:/i.test(uri) || /^[/\\]/.test(uri)) return null;
     if (/[?#+\x00-\x1f\x7f]/.test(uri)) return null;

@@ -8,7 +8,7 @@
 #include "cli/shared_options.h"
 #include "metrics/evaluate.h"
 #include "cli/progress_bar.h"
-#include "scene/browser_assets.h"
+#include "scene/load/browser_assets.h"
 #include "scene/scene.h"
 #include "settings/params.h"
 #include "settings/preset.h"

@@ -1,4 +1,5 @@
 #include "commands/render/render_command.h"
+#include "scene/load/load_scene.h"
 
 #include "base/image.h"
 #include "measure/motion_measure.h"

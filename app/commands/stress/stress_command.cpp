@@ -1,4 +1,5 @@
 #include "commands/stress/stress_command.h"
+#include "scene/load/load_scene.h"
 #include "gl/readback.h"
 
 #include "base/image.h"

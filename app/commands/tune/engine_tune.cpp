@@ -17,7 +17,7 @@
 #include "cli/progress_bar.h"
 #include "reference/reference_cache.h"
 #include "cli/scene_options.h"
-#include "scene/browser_assets.h"
+#include "scene/load/browser_assets.h"
 #include "scene/view_fit.h"
 #include "settings/preset.h"
 #include "util/atomic_file.h"
@@ -78,7 +78,7 @@ struct Outcome {
     std::vector<std::string> shortTimings; // "SIDE on SCENE VIEW: N frames": timed jobs the harness ended early
 };
 
-// The final jobs timed on fewer frames than asked: theirs took 20 s in all (harness.js framesDone).
+// The final jobs timed on fewer frames than asked: theirs took the harness's cap (harness.js kTimedMs).
 std::vector<std::string> shortTimings(const EngineTuner& t, const std::vector<std::vector<Sample>>& s, int frames) {
     static const char* names[] = {"lengths from R", "tuned", "as shipped", "as shipped (repeat)"};
     std::vector<std::string> out;

@@ -210,7 +210,7 @@ KnobSet EngineTuner::shippedKnobs() const {
 std::vector<std::vector<Sample>> EngineTuner::finalMeasure(const std::vector<Knob>& tuned) {
     const int frames = o_.engine.timingFrames;
     auto out = measure({KnobSet{}, tuned, shippedKnobs()}, every, frames, false, true);
-    std::vector<bool> full(views_.size(), false); // a frame that took 20 s is its own spread's measure
+    std::vector<bool> full(views_.size(), false); // a job that reached the harness's cap is timed inside its spread by one frame
     for (const Sample& x : out[2])
         full[x.view] = x.timedFrames >= frames;
     out.push_back(measure({shippedKnobs()}, [&](const TuneView& v) { return full[size_t(&v - views_.data())]; }, frames, false)[0]);
@@ -283,17 +283,19 @@ std::vector<std::vector<Sample>> EngineTuner::measure(const std::vector<KnobSet>
                 if (views_[v].scene == si && want(views_[v])) {
                     jobs.push_back({views_[v].index, valuesFor(cands[c], views_[v]), frames});
                     jobs.back().droppable = searching_;
+                    jobs.back().group = searching_ ? int(c) : -1;
                     of.emplace_back(c, v);
                 }
         if (jobs.empty()) continue;
         const std::vector<EngineResult> res = runners_[si]->run(jobs);
+        std::vector<bool> hungCand(cands.size(), false);
         for (size_t j = 0; j < jobs.size(); ++j) {
             TuneView& view = views_[of[j].second];
             if (res[j].hung) { // a candidate the browser never finished: never the best; the baselines must finish
                 if (recordBase || frames > 0)
                     throw Error(table_.title + " hung on " + scenes_[si].name + " " + view.viewpoint + " at settings the tune must measure");
                 out[of[j].first].push_back({of[j].second, std::numeric_limits<double>::infinity(), NAN, nullptr});
-                ++hungJobs_;
+                if (!hungCand[of[j].first]) hungCand[of[j].first] = true, ++hungJobs_; // a candidate, once a scene
                 continue;
             }
             auto e = std::make_shared<Evaluation>(evaluate(res[j].ao, view.ref));

@@ -1,4 +1,5 @@
 #include "commands/tune/tune_command.h"
+#include "scene/load/load_scene.h"
 
 #include "base/image.h"
 #include "measure/bench_run.h"

@@ -1,7 +1,8 @@
 // AppCore's actions: scenes, presets, camera, status.
 #include "view/app/app_core.h"
+#include "scene/load/load_scene.h"
 
-#include "scene/builtin_scenes.h"
+#include "scene/load/builtin_scenes.h"
 #include "settings/params.h"
 #include "util/error.h"
 #include "util/paths.h"

@@ -1,6 +1,6 @@
 // The left panel: status, then tabs for the parameters (generated from the table), the scene and
 // camera, presets and the front. Timing and the inspector live in the info strip under the image.
-#include "scene/builtin_scenes.h"
+#include "scene/load/builtin_scenes.h"
 #include "view/panels/ui_panels.h"
 #include "view/panels/ui_layout.h"
 

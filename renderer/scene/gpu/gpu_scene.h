@@ -1,7 +1,7 @@
 // The scene's triangles in GL buffers, drawn one draw call per material.
 #pragma once
 #include "gl/resources.h"
-#include "scene/motion_lod.h"
+#include "scene/gpu/motion_lod.h"
 #include "scene/scene.h"
 
 #include <vector>
@@ -32,7 +32,7 @@ struct DrawOptions {
     // wholly beyond the near plane, which puts the eye outside them and keeps the near plane from
     // opening them (skip.hidden_faces). Only for passes that keep the nearest surface.
     bool hiddenFaces = false;
-    // A level of the clustered copies (scene/motion_lod.h; -1: the scene itself): frames drawn while
+    // A level of the clustered copies (scene/gpu/motion_lod.h; -1: the scene itself): frames drawn while
     // the camera moves (skip.motion_lod). Its triangles are drawn without face culling. It is the
     // finest level drawn: with `lodView` set, each draw takes the coarsest level whose cell covers
     // at most a pixel of the frame at that draw's own nearest depth (motionLodCellPx), so a part
@@ -45,7 +45,7 @@ struct DrawOptions {
     bool lodOrthographic = false;
     int lodHeight = 0; // pixels
     // skip.occluded: draws the culler's visible set first, then only those of the other draws whose
-    // bounding box shows past that depth (scene/occlusion_culler.h; begin() called for this run).
+    // bounding box shows past that depth (scene/gpu/occlusion_culler.h; begin() called for this run).
     OcclusionCuller* occlusion = nullptr;
 };
 
@@ -70,7 +70,7 @@ struct ScenePrograms {
 class GpuScene {
   public:
     GpuScene() = default;
-    // motionLods: also build the clustered copies (scene/motion_lod.h) where the scene is large
+    // motionLods: also build the clustered copies (scene/gpu/motion_lod.h) where the scene is large
     // enough; only the app draws them (while the camera moves), so headless renders skip the work.
     explicit GpuScene(const Scene& scene, bool motionLods = false);
     // Binds the VAO and issues the draws, MASK draws last, as `o` asks. Leaves face culling off.

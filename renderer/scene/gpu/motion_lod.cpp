@@ -1,4 +1,4 @@
-#include "scene/motion_lod.h"
+#include "scene/gpu/motion_lod.h"
 
 #include "scene/view_fit.h"
 

@@ -1,6 +1,6 @@
-#include "scene/gltf_instancing.h"
+#include "scene/load/gltf_instancing.h"
 
-#include "scene/gltf_accessors.h"
+#include "scene/load/gltf_accessors.h"
 #include "util/error.h"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -2,7 +2,7 @@
 // BLEND/transmissive: scene.h Transparent) and, for MASK, the alpha test of Draw::mask with the
 // texture coordinates its base-colour texture reads.
 #pragma once
-#include "scene/mask_textures.h"
+#include "scene/load/mask_textures.h"
 #include "scene/scene.h"
 
 #include <tiny_gltf.h>

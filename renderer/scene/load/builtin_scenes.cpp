@@ -1,5 +1,5 @@
 // Procedural scenes selectable as builtin:NAME. Units are metres; +y is up.
-#include "scene/builtin_scenes.h"
+#include "scene/load/builtin_scenes.h"
 
 #include "util/error.h"
 

@@ -1,4 +1,4 @@
-#include "scene/mask_textures.h"
+#include "scene/load/mask_textures.h"
 
 #include "util/error.h"
 #include "util/image_budget.h"

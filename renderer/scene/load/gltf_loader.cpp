@@ -1,11 +1,11 @@
 // glTF 2.0 → Scene: meshes under the default scene's node hierarchy, flattened to world space.
-#include "scene/gltf_loader.h"
+#include "scene/load/gltf_loader.h"
 
-#include "scene/gltf_accessors.h"
-#include "scene/gltf_files.h"
-#include "scene/gltf_guard.h"
-#include "scene/gltf_instancing.h"
-#include "scene/gltf_materials.h"
+#include "scene/load/gltf_accessors.h"
+#include "scene/load/gltf_files.h"
+#include "scene/load/gltf_guard.h"
+#include "scene/load/gltf_instancing.h"
+#include "scene/load/gltf_materials.h"
 #include "scene/view_fit.h"
 #include "util/error.h"
 

@@ -1,4 +1,4 @@
-#include "scene/gltf_accessors.h"
+#include "scene/load/gltf_accessors.h"
 
 #include "util/error.h"
 

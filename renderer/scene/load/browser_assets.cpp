@@ -1,8 +1,8 @@
-#include "scene/browser_assets.h"
+#include "scene/load/browser_assets.h"
 
-#include "scene/gltf_files.h"
-#include "scene/gltf_guard.h"
-#include "scene/mask_textures.h"
+#include "scene/load/gltf_files.h"
+#include "scene/load/gltf_guard.h"
+#include "scene/load/mask_textures.h"
 #include "util/error.h"
 #include "util/image_budget.h"
 

@@ -1,6 +1,6 @@
-#include "scene/gltf_materials.h"
+#include "scene/load/gltf_materials.h"
 
-#include "scene/gltf_accessors.h"
+#include "scene/load/gltf_accessors.h"
 #include "util/error.h"
 
 #include <cmath>

@@ -1,9 +1,9 @@
-#include "scene/gpu_scene.h"
+#include "scene/gpu/gpu_scene.h"
 
 #include "scene/closed_shells.h"
-#include "scene/occlusion_culler.h"
+#include "scene/gpu/occlusion_culler.h"
 
-#include "../../shaders/include/bindings.h"
+#include "../../../shaders/include/bindings.h"
 
 #include <algorithm>
 #include <cstddef>

@@ -1,8 +1,8 @@
-#include "scene/occlusion_culler.h"
+#include "scene/gpu/occlusion_culler.h"
 
-#include "scene/gpu_scene.h"
+#include "scene/gpu/gpu_scene.h"
 
-#include "../../shaders/include/box_corners.h"
+#include "../../../shaders/include/box_corners.h"
 
 #include <algorithm>
 #include <glm/gtc/type_ptr.hpp>

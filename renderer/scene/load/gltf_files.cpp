@@ -1,4 +1,4 @@
-#include "scene/gltf_files.h"
+#include "scene/load/gltf_files.h"
 
 #include "util/error.h"
 #include "util/files.h"

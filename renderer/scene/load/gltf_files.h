@@ -1,8 +1,8 @@
 // What a glTF may read besides itself, for tinygltf's file callbacks and the MASK textures
 // (mask_textures.h): regular files under the scene's own folder, within one byte budget.
 #pragma once
-#include "scene/gltf_guard.h"
-#include "scene/mask_textures.h"
+#include "scene/load/gltf_guard.h"
+#include "scene/load/mask_textures.h"
 
 #include <tiny_gltf.h>
 

@@ -1,4 +1,4 @@
-#include "scene/gltf_guard.h"
+#include "scene/load/gltf_guard.h"
 
 #include "util/error.h"
 #include "util/file_kind.h"
