@@ -90,6 +90,9 @@ def row(engine, scene, radius_text, j):
     t, noise = s.get("time_ratio"), s.get("time_noise") or 0.0
     within = t is not None and abs(math.log(t)) <= max(noise, 0.02)
     time_text = "–" if t is None else ("%.2fx (within +-%.0f %%)" % (t, 100 * max(noise, 0.02)) if within else "%.2fx" % t)
+    short = s.get("short_timings") or []
+    if short and t is not None:  # a job whose frames hit the harness's cap: timed on fewer frames
+        time_text += " (%d job(s) timed on fewer frames: %s)" % (len(short), cell("; ".join(short)))
     r_time = s["defaults"]["ao_ms"] / s["shipped"]["ao_ms"] if s["shipped"]["ao_ms"] and s["defaults"]["ao_ms"] else None
     met = ratio is not None and ratio <= TARGET_RMSE and (t is None or t <= TARGET_TIME or within)
     oracle = h.get("screen_oracle")
@@ -120,7 +123,9 @@ def page(rows, size, facts, engines, scenes):
            "perfect estimator still has on the same views, seeing only what one G-buffer holds - where it is close to "
            "the baseline, no screen-space setting of any engine can reach the target, and its ratio says how close one "
            "could get. *time* is the tuned AO time over the shipped one, measured in the same run (within the timing's "
-           "own spread when it says so; the target is %.1fx or less); *R time* the same for lengths from R. *R* is the "
+           "own spread when it says so; the target is %.1fx or less), each the mean over the views, so one view whose "
+           "frame takes a minute weighs as it would in a user's frame budget; a job whose frames reached the harness's "
+           "cap was timed on fewer frames, and the cell names it; *R time* the same for lengths from R. *R* is the "
            "radius the row ran at and where it came from." % (TARGET_RMSE, TARGET_TIME), "",
            "| engine | scene | R | as shipped | lengths from R | tuned | x better | screen oracle (x better) | time | R time "
            "| tune s | target |",
