@@ -7,6 +7,8 @@ import json
 import re
 import sys
 
+from markdown_cell import cell
+
 
 def rmse_max(rows):
     """(largest RMSE, its row) over the rows that were compared, or (None, None)."""
@@ -23,7 +25,7 @@ def fmt(x):
 
 
 def where(r):
-    return "%s, %s" % (r["scene"], r["technique"]) if r else "no row"
+    return "%s, %s" % (cell(str(r["scene"])), cell(str(r["technique"]))) if r else "no row"
 
 
 def near_values(rows, mapping):
@@ -50,7 +52,7 @@ def findings(doc):
                  "(renderer/scene/scene.h): largest RMSE %s." % fmt(moved))
     floats = sorted({r["variant"] for r in rows if r["axis"] == "translate" and "float positions" in r["variant"]})
     if floats:
-        parts = ["%s: %s" % (v.split(",")[0], fmt(rmse_max([r for r in rows if r["variant"] == v])[0])) for v in floats]
+        parts = ["%s: %s" % (cell(v.split(",")[0]), fmt(rmse_max([r for r in rows if r["variant"] == v])[0])) for v in floats]
         lines.append("  What the origin saves - the same moves with float positions, largest RMSE: " + "; ".join(parts) + ".")
     for mapping in ("standard", "reversed"):
         vals = near_values(rows, mapping)
@@ -65,7 +67,7 @@ def findings(doc):
     lines.append("- Orthographic and infinite-far projections: %d renders, %d non-finite or out-of-range values."
                  % (len(proj), pbad))
     geo = sorted({r["variant"] for r in rows if r["axis"] == "geometry"})
-    parts = ["%s: %s" % (v, fmt(rmse_max([r for r in rows if r["axis"] == "geometry" and r["variant"] == v])[0]))
+    parts = ["%s: %s" % (cell(v), fmt(rmse_max([r for r in rows if r["axis"] == "geometry" and r["variant"] == v])[0]))
              for v in geo]
     lines.append("- Geometry, largest RMSE: " + "; ".join(parts) + ".")
     return "\n".join(lines)

@@ -152,3 +152,22 @@ TEST(CliHostile, ThePageScriptsKeepANameInItsOwnCell) {
     EXPECT_NE(md.find("| " + escaped + " | vbao-high: 1.00x"), std::string::npos) << md;
     EXPECT_EQ(md.find("<script>"), std::string::npos);
 }
+
+// docs/stability.md's summary (tools/stress_findings.py) names the scene of the worst row: a hostile
+// scene name lands escaped for Markdown, and a file that is not the stress run's JSON is one error line.
+TEST(CliHostile, StressFindingsEscapeTheSceneTheyName) {
+    const std::string hostile = "a|b <script>*x* c";
+    const nlohmann::json row = {{"axis", "scale"},   {"variant", "x10"}, {"scene", hostile}, {"technique", "kernel"},
+                                {"status", "ok"},    {"compared", false}, {"invariant", true}, {"rmse", 0.004},
+                                {"nonfinite", 0},    {"outside", 0}};
+    const std::string in = writeTemp("stress_hostile.json", nlohmann::json{{"rows", {row}}, {"tolerance", 0.02}, {"size", "64x36"}}.dump());
+    const std::string tool = std::string(SSAOLAB_SOURCE_DIR) + "/tools/stress_findings.py";
+    const ssao::ProgramRun r = ssao::runProgram({"/usr/bin/python3", tool, in}, ssao::ChildStream::Capture, ssao::ChildStream::Capture);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("largest RMSE 0.0040 (a\\|b &lt;script&gt;\\*x\\* c, kernel)"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("<script>"), std::string::npos);
+    const ssao::ProgramRun bad = ssao::runProgram({"/usr/bin/python3", tool, writeTemp("stress_bad.json", "{\"rows\": 3}")},
+                                                  ssao::ChildStream::Capture, ssao::ChildStream::Capture);
+    EXPECT_NE(bad.exitCode, 0);
+    EXPECT_NE(bad.out.find("stress_findings: error:"), std::string::npos) << bad.out;
+}
