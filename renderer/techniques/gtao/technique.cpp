@@ -43,13 +43,9 @@ std::vector<Param> gtaoParams() {
 }
 
 // What the generic one-block pass needs of GTAO (techniques/ao_pass.h).
-struct GtaoModule {
-    using Constants = gpu::GtaoConstants;
+struct GtaoModule : BlockModule<GtaoSettings, gpu::GtaoConstants, &TechniqueSettings::gtao, packGtaoConstants> {
     static constexpr const char* shader = "techniques/gtao/gtao.frag";
     static constexpr float pyramidOffset = kXeGtaoMipOffset;
-    static AoNoise noise(const Settings& s) { return s.gtao.noise; }
-    static bool pyramid(const Settings& s) { return s.gtao.pyramid; }
-    static Constants pack(const Settings& s, const gpu::AoCommon& c) { return packGtaoConstants(s.gtao, c); }
 };
 } // namespace
 

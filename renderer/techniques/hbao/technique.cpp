@@ -25,13 +25,9 @@ std::vector<Param> hbaoParams() {
 }
 
 // What the generic one-block pass needs of HBAO (techniques/ao_pass.h).
-struct HbaoModule {
-    using Constants = gpu::HbaoConstants;
+struct HbaoModule : BlockModule<HbaoSettings, gpu::HbaoConstants, &TechniqueSettings::hbao, packHbaoConstants> {
     static constexpr const char* shader = "techniques/hbao/hbao.frag";
     static constexpr float pyramidOffset = kSaoMipOffset;
-    static AoNoise noise(const Settings& s) { return s.hbao.noise; }
-    static bool pyramid(const Settings& s) { return s.hbao.pyramid; }
-    static Constants pack(const Settings& s, const gpu::AoCommon& c) { return packHbaoConstants(s.hbao, c); }
 };
 } // namespace
 

@@ -26,13 +26,9 @@ std::vector<Param> saoParams() {
 }
 
 // What the generic one-block pass needs of SAO (techniques/ao_pass.h).
-struct SaoModule {
-    using Constants = gpu::SaoConstants;
+struct SaoModule : BlockModule<SaoSettings, gpu::SaoConstants, &TechniqueSettings::sao, packSaoConstants> {
     static constexpr const char* shader = "techniques/sao/sao.frag";
     static constexpr float pyramidOffset = kSaoMipOffset;
-    static AoNoise noise(const Settings& s) { return s.sao.noise; }
-    static bool pyramid(const Settings& s) { return s.sao.pyramid; }
-    static Constants pack(const Settings& s, const gpu::AoCommon& c) { return packSaoConstants(s.sao, c); }
 };
 } // namespace
 

@@ -31,13 +31,9 @@ std::vector<Param> vbaoParams() {
 }
 
 // What the generic one-block pass needs of the visibility bitmask (techniques/ao_pass.h).
-struct VbaoModule {
-    using Constants = gpu::VbaoConstants;
+struct VbaoModule : BlockModule<VbaoSettings, gpu::VbaoConstants, &TechniqueSettings::vbao, packVbaoConstants> {
     static constexpr const char* shader = "techniques/vbao/vbao.frag";
     static constexpr float pyramidOffset = kXeGtaoMipOffset;
-    static AoNoise noise(const Settings& s) { return s.vbao.noise; }
-    static bool pyramid(const Settings& s) { return s.vbao.pyramid; }
-    static Constants pack(const Settings& s, const gpu::AoCommon& c) { return packVbaoConstants(s.vbao, c); }
 };
 } // namespace
 
